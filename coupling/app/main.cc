@@ -1,0 +1,196 @@
+// abrade: predicts where and how fast bulk-handling tools wear.
+//
+//   abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
+//   abrade params [--format text|prm]
+//   abrade --version
+//
+// Exit codes: 0 success, 2 bad input (command line, parameter file, mesh), 3 run-time failure
+// (NaN, lost particle, inverted element), 1 anything else.
+#include <abrade/common/error.h>
+#include <abrade/common/hash.h>
+#include <abrade/common/json.h>
+#include <abrade/common/progress.h>
+#include <abrade/common/version.h>
+#include <abrade/coupling/jobs.h>
+#include <abrade/coupling/parameter_file.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <omp.h>
+
+using namespace abrade;
+
+namespace
+{
+  const char *usage = R"(usage:
+  abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
+      run the job the parameter file describes (no file: the embedded small default case)
+  abrade params [--format text|prm]
+      print every parameter with its documentation, unit, allowed range and default
+  abrade --version
+)";
+
+  struct CommandLine
+  {
+    std::string              command;
+    std::string              file;
+    std::vector<std::string> sets;
+    std::string              output;
+    std::string              format = "text";
+    bool                     quiet  = false;
+    bool                     resume = false;
+  };
+
+  CommandLine parse(int argc, char **argv)
+  {
+    CommandLine cl;
+    std::vector<std::string> a(argv + 1, argv + argc);
+    if (a.empty())
+      throw InputError("command line", "no command given\n" + std::string(usage));
+    cl.command = a[0];
+    for (std::size_t k = 1; k < a.size(); ++k)
+      {
+        auto value = [&](const std::string &flag) {
+          if (k + 1 >= a.size())
+            throw InputError("command line", flag + " needs a value");
+          return a[++k];
+        };
+        if (a[k] == "--set")
+          cl.sets.push_back(value("--set"));
+        else if (a[k].rfind("--set=", 0) == 0)
+          cl.sets.push_back(a[k].substr(6));
+        else if (a[k] == "--output" || a[k] == "-o")
+          cl.output = value("--output");
+        else if (a[k] == "--format")
+          cl.format = value("--format");
+        else if (a[k] == "--quiet" || a[k] == "-q")
+          cl.quiet = true;
+        else if (a[k] == "--resume")
+          cl.resume = true;
+        else if (!a[k].empty() && a[k][0] == '-')
+          throw InputError("command line", "unknown option '" + a[k] + "'");
+        else if (cl.file.empty())
+          cl.file = a[k];
+        else
+          throw InputError("command line", "more than one parameter file given ('" + cl.file + "', '" + a[k] + "')");
+      }
+    return cl;
+  }
+
+  int run(const CommandLine &cl)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    io::ProgressLine::set_quiet(cl.quiet);
+    coupling::ParameterFile params(cl.file, cl.sets);
+    auto &prm = params.handler();
+    if (!cl.output.empty())
+      {
+        prm.enter_subsection("Output");
+        prm.set("Directory", cl.output);
+        prm.leave_subsection();
+      }
+    prm.enter_subsection("Output");
+    const std::string dir = prm.get("Directory");
+    prm.leave_subsection();
+    const std::string job_name = prm.get("Job");
+
+    io::OutputDirectory out(dir);
+    io::Log             log;
+    log.open(out.file("log.txt"));
+    const std::string canonical = params.canonical_text();
+    std::ofstream(out.file("parameters.prm")) << canonical;
+
+    log.line("abrade " + std::string(version_string) + ": job '" + job_name + "' from " + params.file_name() +
+             ", output in " + dir + ", " + std::to_string(omp_get_max_threads()) + " threads");
+
+    io::Json summary;
+    summary["abrade_version"] = version_string;
+    summary["job"]            = job_name;
+    summary["parameter_file"] = params.file_name();
+    summary["parameters_hash"] = io::fnv1a_hex(canonical);
+    {
+      std::time_t now = std::time(nullptr);
+      char        buf[32];
+      std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+      summary["started"] = buf;
+    }
+    summary["threads"] = omp_get_max_threads();
+    io::Timers           timers;
+    io::Json            &results = summary["results"];
+    coupling::JobContext ctx{params, out, results, timers, log, cl.resume};
+    auto finish = [&](const std::string &status) {
+      summary["status"] = status;
+      io::Json &t       = summary["timings"];
+      for (const auto &[name, seconds] : timers.all())
+        t[name] = seconds;
+      t["total"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      summary.write(out.file("summary.json"));
+    };
+    try
+      {
+        for (const auto &job : coupling::registered_jobs())
+          if (job.name == job_name)
+            job.run(ctx);
+      }
+    catch (const std::exception &e)
+      {
+        // keep what is known about the failed run, then report it as usual
+        finish(std::string("failed: ") + e.what());
+        log.line(std::string("error: ") + e.what());
+        throw;
+      }
+    finish("completed");
+    log.line("Done: " + out.file("summary.json"));
+    return 0;
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version"))
+        {
+          std::cout << "abrade " << version_string << std::endl;
+          return 0;
+        }
+      if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" ||
+                        std::string(argv[1]) == "help"))
+        {
+          std::cout << usage;
+          return 0;
+        }
+      const CommandLine cl = parse(argc, argv);
+      if (cl.command == "run")
+        return run(cl);
+      if (cl.command == "params")
+        {
+          coupling::ParameterFile p;
+          if (cl.format == "prm")
+            std::cout << p.canonical_text();
+          else if (cl.format == "text")
+            p.handler().print_parameters(std::cout, dealii::ParameterHandler::Text);
+          else
+            throw InputError("command line", "--format must be text or prm");
+          return 0;
+        }
+      throw InputError("command line", "unknown command '" + cl.command + "'\n" + usage);
+    }
+  catch (const InputError &e)
+    {
+      std::cerr << "abrade: error: " << e.what() << std::endl;
+      return 2;
+    }
+  catch (const RunError &e)
+    {
+      std::cerr << "abrade: run failed: " << e.what() << std::endl;
+      return 3;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "abrade: internal error: " << e.what() << std::endl;
+      return 1;
+    }
+}

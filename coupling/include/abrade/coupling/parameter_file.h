@@ -1,0 +1,51 @@
+#pragma once
+// Reading a parameter file with deal.II's ParameterHandler, with errors a user can act on.
+//
+// Some subsections depend on the file itself (one "Wall NAME" subsection per name in "Walls"),
+// so a file is read twice: a first lenient pass reads only those lists, then every parameter is
+// declared and the file is read strictly. Every problem becomes an abrade::InputError with a
+// one-line message naming the file, the line and the key.
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace abrade::coupling
+{
+  /// "Section/Sub/Key=value" overrides from the command line.
+  struct Override
+  {
+    std::vector<std::string> path; ///< subsections
+    std::string              key, value, text;
+  };
+  Override parse_override(const std::string &text);
+
+  class ParameterFile
+  {
+  public:
+    /// Reads @p file (or the embedded default case when @p file is empty) and applies the
+    /// overrides. Throws InputError.
+    ParameterFile(const std::string &file, const std::vector<std::string> &overrides);
+
+    /// Declares everything with the default lists (for `abrade params`).
+    ParameterFile();
+
+    dealii::ParameterHandler       &handler() { return prm; }
+    const std::string              &file_name() const { return file; }
+    /// Where a key is set in the file ("file:line"), or just the file name.
+    std::string locate(const std::vector<std::string> &path, const std::string &key) const;
+    /// An InputError naming where @p key was set.
+    [[noreturn]] void fail(const std::vector<std::string> &path, const std::string &key,
+                           const std::string &message) const;
+    /// The full parameter set (defaults included) as .prm text.
+    std::string canonical_text();
+
+  private:
+    dealii::ParameterHandler prm;
+    std::string              file;
+    std::string              text; ///< the file's content
+  };
+
+  /// The embedded default case used by `abrade run` without a file.
+  const std::string &default_case_text();
+} // namespace abrade::coupling

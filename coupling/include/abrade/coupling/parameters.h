@@ -1,0 +1,58 @@
+#pragma once
+// Declaration of every parameter abrade reads, and their conversion into the plain settings
+// structs of the DEM (which knows nothing of deal.II). One subsection per component, one
+// "Wall NAME" subsection per wall.
+#include <abrade/coupling/parameter_file.h>
+#include <abrade/dem/generation.h>
+#include <abrade/dem/simulation.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace abrade::coupling
+{
+  /// Names that shape the declaration (read in the first pass).
+  struct DeclarationLists
+  {
+    std::vector<std::string> walls = {"container", "knife"};
+  };
+
+  /// First pass: declares the lists only.
+  void declare_lists(dealii::ParameterHandler &prm);
+  DeclarationLists read_lists(dealii::ParameterHandler &prm);
+
+  /// Second pass: declares everything.
+  void declare_parameters(dealii::ParameterHandler &prm, const DeclarationLists &lists);
+
+  /// A phase of the operating cycle: name and duration [s].
+  using Phase = std::pair<std::string, double>;
+
+  /// Everything the DEM job needs, read from the parameters.
+  struct DemCase
+  {
+    dem::Settings            settings;
+    dem::Material            particle_material;
+    dem::Interaction         particle_interaction;
+    dem::FillRegion          fill;
+    std::string              region_mesh_file;
+    double                   settle_ke = 1e-4, settle_max_time = 1;
+    std::string              bed_file;
+    std::vector<Phase>       phases;
+    struct WallCase
+    {
+      dem::Wall        wall;
+      dem::Material    material;
+      dem::Interaction interaction;
+    };
+    std::vector<WallCase> walls;
+    double snapshot_interval = 0.05, force_interval = 1e-3;
+    bool   write_particles   = true;
+  };
+
+  /// Reads and checks the DEM parameters; errors name the file, line and key.
+  DemCase read_dem_case(ParameterFile &file);
+
+  /// Builds the simulation (materials, interactions, walls) of a case, without particles.
+  void build_simulation(const DemCase &c, dem::Simulation &sim);
+} // namespace abrade::coupling

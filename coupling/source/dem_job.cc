@@ -1,0 +1,166 @@
+// The `dem` job: one DEM simulation of an operating cycle.
+//
+// 1. Read the case (materials, walls, phases) and build the simulation.
+// 2. Bed: load the settled bed if a bed file exists; otherwise generate particles in the fill
+//    region, pour and settle them, and save the bed for later runs.
+// 3. Run the phases in order, writing ParaView snapshots and wall forces at their intervals.
+// 4. Report the throughput and the wall loads per phase in summary.json.
+#include <abrade/common/error.h>
+#include <abrade/common/progress.h>
+#include <abrade/coupling/jobs.h>
+#include <abrade/coupling/parameters.h>
+#include <abrade/dem/generation.h>
+#include <abrade/dem/mesh_io.h>
+#include <abrade/dem/output.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace abrade::coupling
+{
+  namespace
+  {
+    void flush_warnings(dem::Simulation &sim, io::Log &log)
+    {
+      for (const auto &w : sim.take_warnings())
+        log.warning(w);
+    }
+
+    std::string fmt(double v, int precision = 4)
+    {
+      std::ostringstream s;
+      s.precision(precision);
+      s << v;
+      return s.str();
+    }
+
+    /// Generates (or loads) the bed; returns true when it was loaded.
+    bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
+    {
+      std::string bed = c.bed_file;
+      if (!bed.empty() && std::filesystem::path(bed).is_relative())
+        bed = ctx.output.file(bed);
+      if (!bed.empty() && std::filesystem::exists(bed))
+        {
+          io::ScopedTimer t(ctx.timers, "load bed");
+          dem::load_bed(sim, bed);
+          ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.particles().size()) + " particles");
+          sim.setup();
+          return true;
+        }
+
+      dem::FillRegion   fill = c.fill;
+      dem::TriangleMesh region;
+      if (!c.region_mesh_file.empty())
+        {
+          region      = dem::read_surface_mesh(c.region_mesh_file);
+          fill.inside = &region;
+        }
+      for (std::size_t w = 0; w < sim.n_walls(); ++w)
+        fill.avoid.push_back(sim.wall(w).current_mesh());
+      {
+        io::ScopedTimer t(ctx.timers, "generate");
+        const long      n = dem::fill_region(sim, fill);
+        ctx.log.line("Generated " + std::to_string(n) + " particles (seed " + std::to_string(fill.seed) + ")");
+      }
+      sim.setup();
+      flush_warnings(sim, ctx.log);
+      {
+        io::ScopedTimer  t(ctx.timers, "settle");
+        io::ProgressLine progress("settling", c.settle_max_time);
+        const double     t0 = sim.time();
+        sim.settle(c.settle_ke, c.settle_max_time, [&](const dem::Simulation &s) {
+          const double ke = s.kinetic_energy() / std::max<std::size_t>(1, s.particles().size());
+          progress.update(s.time() - t0, "kinetic energy " + fmt(ke, 3) + " J per particle");
+        });
+      }
+      const double ke = sim.kinetic_energy() / std::max<std::size_t>(1, sim.particles().size());
+      ctx.log.line("Settled for " + fmt(sim.time()) + " s: kinetic energy " + fmt(ke) + " J per particle");
+      if (ke > c.settle_ke)
+        ctx.log.warning("the bed did not settle below " + fmt(c.settle_ke) +
+                        " J per particle within Particles/Settling/Maximum time");
+      if (!bed.empty())
+        {
+          dem::save_bed(sim, bed);
+          ctx.log.line("Saved the settled bed to " + bed);
+        }
+      return false;
+    }
+  } // namespace
+
+  void run_dem_job(JobContext &ctx)
+  {
+    DemCase         c = read_dem_case(ctx.parameters);
+    dem::Simulation sim(c.settings);
+    build_simulation(c, sim);
+
+    const bool loaded = prepare_bed(c, sim, ctx);
+    sim.set_time(0);
+    flush_warnings(sim, ctx.log);
+    ctx.log.line("Particles: " + std::to_string(sim.particles().size()) + ", time step " + fmt(sim.dt()) +
+                 " s (" + fmt(sim.dt() / sim.rayleigh_time_step()) + " x Rayleigh)");
+
+    dem::DemOutput output(ctx.output.root(), sim, c.write_particles);
+    output.write_snapshot(sim);
+    const long snapshot_every = c.snapshot_interval > 0 ? std::max(1L, std::lround(c.snapshot_interval / sim.dt())) : 0;
+    const long force_every    = std::max(1L, std::lround(c.force_interval / sim.dt()));
+
+    double total = 0;
+    for (const auto &p : c.phases)
+      total += p.second;
+    io::ProgressLine progress("dem", total);
+    io::Json        &phases = ctx.results["phases"];
+    const auto       stats0 = sim.statistics();
+    for (const auto &[name, duration] : c.phases)
+      {
+        io::ScopedTimer   timer(ctx.timers, "phase " + name);
+        const auto        before = sim.statistics();
+        std::vector<dem::Vec3> force_sum(sim.n_walls(), dem::Vec3::Zero());
+        std::vector<double>    peak(sim.n_walls(), 0.0);
+        long                   steps = 0;
+        sim.run_phase(name, duration, [&](const dem::Simulation &s) {
+          ++steps;
+          for (std::size_t w = 0; w < s.n_walls(); ++w)
+            {
+              force_sum[w] += s.wall(w).force;
+              peak[w] = std::max(peak[w], s.wall(w).force.norm());
+            }
+          if (s.step_number() % force_every == 0)
+            output.write_forces(s);
+          if (snapshot_every && s.step_number() % snapshot_every == 0)
+            output.write_snapshot(s);
+          progress.update(s.time(), name + "  t = " + fmt(s.time(), 3) + " s");
+        });
+        if (!snapshot_every)
+          output.write_snapshot(sim);
+        flush_warnings(sim, ctx.log);
+        const auto   after = sim.statistics();
+        const double rate  = (after.particle_steps - before.particle_steps) /
+                            std::max(1e-12, after.loop_seconds - before.loop_seconds);
+        io::Json &ph          = phases[name];
+        ph["duration"]        = duration;
+        ph["steps"]           = steps;
+        ph["particle_steps_per_second"] = rate;
+        for (std::size_t w = 0; w < sim.n_walls(); ++w)
+          {
+            const dem::Vec3 mean = steps ? dem::Vec3(force_sum[w] / steps) : dem::Vec3::Zero();
+            io::Json       &wj   = ph["walls"][sim.wall(w).name];
+            wj["mean_force"]     = std::vector<double>{mean[0], mean[1], mean[2]};
+            wj["peak_force"]     = peak[w];
+          }
+        ctx.log.line("Phase " + name + ": " + std::to_string(steps) + " steps, " + fmt(rate, 3) +
+                     " particle-steps/s");
+      }
+    progress.finish();
+    const auto stats = sim.statistics();
+    io::Json  &r     = ctx.results;
+    r["particles"]   = static_cast<long>(sim.particles().size());
+    r["bed_loaded"]  = loaded;
+    r["time_step"]   = sim.dt();
+    r["steps"]       = stats.steps - stats0.steps;
+    r["neighbour_rebuilds"] = stats.rebuilds;
+    r["particle_steps_per_second"] =
+      (stats.particle_steps - stats0.particle_steps) / std::max(1e-12, stats.loop_seconds - stats0.loop_seconds);
+  }
+} // namespace abrade::coupling

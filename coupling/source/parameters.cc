@@ -1,0 +1,491 @@
+#include <abrade/common/error.h>
+#include <abrade/coupling/parameters.h>
+#include <abrade/dem/mesh_io.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace abrade::coupling
+{
+  using dealii::ParameterHandler;
+  using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::FileName;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+  using dealii::Patterns::Selection;
+  using dealii::Utilities::split_string_list;
+  using dealii::Utilities::trim;
+  using dem::Vec3;
+
+  namespace
+  {
+    constexpr double huge = std::numeric_limits<double>::max();
+
+    void declare_vector(ParameterHandler &prm, const std::string &name, const std::string &def,
+                        const std::string &doc)
+    {
+      prm.declare_entry(name, def, List(Double(-huge, huge), 3, 3), doc + " Three numbers: x, y, z.");
+    }
+
+    Vec3 get_vector(ParameterHandler &prm, const std::string &name)
+    {
+      const auto v = split_string_list(prm.get(name));
+      return Vec3(std::stod(v[0]), std::stod(v[1]), std::stod(v[2]));
+    }
+
+    std::vector<std::string> get_list(ParameterHandler &prm, const std::string &name)
+    {
+      std::vector<std::string> out;
+      for (auto &s : split_string_list(prm.get(name)))
+        if (!s.empty())
+          out.push_back(s);
+      return out;
+    }
+
+    void declare_material(ParameterHandler &prm, double G, double nu, double rho, bool rotation_option)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry("Shear modulus", std::to_string(G), Double(0, huge),
+                        "[Pa] Shear modulus G. Give either G or Young's modulus; when both are "
+                        "non-zero, Young's modulus wins. Range: >= 0.");
+      prm.declare_entry("Young's modulus", "0", Double(0, huge),
+                        "[Pa] Young's modulus E = 2 G (1 + nu); 0: use the shear modulus. Range: >= 0.");
+      prm.declare_entry("Poisson's ratio", std::to_string(nu), Double(-0.999, 0.4999),
+                        "[-] Poisson's ratio nu. Range: (-1, 0.5).");
+      prm.declare_entry("Density", std::to_string(rho), Double(1e-12, huge),
+                        "[kg/m^3] Density. Range: > 0.");
+      if (rotation_option)
+        prm.declare_entry("Rotation", "false", Bool(),
+                          "Whether particles rotate. false caps the angular velocity at 0 rad/s, "
+                          "as the seed's iron-ore pellet model does (a stand-in for non-spherical "
+                          "shape).");
+      prm.leave_subsection();
+    }
+
+    void declare_interaction(ParameterHandler &prm, double e, double mu, const std::string &with)
+    {
+      prm.enter_subsection("Interaction");
+      prm.declare_entry("Restitution", std::to_string(e), Double(1e-6, 1),
+                        "[-] Coefficient of restitution of " + with + " contacts. Range: (0, 1].");
+      prm.declare_entry("Friction", std::to_string(mu), Double(0, huge),
+                        "[-] Static friction coefficient of " + with + " contacts (Coulomb limit of "
+                        "the tangential force). Range: >= 0.");
+      prm.declare_entry("Rolling friction", "0", Double(0, huge),
+                        "[-] Rolling friction coefficient of " + with + " contacts (EDEM constant "
+                        "directional torque; acts only on rotating particles). Range: >= 0.");
+      prm.leave_subsection();
+    }
+  } // namespace
+
+  void declare_lists(ParameterHandler &prm)
+  {
+    prm.declare_entry("Walls", "container, knife", List(Anything()),
+                      "Names of the walls (triangle meshes). Each name gets a subsection "
+                      "'Wall NAME' with its geometry, material and motion.");
+  }
+
+  DeclarationLists read_lists(ParameterHandler &prm)
+  {
+    DeclarationLists l;
+    l.walls = get_list(prm, "Walls");
+    return l;
+  }
+
+  void declare_parameters(ParameterHandler &prm, const DeclarationLists &lists)
+  {
+    prm.declare_entry("Job", "dem", Selection("dem"),
+                      "What `abrade run` does. dem: one DEM simulation of the phases in "
+                      "Simulation/Phases (generate or load the bed, run, write output).");
+    declare_lists(prm);
+    std::string names;
+    for (const auto &w : lists.walls)
+      names += (names.empty() ? "" : ", ") + w;
+    prm.set("Walls", names);
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory", "output", Anything(),
+                      "Output directory (created if missing); `--output DIR` overrides it.");
+    prm.declare_entry("Snapshot interval", "0.05", Double(0, huge),
+                      "[s] Simulated time between ParaView snapshots (particles and walls, .vtp in "
+                      ".pvd series); 0: only at the end of each phase. Range: >= 0.");
+    prm.declare_entry("Force interval", "0.001", Double(0, huge),
+                      "[s] Simulated time between rows of the wall force files "
+                      "(walls/NAME_forces.csv); 0: every time step. Range: >= 0.");
+    prm.declare_entry("Write particles", "true", Bool(),
+                      "Whether snapshots include the particles (they dominate the output size).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Simulation");
+    prm.declare_entry("Time step", "0", Double(0, 1),
+                      "[s] Time step; 0: 'Rayleigh fraction' times the Rayleigh time step of the "
+                      "smallest particle. Range: [0, 1].");
+    prm.declare_entry("Rayleigh fraction", "0.2", Double(1e-6, 1),
+                      "[-] Time step as a fraction of the Rayleigh time step (EDEM recommends 0.2 "
+                      "for dense packings, 0.4 for loose ones). Range: (0, 1].");
+    declare_vector(prm, "Gravity", "0, 0, -9.81", "[m/s^2] Gravitational acceleration.");
+    prm.declare_entry("Characteristic velocity", "1.5", Double(1e-9, huge),
+                      "[m/s] Impact speed used to check the time step against the Hertz contact "
+                      "time (a warning is printed when dt exceeds a tenth of it). Range: > 0.");
+    prm.declare_entry("Skin", "0", Double(0, huge),
+                      "[m] Verlet skin of the neighbour lists; 0: 0.2 x the smallest radius. The "
+                      "lists are rebuilt when a particle or wall has moved far enough to bring a new "
+                      "pair into contact. Range: >= 0.");
+    prm.declare_entry("Damping model", "edem", Selection("edem|calibrated"),
+                      "edem: damping from the restitution as EDEM/LIGGGHTS document it (the "
+                      "rebound restitution of a Hertz contact then differs slightly from the input); "
+                      "calibrated: damping chosen so that a Hertz contact rebounds with exactly the "
+                      "input restitution.");
+    prm.declare_entry("Threads", "0", Integer(0, 1024),
+                      "Number of threads; 0: all available (OMP_NUM_THREADS). Range: >= 0.");
+    declare_vector(prm, "Domain min", "-1000, -1000, -1000",
+                   "[m] Lower corner of the simulation domain; a particle outside it is lost.");
+    declare_vector(prm, "Domain max", "1000, 1000, 1000", "[m] Upper corner of the simulation domain.");
+    prm.declare_entry("Maximum overlap fraction", "0.2", Double(0, 1),
+                      "[-] An overlap larger than this fraction of the particle radius is reported "
+                      "(usually a time step that is too large). Range: [0, 1].");
+    prm.declare_entry("On error", "stop", Selection("stop|continue"),
+                      "What a lost particle or an excessive overlap does: stop the run with an "
+                      "error, or print a warning and continue (lost particles are removed). A NaN "
+                      "always stops the run.");
+    prm.declare_entry("Phases", "penetration: 0.2666667, travel: 0.8",
+                      dealii::Patterns::Map(Anything(), Double(0, huge), 0, 1000, ",", ":"),
+                      "[s] The operating cycle as named phases with durations, in order: "
+                      "'name: duration, name: duration'. Walls take their velocity per phase "
+                      "name (Wall NAME/Motion/Velocities); wear and forces are reported per phase.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Particles");
+    declare_material(prm, 1e8, 0.25, 3700, true);
+    declare_interaction(prm, 0.6, 0.5, "particle-particle");
+    prm.enter_subsection("Generation");
+    declare_vector(prm, "Region min", "-0.97, -0.97, 0.03", "[m] Lower corner of the fill box.");
+    declare_vector(prm, "Region max", "0.97, 0.97, 0.85", "[m] Upper corner of the fill box.");
+    prm.declare_entry("Region mesh", "", Anything(),
+                      "Optional closed surface mesh (STL/OBJ/PLY/VTK/VTP); particles are placed only "
+                      "inside it (and inside the fill box). Empty: the box alone.");
+    prm.declare_entry("Size distribution", "constant", Selection("constant|uniform|normal"),
+                      "Particle radius distribution: constant (Radius), uniform in [Minimum radius, "
+                      "Maximum radius], or normal (mean Radius, Standard deviation) truncated to "
+                      "[Minimum radius, Maximum radius].");
+    prm.declare_entry("Radius", "0.0275", Double(1e-9, huge),
+                      "[m] Particle radius (constant), or the mean of the normal distribution. "
+                      "The seed's coarse-grained pellets: 0.0275. Range: > 0.");
+    prm.declare_entry("Minimum radius", "0", Double(0, huge), "[m] Smallest radius (uniform, normal). Range: >= 0.");
+    prm.declare_entry("Maximum radius", "0", Double(0, huge), "[m] Largest radius (uniform, normal). Range: >= 0.");
+    prm.declare_entry("Standard deviation", "0", Double(0, huge), "[m] Of the normal distribution. Range: >= 0.");
+    prm.declare_entry("Count", "0", Integer(0),
+                      "Number of particles to generate; 0: use the solid fraction. Range: >= 0.");
+    prm.declare_entry("Solid fraction", "0.35", Double(0, 0.5),
+                      "[-] Particle volume over fill-region volume, used when Count = 0. "
+                      "Range: [0, 0.5] (the particles are placed on a lattice, then poured).");
+    prm.declare_entry("Seed", "1", Integer(0), "Random seed of the placement and sizes. Range: >= 0.");
+    declare_vector(prm, "Initial velocity", "0, 0, -0.5", "[m/s] Velocity of the generated particles.");
+    prm.leave_subsection();
+    prm.enter_subsection("Settling");
+    prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, huge),
+                      "[J] The poured bed counts as settled when the mean kinetic energy per "
+                      "particle falls below this. Range: >= 0.");
+    prm.declare_entry("Maximum time", "1.0", Double(0, huge),
+                      "[s] Longest settling time (the run goes on, with a warning, if the bed has "
+                      "not settled by then). Range: >= 0.");
+    prm.declare_entry("Bed file", "", Anything(),
+                      "Settled-bed file. If it exists, the bed is loaded from it and no particles "
+                      "are generated; otherwise the bed is generated, settled and saved there, so "
+                      "later runs (and every operating cycle) start from the same bed. A relative "
+                      "path is relative to the output directory. Empty: generate every time.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    for (const auto &name : lists.walls)
+      {
+        prm.enter_subsection("Wall " + name);
+        prm.declare_entry("Geometry", "box", Selection("box|plate|chisel knife|file"),
+                          "Wall geometry: box (open-top container, inward normals), plate (a "
+                          "rectangle), chisel knife (the knife-bed reference knife, see cases.md), "
+                          "or file (a surface mesh).");
+        prm.declare_entry("File", "", Anything(),
+                          "Surface mesh file (STL ASCII/binary, OBJ, PLY, VTK, VTP) when Geometry = "
+                          "file; relative to the parameter file's directory.");
+        prm.declare_entry("File scale", "1", Double(1e-12, huge),
+                          "[m per file unit] 0.001 for a mesh in millimetres. Range: > 0.");
+        declare_vector(prm, "Box min", "-1, -1, 0", "[m] Box: lower corner.");
+        declare_vector(prm, "Box max", "1, 1, 1", "[m] Box: upper corner.");
+        declare_vector(prm, "Plate centre", "0, 0, 0", "[m] Plate: centre.");
+        prm.declare_entry("Plate normal", "z", Selection("x|y|z|-x|-y|-z"), "Plate: normal direction.");
+        prm.declare_entry("Plate size", "1, 1", List(Double(0, huge), 2, 2),
+                          "[m] Plate: side lengths along the two in-plane axes (cyclic order after "
+                          "the normal: y,z for x; z,x for y; x,y for z).");
+        prm.declare_entry("Knife length", "0.4", Double(0, huge), "[m] Chisel knife: length along X.");
+        prm.declare_entry("Knife height", "0.5", Double(0, huge), "[m] Chisel knife: height along Z.");
+        prm.declare_entry("Knife thickness", "0.03", Double(0, huge), "[m] Chisel knife: thickness along Y.");
+        prm.declare_entry("Bevel height", "0.04", Double(0, huge),
+                          "[m] Chisel knife: height of the bevel that forms the bottom edge.");
+        declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
+        prm.declare_entry("Maximum edge length", "0", Double(0, huge),
+                          "[m] Refine the mesh until no triangle edge is longer than this (per-"
+                          "triangle wear needs triangles smaller than a particle); 0: as given. "
+                          "Range: >= 0.");
+        prm.declare_entry("Flip normals", "false", Bool(), "Reverse the orientation of every triangle.");
+        declare_material(prm, 7e10, 0.3, 7800, false);
+        declare_interaction(prm, 0.6, name == "knife" ? 0.4 : 0.5, "particle-wall");
+        prm.enter_subsection("Motion");
+        prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed",
+                          Selection("fixed|prescribed|rigid body"),
+                          "fixed; prescribed: velocities per phase; rigid body: the degrees of "
+                          "freedom listed in 'Free degrees of freedom' move under gravity and particle "
+                          "forces, the others follow the prescribed velocities.");
+        declare_vector(prm, "Centre", "0, 0, 0",
+                       "[m] Rotation centre (a hinge point) in the geometry's coordinates before "
+                       "Offset; it moves with the wall. Torques are reported about it.");
+        prm.declare_entry("Velocities", name == "knife" ? "penetration: 0, 0, -1.5; travel: 1.5, 0, 0" : "",
+                          Anything(),
+                          "[m/s] Translational velocity per phase: 'phase: vx, vy, vz; phase: vx, vy, "
+                          "vz'. Phases not listed: at rest.");
+        prm.declare_entry("Angular velocities", "", Anything(),
+                          "[rad/s] Angular velocity per phase about the centre: 'phase: wx, wy, wz; "
+                          "...'. Phases not listed: not rotating.");
+        prm.declare_entry("Mass", "0", Double(0, huge), "[kg] Rigid body: mass. Range: >= 0.");
+        declare_vector(prm, "Inertia", "0, 0, 0", "[kg m^2] Rigid body: principal moments about the centre.");
+        prm.declare_entry("Free degrees of freedom", "", List(Selection("tx|ty|tz|rx|ry|rz")),
+                          "Rigid body: which of tx, ty, tz, rx, ry, rz move freely.");
+        prm.declare_entry("Gravity", "true", Bool(), "Rigid body: whether gravity acts on it.");
+        prm.leave_subsection();
+        prm.leave_subsection();
+      }
+  }
+
+  // -----------------------------------------------------------------------------------------------
+
+  namespace
+  {
+    dem::Material read_material(ParameterFile &f, const std::vector<std::string> &path, const std::string &name)
+    {
+      auto &prm = f.handler();
+      prm.enter_subsection("Material");
+      const double E = prm.get_double("Young's modulus"), G = prm.get_double("Shear modulus");
+      const double nu = prm.get_double("Poisson's ratio"), rho = prm.get_double("Density");
+      const bool   rot = path.size() == 1 && path[0] == "Particles" ? prm.get_bool("Rotation") : true;
+      prm.leave_subsection();
+      auto mp = path;
+      mp.push_back("Material");
+      if (E <= 0 && G <= 0)
+        f.fail(mp, "Shear modulus", "give a positive shear modulus or Young's modulus");
+      dem::Material m = E > 0 ? dem::Material{name, E, nu, rho, rot} : dem::Material::from_shear_modulus(name, G, nu, rho, rot);
+      return m;
+    }
+
+    dem::Interaction read_interaction(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Interaction");
+      dem::Interaction i{prm.get_double("Restitution"), prm.get_double("Friction"), prm.get_double("Rolling friction")};
+      prm.leave_subsection();
+      return i;
+    }
+
+    // "phase: a, b, c; phase: a, b, c"
+    std::map<std::string, Vec3> read_phase_vectors(ParameterFile &f, const std::vector<std::string> &path,
+                                                   const std::string &key, const std::vector<Phase> &phases)
+    {
+      std::map<std::string, Vec3> out;
+      const std::string           text = f.handler().get(key);
+      for (const auto &item : split_string_list(text, ';'))
+        {
+          if (trim(item).empty())
+            continue;
+          const auto colon = item.find(':');
+          if (colon == std::string::npos)
+            f.fail(path, key, "expected 'phase: x, y, z', got '" + item + "'");
+          const std::string phase = trim(item.substr(0, colon));
+          const auto        v     = split_string_list(item.substr(colon + 1));
+          Vec3              vec;
+          try
+            {
+              if (v.size() != 3)
+                throw std::invalid_argument("size");
+              for (int d = 0; d < 3; ++d)
+                {
+                  std::size_t used = 0;
+                  vec[d]           = std::stod(v[d], &used);
+                  if (used != v[d].size())
+                    throw std::invalid_argument("junk");
+                }
+            }
+          catch (const std::exception &)
+            {
+              f.fail(path, key, "phase '" + phase + "': expected three numbers, got '" + trim(item.substr(colon + 1)) + "'");
+            }
+          if (std::none_of(phases.begin(), phases.end(), [&](const Phase &p) { return p.first == phase; }) &&
+              phase != "settle")
+            f.fail(path, key, "unknown phase '" + phase + "' (Simulation/Phases defines the phases)");
+          out[phase] = vec;
+        }
+      return out;
+    }
+
+    std::string resolve(const ParameterFile &f, const std::string &p)
+    {
+      if (p.empty() || std::filesystem::path(p).is_absolute() || f.file_name().front() == '<')
+        return p;
+      return (std::filesystem::path(f.file_name()).parent_path() / p).string();
+    }
+  } // namespace
+
+  DemCase read_dem_case(ParameterFile &f)
+  {
+    ParameterHandler &prm = f.handler();
+    DemCase           c;
+
+    prm.enter_subsection("Output");
+    c.snapshot_interval = prm.get_double("Snapshot interval");
+    c.force_interval    = prm.get_double("Force interval");
+    c.write_particles   = prm.get_bool("Write particles");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Simulation");
+    auto &s                   = c.settings;
+    s.time_step               = prm.get_double("Time step");
+    s.rayleigh_fraction       = prm.get_double("Rayleigh fraction");
+    s.gravity                 = get_vector(prm, "Gravity");
+    s.characteristic_velocity = prm.get_double("Characteristic velocity");
+    s.skin                    = prm.get_double("Skin");
+    s.damping   = prm.get("Damping model") == "edem" ? dem::DampingModel::edem : dem::DampingModel::calibrated;
+    s.threads   = prm.get_integer("Threads");
+    s.domain_min = get_vector(prm, "Domain min");
+    s.domain_max = get_vector(prm, "Domain max");
+    s.max_overlap_fraction = prm.get_double("Maximum overlap fraction");
+    s.stop_on_error        = prm.get("On error") == "stop";
+    for (const auto &item : split_string_list(prm.get("Phases")))
+      {
+        const auto colon = item.find(':');
+        c.phases.emplace_back(trim(item.substr(0, colon)), std::stod(item.substr(colon + 1)));
+      }
+    prm.leave_subsection();
+    if (!(s.domain_min.array() < s.domain_max.array()).all())
+      f.fail({"Simulation"}, "Domain max", "must exceed Domain min in x, y and z");
+    if (c.phases.empty())
+      f.fail({"Simulation"}, "Phases", "at least one phase is needed");
+
+    prm.enter_subsection("Particles");
+    c.particle_material    = read_material(f, {"Particles"}, "particles");
+    c.particle_interaction = read_interaction(prm);
+    prm.enter_subsection("Generation");
+    const std::vector<std::string> gp = {"Particles", "Generation"};
+    auto &fill                       = c.fill;
+    fill.box_min                     = get_vector(prm, "Region min");
+    fill.box_max                     = get_vector(prm, "Region max");
+    c.region_mesh_file               = resolve(f, prm.get("Region mesh"));
+    const std::string dist           = prm.get("Size distribution");
+    fill.sizes.kind   = dist == "constant" ? dem::SizeDistribution::Kind::constant
+                        : dist == "uniform" ? dem::SizeDistribution::Kind::uniform
+                                            : dem::SizeDistribution::Kind::normal;
+    fill.sizes.radius = prm.get_double("Radius");
+    fill.sizes.min    = prm.get_double("Minimum radius");
+    fill.sizes.max    = prm.get_double("Maximum radius");
+    fill.sizes.std    = prm.get_double("Standard deviation");
+    fill.count        = prm.get_integer("Count");
+    fill.solid_fraction = prm.get_double("Solid fraction");
+    fill.seed           = prm.get_integer("Seed");
+    fill.velocity       = get_vector(prm, "Initial velocity");
+    prm.leave_subsection();
+    if (!(fill.box_min.array() < fill.box_max.array()).all())
+      f.fail(gp, "Region max", "must exceed Region min in x, y and z");
+    if (dist != "constant" && !(fill.sizes.min > 0 && fill.sizes.max > fill.sizes.min))
+      f.fail(gp, "Maximum radius", "a " + dist + " distribution needs 0 < Minimum radius < Maximum radius");
+    if (dist == "normal" && !(fill.sizes.std > 0))
+      f.fail(gp, "Standard deviation", "must be positive for a normal distribution");
+    prm.enter_subsection("Settling");
+    c.settle_ke       = prm.get_double("Kinetic energy threshold");
+    c.settle_max_time = prm.get_double("Maximum time");
+    c.bed_file        = prm.get("Bed file");
+    prm.leave_subsection();
+    prm.leave_subsection();
+
+    for (const auto &name : get_list(prm, "Walls"))
+      {
+        const std::vector<std::string> wp = {"Wall " + name};
+        prm.enter_subsection(wp[0]);
+        DemCase::WallCase wc;
+        dem::Wall        &w = wc.wall;
+        w.name              = name;
+        const std::string geometry = prm.get("Geometry");
+        if (geometry == "box")
+          w.mesh = dem::primitives::box_container(get_vector(prm, "Box min"), get_vector(prm, "Box max"));
+        else if (geometry == "plate")
+          {
+            const std::string n    = prm.get("Plate normal");
+            const int         axis = n.back() - 'x';
+            const auto        size = split_string_list(prm.get("Plate size"));
+            w.mesh = dem::primitives::plate(get_vector(prm, "Plate centre"), axis, std::stod(size[0]),
+                                            std::stod(size[1]), 0, n[0] == '-');
+          }
+        else if (geometry == "chisel knife")
+          w.mesh = dem::primitives::chisel_knife(prm.get_double("Knife length"), prm.get_double("Knife height"),
+                                                 prm.get_double("Knife thickness"), prm.get_double("Bevel height"));
+        else
+          {
+            const std::string file = resolve(f, prm.get("File"));
+            if (file.empty())
+              f.fail(wp, "File", "Geometry = file needs a mesh file");
+            try
+              {
+                w.mesh = dem::read_surface_mesh(file, prm.get_double("File scale"));
+              }
+            catch (const InputError &e)
+              {
+                f.fail(wp, "File", e.what());
+              }
+          }
+        const Vec3 offset = get_vector(prm, "Offset");
+        w.mesh.translate(offset);
+        if (const double h = prm.get_double("Maximum edge length"); h > 0)
+          w.mesh.refine(h);
+        if (prm.get_bool("Flip normals"))
+          w.mesh.flip();
+        wc.material    = read_material(f, wp, name);
+        wc.interaction = read_interaction(prm);
+
+        prm.enter_subsection("Motion");
+        auto              mp   = wp;
+        mp.push_back("Motion");
+        const std::string type = prm.get("Type");
+        auto             &m    = w.motion;
+        m.kind   = type == "fixed" ? dem::WallMotion::Kind::fixed
+                   : type == "prescribed" ? dem::WallMotion::Kind::prescribed
+                                          : dem::WallMotion::Kind::rigid_body;
+        m.centre = get_vector(prm, "Centre") + offset;
+        for (const auto &[phase, v] : read_phase_vectors(f, mp, "Velocities", c.phases))
+          m.phases[phase].velocity = v;
+        for (const auto &[phase, v] : read_phase_vectors(f, mp, "Angular velocities", c.phases))
+          m.phases[phase].angular_velocity = v;
+        m.mass    = prm.get_double("Mass");
+        m.inertia = get_vector(prm, "Inertia");
+        m.gravity = prm.get_bool("Gravity");
+        static const std::vector<std::string> dofs = {"tx", "ty", "tz", "rx", "ry", "rz"};
+        for (const auto &d : get_list(prm, "Free degrees of freedom"))
+          m.free[std::find(dofs.begin(), dofs.end(), d) - dofs.begin()] = true;
+        if (m.kind == dem::WallMotion::Kind::rigid_body && !(m.mass > 0))
+          f.fail(mp, "Mass", "a rigid-body wall needs a positive mass");
+        prm.leave_subsection();
+        prm.leave_subsection();
+        c.walls.push_back(std::move(wc));
+      }
+    return c;
+  }
+
+  void build_simulation(const DemCase &c, dem::Simulation &sim)
+  {
+    const int particle_material = sim.add_material(c.particle_material);
+    sim.set_interaction(particle_material, particle_material, c.particle_interaction);
+    for (const auto &wc : c.walls)
+      {
+        dem::Wall w    = wc.wall;
+        w.material     = sim.add_material(wc.material);
+        sim.set_interaction(particle_material, w.material, wc.interaction);
+        sim.add_wall(std::move(w));
+      }
+  }
+} // namespace abrade::coupling

@@ -1,0 +1,28 @@
+#pragma once
+// A CSV file with a fixed header: one call per row, values written with full precision.
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace abrade::io
+{
+  class CsvWriter
+  {
+  public:
+    CsvWriter() = default;
+    CsvWriter(const std::string &path, const std::vector<std::string> &columns);
+    void open(const std::string &path, const std::vector<std::string> &columns);
+    bool is_open() const { return out.is_open(); }
+
+    /// Writes one row; the number of values must match the header.
+    void row(const std::vector<double> &values);
+    /// Writes one row whose first column is text (a name, a phase).
+    void row(const std::string &label, const std::vector<double> &values);
+    void flush() { out.flush(); }
+
+  private:
+    std::ofstream out;
+    std::string   path;
+    std::size_t   n_columns = 0;
+  };
+} // namespace abrade::io

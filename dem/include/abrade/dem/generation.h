@@ -1,0 +1,62 @@
+#pragma once
+// Filling a region with particles, reproducibly from a seed. Particles are placed on a jittered
+// cubic lattice whose spacing is the largest diameter (so they never overlap), at randomly
+// chosen lattice sites, in a box or inside a closed triangle mesh; a pour-and-settle run then
+// packs them (Simulation::settle).
+#include <abrade/dem/triangle_mesh.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace abrade::dem
+{
+  class Simulation;
+
+  struct SizeDistribution
+  {
+    enum class Kind
+    {
+      constant,
+      uniform,        ///< uniform in [min, max]
+      normal          ///< normal(mean, std), truncated to [min, max]
+    };
+    Kind   kind   = Kind::constant;
+    double radius = 0.0275; ///< constant radius / normal mean [m]
+    double min    = 0, max = 0, std = 0;
+
+    double largest() const { return kind == Kind::constant ? radius : max; }
+    double sample(std::mt19937_64 &rng) const;
+    /// Mean particle volume.
+    double mean_volume() const;
+  };
+
+  struct FillRegion
+  {
+    Vec3                box_min = Vec3::Zero(), box_max = Vec3::Zero();
+    const TriangleMesh *inside  = nullptr; ///< optional closed mesh: keep sites inside it
+    /// Meshes (walls) the particles must not touch: sites closer than a diameter are skipped.
+    std::vector<TriangleMesh> avoid;
+    SizeDistribution    sizes;
+    long                count          = 0;   ///< particles to place; 0: use solid_fraction
+    double              solid_fraction = 0.3; ///< of the region volume
+    std::uint64_t       seed           = 1;
+    int                 material       = 0;
+    Vec3                velocity       = Vec3::Zero();
+  };
+
+  /// Adds the particles to the simulation (ids continue from the largest existing id); returns
+  /// how many were added. Throws InputError when the region cannot hold them.
+  long fill_region(Simulation &sim, const FillRegion &region);
+
+  /// Point-in-closed-mesh test by ray parity (used by fill_region).
+  bool inside_mesh(const TriangleMesh &mesh, const Vec3 &p);
+
+  /// Saves the particle state (a settled bed) to a binary file, and reads it back. A bed
+  /// restarts every operating cycle from the same packing without settling again.
+  void save_bed(const Simulation &sim, const std::string &path);
+  /// Replaces the simulation's particles with those in @p path; throws InputError naming the
+  /// file if it is not a bed file or refers to unknown materials.
+  void load_bed(Simulation &sim, const std::string &path);
+} // namespace abrade::dem

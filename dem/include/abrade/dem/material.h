@@ -1,0 +1,60 @@
+#pragma once
+// Materials, particle-particle / particle-wall interaction properties, and the contact
+// coefficients precomputed per pair of materials (shared/reference/physics.md, section 1).
+#include <string>
+
+namespace abrade::dem
+{
+  struct Material
+  {
+    std::string name;
+    double      youngs_modulus = 0; ///< E [Pa]
+    double      poisson_ratio  = 0; ///< nu [-]
+    double      density        = 0; ///< rho [kg/m^3]
+    /// false: angular velocity is capped at 0 (the seed's non-rotating pellets).
+    bool rotation = true;
+
+    double shear_modulus() const { return youngs_modulus / (2 * (1 + poisson_ratio)); }
+    static Material from_shear_modulus(const std::string &name, double G, double nu, double rho,
+                                       bool rotation = true);
+  };
+
+  /// Properties of an interaction between two materials.
+  struct Interaction
+  {
+    double restitution      = 0.6; ///< e in (0, 1]
+    double friction         = 0.5; ///< static friction coefficient mu_s
+    double rolling_friction = 0.0; ///< mu_r, EDEM constant directional torque
+  };
+
+  /// How the normal/tangential damping follows from the restitution coefficient.
+  enum class DampingModel
+  {
+    edem,       ///< beta = ln e / sqrt(ln^2 e + pi^2), as documented by EDEM and LIGGGHTS
+    calibrated, ///< damping chosen so that a Hertz contact rebounds with exactly e
+  };
+
+  /// Everything the Hertz-Mindlin kernel needs for one pair of materials.
+  struct PairCoefficients
+  {
+    double e_star           = 0; ///< effective Young's modulus E*
+    double g_star           = 0; ///< effective shear modulus G*
+    double damping          = 0; ///< c = damping * sqrt(S m*)  (= -2 sqrt(5/6) beta for edem)
+    double friction         = 0;
+    double rolling_friction = 0;
+    double restitution      = 1;
+  };
+
+  PairCoefficients make_pair_coefficients(const Material &a, const Material &b,
+                                          const Interaction &i, DampingModel model);
+
+  /// EDEM's beta (negative for e < 1, zero for e = 1).
+  double edem_beta(double restitution);
+
+  /// Restitution that the damping factor @p damping (c = damping sqrt(S_n m*)) gives for a Hertz
+  /// contact; velocity independent. Found by integrating the dimensionless contact ODE.
+  double hertz_restitution(double damping);
+
+  /// Inverse of hertz_restitution(), by bisection.
+  double calibrated_damping(double restitution);
+} // namespace abrade::dem

@@ -1,0 +1,36 @@
+#pragma once
+// Particle state as a structure of arrays (one contiguous array per component), as LAMMPS and
+// DEM-Engine keep it: the force kernels stream through x, y, z, radius without touching data
+// they do not need, and a reorder is one permutation applied to every array.
+#include <cstdint>
+#include <vector>
+
+namespace abrade::dem
+{
+  struct ParticleStore
+  {
+    std::vector<double>       x, y, z;          ///< position [m]
+    std::vector<double>       vx, vy, vz;       ///< velocity [m/s]
+    std::vector<double>       wx, wy, wz;       ///< angular velocity [rad/s]
+    std::vector<double>       fx, fy, fz;       ///< force [N]
+    std::vector<double>       tx, ty, tz;       ///< torque [N m]
+    std::vector<double>       radius, mass;     ///< [m], [kg]
+    std::vector<double>       inv_mass, inv_inertia;
+    std::vector<int>          material;         ///< index into the simulation's materials
+    std::vector<std::int64_t> id;               ///< stable identifier (survives reordering)
+
+    std::size_t size() const { return x.size(); }
+
+    /// Appends a particle at rest; returns its index.
+    std::size_t add(std::int64_t id, double x, double y, double z, double radius, double density,
+                    int material);
+
+    /// Reorders (and possibly drops) particles: new particle k is old particle order[k].
+    void permute(const std::vector<std::size_t> &order);
+    void clear();
+
+  private:
+    template <typename F>
+    void for_each_array(F &&f);
+  };
+} // namespace abrade::dem

@@ -1,0 +1,87 @@
+#pragma once
+// A wall: a triangle mesh with a material and a rigid motion, plus what the particles do to it
+// (total force and torque, per-triangle impulses). The reference geometry never changes; the
+// current vertex positions are pose(reference) and are updated every step.
+#include <abrade/dem/triangle_mesh.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace abrade::dem
+{
+  /// Velocity of a wall during one named phase of the operating cycle.
+  struct PhaseVelocity
+  {
+    Vec3 velocity         = Vec3::Zero(); ///< [m/s]
+    Vec3 angular_velocity = Vec3::Zero(); ///< [rad/s] about the wall's current centre
+  };
+
+  struct WallMotion
+  {
+    enum class Kind
+    {
+      fixed,      ///< never moves
+      prescribed, ///< piecewise-constant velocity per phase (piecewise-linear position)
+      rigid_body  ///< free degrees of freedom driven by gravity and particle forces
+    };
+    Kind kind = Kind::fixed;
+    /// Rotation centre (a hinge point), moves with the wall. Torques are taken about it.
+    Vec3 centre = Vec3::Zero();
+    /// Prescribed velocities; phases not listed keep the wall at rest. For a rigid body, the
+    /// degrees of freedom that are not free follow this table.
+    std::map<std::string, PhaseVelocity> phases;
+
+    // rigid body
+    double               mass    = 0;             ///< [kg]
+    Vec3                 inertia = Vec3::Zero();  ///< principal moments about centre [kg m^2]
+    std::array<bool, 6>  free{};                  ///< tx, ty, tz, rx, ry, rz
+    bool                 gravity = true;          ///< does gravity act on the body
+  };
+
+  struct Wall
+  {
+    std::string  name;
+    TriangleMesh mesh;         ///< reference geometry
+    int          material = 0; ///< index into the simulation's materials
+    WallMotion   motion;
+
+    // --- state ---
+    Eigen::Matrix3d   rotation    = Eigen::Matrix3d::Identity();
+    Vec3              translation = Vec3::Zero();
+    Vec3              velocity         = Vec3::Zero();
+    Vec3              angular_velocity = Vec3::Zero();
+    std::vector<double> current;   ///< current vertex positions, x y z interleaved
+    std::vector<double> at_build;  ///< vertex positions at the last neighbour-list build
+
+    // --- loads (from particles, this step) ---
+    Vec3 force  = Vec3::Zero(); ///< total force on the wall [N]
+    Vec3 torque = Vec3::Zero(); ///< about the current centre [N m]
+    std::vector<double> normal_impulse;     ///< per triangle, accumulated |F_n| dt [N s]
+    std::vector<double> tangential_impulse; ///< per triangle, accumulated |F_t| dt [N s]
+
+    Vec3 current_centre() const { return motion.centre + translation; }
+    /// Velocity of the wall's material point at @p p.
+    Vec3 velocity_at(const Vec3 &p) const
+    {
+      return velocity + angular_velocity.cross(p - current_centre());
+    }
+
+    /// Sizes the state arrays and places the wall at its reference pose.
+    void initialise();
+    /// Sets the velocity the current phase prescribes (rigid bodies: the prescribed DOFs only).
+    void set_phase(const std::string &phase);
+    /// Advances the pose by dt with the current (angular) velocity and updates vertex positions.
+    void advance(double dt);
+    /// Rigid body: velocity update from this step's particle loads (and gravity).
+    void accelerate(const Vec3 &gravity, double dt);
+    /// Largest vertex displacement since the last neighbour-list build.
+    double max_displacement_since_build() const;
+    void   mark_build() { at_build = current; }
+    /// Current geometry of the wall as a mesh (reference topology).
+    TriangleMesh current_mesh() const;
+  };
+} // namespace abrade::dem

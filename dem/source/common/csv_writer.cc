@@ -1,0 +1,43 @@
+#include <abrade/common/csv_writer.h>
+#include <abrade/common/error.h>
+
+#include <iomanip>
+
+namespace abrade::io
+{
+  CsvWriter::CsvWriter(const std::string &path, const std::vector<std::string> &columns)
+  {
+    open(path, columns);
+  }
+
+  void CsvWriter::open(const std::string &p, const std::vector<std::string> &columns)
+  {
+    path = p;
+    out.open(path);
+    if (!out)
+      throw RunError("cannot write CSV file " + path);
+    n_columns = columns.size();
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      out << (i ? "," : "") << columns[i];
+    out << '\n' << std::setprecision(10);
+  }
+
+  void CsvWriter::row(const std::vector<double> &values)
+  {
+    if (values.size() != n_columns)
+      throw std::logic_error("CSV row width mismatch in " + path);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      out << (i ? "," : "") << values[i];
+    out << '\n';
+  }
+
+  void CsvWriter::row(const std::string &label, const std::vector<double> &values)
+  {
+    if (values.size() + 1 != n_columns)
+      throw std::logic_error("CSV row width mismatch in " + path);
+    out << label;
+    for (double v : values)
+      out << ',' << v;
+    out << '\n';
+  }
+} // namespace abrade::io

@@ -1,0 +1,118 @@
+#include <abrade/common/error.h>
+#include <abrade/common/json.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace abrade::io
+{
+  Json::Json(const std::vector<double> &v) : value(Array(v.begin(), v.end())) {}
+
+  Json &Json::operator[](const std::string &key)
+  {
+    if (std::holds_alternative<std::nullptr_t>(value))
+      value = Object();
+    auto &obj = std::get<Object>(value);
+    for (auto &kv : obj)
+      if (kv.first == key)
+        return kv.second;
+    obj.emplace_back(key, Json());
+    return obj.back().second;
+  }
+
+  void Json::push_back(Json v)
+  {
+    if (std::holds_alternative<std::nullptr_t>(value))
+      value = Array();
+    std::get<Array>(value).push_back(std::move(v));
+  }
+
+  namespace
+  {
+    void escape(std::string &out, const std::string &s)
+    {
+      out += '"';
+      for (char c : s)
+        switch (c)
+          {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            default:
+              if (static_cast<unsigned char>(c) < 0x20)
+                {
+                  char buf[8];
+                  std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                  out += buf;
+                }
+              else
+                out += c;
+          }
+      out += '"';
+    }
+  } // namespace
+
+  void Json::dump(std::string &out, int indent, int level) const
+  {
+    const std::string pad(indent * (level + 1), ' '), pad_end(indent * level, ' ');
+    const char       *nl = indent ? "\n" : "";
+    if (std::holds_alternative<std::nullptr_t>(value))
+      out += "null";
+    else if (auto b = std::get_if<bool>(&value))
+      out += *b ? "true" : "false";
+    else if (auto d = std::get_if<double>(&value))
+      {
+        if (!std::isfinite(*d))
+          out += "null";
+        else
+          {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.12g", *d);
+            out += buf;
+          }
+      }
+    else if (auto s = std::get_if<std::string>(&value))
+      escape(out, *s);
+    else if (auto o = std::get_if<Object>(&value))
+      {
+        out += '{';
+        for (std::size_t i = 0; i < o->size(); ++i)
+          {
+            out += (i ? "," : "");
+            out += nl + pad;
+            escape(out, (*o)[i].first);
+            out += indent ? ": " : ":";
+            (*o)[i].second.dump(out, indent, level + 1);
+          }
+        out += (o->empty() ? "" : nl + pad_end) + "}";
+      }
+    else
+      {
+        const auto &a = std::get<Array>(value);
+        out += '[';
+        for (std::size_t i = 0; i < a.size(); ++i)
+          {
+            out += (i ? ", " : "");
+            a[i].dump(out, 0, 0);
+          }
+        out += ']';
+      }
+  }
+
+  std::string Json::dump(int indent) const
+  {
+    std::string out;
+    dump(out, indent, 0);
+    return out + "\n";
+  }
+
+  void Json::write(const std::string &path) const
+  {
+    std::ofstream f(path);
+    if (!f)
+      throw RunError("cannot write " + path);
+    f << dump();
+  }
+} // namespace abrade::io

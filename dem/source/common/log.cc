@@ -1,0 +1,13 @@
+#include <abrade/common/log.h>
+
+#include <iostream>
+
+namespace abrade::io
+{
+  void Log::line(const std::string &text)
+  {
+    std::cout << text << std::endl;
+    if (file)
+      file << text << std::endl;
+  }
+} // namespace abrade::io

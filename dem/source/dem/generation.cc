@@ -1,0 +1,229 @@
+#include <abrade/common/error.h>
+#include <abrade/dem/closest_point.h>
+#include <abrade/dem/generation.h>
+#include <abrade/dem/simulation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace abrade::dem
+{
+  namespace
+  {
+    // uniform in [0, 1) from 53 random bits: identical on every platform (std's distributions
+    // are implementation-defined)
+    double uniform01(std::mt19937_64 &rng) { return (rng() >> 11) * 0x1.0p-53; }
+
+    double standard_normal(std::mt19937_64 &rng)
+    {
+      double u1 = uniform01(rng);
+      while (u1 <= 0)
+        u1 = uniform01(rng);
+      return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * uniform01(rng));
+    }
+  } // namespace
+
+  double SizeDistribution::sample(std::mt19937_64 &rng) const
+  {
+    switch (kind)
+      {
+        case Kind::constant: return radius;
+        case Kind::uniform: return min + (max - min) * uniform01(rng);
+        case Kind::normal:
+          for (int tries = 0; tries < 1000; ++tries)
+            {
+              const double r = radius + std * standard_normal(rng);
+              if (r >= min && r <= max)
+                return r;
+            }
+          return std::clamp(radius, min, max);
+      }
+    return radius;
+  }
+
+  double SizeDistribution::mean_volume() const
+  {
+    // by sampling: exact enough to choose a particle count
+    std::mt19937_64 rng(12345);
+    double          v = 0;
+    const int       n = kind == Kind::constant ? 1 : 20000;
+    for (int k = 0; k < n; ++k)
+      v += std::pow(sample(rng), 3);
+    return 4.0 / 3.0 * M_PI * v / n;
+  }
+
+  bool inside_mesh(const TriangleMesh &mesh, const Vec3 &p)
+  {
+    // ray along a slightly skewed direction to avoid hitting edges exactly
+    const Vec3 dir = Vec3(0.5773, 0.5774, 0.5775).normalized();
+    int        crossings = 0;
+    for (const auto &t : mesh.triangles)
+      {
+        const Vec3  &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        const Vec3   e1 = b - a, e2 = c - a, pv = dir.cross(e2);
+        const double det = e1.dot(pv);
+        if (std::abs(det) < 1e-300)
+          continue;
+        const Vec3   tv = p - a;
+        const double u  = tv.dot(pv) / det;
+        if (u < 0 || u > 1)
+          continue;
+        const Vec3   qv = tv.cross(e1);
+        const double v  = dir.dot(qv) / det;
+        if (v < 0 || u + v > 1)
+          continue;
+        if (e2.dot(qv) / det > 0)
+          ++crossings;
+      }
+    return crossings % 2 == 1;
+  }
+
+  long fill_region(Simulation &sim, const FillRegion &f)
+  {
+    const double     r_big = f.sizes.largest();
+    const Vec3       extent = f.box_max - f.box_min;
+    if (!(r_big > 0) || !(extent.array() > 2.04 * r_big).all())
+      throw InputError("particle generation", "the fill box must be larger than a particle diameter in every direction");
+    // sites half a spacing in from the box: a jittered particle never leaves its lattice cell
+    const double spacing = 2 * r_big * 1.02;
+    const long   nx = long(extent[0] / spacing), ny = long(extent[1] / spacing), nz = long(extent[2] / spacing);
+
+    // sites that would put a particle against (or inside) a wall are skipped
+    std::vector<std::pair<Vec3, Vec3>> boxes;
+    std::vector<char>                  closed;
+    for (const auto &m : f.avoid)
+      {
+        closed.push_back(m.is_closed());
+        Vec3 lo, hi;
+        m.bounding_box(lo, hi);
+        boxes.emplace_back(lo - Vec3::Constant(2 * r_big), hi + Vec3::Constant(2 * r_big));
+      }
+    auto clear_of_walls = [&](const Vec3 &p) {
+      for (std::size_t k = 0; k < f.avoid.size(); ++k)
+        {
+          if (!(p.array() >= boxes[k].first.array()).all() || !(p.array() <= boxes[k].second.array()).all())
+            continue;
+          const auto &m = f.avoid[k];
+          if (closed[k] && inside_mesh(m, p))
+            return false;
+          for (const auto &t : m.triangles)
+            {
+              const auto cp = closest_point_on_triangle(p.data(), m.vertices[t[0]].data(),
+                                                        m.vertices[t[1]].data(), m.vertices[t[2]].data());
+              if ((p - Vec3(cp.p[0], cp.p[1], cp.p[2])).norm() < 1.5 * r_big)
+                return false;
+            }
+        }
+      return true;
+    };
+
+    // candidate lattice sites (inside the mesh, if one is given)
+    std::vector<Vec3> sites;
+    for (long k = 0; k < nz; ++k)
+      for (long j = 0; j < ny; ++j)
+        for (long i = 0; i < nx; ++i)
+          {
+            const Vec3 p = f.box_min + spacing * Vec3(i + 0.5, j + 0.5, k + 0.5);
+            if ((!f.inside || inside_mesh(*f.inside, p)) && clear_of_walls(p))
+              sites.push_back(p);
+          }
+    const double region_volume = f.inside ? std::abs(f.inside->volume()) : extent.prod();
+    const long   wanted = f.count > 0 ? f.count : std::lround(f.solid_fraction * region_volume / f.sizes.mean_volume());
+    if (wanted > static_cast<long>(sites.size()))
+      throw InputError("particle generation",
+                       "cannot place " + std::to_string(wanted) + " particles: the region holds at most " +
+                         std::to_string(sites.size()) + " of radius " + std::to_string(r_big) +
+                         " m without overlap (enlarge the region or reduce the count / solid fraction)");
+
+    // choose sites: a seeded shuffle, then fill from the bottom up (a pour)
+    std::mt19937_64 rng(f.seed);
+    for (std::size_t k = sites.size(); k > 1; --k)
+      std::swap(sites[k - 1], sites[static_cast<std::size_t>(uniform01(rng) * k)]);
+    sites.resize(wanted);
+    std::stable_sort(sites.begin(), sites.end(), [](const Vec3 &a, const Vec3 &b) { return a[2] < b[2]; });
+
+    auto        &P       = sim.particles();
+    std::int64_t next_id = 0;
+    for (auto id : P.id)
+      next_id = std::max(next_id, id + 1);
+    const double density = sim.materials().at(f.material).density;
+    for (const Vec3 &s : sites)
+      {
+        const double r      = f.sizes.sample(rng);
+        const double jitter = 0.5 * (spacing - 2 * r);
+        Vec3         p      = s;
+        for (int d = 0; d < 3; ++d)
+          p[d] += jitter * (2 * uniform01(rng) - 1);
+        const std::size_t k = P.add(next_id++, p[0], p[1], p[2], r, density, f.material);
+        P.vx[k] = f.velocity[0], P.vy[k] = f.velocity[1], P.vz[k] = f.velocity[2];
+      }
+    return wanted;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  namespace
+  {
+    constexpr char bed_magic[8] = {'A', 'B', 'R', 'B', 'E', 'D', '0', '1'};
+  }
+
+  void save_bed(const Simulation &sim, const std::string &path)
+  {
+    std::ofstream out(path, std::ios::binary);
+    if (!out)
+      throw RunError("cannot write bed file " + path);
+    const auto         &P = sim.particles();
+    const std::uint64_t n = P.size();
+    out.write(bed_magic, 8);
+    out.write(reinterpret_cast<const char *>(&n), sizeof n);
+    const double t = sim.time();
+    out.write(reinterpret_cast<const char *>(&t), sizeof t);
+    for (const auto *a : {&P.x, &P.y, &P.z, &P.vx, &P.vy, &P.vz, &P.wx, &P.wy, &P.wz, &P.radius, &P.mass})
+      out.write(reinterpret_cast<const char *>(a->data()), n * sizeof(double));
+    out.write(reinterpret_cast<const char *>(P.material.data()), n * sizeof(int));
+    out.write(reinterpret_cast<const char *>(P.id.data()), n * sizeof(std::int64_t));
+    if (!out)
+      throw RunError("error writing bed file " + path);
+  }
+
+  void load_bed(Simulation &sim, const std::string &path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw InputError(path, "cannot open bed file");
+    char magic[8];
+    in.read(magic, 8);
+    if (!in || std::memcmp(magic, bed_magic, 8) != 0)
+      throw InputError(path, "not an abrade bed file (bad header)");
+    std::uint64_t n;
+    double        t;
+    in.read(reinterpret_cast<char *>(&n), sizeof n);
+    in.read(reinterpret_cast<char *>(&t), sizeof t);
+    if (!in || n > (1ULL << 34))
+      throw InputError(path, "corrupt bed file (particle count)");
+    auto &P = sim.particles();
+    P.clear();
+    std::vector<std::vector<double>> a(11, std::vector<double>(n));
+    for (auto &v : a)
+      in.read(reinterpret_cast<char *>(v.data()), n * sizeof(double));
+    std::vector<int>          mat(n);
+    std::vector<std::int64_t> id(n);
+    in.read(reinterpret_cast<char *>(mat.data()), n * sizeof(int));
+    in.read(reinterpret_cast<char *>(id.data()), n * sizeof(std::int64_t));
+    if (!in)
+      throw InputError(path, "truncated bed file");
+    const int n_mat = static_cast<int>(sim.materials().size());
+    for (std::uint64_t k = 0; k < n; ++k)
+      {
+        if (mat[k] < 0 || mat[k] >= n_mat)
+          throw InputError(path, "particle " + std::to_string(id[k]) + " has unknown material " + std::to_string(mat[k]));
+        const double r = a[9][k];
+        const double density = a[10][k] / (4.0 / 3.0 * M_PI * r * r * r);
+        const auto   i = P.add(id[k], a[0][k], a[1][k], a[2][k], r, density, mat[k]);
+        P.mass[i] = a[10][k], P.inv_mass[i] = 1 / a[10][k];
+        P.vx[i] = a[3][k], P.vy[i] = a[4][k], P.vz[i] = a[5][k];
+        P.wx[i] = a[6][k], P.wy[i] = a[7][k], P.wz[i] = a[8][k];
+      }
+  }
+} // namespace abrade::dem

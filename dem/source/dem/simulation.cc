@@ -1,0 +1,1010 @@
+#include <abrade/common/error.h>
+#include <abrade/dem/closest_point.h>
+#include <abrade/dem/hertz_mindlin.h>
+#include <abrade/dem/simulation.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace abrade::dem
+{
+  // Neighbour lists, histories and per-thread scratch space: everything the time loop needs
+  // that is not particle state.
+  struct Simulation::Impl
+  {
+    int n_threads = 1;
+
+    // particle-particle half list (CSR) with the tangential history of each pair
+    std::vector<std::size_t> offsets;
+    std::vector<int>         neighbours;
+    std::vector<double>      shear; // 3 per pair, for the row particle relative to the column
+
+    // particle-wall candidates (CSR) and up to K contact histories per particle
+    static constexpr int        K = 4;
+    std::vector<std::size_t>    wall_offsets;
+    std::vector<int>            candidate_wall, candidate_triangle;
+    std::vector<int>            hist_wall, hist_tri; // K per particle, -1: free slot
+    std::vector<double>         hist_shear;          // 3 K per particle
+    std::vector<unsigned char>  hist_used;           // K per particle
+
+    // positions at the last build
+    std::vector<double> x0, y0, z0;
+    double              max_displacement = 0;
+
+    // cell grid
+    double              cell = 1;
+    Vec3                lo;
+    long                nx = 1, ny = 1, nz = 1;
+    std::vector<int>    cell_start;
+
+    // per-thread force buffers (thread 0 writes to the particle arrays) and wall loads
+    std::vector<std::vector<double>> buffers; // 6 N per thread >= 1
+    std::vector<std::vector<double>> wall_loads; // 6 per wall per thread
+    ContactLog                       log;
+
+    // problems found during a step
+    long   first_bad_particle = -1;
+    double worst_overlap_ratio = 0;
+    long   worst_overlap_i = -1, worst_overlap_j = -1;
+    bool   force_rebuild = true;
+  };
+
+  namespace
+  {
+    inline bool triangles_share_vertex(const std::array<int, 3> &a, const std::array<int, 3> &b)
+    {
+      for (int p : a)
+        for (int q : b)
+          if (p == q)
+            return true;
+      return false;
+    }
+
+    inline bool triangle_has(const std::array<int, 3> &t, int v)
+    {
+      return t[0] == v || t[1] == v || t[2] == v;
+    }
+  } // namespace
+
+  Simulation::Simulation(const Settings &s) : config(s), impl(std::make_unique<Impl>())
+  {
+    impl->n_threads = config.threads > 0 ? config.threads : omp_get_max_threads();
+  }
+
+  Simulation::Simulation(Simulation &&) noexcept = default;
+  Simulation &Simulation::operator=(Simulation &&) noexcept = default;
+  Simulation::~Simulation() = default;
+
+  int Simulation::add_material(const Material &m)
+  {
+    if (!(m.youngs_modulus > 0 && m.density > 0 && m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
+      throw InputError("material '" + m.name + "'", "needs E > 0, density > 0, -1 < nu < 0.5");
+    const std::size_t n = mats.size();
+    std::vector<Interaction> ni((n + 1) * (n + 1));
+    std::vector<bool>        ns((n + 1) * (n + 1), false);
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = 0; b < n; ++b)
+        {
+          ni[a * (n + 1) + b] = interactions[a * n + b];
+          ns[a * (n + 1) + b] = interaction_set[a * n + b];
+        }
+    interactions.swap(ni);
+    interaction_set.swap(ns);
+    mats.push_back(m);
+    is_set_up = false;
+    return static_cast<int>(n);
+  }
+
+  void Simulation::set_interaction(int a, int b, const Interaction &i)
+  {
+    const std::size_t n = mats.size();
+    interactions[a * n + b] = interactions[b * n + a] = i;
+    interaction_set[a * n + b] = interaction_set[b * n + a] = true;
+    is_set_up = false;
+  }
+
+  int Simulation::add_wall(Wall w)
+  {
+    if (w.material < 0 || w.material >= static_cast<int>(mats.size()))
+      throw InputError("wall '" + w.name + "'", "unknown material index");
+    if (w.mesh.n_triangles() == 0)
+      throw InputError("wall '" + w.name + "'", "mesh has no triangles");
+    if (w.motion.kind == WallMotion::Kind::rigid_body && !(w.motion.mass > 0))
+      throw InputError("wall '" + w.name + "'", "a rigid-body wall needs a positive mass");
+    w.initialise();
+    walls.push_back(std::move(w));
+    is_set_up = false;
+    return static_cast<int>(walls.size()) - 1;
+  }
+
+  int Simulation::wall_index(const std::string &name) const
+  {
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      if (walls[w].name == name)
+        return static_cast<int>(w);
+    return -1;
+  }
+
+  void Simulation::add_hook(std::shared_ptr<StepHook> hook) { hooks.push_back(std::move(hook)); }
+
+  void Simulation::warn(const std::string &w) { warnings.push_back(w); }
+
+  std::vector<std::string> Simulation::take_warnings()
+  {
+    std::vector<std::string> w;
+    w.swap(warnings);
+    return w;
+  }
+
+  double Simulation::rayleigh_time_step() const
+  {
+    double dt = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < store.size(); ++i)
+      {
+        const Material &m = mats[store.material[i]];
+        dt = std::min(dt, M_PI * store.radius[i] * std::sqrt(m.density / m.shear_modulus()) /
+                            (0.1631 * m.poisson_ratio + 0.8766));
+      }
+    return dt;
+  }
+
+  void Simulation::setup()
+  {
+    const std::size_t nm = mats.size();
+    if (nm == 0)
+      throw InputError("", "no materials defined");
+    coefficients.assign(nm * nm, PairCoefficients());
+    for (std::size_t a = 0; a < nm; ++a)
+      for (std::size_t b = 0; b < nm; ++b)
+        coefficients[a * nm + b] =
+          make_pair_coefficients(mats[a], mats[b], interactions[a * nm + b], config.damping);
+
+    // Non-rotating materials: zero inverse inertia keeps the angular velocity at 0.
+    any_rotation = false;
+    for (std::size_t i = 0; i < store.size(); ++i)
+      {
+        const bool rot = mats[store.material[i]].rotation;
+        store.inv_inertia[i] = rot ? 1 / (0.4 * store.mass[i] * store.radius[i] * store.radius[i]) : 0.0;
+        if (!rot)
+          store.wx[i] = store.wy[i] = store.wz[i] = 0;
+        any_rotation |= rot;
+      }
+
+    // Time step: explicit, or a fraction of the Rayleigh time step of the smallest particle.
+    double r_min = std::numeric_limits<double>::infinity(), r_max = 0;
+    for (double r : store.radius)
+      r_min = std::min(r_min, r), r_max = std::max(r_max, r);
+    if (store.size() == 0)
+      r_min = r_max = 1;
+    time_step = config.time_step > 0 ? config.time_step : config.rayleigh_fraction * rayleigh_time_step();
+    if (!(time_step > 0) || !std::isfinite(time_step))
+      throw InputError("", "cannot choose a time step: set one explicitly, or add particles");
+
+    // Warn when dt exceeds a tenth of the shortest Hertz contact time at the characteristic
+    // speed (smallest particle against each material, walls as infinitely heavy).
+    for (std::size_t i = 0; i < store.size(); ++i)
+      if (store.radius[i] == r_min)
+        {
+          for (std::size_t b = 0; b < nm; ++b)
+            {
+              const auto  &c      = pair(store.material[i], b);
+              const bool   wall_b = std::any_of(walls.begin(), walls.end(),
+                                              [b](const Wall &w) { return w.material == int(b); });
+              const double m_eff  = wall_b ? store.mass[i] : store.mass[i] / 2;
+              const double r_eff  = wall_b ? r_min : r_min / 2;
+              const double th     = 2.87 * std::pow(m_eff * m_eff / (r_eff * c.e_star * c.e_star *
+                                                                   config.characteristic_velocity), 0.2);
+              if (time_step > th / 10)
+                {
+                  std::ostringstream s;
+                  s << "time step " << time_step << " s exceeds a tenth of the Hertz contact time ("
+                    << th << " s) of material '" << mats[store.material[i]].name << "' against '"
+                    << mats[b].name << "' at " << config.characteristic_velocity << " m/s";
+                  warn(s.str());
+                }
+            }
+          break;
+        }
+
+    skin = config.skin > 0 ? config.skin : 0.2 * r_min;
+    impl->buffers.assign(impl->n_threads, {});
+    impl->wall_loads.assign(impl->n_threads, std::vector<double>(6 * walls.size()));
+    impl->log.per_thread.assign(impl->n_threads, {});
+    for (auto &l : impl->log.per_thread)
+      l.reserve(1024);
+    const std::size_t n = store.size();
+    impl->hist_wall.resize(Impl::K * n, -1);
+    impl->hist_tri.resize(Impl::K * n, -1);
+    impl->hist_shear.resize(3 * Impl::K * n, 0.0);
+    impl->hist_used.resize(Impl::K * n, 0);
+    impl->force_rebuild = true;
+    build_neighbour_lists();
+    compute_forces();
+    is_set_up = true;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Neighbour lists
+  // ---------------------------------------------------------------------------------------------
+
+  bool Simulation::needs_rebuild() const
+  {
+    if (impl->force_rebuild)
+      return true;
+    const double dp = impl->max_displacement;
+    if (2 * dp > skin)
+      return true;
+    for (const auto &w : walls)
+      if (w.motion.kind != WallMotion::Kind::fixed && dp + w.max_displacement_since_build() > skin)
+        return true;
+    return false;
+  }
+
+  void Simulation::build_neighbour_lists()
+  {
+    Impl             &m = *impl;
+    const std::size_t n_old = store.size();
+
+    // 1. Grid over the particles that are still inside the domain.
+    std::vector<char> keep(n_old, 1);
+    Vec3              lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    double            r_max = 0;
+    for (std::size_t i = 0; i < n_old; ++i)
+      {
+        const Vec3 p(store.x[i], store.y[i], store.z[i]);
+        if (!(p.array() >= config.domain_min.array()).all() || !(p.array() <= config.domain_max.array()).all())
+          {
+            keep[i] = 0; // lost; reported by check_step() before we get here
+            continue;
+          }
+        lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+        r_max = std::max(r_max, store.radius[i]);
+      }
+    if (lo[0] > hi[0])
+      lo = hi = Vec3::Zero();
+    m.cell = std::max(2 * r_max + skin, 1e-12);
+    // keep the number of cells bounded (a few particles far apart must not allocate a huge grid)
+    const double max_cells = 8.0 * std::max<std::size_t>(n_old, 64);
+    while (((hi - lo) / m.cell).array().floor().prod() > max_cells)
+      m.cell *= 1.5;
+    m.lo = lo - Vec3::Constant(1e-9);
+    m.nx = std::max(1L, long((hi[0] - m.lo[0]) / m.cell) + 1);
+    m.ny = std::max(1L, long((hi[1] - m.lo[1]) / m.cell) + 1);
+    m.nz = std::max(1L, long((hi[2] - m.lo[2]) / m.cell) + 1);
+    const long n_cells = m.nx * m.ny * m.nz;
+    auto cell_of = [&m](double x, double y, double z) {
+      const long i = std::clamp(long((x - m.lo[0]) / m.cell), 0L, m.nx - 1);
+      const long j = std::clamp(long((y - m.lo[1]) / m.cell), 0L, m.ny - 1);
+      const long k = std::clamp(long((z - m.lo[2]) / m.cell), 0L, m.nz - 1);
+      return (k * m.ny + j) * m.nx + i;
+    };
+
+    // 2. Sort particles by cell (counting sort), dropping lost ones.
+    std::vector<long> cell_index(n_old);
+    m.cell_start.assign(n_cells + 1, 0);
+    for (std::size_t i = 0; i < n_old; ++i)
+      if (keep[i])
+        {
+          cell_index[i] = cell_of(store.x[i], store.y[i], store.z[i]);
+          ++m.cell_start[cell_index[i] + 1];
+        }
+    for (long c = 0; c < n_cells; ++c)
+      m.cell_start[c + 1] += m.cell_start[c];
+    const std::size_t n = m.cell_start[n_cells];
+    std::vector<std::size_t> order(n);
+    {
+      std::vector<int> fill(m.cell_start.begin(), m.cell_start.end() - 1);
+      for (std::size_t i = 0; i < n_old; ++i)
+        if (keep[i])
+          order[fill[cell_index[i]]++] = i;
+    }
+    std::vector<long> old_to_new(n_old, -1);
+    for (std::size_t k = 0; k < n; ++k)
+      old_to_new[order[k]] = static_cast<long>(k);
+    store.permute(order);
+
+    auto permute_slots = [&order, n](auto &v, int per) {
+      std::remove_reference_t<decltype(v)> w(per * n);
+      for (std::size_t k = 0; k < n; ++k)
+        for (int s = 0; s < per; ++s)
+          w[per * k + s] = v[per * order[k] + s];
+      v.swap(w);
+    };
+    permute_slots(m.hist_wall, Impl::K);
+    permute_slots(m.hist_tri, Impl::K);
+    permute_slots(m.hist_shear, 3 * Impl::K);
+    permute_slots(m.hist_used, Impl::K);
+
+    // 3. Half neighbour list: own cell (j > i) and the 13 forward neighbour cells.
+    static const int stencil[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
+                                       {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
+                                       {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
+    std::vector<std::size_t> old_offsets;
+    std::vector<int>         old_neighbours;
+    std::vector<double>      old_shear;
+    old_offsets.swap(m.offsets);
+    old_neighbours.swap(m.neighbours);
+    old_shear.swap(m.shear);
+    m.offsets.assign(n + 1, 0);
+
+    const double *X = store.x.data(), *Y = store.y.data(), *Z = store.z.data(), *R = store.radius.data();
+    const double  sk = skin;
+    auto for_each_candidate = [&](std::size_t i, auto &&visit) {
+      const long c  = cell_of(X[i], Y[i], Z[i]);
+      const long ci = c % m.nx, cj = (c / m.nx) % m.ny, ck = c / (m.nx * m.ny);
+      for (int j = m.cell_start[c]; j < m.cell_start[c + 1]; ++j)
+        if (std::size_t(j) > i)
+          visit(j);
+      for (const auto &s : stencil)
+        {
+          const long a = ci + s[0], b = cj + s[1], d = ck + s[2];
+          if (a < 0 || b < 0 || d < 0 || a >= m.nx || b >= m.ny || d >= m.nz)
+            continue;
+          const long cc = (d * m.ny + b) * m.nx + a;
+          for (int j = m.cell_start[cc]; j < m.cell_start[cc + 1]; ++j)
+            visit(j);
+        }
+    };
+    auto close = [&](std::size_t i, int j) {
+      const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
+      const double cut = R[i] + R[j] + sk;
+      return dx * dx + dy * dy + dz * dz < cut * cut;
+    };
+#pragma omp parallel for schedule(static) num_threads(m.n_threads)
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        std::size_t count = 0;
+        for_each_candidate(i, [&](int j) { count += close(i, j); });
+        m.offsets[i + 1] = count;
+      }
+    for (std::size_t i = 0; i < n; ++i)
+      m.offsets[i + 1] += m.offsets[i];
+    m.neighbours.resize(m.offsets[n]);
+    m.shear.assign(3 * m.offsets[n], 0.0);
+#pragma omp parallel for schedule(static) num_threads(m.n_threads)
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        std::size_t k = m.offsets[i];
+        for_each_candidate(i, [&](int j) {
+          if (close(i, j))
+            m.neighbours[k++] = j;
+        });
+        // carry over the tangential history of pairs that were in the old list
+        if (old_offsets.empty())
+          continue;
+        for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)
+          {
+            const std::size_t oi = order[i], oj = order[m.neighbours[q]];
+            auto find = [&](std::size_t row, std::size_t col) -> long {
+              for (std::size_t p = old_offsets[row]; p < old_offsets[row + 1]; ++p)
+                if (std::size_t(old_neighbours[p]) == col)
+                  return static_cast<long>(p);
+              return -1;
+            };
+            double sign = 1;
+            long   p    = find(oi, oj);
+            if (p < 0)
+              {
+                p    = find(oj, oi);
+                sign = -1;
+              }
+            if (p >= 0)
+              for (int d = 0; d < 3; ++d)
+                m.shear[3 * q + d] = sign * old_shear[3 * p + d];
+          }
+      }
+
+    // 4. Wall candidates: particles within radius + skin of each triangle.
+    std::vector<std::vector<std::array<int, 3>>> found(m.n_threads);
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      {
+        const Wall  &wall = walls[w];
+        const double *V   = wall.current.data();
+#pragma omp parallel for schedule(dynamic, 16) num_threads(m.n_threads)
+        for (std::size_t t = 0; t < wall.mesh.n_triangles(); ++t)
+          {
+            const auto   &tri = wall.mesh.triangles[t];
+            const double *a = V + 3 * tri[0], *b = V + 3 * tri[1], *c = V + 3 * tri[2];
+            long          lo_c[3], hi_c[3];
+            const long    dims[3] = {m.nx, m.ny, m.nz};
+            bool          empty   = false;
+            for (int d = 0; d < 3; ++d)
+              {
+                const double mn = std::min({a[d], b[d], c[d]}) - r_max - sk;
+                const double mx = std::max({a[d], b[d], c[d]}) + r_max + sk;
+                lo_c[d] = std::max(0L, long(std::floor((mn - m.lo[d]) / m.cell)));
+                hi_c[d] = std::min(dims[d] - 1, long(std::floor((mx - m.lo[d]) / m.cell)));
+                empty |= lo_c[d] > hi_c[d];
+              }
+            if (empty)
+              continue;
+            auto &out = found[omp_get_thread_num()];
+            for (long kk = lo_c[2]; kk <= hi_c[2]; ++kk)
+              for (long jj = lo_c[1]; jj <= hi_c[1]; ++jj)
+                for (long ii = lo_c[0]; ii <= hi_c[0]; ++ii)
+                  {
+                    const long cc = (kk * m.ny + jj) * m.nx + ii;
+                    for (int p = m.cell_start[cc]; p < m.cell_start[cc + 1]; ++p)
+                      {
+                        const double q[3] = {X[p], Y[p], Z[p]};
+                        const auto   cp   = closest_point_on_triangle(q, a, b, c);
+                        const double dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
+                        const double cut = R[p] + sk;
+                        if (dx * dx + dy * dy + dz * dz < cut * cut)
+                          out.push_back({p, int(w), int(t)});
+                      }
+                  }
+          }
+      }
+    m.wall_offsets.assign(n + 1, 0);
+    for (const auto &f : found)
+      for (const auto &e : f)
+        ++m.wall_offsets[e[0] + 1];
+    for (std::size_t i = 0; i < n; ++i)
+      m.wall_offsets[i + 1] += m.wall_offsets[i];
+    m.candidate_wall.resize(m.wall_offsets[n]);
+    m.candidate_triangle.resize(m.wall_offsets[n]);
+    {
+      std::vector<std::size_t> fill(m.wall_offsets.begin(), m.wall_offsets.end() - 1);
+      for (const auto &f : found)
+        for (const auto &e : f)
+          {
+            const std::size_t k   = fill[e[0]]++;
+            m.candidate_wall[k]     = e[1];
+            m.candidate_triangle[k] = e[2];
+          }
+    }
+
+    // 5. Reference positions for the displacement criterion.
+    m.x0 = store.x, m.y0 = store.y, m.z0 = store.z;
+    m.max_displacement = 0;
+    for (auto &w : walls)
+      w.mark_build();
+    for (auto &b : m.buffers)
+      b.assign(6 * n, 0.0);
+    m.force_rebuild = false;
+    ++stats.rebuilds;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Forces
+  // ---------------------------------------------------------------------------------------------
+
+  template <bool rotation>
+  void Simulation::pair_forces()
+  {
+    Impl             &m  = *impl;
+    const std::size_t n  = store.size();
+    const std::size_t nm = mats.size();
+    const double      dt = time_step;
+    ParticleStore    &P  = store;
+    const double     *X = P.x.data(), *Y = P.y.data(), *Z = P.z.data(), *R = P.radius.data(),
+                 *M = P.mass.data(), *VX = P.vx.data(), *VY = P.vy.data(), *VZ = P.vz.data(),
+                 *WX = P.wx.data(), *WY = P.wy.data(), *WZ = P.wz.data();
+    const int *MAT = P.material.data();
+
+    double worst = 0;
+    long   wi = -1, wj = -1;
+#pragma omp parallel num_threads(m.n_threads)
+    {
+      const int tid = omp_get_thread_num();
+      double   *fx, *fy, *fz, *tx, *ty, *tz;
+      if (tid == 0)
+        fx = P.fx.data(), fy = P.fy.data(), fz = P.fz.data(), tx = P.tx.data(), ty = P.ty.data(),
+        tz = P.tz.data();
+      else
+        {
+          double *b = m.buffers[tid].data();
+          fx = b, fy = b + n, fz = b + 2 * n, tx = b + 3 * n, ty = b + 4 * n, tz = b + 5 * n;
+        }
+      std::fill(fx, fx + n, 0.0), std::fill(fy, fy + n, 0.0), std::fill(fz, fz + n, 0.0);
+      if (rotation)
+        std::fill(tx, tx + n, 0.0), std::fill(ty, ty + n, 0.0), std::fill(tz, tz + n, 0.0);
+      double my_worst = 0;
+      long   my_i = -1, my_j = -1;
+
+#pragma omp for schedule(static) nowait
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i], mi = M[i];
+          double       fxi = 0, fyi = 0, fzi = 0, txi = 0, tyi = 0, tzi = 0;
+          for (std::size_t k = m.offsets[i]; k < m.offsets[i + 1]; ++k)
+            {
+              const int    j  = m.neighbours[k];
+              double      *s  = &m.shear[3 * k];
+              const double dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
+              const double sr = ri + R[j];
+              const double r2 = dx * dx + dy * dy + dz * dz;
+              if (r2 >= sr * sr)
+                {
+                  s[0] = s[1] = s[2] = 0;
+                  continue;
+                }
+              const double d       = std::sqrt(r2);
+              const double overlap = sr - d;
+              const double inv_d   = 1 / d;
+              const double nv[3]   = {dx * inv_d, dy * inv_d, dz * inv_d};
+              const double r_eff   = ri * R[j] / sr;
+              const double m_eff   = mi * M[j] / (mi + M[j]);
+              double       vrel[3] = {VX[i] - VX[j], VY[i] - VY[j], VZ[i] - VZ[j]};
+              if (rotation)
+                {
+                  // - (ri w_i + rj w_j) x n
+                  const double ax = ri * WX[i] + R[j] * WX[j], ay = ri * WY[i] + R[j] * WY[j],
+                               az = ri * WZ[i] + R[j] * WZ[j];
+                  vrel[0] -= ay * nv[2] - az * nv[1];
+                  vrel[1] -= az * nv[0] - ax * nv[2];
+                  vrel[2] -= ax * nv[1] - ay * nv[0];
+                }
+              const PairCoefficients &c = coefficients[MAT[i] * nm + MAT[j]];
+              const ContactForce      f = hertz_mindlin(nv, overlap, r_eff, m_eff, vrel, c, dt, s);
+              const double Fx = f.normal * nv[0] + f.ft[0], Fy = f.normal * nv[1] + f.ft[1],
+                           Fz = f.normal * nv[2] + f.ft[2];
+              fxi += Fx, fyi += Fy, fzi += Fz;
+              fx[j] -= Fx, fy[j] -= Fy, fz[j] -= Fz;
+              if (rotation)
+                {
+                  // torque on i: (-ri n) x ft, on j: (rj n) x (-ft)
+                  const double cx = nv[1] * f.ft[2] - nv[2] * f.ft[1], cy = nv[2] * f.ft[0] - nv[0] * f.ft[2],
+                               cz = nv[0] * f.ft[1] - nv[1] * f.ft[0];
+                  txi -= ri * cx, tyi -= ri * cy, tzi -= ri * cz;
+                  tx[j] -= R[j] * cx, ty[j] -= R[j] * cy, tz[j] -= R[j] * cz;
+                  if (c.rolling_friction > 0)
+                    {
+                      const double fr = c.rolling_friction * std::abs(f.normal);
+                      const double wi2 = WX[i] * WX[i] + WY[i] * WY[i] + WZ[i] * WZ[i];
+                      const double wj2 = WX[j] * WX[j] + WY[j] * WY[j] + WZ[j] * WZ[j];
+                      if (wi2 > 0)
+                        {
+                          const double s_i = fr * ri / std::sqrt(wi2);
+                          txi -= s_i * WX[i], tyi -= s_i * WY[i], tzi -= s_i * WZ[i];
+                        }
+                      if (wj2 > 0)
+                        {
+                          const double s_j = fr * R[j] / std::sqrt(wj2);
+                          tx[j] -= s_j * WX[j], ty[j] -= s_j * WY[j], tz[j] -= s_j * WZ[j];
+                        }
+                    }
+                }
+              const double ratio = overlap / std::min(ri, R[j]);
+              if (ratio > my_worst)
+                my_worst = ratio, my_i = i, my_j = j;
+            }
+          fx[i] += fxi, fy[i] += fyi, fz[i] += fzi;
+          if (rotation)
+            tx[i] += txi, ty[i] += tyi, tz[i] += tzi;
+        }
+#pragma omp critical
+      if (my_worst > worst || (my_worst == worst && my_i >= 0 && (wi < 0 || my_i < wi)))
+        worst = my_worst, wi = my_i, wj = my_j;
+    }
+    m.worst_overlap_ratio = worst;
+    m.worst_overlap_i     = wi;
+    m.worst_overlap_j     = wj;
+  }
+
+  template <bool rotation>
+  void Simulation::wall_forces()
+  {
+    Impl             &m  = *impl;
+    const std::size_t n  = store.size();
+    const std::size_t nm = mats.size();
+    const std::size_t nw = walls.size();
+    const double      dt = time_step;
+    ParticleStore    &P  = store;
+    const Vec3        g  = config.gravity;
+    constexpr int     K  = Impl::K;
+    constexpr int     max_hits = 16;
+
+    double worst = 0;
+    long   worst_i = -1;
+#pragma omp parallel num_threads(m.n_threads)
+    {
+      const int tid   = omp_get_thread_num();
+      auto     &loads = m.wall_loads[tid];
+      std::fill(loads.begin(), loads.end(), 0.0);
+      auto &log = m.log.per_thread[tid];
+      log.clear();
+      double my_worst = 0;
+      long   my_i     = -1;
+
+      struct Hit
+      {
+        int     wall, tri;
+        Feature feature;
+        double  p[3], d2;
+      };
+      Hit hits[max_hits];
+      int accepted[max_hits];
+
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          // sum the per-thread pair forces, add gravity
+          double fx = P.fx[i], fy = P.fy[i], fz = P.fz[i];
+          double tx = 0, ty = 0, tz = 0;
+          if (rotation)
+            tx = P.tx[i], ty = P.ty[i], tz = P.tz[i];
+          for (int b = 1; b < m.n_threads; ++b)
+            {
+              const double *buf = m.buffers[b].data();
+              fx += buf[i], fy += buf[n + i], fz += buf[2 * n + i];
+              if (rotation)
+                tx += buf[3 * n + i], ty += buf[4 * n + i], tz += buf[5 * n + i];
+            }
+          fx += P.mass[i] * g[0], fy += P.mass[i] * g[1], fz += P.mass[i] * g[2];
+
+          // --- particle-wall contacts ---
+          const double q[3] = {P.x[i], P.y[i], P.z[i]};
+          const double ri   = P.radius[i];
+          int          n_hits = 0;
+          for (std::size_t k = m.wall_offsets[i]; k < m.wall_offsets[i + 1]; ++k)
+            {
+              const Wall   &w   = walls[m.candidate_wall[k]];
+              const auto   &tri = w.mesh.triangles[m.candidate_triangle[k]];
+              const double *V   = w.current.data();
+              const auto    cp  = closest_point_on_triangle(q, V + 3 * tri[0], V + 3 * tri[1], V + 3 * tri[2]);
+              const double  dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
+              const double  d2 = dx * dx + dy * dy + dz * dz;
+              if (d2 < ri * ri && d2 > 0 && n_hits < max_hits)
+                {
+                  Hit &h = hits[n_hits++];
+                  h.wall = m.candidate_wall[k], h.tri = m.candidate_triangle[k], h.feature = cp.feature;
+                  h.p[0] = cp.p[0], h.p[1] = cp.p[1], h.p[2] = cp.p[2], h.d2 = d2;
+                }
+            }
+          for (int s = 0; s < K; ++s)
+            m.hist_used[K * i + s] = 0;
+          if (n_hits > 0)
+            {
+              // One contact per touching feature: faces first, then edges, then vertices; an
+              // edge (vertex) is dropped when an accepted triangle of the same wall contains it,
+              // and any contact whose point coincides with an accepted one is dropped.
+              auto rank = [](Feature f) { return f == face ? 0 : f <= edge20 ? 1 : 2; };
+              std::sort(hits, hits + n_hits, [&](const Hit &a, const Hit &b) {
+                if (a.wall != b.wall) return a.wall < b.wall;
+                if (rank(a.feature) != rank(b.feature)) return rank(a.feature) < rank(b.feature);
+                if (a.d2 != b.d2) return a.d2 < b.d2;
+                return a.tri < b.tri;
+              });
+              int n_acc = 0;
+              for (int h = 0; h < n_hits; ++h)
+                {
+                  const auto &tris = walls[hits[h].wall].mesh.triangles;
+                  const auto &t    = tris[hits[h].tri];
+                  const Feature f  = hits[h].feature;
+                  bool keep = true;
+                  for (int a = 0; a < n_acc && keep; ++a)
+                    {
+                      const Hit &acc = hits[accepted[a]];
+                      if (acc.wall != hits[h].wall)
+                        continue;
+                      const auto &ta = tris[acc.tri];
+                      // the same point seen from two triangles (a point on a shared edge that
+                      // round-off classifies as interior to both)
+                      const double dx = acc.p[0] - hits[h].p[0], dy = acc.p[1] - hits[h].p[1],
+                                   dz = acc.p[2] - hits[h].p[2];
+                      if (dx * dx + dy * dy + dz * dz < 1e-16 * ri * ri)
+                        keep = false;
+                      else if (f >= edge01 && f <= edge20)
+                        keep = !(triangle_has(ta, t[f - 1]) && triangle_has(ta, t[f % 3]));
+                      else if (f >= vertex0)
+                        keep = !triangle_has(ta, t[f - vertex0]);
+                    }
+                  if (keep)
+                    accepted[n_acc++] = h;
+                }
+
+              for (int a = 0; a < n_acc; ++a)
+                {
+                  const Hit  &h    = hits[accepted[a]];
+                  Wall       &wall = walls[h.wall];
+                  const double d   = std::sqrt(h.d2);
+                  const double nv[3] = {(q[0] - h.p[0]) / d, (q[1] - h.p[1]) / d, (q[2] - h.p[2]) / d};
+                  const double overlap = ri - d;
+                  const Vec3   vw = wall.velocity_at(Vec3(h.p[0], h.p[1], h.p[2]));
+                  double vrel[3] = {P.vx[i] - vw[0], P.vy[i] - vw[1], P.vz[i] - vw[2]};
+                  if (rotation)
+                    {
+                      // w x (-r n)
+                      vrel[0] -= ri * (P.wy[i] * nv[2] - P.wz[i] * nv[1]);
+                      vrel[1] -= ri * (P.wz[i] * nv[0] - P.wx[i] * nv[2]);
+                      vrel[2] -= ri * (P.wx[i] * nv[1] - P.wy[i] * nv[0]);
+                    }
+                  // contact history: same wall and the same or an adjacent triangle
+                  int slot = -1, free_slot = -1;
+                  for (int s = 0; s < K; ++s)
+                    {
+                      const int ws = m.hist_wall[K * i + s];
+                      if (ws < 0)
+                        {
+                          if (free_slot < 0) free_slot = s;
+                          continue;
+                        }
+                      if (ws == h.wall && !m.hist_used[K * i + s] &&
+                          (m.hist_tri[K * i + s] == h.tri ||
+                           triangles_share_vertex(wall.mesh.triangles[m.hist_tri[K * i + s]],
+                                                  wall.mesh.triangles[h.tri])))
+                        {
+                          slot = s;
+                          break;
+                        }
+                    }
+                  double  scratch[3] = {0, 0, 0};
+                  double *shear      = scratch;
+                  if (slot < 0 && free_slot >= 0)
+                    {
+                      slot = free_slot;
+                      m.hist_wall[K * i + slot] = h.wall;
+                      for (int dd = 0; dd < 3; ++dd)
+                        m.hist_shear[3 * (K * i + slot) + dd] = 0;
+                    }
+                  if (slot >= 0)
+                    {
+                      m.hist_tri[K * i + slot]  = h.tri;
+                      m.hist_used[K * i + slot] = 1;
+                      shear = &m.hist_shear[3 * (K * i + slot)];
+                    }
+                  const PairCoefficients &c = coefficients[P.material[i] * nm + wall.material];
+                  const ContactForce f = hertz_mindlin(nv, overlap, ri, P.mass[i], vrel, c, dt, shear);
+                  const double F[3] = {f.normal * nv[0] + f.ft[0], f.normal * nv[1] + f.ft[1],
+                                       f.normal * nv[2] + f.ft[2]};
+                  fx += F[0], fy += F[1], fz += F[2];
+                  if (rotation)
+                    {
+                      tx -= ri * (nv[1] * f.ft[2] - nv[2] * f.ft[1]);
+                      ty -= ri * (nv[2] * f.ft[0] - nv[0] * f.ft[2]);
+                      tz -= ri * (nv[0] * f.ft[1] - nv[1] * f.ft[0]);
+                      const double w2 = P.wx[i] * P.wx[i] + P.wy[i] * P.wy[i] + P.wz[i] * P.wz[i];
+                      if (c.rolling_friction > 0 && w2 > 0)
+                        {
+                          const double sr = c.rolling_friction * std::abs(f.normal) * ri / std::sqrt(w2);
+                          tx -= sr * P.wx[i], ty -= sr * P.wy[i], tz -= sr * P.wz[i];
+                        }
+                    }
+                  // load on the wall: -F at the contact point, torque about the wall centre
+                  const Vec3 arm = Vec3(h.p[0], h.p[1], h.p[2]) - wall.current_centre();
+                  double    *L   = &loads[6 * h.wall];
+                  L[0] -= F[0], L[1] -= F[1], L[2] -= F[2];
+                  L[3] -= arm[1] * F[2] - arm[2] * F[1];
+                  L[4] -= arm[2] * F[0] - arm[0] * F[2];
+                  L[5] -= arm[0] * F[1] - arm[1] * F[0];
+
+                  WallContactRecord r;
+                  r.wall = h.wall, r.triangle = h.tri, r.feature = h.feature;
+                  r.particle = static_cast<int>(i), r.particle_id = P.id[i];
+                  for (int dd = 0; dd < 3; ++dd)
+                    {
+                      r.point[dd] = h.p[dd], r.normal[dd] = nv[dd];
+                      r.tangential_force[dd] = f.ft[dd], r.tangential_velocity[dd] = f.vt[dd];
+                    }
+                  r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
+                  log.push_back(r);
+                  if (overlap / ri > my_worst)
+                    my_worst = overlap / ri, my_i = i;
+                }
+            }
+          // forget the histories of wall contacts that ended
+          for (int s = 0; s < K; ++s)
+            if (!m.hist_used[K * i + s])
+              m.hist_wall[K * i + s] = -1;
+
+          P.fx[i] = fx, P.fy[i] = fy, P.fz[i] = fz;
+          if (rotation)
+            P.tx[i] = tx, P.ty[i] = ty, P.tz[i] = tz;
+        }
+#pragma omp critical
+      if (my_worst > worst)
+        worst = my_worst, worst_i = my_i;
+    }
+    for (std::size_t w = 0; w < nw; ++w)
+      {
+        Vec3 F = Vec3::Zero(), T = Vec3::Zero();
+        for (const auto &l : m.wall_loads)
+          for (int d = 0; d < 3; ++d)
+            F[d] += l[6 * w + d], T[d] += l[6 * w + 3 + d];
+        walls[w].force  = F;
+        walls[w].torque = T;
+      }
+    if (worst > m.worst_overlap_ratio)
+      {
+        m.worst_overlap_ratio = worst;
+        m.worst_overlap_i     = worst_i;
+        m.worst_overlap_j     = -1;
+      }
+  }
+
+  void Simulation::compute_forces()
+  {
+    if (any_rotation)
+      {
+        pair_forces<true>();
+        wall_forces<true>();
+      }
+    else
+      {
+        pair_forces<false>();
+        wall_forces<false>();
+      }
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Time loop
+  // ---------------------------------------------------------------------------------------------
+
+  void Simulation::step()
+  {
+    if (!is_set_up)
+      setup();
+    const auto        start = std::chrono::steady_clock::now();
+    Impl             &m     = *impl;
+    ParticleStore    &P     = store;
+    const double      dt = time_step, h = 0.5 * dt;
+    const Vec3        dmin = config.domain_min, dmax = config.domain_max;
+
+    // half kick and drift
+    const std::size_t n = P.size();
+    double max_d2 = 0;
+    long   bad    = std::numeric_limits<long>::max();
+#pragma omp parallel for schedule(static) num_threads(m.n_threads) reduction(max : max_d2) reduction(min : bad)
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const double im = P.inv_mass[i];
+        P.vx[i] += h * P.fx[i] * im, P.vy[i] += h * P.fy[i] * im, P.vz[i] += h * P.fz[i] * im;
+        P.x[i] += dt * P.vx[i], P.y[i] += dt * P.vy[i], P.z[i] += dt * P.vz[i];
+        const double ii = P.inv_inertia[i];
+        if (ii > 0)
+          P.wx[i] += h * P.tx[i] * ii, P.wy[i] += h * P.ty[i] * ii, P.wz[i] += h * P.tz[i] * ii;
+        const double dx = P.x[i] - m.x0[i], dy = P.y[i] - m.y0[i], dz = P.z[i] - m.z0[i];
+        max_d2 = std::max(max_d2, dx * dx + dy * dy + dz * dz);
+        if (!(P.x[i] >= dmin[0] && P.x[i] <= dmax[0] && P.y[i] >= dmin[1] && P.y[i] <= dmax[1] &&
+              P.z[i] >= dmin[2] && P.z[i] <= dmax[2]))
+          bad = std::min(bad, long(i));
+      }
+    m.max_displacement = std::sqrt(max_d2);
+    for (auto &w : walls)
+      w.advance(dt);
+    t += dt;
+    ++stats.steps;
+
+    if (bad != std::numeric_limits<long>::max())
+      {
+        const bool nan = !std::isfinite(P.x[bad] + P.y[bad] + P.z[bad]);
+        std::ostringstream s;
+        s << (nan ? "NaN position" : "particle left the domain") << ": particle id " << P.id[bad]
+          << " at step " << stats.steps << " (t = " << t << " s), position (" << P.x[bad] << ", "
+          << P.y[bad] << ", " << P.z[bad] << ")";
+        if (nan || config.stop_on_error)
+          throw RunError(s.str());
+        warn(s.str() + "; removed");
+        m.force_rebuild = true;
+      }
+
+    if (needs_rebuild())
+      build_neighbour_lists();
+    compute_forces();
+
+    // second half kick
+    const std::size_t n2 = P.size();
+#pragma omp parallel for schedule(static) num_threads(m.n_threads)
+    for (std::size_t i = 0; i < n2; ++i)
+      {
+        const double im = P.inv_mass[i];
+        P.vx[i] += h * P.fx[i] * im, P.vy[i] += h * P.fy[i] * im, P.vz[i] += h * P.fz[i] * im;
+        const double ii = P.inv_inertia[i];
+        if (ii > 0)
+          P.wx[i] += h * P.tx[i] * ii, P.wy[i] += h * P.ty[i] * ii, P.wz[i] += h * P.tz[i] * ii;
+      }
+    for (auto &w : walls)
+      w.accelerate(config.gravity, dt);
+
+    // built-in per-triangle impulses, then the plug-ins
+    m.log.for_each([&](const WallContactRecord &r) {
+      Wall &w = walls[r.wall];
+      w.normal_impulse[r.triangle] += std::abs(r.normal_force) * dt;
+      w.tangential_impulse[r.triangle] +=
+        std::sqrt(r.tangential_force[0] * r.tangential_force[0] + r.tangential_force[1] * r.tangential_force[1] +
+                  r.tangential_force[2] * r.tangential_force[2]) * dt;
+    });
+    for (auto &hook : hooks)
+      hook->after_step(*this, m.log);
+    check_step();
+
+    stats.loop_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.particle_steps += static_cast<long>(n2);
+  }
+
+  void Simulation::check_step()
+  {
+    const Impl &m = *impl;
+    if (m.worst_overlap_ratio > config.max_overlap_fraction)
+      {
+        std::ostringstream s;
+        s << "overlap of " << 100 * m.worst_overlap_ratio << " % of the radius (limit "
+          << 100 * config.max_overlap_fraction << " %): particle id " << store.id[m.worst_overlap_i];
+        if (m.worst_overlap_j >= 0)
+          s << " with particle id " << store.id[m.worst_overlap_j];
+        else
+          s << " with a wall";
+        s << " at step " << stats.steps << " (t = " << t << " s); the time step may be too large";
+        if (config.stop_on_error)
+          throw RunError(s.str());
+        // warn once per phase, not every step
+        if (warnings.empty() || warnings.back().rfind("overlap", 0) != 0)
+          warn(s.str());
+      }
+  }
+
+  void Simulation::run_phase(const std::string &phase, double duration,
+                             const std::function<void(const Simulation &)> &every_step)
+  {
+    if (!is_set_up)
+      setup();
+    current_phase = phase;
+    for (auto &w : walls)
+      w.set_phase(phase);
+    for (auto &hook : hooks)
+      hook->phase_changed(*this, phase);
+    const long n_steps = std::lround(duration / time_step);
+    for (long s = 0; s < n_steps; ++s)
+      {
+        step();
+        if (every_step)
+          every_step(*this);
+      }
+  }
+
+  double Simulation::settle(double ke_per_particle, double max_time,
+                            const std::function<void(const Simulation &)> &progress)
+  {
+    if (!is_set_up)
+      setup();
+    current_phase = "settle";
+    for (auto &w : walls)
+      w.set_phase("settle");
+    const double t0 = t;
+    while (t - t0 < max_time)
+      {
+        for (int s = 0; s < 100; ++s)
+          step();
+        if (progress)
+          progress(*this);
+        if (kinetic_energy() < ke_per_particle * std::max<std::size_t>(1, store.size()))
+          break;
+      }
+    return t - t0;
+  }
+
+  double Simulation::kinetic_energy() const
+  {
+    double e = 0;
+    for (std::size_t i = 0; i < store.size(); ++i)
+      {
+        e += 0.5 * store.mass[i] *
+             (store.vx[i] * store.vx[i] + store.vy[i] * store.vy[i] + store.vz[i] * store.vz[i]);
+        if (store.inv_inertia[i] > 0)
+          e += 0.5 / store.inv_inertia[i] *
+               (store.wx[i] * store.wx[i] + store.wy[i] * store.wy[i] + store.wz[i] * store.wz[i]);
+      }
+    return e;
+  }
+
+  std::size_t Simulation::n_particle_contacts() const
+  {
+    std::size_t c = 0;
+    for (std::size_t i = 0; i < store.size(); ++i)
+      for (std::size_t k = impl->offsets[i]; k < impl->offsets[i + 1]; ++k)
+        {
+          const int    j  = impl->neighbours[k];
+          const double dx = store.x[i] - store.x[j], dy = store.y[i] - store.y[j], dz = store.z[i] - store.z[j];
+          const double sr = store.radius[i] + store.radius[j];
+          c += dx * dx + dy * dy + dz * dz < sr * sr;
+        }
+    return c;
+  }
+} // namespace abrade::dem

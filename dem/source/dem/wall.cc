@@ -1,0 +1,90 @@
+#include <abrade/dem/wall.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace abrade::dem
+{
+  void Wall::initialise()
+  {
+    rotation    = Eigen::Matrix3d::Identity();
+    translation = Vec3::Zero();
+    current.resize(3 * mesh.vertices.size());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+      for (int d = 0; d < 3; ++d)
+        current[3 * v + d] = mesh.vertices[v][d];
+    at_build = current;
+    normal_impulse.assign(mesh.n_triangles(), 0.0);
+    tangential_impulse.assign(mesh.n_triangles(), 0.0);
+  }
+
+  void Wall::set_phase(const std::string &phase)
+  {
+    if (motion.kind == WallMotion::Kind::fixed)
+      return;
+    PhaseVelocity pv;
+    if (auto it = motion.phases.find(phase); it != motion.phases.end())
+      pv = it->second;
+    for (int d = 0; d < 3; ++d)
+      {
+        const bool rb = motion.kind == WallMotion::Kind::rigid_body;
+        if (!(rb && motion.free[d]))
+          velocity[d] = pv.velocity[d];
+        if (!(rb && motion.free[3 + d]))
+          angular_velocity[d] = pv.angular_velocity[d];
+      }
+  }
+
+  void Wall::advance(double dt)
+  {
+    if (motion.kind == WallMotion::Kind::fixed)
+      return;
+    const double angle = angular_velocity.norm() * dt;
+    if (angle > 0)
+      rotation = Eigen::AngleAxisd(angle, angular_velocity.normalized()).toRotationMatrix() * rotation;
+    translation += velocity * dt;
+    const Vec3 c0 = motion.centre, c = current_centre();
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+      {
+        const Vec3 p = c + rotation * (mesh.vertices[v] - c0);
+        for (int d = 0; d < 3; ++d)
+          current[3 * v + d] = p[d];
+      }
+  }
+
+  void Wall::accelerate(const Vec3 &gravity, double dt)
+  {
+    if (motion.kind != WallMotion::Kind::rigid_body)
+      return;
+    for (int d = 0; d < 3; ++d)
+      {
+        if (motion.free[d])
+          velocity[d] += dt * (force[d] / motion.mass + (motion.gravity ? gravity[d] : 0.0));
+        if (motion.free[3 + d] && motion.inertia[d] > 0)
+          angular_velocity[d] += dt * torque[d] / motion.inertia[d];
+      }
+  }
+
+  double Wall::max_displacement_since_build() const
+  {
+    if (motion.kind == WallMotion::Kind::fixed)
+      return 0;
+    double m = 0;
+    for (std::size_t k = 0; k < current.size(); k += 3)
+      {
+        const double dx = current[k] - at_build[k], dy = current[k + 1] - at_build[k + 1],
+                     dz = current[k + 2] - at_build[k + 2];
+        m = std::max(m, dx * dx + dy * dy + dz * dz);
+      }
+    return std::sqrt(m);
+  }
+
+  TriangleMesh Wall::current_mesh() const
+  {
+    TriangleMesh m = mesh;
+    for (std::size_t v = 0; v < m.vertices.size(); ++v)
+      m.vertices[v] = Vec3(current[3 * v], current[3 * v + 1], current[3 * v + 2]);
+    return m;
+  }
+} // namespace abrade::dem

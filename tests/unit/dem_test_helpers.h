@@ -1,0 +1,77 @@
+#pragma once
+// Small set-ups shared by the DEM verification tests: one or two spheres, an optional flat wall.
+#include <abrade/dem/simulation.h>
+
+#include <cmath>
+
+namespace abrade::dem::testing
+{
+  inline Settings quiet_settings(double dt, bool gravity = false)
+  {
+    Settings s;
+    s.gravity              = gravity ? Vec3(0, 0, -9.81) : Vec3::Zero();
+    s.time_step            = dt;
+    s.threads              = 1;
+    s.max_overlap_fraction = 1;
+    return s;
+  }
+
+  /// Index of the particle with identifier @p id (particles are reordered by the cell sort).
+  inline std::size_t index_of(const Simulation &sim, std::int64_t id)
+  {
+    const auto &ids = sim.particles().id;
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      if (ids[i] == id)
+        return i;
+    return ids.size();
+  }
+
+  /// Analytic Hertz impact (shared/reference/verification.md).
+  struct HertzImpact
+  {
+    double delta_max, force_max, contact_time;
+    HertzImpact(double m_eff, double r_eff, double e_star, double v)
+    {
+      delta_max    = std::pow(15 * m_eff * v * v / (16 * e_star * std::sqrt(r_eff)), 0.4);
+      force_max    = 4.0 / 3.0 * e_star * std::sqrt(r_eff) * std::pow(delta_max, 1.5);
+      contact_time = 2.868 * std::pow(m_eff * m_eff / (r_eff * e_star * e_star * v), 0.2);
+    }
+  };
+
+  inline double e_star(const Material &a, const Material &b)
+  {
+    return 1 / ((1 - a.poisson_ratio * a.poisson_ratio) / a.youngs_modulus +
+                (1 - b.poisson_ratio * b.poisson_ratio) / b.youngs_modulus);
+  }
+
+  inline double sphere_mass(double r, double rho) { return rho * 4.0 / 3.0 * M_PI * r * r * r; }
+
+  /// A large flat wall (the plane z = 0, normal +z) made of triangles no longer than @p h.
+  inline Wall floor_wall(int material, double size = 1.0, double h = 0)
+  {
+    Wall w;
+    w.name     = "floor";
+    w.mesh     = primitives::plate(Vec3::Zero(), 2, size, size, h);
+    w.material = material;
+    return w;
+  }
+
+  /// Records what a single-contact impact does: overlap, force, contact start/end (linearly
+  /// interpolated) and the velocities after separation.
+  struct ImpactRecorder
+  {
+    double max_overlap = 0, max_force = 0, t_start = -1, t_end = -1;
+    double prev_overlap = -1, prev_t = 0;
+    void   record(double t, double overlap, double force)
+    {
+      max_overlap = std::max(max_overlap, overlap);
+      max_force   = std::max(max_force, force);
+      if (prev_overlap <= 0 && overlap > 0 && t_start < 0)
+        t_start = prev_t + (t - prev_t) * (-prev_overlap) / (overlap - prev_overlap);
+      if (prev_overlap > 0 && overlap <= 0 && t_end < 0)
+        t_end = prev_t + (t - prev_t) * prev_overlap / (prev_overlap - overlap);
+      prev_overlap = overlap, prev_t = t;
+    }
+    double contact_time() const { return t_end - t_start; }
+  };
+} // namespace abrade::dem::testing
