@@ -2,6 +2,7 @@
 //
 //   abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
 //   abrade params [--format text|prm]
+//   abrade export-walls [FILE.prm] --output DIR
 //   abrade --version
 //
 // Exit codes: 0 success, 2 bad input (command line, parameter file, mesh), 3 run-time failure
@@ -13,6 +14,8 @@
 #include <abrade/common/version.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters.h>
+#include <abrade/dem/mesh_io.h>
 
 #include <chrono>
 #include <ctime>
@@ -29,6 +32,8 @@ namespace
       run the job the parameter file describes (no file: the embedded small default case)
   abrade params [--format text|prm]
       print every parameter with its documentation, unit, allowed range and default
+  abrade export-walls [FILE.prm] [--set ...]... --output DIR
+      write every wall of the case, as the simulation sees it at t = 0, as DIR/NAME.stl
   abrade --version
 )";
 
@@ -174,6 +179,20 @@ int main(int argc, char **argv)
             p.handler().print_parameters(std::cout, dealii::ParameterHandler::Text);
           else
             throw InputError("command line", "--format must be text or prm");
+          return 0;
+        }
+      if (cl.command == "export-walls")
+        {
+          if (cl.output.empty())
+            throw InputError("command line", "export-walls needs --output DIR");
+          coupling::ParameterFile p(cl.file, cl.sets);
+          const auto               c = coupling::read_dem_case(p);
+          io::OutputDirectory      out(cl.output);
+          for (const auto &w : c.walls)
+            {
+              dem::write_stl(out.file(w.wall.name + ".stl"), w.wall.mesh);
+              std::cout << out.file(w.wall.name + ".stl") << ": " << w.wall.mesh.n_triangles() << " triangles\n";
+            }
           return 0;
         }
       throw InputError("command line", "unknown command '" + cl.command + "'\n" + usage);

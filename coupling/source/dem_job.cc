@@ -77,7 +77,7 @@ namespace abrade::coupling
       }
       const double ke = sim.kinetic_energy() / std::max<std::size_t>(1, sim.particles().size());
       ctx.log.line("Settled for " + fmt(sim.time()) + " s: kinetic energy " + fmt(ke) + " J per particle");
-      if (ke > c.settle_ke)
+      if (c.settle_ke > 0 && ke > c.settle_ke)
         ctx.log.warning("the bed did not settle below " + fmt(c.settle_ke) +
                         " J per particle within Particles/Settling/Maximum time");
       if (!bed.empty())

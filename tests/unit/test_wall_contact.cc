@@ -77,6 +77,20 @@ TEST(WallContact, EdgeAndVertexOfFlatMeshGiveTheFaceForce)
   EXPECT_EQ(n_vertex, 1u);
 }
 
+TEST(WallContact, DeepOverlapOnAFineMeshIsOneContact)
+{
+  // triangles of 5 mm under a 27.5 mm sphere with 6 mm overlap: the contact circle (18 mm)
+  // covers many triangles, whose own closest points lie on their edges; only one contact counts
+  const TriangleMesh plate = primitives::plate(Vec3::Zero(), 2, 0.2, 0.2, 0.005);
+  for (const Vec3 &c : {Vec3(0.0013, 0.0021, 0), Vec3(0, 0, 0), Vec3(0.0025, 0, 0)})
+    {
+      const auto [f, n] = static_force(plate, c + Vec3(0, 0, R - 0.006));
+      EXPECT_EQ(n, 1u);
+      EXPECT_NEAR(f[2] / hertz(0.006), 1, 1e-12);
+      EXPECT_NEAR(f.head<2>().norm(), 0, 1e-9 * f[2]);
+    }
+}
+
 TEST(WallContact, ConvexEdgeAndCornerOfABox)
 {
   // closed unit box [0,1]^3; contacts from outside at its edge x = 1, z = 1 and corner (1,1,1)

@@ -82,25 +82,22 @@ namespace abrade::dem
 
   long fill_region(Simulation &sim, const FillRegion &f)
   {
-    const double     r_big = f.sizes.largest();
-    const Vec3       extent = f.box_max - f.box_min;
-    if (!(r_big > 0) || !(extent.array() > 2.04 * r_big).all())
+    const double r_big  = f.sizes.largest();
+    const Vec3   extent = f.box_max - f.box_min;
+    if (!(r_big > 0) || !(extent.array() > 2 * r_big).all())
       throw InputError("particle generation", "the fill box must be larger than a particle diameter in every direction");
-    // sites half a spacing in from the box: a jittered particle never leaves its lattice cell
-    const double spacing = 2 * r_big * 1.02;
-    const long   nx = long(extent[0] / spacing), ny = long(extent[1] / spacing), nz = long(extent[2] / spacing);
 
-    // sites that would put a particle against (or inside) a wall are skipped
+    // positions that would put a particle against (or inside) a wall are rejected
     std::vector<std::pair<Vec3, Vec3>> boxes;
     std::vector<char>                  closed;
     for (const auto &m : f.avoid)
       {
-        closed.push_back(m.is_closed());
         Vec3 lo, hi;
         m.bounding_box(lo, hi);
+        closed.push_back(m.is_closed());
         boxes.emplace_back(lo - Vec3::Constant(2 * r_big), hi + Vec3::Constant(2 * r_big));
       }
-    auto clear_of_walls = [&](const Vec3 &p) {
+    auto clear_of_walls = [&](const Vec3 &p, double r) {
       for (std::size_t k = 0; k < f.avoid.size(); ++k)
         {
           if (!(p.array() >= boxes[k].first.array()).all() || !(p.array() <= boxes[k].second.array()).all())
@@ -112,52 +109,76 @@ namespace abrade::dem
             {
               const auto cp = closest_point_on_triangle(p.data(), m.vertices[t[0]].data(),
                                                         m.vertices[t[1]].data(), m.vertices[t[2]].data());
-              if ((p - Vec3(cp.p[0], cp.p[1], cp.p[2])).norm() < 1.5 * r_big)
+              if ((p - Vec3(cp.p[0], cp.p[1], cp.p[2])).norm() < 1.05 * r)
                 return false;
             }
         }
       return true;
     };
 
-    // candidate lattice sites (inside the mesh, if one is given)
-    std::vector<Vec3> sites;
-    for (long k = 0; k < nz; ++k)
-      for (long j = 0; j < ny; ++j)
-        for (long i = 0; i < nx; ++i)
-          {
-            const Vec3 p = f.box_min + spacing * Vec3(i + 0.5, j + 0.5, k + 0.5);
-            if ((!f.inside || inside_mesh(*f.inside, p)) && clear_of_walls(p))
-              sites.push_back(p);
-          }
     const double region_volume = f.inside ? std::abs(f.inside->volume()) : extent.prod();
     const long   wanted = f.count > 0 ? f.count : std::lround(f.solid_fraction * region_volume / f.sizes.mean_volume());
-    if (wanted > static_cast<long>(sites.size()))
-      throw InputError("particle generation",
-                       "cannot place " + std::to_string(wanted) + " particles: the region holds at most " +
-                         std::to_string(sites.size()) + " of radius " + std::to_string(r_big) +
-                         " m without overlap (enlarge the region or reduce the count / solid fraction)");
 
-    // choose sites: a seeded shuffle, then fill from the bottom up (a pour)
+    // Random sequential addition: each particle at a uniformly random position that overlaps
+    // no particle placed before it (a cell grid finds the neighbours), like LIGGGHTS' insert/pack.
+    const double cell = 2 * r_big;
+    const long   nx = std::max(1L, long(extent[0] / cell)), ny = std::max(1L, long(extent[1] / cell)),
+               nz = std::max(1L, long(extent[2] / cell));
+    if (double(nx) * ny * nz > 5e7)
+      throw InputError("particle generation", "the fill box is too large for the particle size (more than 5e7 cells)");
+    std::vector<std::vector<int>> grid(nx * ny * nz);
+    auto cell_of = [&](const Vec3 &p, int d, long n) {
+      return std::clamp(long((p[d] - f.box_min[d]) / extent[d] * n), 0L, n - 1);
+    };
+    std::vector<Vec3>   placed;
+    std::vector<double> radii;
+    placed.reserve(wanted);
+    radii.reserve(wanted);
     std::mt19937_64 rng(f.seed);
-    for (std::size_t k = sites.size(); k > 1; --k)
-      std::swap(sites[k - 1], sites[static_cast<std::size_t>(uniform01(rng) * k)]);
-    sites.resize(wanted);
-    std::stable_sort(sites.begin(), sites.end(), [](const Vec3 &a, const Vec3 &b) { return a[2] < b[2]; });
+    constexpr int   max_attempts = 2000;
+    for (long k = 0; k < wanted; ++k)
+      {
+        const double r  = f.sizes.sample(rng);
+        bool         ok = false;
+        Vec3         p;
+        for (int attempt = 0; attempt < max_attempts && !ok; ++attempt)
+          {
+            for (int d = 0; d < 3; ++d)
+              p[d] = f.box_min[d] + r + (extent[d] - 2 * r) * uniform01(rng);
+            if (f.inside && !inside_mesh(*f.inside, p))
+              continue;
+            const long ci = cell_of(p, 0, nx), cj = cell_of(p, 1, ny), ck = cell_of(p, 2, nz);
+            ok = true;
+            for (long c = std::max(0L, ck - 1); c <= std::min(nz - 1, ck + 1) && ok; ++c)
+              for (long b = std::max(0L, cj - 1); b <= std::min(ny - 1, cj + 1) && ok; ++b)
+                for (long a = std::max(0L, ci - 1); a <= std::min(nx - 1, ci + 1) && ok; ++a)
+                  for (int q : grid[(c * ny + b) * nx + a])
+                    if ((placed[q] - p).squaredNorm() < (r + radii[q]) * (r + radii[q]))
+                      {
+                        ok = false;
+                        break;
+                      }
+            ok = ok && clear_of_walls(p, r);
+          }
+        if (!ok)
+          throw InputError("particle generation",
+                           "could place only " + std::to_string(k) + " of " + std::to_string(wanted) +
+                             " particles without overlap (random placement saturates near a solid fraction of "
+                             "0.35); reduce Count or Solid fraction, or enlarge the region");
+        grid[(cell_of(p, 2, nz) * ny + cell_of(p, 1, ny)) * nx + cell_of(p, 0, nx)].push_back(int(placed.size()));
+        placed.push_back(p);
+        radii.push_back(r);
+      }
 
     auto        &P       = sim.particles();
     std::int64_t next_id = 0;
     for (auto id : P.id)
       next_id = std::max(next_id, id + 1);
     const double density = sim.materials().at(f.material).density;
-    for (const Vec3 &s : sites)
+    for (std::size_t k = 0; k < placed.size(); ++k)
       {
-        const double r      = f.sizes.sample(rng);
-        const double jitter = 0.5 * (spacing - 2 * r);
-        Vec3         p      = s;
-        for (int d = 0; d < 3; ++d)
-          p[d] += jitter * (2 * uniform01(rng) - 1);
-        const std::size_t k = P.add(next_id++, p[0], p[1], p[2], r, density, f.material);
-        P.vx[k] = f.velocity[0], P.vy[k] = f.velocity[1], P.vz[k] = f.velocity[2];
+        const std::size_t i = P.add(next_id++, placed[k][0], placed[k][1], placed[k][2], radii[k], density, f.material);
+        P.vx[i] = f.velocity[0], P.vy[i] = f.velocity[1], P.vz[i] = f.velocity[2];
       }
     return wanted;
   }

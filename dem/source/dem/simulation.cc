@@ -571,9 +571,9 @@ namespace abrade::dem
                         }
                     }
                 }
-              const double ratio = overlap / std::min(ri, R[j]);
-              if (ratio > my_worst)
-                my_worst = ratio, my_i = i, my_j = j;
+              const double r_min = std::min(ri, R[j]);
+              if (overlap > my_worst * r_min)
+                my_worst = overlap / r_min, my_i = i, my_j = j;
             }
           fx[i] += fxi, fy[i] += fyi, fz[i] += fzi;
           if (rotation)
@@ -599,7 +599,7 @@ namespace abrade::dem
     ParticleStore    &P  = store;
     const Vec3        g  = config.gravity;
     constexpr int     K  = Impl::K;
-    constexpr int     max_hits = 16;
+    constexpr int     max_hits = 64;
 
     double worst = 0;
     long   worst_i = -1;
@@ -651,9 +651,19 @@ namespace abrade::dem
               const auto    cp  = closest_point_on_triangle(q, V + 3 * tri[0], V + 3 * tri[1], V + 3 * tri[2]);
               const double  dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
               const double  d2 = dx * dx + dy * dy + dz * dz;
-              if (d2 < ri * ri && d2 > 0 && n_hits < max_hits)
+              if (d2 < ri * ri && d2 > 0)
                 {
-                  Hit &h = hits[n_hits++];
+                  int slot = n_hits < max_hits ? n_hits++ : -1;
+                  if (slot < 0) // full (never seen in practice): replace the farthest hit
+                    {
+                      slot = 0;
+                      for (int q = 1; q < max_hits; ++q)
+                        if (hits[q].d2 > hits[slot].d2)
+                          slot = q;
+                      if (hits[slot].d2 <= d2)
+                        continue;
+                    }
+                  Hit &h = hits[slot];
                   h.wall = m.candidate_wall[k], h.tri = m.candidate_triangle[k], h.feature = cp.feature;
                   h.p[0] = cp.p[0], h.p[1] = cp.p[1], h.p[2] = cp.p[2], h.d2 = d2;
                 }
@@ -662,40 +672,41 @@ namespace abrade::dem
             m.hist_used[K * i + s] = 0;
           if (n_hits > 0)
             {
-              // One contact per touching feature: faces first, then edges, then vertices; an
-              // edge (vertex) is dropped when an accepted triangle of the same wall contains it,
-              // and any contact whose point coincides with an accepted one is dropped.
-              auto rank = [](Feature f) { return f == face ? 0 : f <= edge20 ? 1 : 2; };
-              std::sort(hits, hits + n_hits, [&](const Hit &a, const Hit &b) {
+              // One contact per touching region of a wall. The closest point on a triangle
+              // is a real contact only if it is a local minimum of the distance over the whole
+              // surface: a point on an edge (vertex) is dropped when a triangle that shares that
+              // edge (vertex) is closer, and a point already accepted from a neighbouring
+              // triangle (an edge or vertex seen from both sides) is not counted again.
+              std::sort(hits, hits + n_hits, [](const Hit &a, const Hit &b) {
                 if (a.wall != b.wall) return a.wall < b.wall;
-                if (rank(a.feature) != rank(b.feature)) return rank(a.feature) < rank(b.feature);
                 if (a.d2 != b.d2) return a.d2 < b.d2;
                 return a.tri < b.tri;
               });
               int n_acc = 0;
               for (int h = 0; h < n_hits; ++h)
                 {
-                  const auto &tris = walls[hits[h].wall].mesh.triangles;
-                  const auto &t    = tris[hits[h].tri];
-                  const Feature f  = hits[h].feature;
-                  bool keep = true;
+                  const auto   &tris = walls[hits[h].wall].mesh.triangles;
+                  const auto   &t    = tris[hits[h].tri];
+                  const Feature f    = hits[h].feature;
+                  bool          keep = true;
                   for (int a = 0; a < n_acc && keep; ++a)
                     {
-                      const Hit &acc = hits[accepted[a]];
-                      if (acc.wall != hits[h].wall)
-                        continue;
-                      const auto &ta = tris[acc.tri];
-                      // the same point seen from two triangles (a point on a shared edge that
-                      // round-off classifies as interior to both)
+                      const Hit   &acc = hits[accepted[a]];
                       const double dx = acc.p[0] - hits[h].p[0], dy = acc.p[1] - hits[h].p[1],
                                    dz = acc.p[2] - hits[h].p[2];
-                      if (dx * dx + dy * dy + dz * dz < 1e-16 * ri * ri)
-                        keep = false;
-                      else if (f >= edge01 && f <= edge20)
-                        keep = !(triangle_has(ta, t[f - 1]) && triangle_has(ta, t[f % 3]));
-                      else if (f >= vertex0)
-                        keep = !triangle_has(ta, t[f - vertex0]);
+                      keep = acc.wall != hits[h].wall || dx * dx + dy * dy + dz * dz >= 1e-16 * ri * ri;
                     }
+                  if (keep && f != face)
+                    for (int o = 0; o < n_hits && keep; ++o)
+                      {
+                        if (hits[o].wall != hits[h].wall || !(hits[o].d2 < hits[h].d2 * (1 - 1e-12)))
+                          continue;
+                        const auto &to = tris[hits[o].tri];
+                        if (f <= edge20)
+                          keep = !(triangle_has(to, t[f - 1]) && triangle_has(to, t[f % 3]));
+                        else
+                          keep = !triangle_has(to, t[f - vertex0]);
+                      }
                   if (keep)
                     accepted[n_acc++] = h;
                 }
@@ -931,7 +942,8 @@ namespace abrade::dem
           s << " with particle id " << store.id[m.worst_overlap_j];
         else
           s << " with a wall";
-        s << " at step " << stats.steps << " (t = " << t << " s); the time step may be too large";
+        s << " at step " << stats.steps << " (t = " << t << " s): the time step is too large, or the loads too high for the "
+             "particles' stiffness";
         if (config.stop_on_error)
           throw RunError(s.str());
         // warn once per phase, not every step

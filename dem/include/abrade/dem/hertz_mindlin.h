@@ -37,17 +37,23 @@ namespace abrade::dem
     const double f_el    = (4.0 / 3.0) * c.e_star * sqrt_rd * overlap;
     f.normal             = f_el - c.damping * std::sqrt(s_n * m_eff) * f.vn;
 
-    // Rotate the history into the current tangent plane, keeping its magnitude.
+    // Rotate the history into the current tangent plane, keeping its magnitude: project, then
+    // rescale by sqrt(|s|^2 / |s_projected|^2) = sqrt(1 + r) with r = sn^2 / |s_projected|^2.
+    // The normal turns little in one step, so r is tiny and the series is exact to round-off.
     const double sn = shear[0] * n[0] + shear[1] * n[1] + shear[2] * n[2];
-    const double m0 = shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2];
-    for (int d = 0; d < 3; ++d)
-      shear[d] -= sn * n[d];
-    const double m1 = shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2];
-    if (m1 > 0 && m0 != m1)
+    if (sn != 0)
       {
-        const double s = std::sqrt(m0 / m1);
-        for (int d = 0; d < 3; ++d)
-          shear[d] *= s;
+        const double m0 = shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2];
+        const double m1 = m0 - sn * sn;
+        if (m1 > 0)
+          {
+            const double r     = sn * sn / m1;
+            const double scale = r < 1e-5 ? 1 + r * (0.5 - 0.125 * r) : std::sqrt(1 + r);
+            for (int d = 0; d < 3; ++d)
+              shear[d] = (shear[d] - sn * n[d]) * scale;
+          }
+        else
+          shear[0] = shear[1] = shear[2] = 0;
       }
     for (int d = 0; d < 3; ++d)
       shear[d] += f.vt[d] * dt;
