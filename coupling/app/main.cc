@@ -143,7 +143,7 @@ namespace
       {
         // keep what is known about the failed run, then report it as usual
         finish(std::string("failed: ") + e.what());
-        log.line(std::string("error: ") + e.what());
+        log.file_only(std::string("error: ") + e.what());
         throw;
       }
     finish("completed");

@@ -12,6 +12,12 @@ namespace abrade::io
     void open(const std::string &path) { file.open(path, std::ios::app); }
     void line(const std::string &text);
     void warning(const std::string &text) { line("warning: " + text); }
+    /// Only into log.txt (for what is printed elsewhere, such as the final error on stderr).
+    void file_only(const std::string &text)
+    {
+      if (file)
+        file << text << std::endl;
+    }
 
   private:
     std::ofstream file;
