@@ -92,6 +92,8 @@ namespace abrade::dem
                       (2 - b.poisson_ratio) / b.shear_modulus());
     c.damping = model == DampingModel::edem ? -2 * std::sqrt(5.0 / 6.0) * edem_beta(i.restitution)
                                             : calibrated_damping(i.restitution);
+    c.sqrt_2e          = std::sqrt(2 * c.e_star);
+    c.sqrt_8g          = std::sqrt(8 * c.g_star);
     c.friction         = i.friction;
     c.rolling_friction = i.rolling_friction;
     c.restitution      = i.restitution;

@@ -30,11 +30,13 @@ namespace abrade::dem
     return k;
   }
 
-  void ParticleStore::permute(const std::vector<std::size_t> &order)
+  void ParticleStore::permute(const std::vector<std::size_t> &order, int threads)
   {
     for_each_array([&](auto &a) {
       std::remove_reference_t<decltype(a)> b(order.size());
-      for (std::size_t k = 0; k < order.size(); ++k)
+      const long                           n = static_cast<long>(order.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+      for (long k = 0; k < n; ++k)
         b[k] = a[order[k]];
       a.swap(b);
     });

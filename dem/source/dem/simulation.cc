@@ -32,6 +32,10 @@ namespace abrade::dem
     std::vector<double>         hist_shear;          // 3 K per particle
     std::vector<unsigned char>  hist_used;           // K per particle
 
+    // per-thread ranges of the pair loop, balanced by pair count (deterministic, unlike a
+    // dynamic schedule)
+    std::vector<std::size_t> thread_begin;
+
     // positions at the last build
     std::vector<double> x0, y0, z0;
     double              max_displacement = 0;
@@ -306,7 +310,7 @@ namespace abrade::dem
     std::vector<long> old_to_new(n_old, -1);
     for (std::size_t k = 0; k < n; ++k)
       old_to_new[order[k]] = static_cast<long>(k);
-    store.permute(order);
+    store.permute(order, m.n_threads);
 
     auto permute_slots = [&order, n](auto &v, int per) {
       std::remove_reference_t<decltype(v)> w(per * n);
@@ -398,6 +402,21 @@ namespace abrade::dem
                 m.shear[3 * q + d] = sign * old_shear[3 * p + d];
           }
       }
+
+    // balanced ranges for the pair loop: equal shares of (pairs + a constant per particle)
+    m.thread_begin.assign(m.n_threads + 1, n);
+    m.thread_begin[0] = 0;
+    {
+      const double total = double(m.offsets[n]) + 4.0 * n;
+      std::size_t  i     = 0;
+      for (int t = 1; t < m.n_threads; ++t)
+        {
+          const double target = total * t / m.n_threads;
+          while (i < n && double(m.offsets[i]) + 4.0 * i < target)
+            ++i;
+          m.thread_begin[t] = i;
+        }
+    }
 
     // 4. Wall candidates: particles within radius + skin of each triangle.
     std::vector<std::vector<std::array<int, 3>>> found(m.n_threads);
@@ -508,8 +527,10 @@ namespace abrade::dem
       double my_worst = 0;
       long   my_i = -1, my_j = -1;
 
-#pragma omp for schedule(static) nowait
-      for (std::size_t i = 0; i < n; ++i)
+      // every range is done, whatever the size of the team OpenMP gave us
+      const int team = omp_get_num_threads();
+      for (int range = tid; range < m.n_threads; range += team)
+      for (std::size_t i = m.thread_begin[range]; i < m.thread_begin[range + 1]; ++i)
         {
           const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i], mi = M[i];
           double       fxi = 0, fyi = 0, fzi = 0, txi = 0, tyi = 0, tzi = 0;
@@ -525,12 +546,15 @@ namespace abrade::dem
                   s[0] = s[1] = s[2] = 0;
                   continue;
                 }
+              // one division for 1/d, R* = ri rj / sr and m* = mi mj / (mi + mj)
               const double d       = std::sqrt(r2);
               const double overlap = sr - d;
-              const double inv_d   = 1 / d;
+              const double msum    = mi + M[j];
+              const double q       = 1 / (d * sr * msum);
+              const double inv_d   = sr * msum * q;
               const double nv[3]   = {dx * inv_d, dy * inv_d, dz * inv_d};
-              const double r_eff   = ri * R[j] / sr;
-              const double m_eff   = mi * M[j] / (mi + M[j]);
+              const double r_eff   = ri * R[j] * (d * msum * q);
+              const double m_eff   = mi * M[j] * (d * sr * q);
               double       vrel[3] = {VX[i] - VX[j], VY[i] - VY[j], VZ[i] - VZ[j]};
               if (rotation)
                 {

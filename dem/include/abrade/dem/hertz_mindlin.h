@@ -31,11 +31,13 @@ namespace abrade::dem
     for (int d = 0; d < 3; ++d)
       f.vt[d] = vrel[d] - f.vn * n[d];
 
+    // S_n = 2 E* sqrt(R* d), S_t = 8 G* sqrt(R* d); the damping needs sqrt(S m*), computed as
+    // sqrt(2 E*) (resp. sqrt(8 G*)) times one common sqrt(sqrt(R* d) m*)
     const double sqrt_rd = std::sqrt(r_eff * overlap);
-    const double s_n     = 2 * c.e_star * sqrt_rd;
     const double s_t     = 8 * c.g_star * sqrt_rd;
     const double f_el    = (4.0 / 3.0) * c.e_star * sqrt_rd * overlap;
-    f.normal             = f_el - c.damping * std::sqrt(s_n * m_eff) * f.vn;
+    const double w       = c.damping > 0 ? c.damping * std::sqrt(sqrt_rd * m_eff) : 0.0;
+    f.normal             = f_el - w * c.sqrt_2e * f.vn;
 
     // Rotate the history into the current tangent plane, keeping its magnitude: project, then
     // rescale by sqrt(|s|^2 / |s_projected|^2) = sqrt(1 + r) with r = sn^2 / |s_projected|^2.
@@ -74,7 +76,7 @@ namespace abrade::dem
       }
     else
       {
-        const double ct = c.damping * std::sqrt(s_t * m_eff);
+        const double ct = w * c.sqrt_8g;
         for (int d = 0; d < 3; ++d)
           f.ft[d] = fs[d] - ct * f.vt[d];
       }

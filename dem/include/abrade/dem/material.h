@@ -40,6 +40,8 @@ namespace abrade::dem
     double e_star           = 0; ///< effective Young's modulus E*
     double g_star           = 0; ///< effective shear modulus G*
     double damping          = 0; ///< c = damping * sqrt(S m*)  (= -2 sqrt(5/6) beta for edem)
+    double sqrt_2e          = 0; ///< sqrt(2 E*): S_n m* = 2 E* sqrt(R* d) m*
+    double sqrt_8g          = 0; ///< sqrt(8 G*)
     double friction         = 0;
     double rolling_friction = 0;
     double restitution      = 1;

@@ -26,7 +26,7 @@ namespace abrade::dem
                     int material);
 
     /// Reorders (and possibly drops) particles: new particle k is old particle order[k].
-    void permute(const std::vector<std::size_t> &order);
+    void permute(const std::vector<std::size_t> &order, int threads = 1);
     void clear();
 
   private:
