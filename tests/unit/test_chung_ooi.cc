@@ -25,7 +25,7 @@ namespace
   };
 
   Rebound impact(const Material &mat, double restitution, double friction, double angle_deg,
-                 DampingModel damping)
+                 DampingModel damping, double spin = 0)
   {
     const double m = sphere_mass(R, mat.density);
     const HertzImpact a(m, R, e_star(mat, mat), V);
@@ -39,6 +39,7 @@ namespace
     P.add(0, 0, 0, R + 1e-7, R, mat.density, ms);
     const double th = angle_deg * M_PI / 180;
     P.vx[0] = V * std::sin(th), P.vz[0] = -V * std::cos(th);
+    P.wy[0] = spin;
     sim.setup();
     bool touched = false;
     for (int k = 0; k < 100000; ++k)
@@ -106,4 +107,18 @@ TEST(ChungOoi, Test4ObliqueImpactMatchesRigidBodyTheoryWhenSliding)
       // sliding in +x on a floor below spins the sphere about +y
       EXPECT_GT(r.spin[1], 0);
     }
+}
+
+TEST(ChungOoi, Test6NormalImpactOfASpinningSphere)
+{
+  // Chung & Ooi test 6 in its sliding regime: a sphere spinning fast about y hits the plane
+  // normally (at a shared edge of the plane's two triangles); the contact point slides
+  // throughout, so friction changes the spin by -2.5 mu (1+e) V / R and gives the centre a
+  // tangential speed mu (1+e) V against the contact point's sliding direction.
+  const double mu = 0.092, e = 0.98, spin = 2000;
+  const Rebound r = impact(alumina, e, mu, 0.0, DampingModel::calibrated, spin);
+  EXPECT_NEAR(r.spin[1], spin - 2.5 * mu * (1 + e) * V / R, 5e-3 * 2.5 * mu * (1 + e) * V / R);
+  // the contact point (bottom) moves at -spin R in x, so friction pushes the sphere towards +x
+  EXPECT_NEAR(r.velocity[0], mu * (1 + e) * V, 5e-3 * mu * (1 + e) * V);
+  EXPECT_NEAR(r.velocity[2] / V, e, 2e-3);
 }

@@ -116,3 +116,13 @@ TEST(MeshFiles, BadFilesAreClearErrors)
   EXPECT_THROW(read_surface_mesh((dir / "mesh.xyz").string()), InputError);
   std::filesystem::remove(empty);
 }
+
+TEST(MeshFiles, ObjQuadsAreTriangulated)
+{
+  const auto path = (std::filesystem::temp_directory_path() / "abrade_quad.obj").string();
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  const TriangleMesh m = read_surface_mesh(path);
+  EXPECT_EQ(m.n_triangles(), 2u);
+  EXPECT_NEAR(m.total_area(), 1, 1e-12);
+  std::filesystem::remove(path);
+}

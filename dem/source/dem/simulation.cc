@@ -699,11 +699,14 @@ namespace abrade::dem
               // One contact per touching region of a wall. The closest point on a triangle
               // is a real contact only if it is a local minimum of the distance over the whole
               // surface: a point on an edge (vertex) is dropped when a triangle that shares that
-              // edge (vertex) is closer, and a point already accepted from a neighbouring
-              // triangle (an edge or vertex seen from both sides) is not counted again.
-              std::sort(hits, hits + n_hits, [](const Hit &a, const Hit &b) {
+              // edge (vertex) is at least as close, and a point already accepted from a
+              // neighbouring triangle (an edge or vertex seen from both sides) is not counted
+              // again. Round-off ties (a centre above a shared edge) are broken consistently.
+              auto rank = [](Feature f) { return f == face ? 0 : f <= edge20 ? 1 : 2; };
+              std::sort(hits, hits + n_hits, [&](const Hit &a, const Hit &b) {
                 if (a.wall != b.wall) return a.wall < b.wall;
                 if (a.d2 != b.d2) return a.d2 < b.d2;
+                if (rank(a.feature) != rank(b.feature)) return rank(a.feature) < rank(b.feature);
                 return a.tri < b.tri;
               });
               int n_acc = 0;
@@ -713,17 +716,22 @@ namespace abrade::dem
                   const auto   &t    = tris[hits[h].tri];
                   const Feature f    = hits[h].feature;
                   bool          keep = true;
+                  // the same point (within 1e-6 R) as an accepted contact of this wall
                   for (int a = 0; a < n_acc && keep; ++a)
                     {
                       const Hit   &acc = hits[accepted[a]];
                       const double dx = acc.p[0] - hits[h].p[0], dy = acc.p[1] - hits[h].p[1],
                                    dz = acc.p[2] - hits[h].p[2];
-                      keep = acc.wall != hits[h].wall || dx * dx + dy * dy + dz * dz >= 1e-16 * ri * ri;
+                      keep = acc.wall != hits[h].wall || dx * dx + dy * dy + dz * dz >= 1e-12 * ri * ri;
                     }
+                  // an edge (vertex) point with a triangle sharing that edge (vertex) at least as
+                  // close; ties go to faces, then to the hit sorted first
                   if (keep && f != face)
                     for (int o = 0; o < n_hits && keep; ++o)
                       {
-                        if (hits[o].wall != hits[h].wall || !(hits[o].d2 < hits[h].d2 * (1 - 1e-12)))
+                        if (o == h || hits[o].wall != hits[h].wall || !(hits[o].d2 <= hits[h].d2 * (1 + 1e-9)))
+                          continue;
+                        if (hits[o].feature != face && o > h)
                           continue;
                         const auto &to = tris[hits[o].tri];
                         if (f <= edge20)
