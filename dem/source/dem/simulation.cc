@@ -827,6 +827,8 @@ namespace abrade::dem
                       r.tangential_force[dd] = f.ft[dd], r.tangential_velocity[dd] = f.vt[dd];
                     }
                   r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
+                  r.centre_velocity[0] = P.vx[i] - vw[0], r.centre_velocity[1] = P.vy[i] - vw[1],
+                  r.centre_velocity[2] = P.vz[i] - vw[2];
                   log.push_back(r);
                   if (overlap / ri > my_worst)
                     my_worst = overlap / ri, my_i = i;

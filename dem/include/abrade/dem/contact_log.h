@@ -24,6 +24,7 @@ namespace abrade::dem
     double       normal_velocity;      ///< particle relative to wall along normal (< 0 approaching) [m/s]
     double       tangential_velocity[3]; ///< sliding velocity of the contact point [m/s]
     double       overlap;              ///< [m]
+    double       centre_velocity[3];   ///< particle centre relative to the wall's material point [m/s]
   };
 
   /// One record vector per thread, filled without locks; read in thread order (deterministic).

@@ -81,6 +81,13 @@ namespace abrade::dem
     /// Largest vertex displacement since the last neighbour-list build.
     double max_displacement_since_build() const;
     void   mark_build() { at_build = current; }
+    /// Unit normal of triangle @p t in its current position.
+    Vec3 current_normal(std::size_t t) const
+    {
+      const auto &tri = mesh.triangles[t];
+      const Vec3  a(&current[3 * tri[0]]), b(&current[3 * tri[1]]), c(&current[3 * tri[2]]);
+      return (b - a).cross(c - a).normalized();
+    }
     /// Current geometry of the wall as a mesh (reference topology).
     TriangleMesh current_mesh() const;
   };

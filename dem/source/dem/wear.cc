@@ -1,0 +1,181 @@
+#include <abrade/dem/simulation.h>
+#include <abrade/dem/wear.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace abrade::dem
+{
+  const char *WearRecorder::field_name(Field f)
+  {
+    static const char *names[] = {"archard_volume", "relative_normal_energy", "relative_tangential_energy",
+                                  "finnie_wear"};
+    return names[f];
+  }
+
+  WearRecorder::WearRecorder(const Simulation &sim, std::vector<WearLaws> laws)
+  {
+    walls.resize(sim.n_walls());
+    for (std::size_t w = 0; w < sim.n_walls(); ++w)
+      {
+        WallData           &d    = walls[w];
+        const TriangleMesh &mesh = sim.wall(w).mesh;
+        if (w < laws.size())
+          d.laws = laws[w];
+        else
+          d.laws.archard = false;
+        d.area.resize(mesh.n_triangles());
+        for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
+          d.area[t] = mesh.area(t);
+        d.vertex_offsets.assign(mesh.vertices.size() + 1, 0);
+        for (const auto &t : mesh.triangles)
+          for (int v : t)
+            ++d.vertex_offsets[v + 1];
+        for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+          d.vertex_offsets[v + 1] += d.vertex_offsets[v];
+        d.vertex_triangles.resize(d.vertex_offsets.back());
+        std::vector<int> fill(d.vertex_offsets.begin(), d.vertex_offsets.end() - 1);
+        for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
+          for (int v : mesh.triangles[t])
+            d.vertex_triangles[fill[v]++] = static_cast<int>(t);
+      }
+  }
+
+  bool WearRecorder::tracks(std::size_t wall, Field f) const
+  {
+    const WearLaws &l = walls[wall].laws;
+    switch (f)
+      {
+        case archard_volume: return l.archard;
+        case relative_normal_energy:
+        case relative_tangential_energy: return l.relative;
+        case finnie: return l.finnie;
+        default: return false;
+      }
+  }
+
+  void WearRecorder::phase_changed(const Simulation &, const std::string &phase)
+  {
+    current = phase;
+    if (std::find(phase_order.begin(), phase_order.end(), phase) == phase_order.end())
+      phase_order.push_back(phase);
+  }
+
+  void WearRecorder::deposit(const Simulation &sim, const WallContactRecord &r, Field f, double amount,
+                             bool per_area)
+  {
+    WallData &d   = walls[r.wall];
+    auto     &per = d.data[current];
+    if (per.empty())
+      per.assign(n_fields, std::vector<double>(d.area.size(), 0.0));
+    // triangles that share the contact point: from its barycentric coordinates in the carrying
+    // triangle (robust where round-off calls a point on an edge interior): none ~ 0 -> this
+    // triangle; one ~ 0 -> the edge opposite that corner; two ~ 0 -> the remaining corner
+    const Wall &wall = sim.wall(r.wall);
+    const auto &tris = wall.mesh.triangles;
+    const auto &t    = tris[r.triangle];
+    const Vec3  a(&wall.current[3 * t[0]]), b(&wall.current[3 * t[1]]), c(&wall.current[3 * t[2]]);
+    const Vec3  p(r.point[0], r.point[1], r.point[2]);
+    const Vec3  n      = (b - a).cross(c - a);
+    const double inv   = 1 / n.squaredNorm();
+    const double bary[3] = {n.dot((c - b).cross(p - b)) * inv, n.dot((a - c).cross(p - c)) * inv,
+                            n.dot((b - a).cross(p - a)) * inv};
+    int on[3], n_on = 0;
+    for (int k = 0; k < 3; ++k)
+      if (bary[k] < 1e-9)
+        on[n_on++] = k;
+    share.clear();
+    if (n_on == 0 || n_on == 3)
+      share.push_back(r.triangle);
+    else
+      {
+        // n_on == 1: the edge of the two other corners; n_on == 2: the third corner alone
+        int corners[2], n_c = 0;
+        for (int k = 0; k < 3; ++k)
+          if (std::find(on, on + n_on, k) == on + n_on)
+            corners[n_c++] = t[k];
+        const int va = corners[0], vb = n_c > 1 ? corners[1] : -1;
+        for (int k = d.vertex_offsets[va]; k < d.vertex_offsets[va + 1]; ++k)
+          {
+            const int   o  = d.vertex_triangles[k];
+            const auto &to = tris[o];
+            if (vb < 0 || to[0] == vb || to[1] == vb || to[2] == vb)
+              share.push_back(o);
+          }
+      }
+    const double part = amount / share.size();
+    for (int o : share)
+      per[f][o] += per_area ? part / d.area[o] : part;
+  }
+
+  void WearRecorder::after_step(const Simulation &sim, const ContactLog &log)
+  {
+    const double dt = sim.dt();
+    log.for_each([&](const WallContactRecord &r) {
+      const WearLaws &l = walls[r.wall].laws;
+      if (!(l.archard || l.relative || l.finnie))
+        return;
+      const double vt = std::sqrt(r.tangential_velocity[0] * r.tangential_velocity[0] +
+                                  r.tangential_velocity[1] * r.tangential_velocity[1] +
+                                  r.tangential_velocity[2] * r.tangential_velocity[2]);
+      if (l.archard)
+        deposit(sim, r, archard_volume, l.archard_coefficient * std::max(r.normal_force, 0.0) * vt * dt, false);
+      if (l.relative)
+        {
+          const double ftvt = r.tangential_force[0] * r.tangential_velocity[0] +
+                              r.tangential_force[1] * r.tangential_velocity[1] +
+                              r.tangential_force[2] * r.tangential_velocity[2];
+          deposit(sim, r, relative_normal_energy, std::abs(r.normal_force * r.normal_velocity) * dt, false);
+          deposit(sim, r, relative_tangential_energy, std::abs(ftvt) * dt, false);
+        }
+      if (l.finnie)
+        {
+          const double *v  = r.centre_velocity;
+          const double  vm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+          // the contact point lies at -normal from the centre: only approaching particles wear
+          const double approach = -(v[0] * r.normal[0] + v[1] * r.normal[1] + v[2] * r.normal[2]);
+          if (vm > 1e-7 && approach >= 0)
+            {
+              const Vec3   n  = sim.wall(r.wall).current_normal(r.triangle);
+              const double vn = std::abs(v[0] * n[0] + v[1] * n[1] + v[2] * n[2]);
+              const double sin_g = std::min(1.0, vn / vm);
+              const double cos_g = std::min(1.0, std::sqrt(std::max(0.0, vm * vm - vn * vn)) / vm);
+              const double fg = (cos_g < 1e-3 || 3 * sin_g > cos_g) ? cos_g * cos_g / 3
+                                                                      : 2 * sin_g * cos_g - 3 * sin_g * sin_g;
+              const double fmag = std::sqrt(r.normal_force * r.normal_force +
+                                            r.tangential_force[0] * r.tangential_force[0] +
+                                            r.tangential_force[1] * r.tangential_force[1] +
+                                            r.tangential_force[2] * r.tangential_force[2]);
+              deposit(sim, r, finnie, 2 * l.finnie_coefficient * vm * fmag * fg * dt, true);
+            }
+        }
+    });
+  }
+
+  std::vector<double> WearRecorder::values(std::size_t wall, Field f, const std::string &phase) const
+  {
+    const WallData     &d = walls[wall];
+    std::vector<double> out(d.area.size(), 0.0);
+    for (const auto &[name, per] : d.data)
+      if (phase.empty() || name == phase)
+        for (std::size_t t = 0; t < out.size(); ++t)
+          out[t] += per[f][t];
+    return out;
+  }
+
+  std::vector<double> WearRecorder::archard_depth(std::size_t wall, const std::string &phase) const
+  {
+    std::vector<double> v = values(wall, archard_volume, phase);
+    for (std::size_t t = 0; t < v.size(); ++t)
+      v[t] /= walls[wall].area[t];
+    return v;
+  }
+
+  double WearRecorder::total(std::size_t wall, Field f, const std::string &phase) const
+  {
+    double s = 0;
+    for (double x : values(wall, f, phase))
+      s += x;
+    return s;
+  }
+} // namespace abrade::dem
