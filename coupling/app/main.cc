@@ -15,9 +15,12 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/coupling/sweep.h>
 #include <abrade/dem/mesh_io.h>
 
 #include <chrono>
+#include <filesystem>
+#include <sstream>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -32,6 +35,10 @@ namespace
       run the job the parameter file describes (no file: the embedded small default case)
   abrade params [--format text|prm]
       print every parameter with its documentation, unit, allowed range and default
+  abrade sweep FILE.prm --vary "Section/Key=v1,v2,..." [--seeds 1,2,3] [--wall knife]
+               [--jobs N] [--set ...]... --output DIR
+      run the case for every value and seed (one settled bed per seed, reused), in parallel,
+      and write study.csv/.md (mean and std over seeds), plots/*.png and surfaces/*.vtp
   abrade export-walls [FILE.prm] [--set ...]... --output DIR
       write every wall of the case, as the simulation sees it at t = 0, as DIR/NAME.stl
   abrade --version
@@ -44,6 +51,8 @@ namespace
     std::vector<std::string> sets;
     std::string              output;
     std::string              format = "text";
+    std::string              vary, seeds = "1,2,3", wall = "knife";
+    int                      jobs = 0;
     bool                     quiet  = false;
     bool                     resume = false;
   };
@@ -70,6 +79,24 @@ namespace
           cl.output = value("--output");
         else if (a[k] == "--format")
           cl.format = value("--format");
+        else if (a[k] == "--vary")
+          cl.vary = value("--vary");
+        else if (a[k] == "--seeds")
+          cl.seeds = value("--seeds");
+        else if (a[k] == "--wall")
+          cl.wall = value("--wall");
+        else if (a[k] == "--jobs")
+          {
+            const std::string v = value("--jobs");
+            try
+              {
+                cl.jobs = std::stoi(v);
+              }
+            catch (const std::exception &)
+              {
+                throw InputError("command line", "--jobs needs a number, got '" + v + "'");
+              }
+          }
         else if (a[k] == "--quiet" || a[k] == "-q")
           cl.quiet = true;
         else if (a[k] == "--resume")
@@ -107,8 +134,11 @@ namespace
     const std::string canonical = params.canonical_text();
     std::ofstream(out.file("parameters.prm")) << canonical;
 
+    prm.enter_subsection("Simulation");
+    const long threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : omp_get_max_threads();
+    prm.leave_subsection();
     log.line("abrade " + std::string(version_string) + ": job '" + job_name + "' from " + params.file_name() +
-             ", output in " + dir + ", " + std::to_string(omp_get_max_threads()) + " threads");
+             ", output in " + dir + ", " + std::to_string(threads) + " threads");
 
     io::Json summary;
     summary["abrade_version"] = version_string;
@@ -121,7 +151,7 @@ namespace
       std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
       summary["started"] = buf;
     }
-    summary["threads"] = omp_get_max_threads();
+    summary["threads"] = threads;
     io::Timers           timers;
     io::Json            &results = summary["results"];
     coupling::JobContext ctx{params, out, results, timers, log, cl.resume};
@@ -180,6 +210,29 @@ int main(int argc, char **argv)
           else
             throw InputError("command line", "--format must be text or prm");
           return 0;
+        }
+      if (cl.command == "sweep")
+        {
+          if (cl.file.empty())
+            throw InputError("command line", "sweep needs a parameter file");
+          coupling::ParameterFile check(cl.file, cl.sets); // fail early on a bad file
+          coupling::SweepOptions  o;
+          o.parameter_file = std::filesystem::absolute(cl.file).string();
+          coupling::parse_vary(cl.vary.empty() ? "" : cl.vary, o);
+          o.seeds.clear();
+          std::stringstream ss(cl.seeds);
+          for (std::string s; std::getline(ss, s, ',');)
+            try
+              {
+                o.seeds.push_back(std::stoi(s));
+              }
+            catch (const std::exception &)
+              {
+                throw InputError("--seeds '" + cl.seeds + "'", "expected integers separated by commas");
+              }
+          o.sets = cl.sets, o.output = cl.output, o.wall = cl.wall, o.jobs = cl.jobs, o.quiet = cl.quiet;
+          io::ProgressLine::set_quiet(cl.quiet);
+          return coupling::run_sweep(o, std::filesystem::canonical("/proc/self/exe").string());
         }
       if (cl.command == "export-walls")
         {

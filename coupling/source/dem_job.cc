@@ -3,18 +3,26 @@
 // 1. Read the case (materials, walls, phases) and build the simulation.
 // 2. Bed: load the settled bed if a bed file exists; otherwise generate particles in the fill
 //    region, pour and settle them, and save the bed for later runs.
-// 3. Run the phases in order, writing ParaView snapshots and wall forces at their intervals.
-// 4. Report the throughput and the wall loads per phase in summary.json.
+// 3. Attach the wear laws and the contact-layer probes of the walls that ask for them.
+// 4. Run the phases in order, writing ParaView snapshots (with per-triangle wear fields) and
+//    wall forces at their intervals.
+// 5. Write the wear and probe tables, and report throughput, loads and wear per phase in
+//    summary.json.
 #include <abrade/common/error.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/common/csv_writer.h>
 #include <abrade/dem/generation.h>
+#include <abrade/dem/layer_probe.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/dem/output.h>
+#include <abrade/dem/wear.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 namespace abrade::coupling
@@ -101,7 +109,39 @@ namespace abrade::coupling
     ctx.log.line("Particles: " + std::to_string(sim.particles().size()) + ", time step " + fmt(sim.dt()) +
                  " s (" + fmt(sim.dt() / sim.rayleigh_time_step()) + " x Rayleigh)");
 
+    // wear laws and contact-layer probes
+    std::vector<dem::WearLaws> laws;
+    for (const auto &wc : c.walls)
+      laws.push_back(wc.wear);
+    auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
+    sim.add_hook(wear);
+    std::vector<std::shared_ptr<dem::LayerProbe>> probes;
+    double r_max = 0;
+    for (double r : sim.particles().radius)
+      r_max = std::max(r_max, r);
+    for (std::size_t w = 0; w < c.walls.size(); ++w)
+      if (c.walls[w].probe)
+        {
+          const double thickness = c.walls[w].probe_thickness > 0 ? c.walls[w].probe_thickness : 1.5 * r_max;
+          probes.push_back(std::make_shared<dem::LayerProbe>(
+            sim, w, thickness, c.walls[w].probe_axis, std::max(1L, std::lround(c.walls[w].probe_interval / sim.dt()))));
+          sim.add_hook(probes.back());
+        }
+
     dem::DemOutput output(ctx.output.root(), sim, c.write_particles);
+    using Field = dem::WearRecorder::Field;
+    output.add_triangle_field("archard_depth", [wear](const dem::Simulation &s, std::size_t w) {
+      return wear->tracks(w, Field::archard_volume) ? wear->archard_depth(w) : std::vector<double>(s.wall(w).mesh.n_triangles(), 0.0);
+    });
+    for (const auto &[phase, duration] : c.phases)
+      output.add_triangle_field("archard_depth_" + phase, [wear, phase = phase](const dem::Simulation &s, std::size_t w) {
+        return wear->tracks(w, Field::archard_volume) ? wear->archard_depth(w, phase)
+                                                     : std::vector<double>(s.wall(w).mesh.n_triangles(), 0.0);
+      });
+    for (Field f : {Field::relative_normal_energy, Field::relative_tangential_energy, Field::finnie})
+      output.add_triangle_field(dem::WearRecorder::field_name(f), [wear, f](const dem::Simulation &s, std::size_t w) {
+        return wear->tracks(w, f) ? wear->values(w, f) : std::vector<double>(s.wall(w).mesh.n_triangles(), 0.0);
+      });
     output.write_snapshot(sim);
     const long snapshot_every = c.snapshot_interval > 0 ? std::max(1L, std::lround(c.snapshot_interval / sim.dt())) : 0;
     const long force_every    = std::max(1L, std::lround(c.force_interval / sim.dt()));
@@ -153,6 +193,60 @@ namespace abrade::coupling
                      " particle-steps/s");
       }
     progress.finish();
+    if (snapshot_every && sim.step_number() % snapshot_every != 0)
+      output.write_snapshot(sim); // the final state, with the complete wear fields
+
+    // wear per wall and phase: walls/NAME_wear.csv and summary.json
+    for (std::size_t w = 0; w < sim.n_walls(); ++w)
+      {
+        const std::string &name = sim.wall(w).name;
+        if (!(laws[w].archard || laws[w].relative || laws[w].finnie))
+          continue;
+        io::CsvWriter csv(ctx.output.file("walls/" + name + "_wear.csv"),
+                          {"phase", "archard_volume", "archard_max_depth", "relative_normal_energy",
+                           "relative_tangential_energy", "finnie_wear"});
+        std::vector<std::string> rows;
+        for (const auto &p : c.phases)
+          rows.push_back(p.first);
+        rows.push_back("");
+        for (const auto &phase : rows)
+          {
+            const auto   depth = wear->archard_depth(w, phase);
+            const double row[] = {wear->total(w, Field::archard_volume, phase),
+                                  depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end()),
+                                  wear->total(w, Field::relative_normal_energy, phase),
+                                  wear->total(w, Field::relative_tangential_energy, phase),
+                                  wear->total(w, Field::finnie, phase)};
+            csv.row(phase.empty() ? "total" : phase, std::vector<double>(row, row + 5));
+            io::Json &j = ctx.results["wear"][name][phase.empty() ? "total" : phase];
+            j["archard_volume"]    = row[0];
+            j["archard_max_depth"] = row[1];
+            if (laws[w].relative)
+              j["relative_normal_energy"] = row[2], j["relative_tangential_energy"] = row[3];
+            if (laws[w].finnie)
+              j["finnie_wear"] = row[4];
+          }
+      }
+    // contact-layer probes: walls/NAME_layer.csv, and the mean slip of the layer per phase
+    for (const auto &probe : probes)
+      {
+        const std::string &name = sim.wall(probe->wall_index()).name;
+        io::CsvWriter      csv(ctx.output.file("walls/" + name + "_layer.csv"),
+                               {"phase", "time", "count", "mean_velocity", "wall_velocity"});
+        std::map<std::string, std::array<double, 3>> per_phase; // samples, sum velocity, sum count
+        for (const auto &smp : probe->samples())
+          {
+            csv.row(smp.phase, {smp.time, double(smp.count), smp.mean_velocity, smp.wall_velocity});
+            auto &a = per_phase[smp.phase];
+            a[0] += 1, a[1] += smp.mean_velocity, a[2] += smp.count;
+          }
+        for (const auto &[phase, a] : per_phase)
+          {
+            io::Json &j            = ctx.results["layer"][name][phase];
+            j["mean_velocity"]     = a[1] / a[0];
+            j["mean_count"]        = a[2] / a[0];
+          }
+      }
     const auto stats = sim.statistics();
     io::Json  &r     = ctx.results;
     r["particles"]   = static_cast<long>(sim.particles().size());

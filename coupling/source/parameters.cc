@@ -232,6 +232,31 @@ namespace abrade::coupling
         prm.declare_entry("Flip normals", "false", Bool(), "Reverse the orientation of every triangle.");
         declare_material(prm, 7e10, 0.3, 7800, false);
         declare_interaction(prm, 0.6, name == "knife" ? 0.4 : 0.5, "particle-wall");
+        prm.enter_subsection("Wear");
+        prm.declare_entry("Laws", name == "knife" ? "archard" : "", List(Selection("archard|relative|finnie")),
+                          "Wear laws evaluated per triangle of this wall (any of archard, relative, "
+                          "finnie; empty: none). archard: volume W F_n d_t (EDEM); relative: "
+                          "cumulative normal and tangential contact energy; finnie: LIGGGHTS' "
+                          "impact wear. All are reported per phase (docs/physics.md).");
+        prm.declare_entry("Archard coefficient", "1", Double(0, huge),
+                          "[1/Pa] W = K / H of this wall against the particles. The thesis' SFC study "
+                          "uses W = 1 (relative values); a lifetime prediction needs a calibrated "
+                          "value (K ~ 1e-5..1e-3, H ~ 5e9 Pa for wear-resistant steel). Range: >= 0.");
+        prm.declare_entry("Finnie coefficient", "1", Double(0, huge),
+                          "[-] k_finnie of the Finnie law (LIGGGHTS' peratomtypepair value). Range: >= 0.");
+        prm.leave_subsection();
+        prm.enter_subsection("Layer probe");
+        prm.declare_entry("Enabled", name == "knife" ? "true" : "false", Bool(),
+                          "Record the particles in direct contact with this wall (the thesis' "
+                          "geometry bin, which moves with the wall): their number and mean velocity "
+                          "along Axis, in walls/NAME_layer.csv.");
+        declare_vector(prm, "Axis", "1, 0, 0", "[-] Direction of the velocities the probe reports.");
+        prm.declare_entry("Thickness", "0", Double(0, huge),
+                          "[m] Largest distance from the wall's surface to a particle centre in the "
+                          "layer; 0: 1.5 x the largest particle radius (one layer). Range: >= 0.");
+        prm.declare_entry("Interval", "0.001", Double(0, huge),
+                          "[s] Simulated time between probe samples; 0: every step. Range: >= 0.");
+        prm.leave_subsection();
         prm.enter_subsection("Motion");
         prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed",
                           Selection("fixed|prescribed|rigid body"),
@@ -447,6 +472,22 @@ namespace abrade::coupling
           w.mesh.flip();
         wc.material    = read_material(f, wp, name);
         wc.interaction = read_interaction(prm);
+
+        prm.enter_subsection("Wear");
+        wc.wear.archard = wc.wear.relative = wc.wear.finnie = false;
+        for (const auto &law : get_list(prm, "Laws"))
+          (law == "archard" ? wc.wear.archard : law == "relative" ? wc.wear.relative : wc.wear.finnie) = true;
+        wc.wear.archard_coefficient = prm.get_double("Archard coefficient");
+        wc.wear.finnie_coefficient  = prm.get_double("Finnie coefficient");
+        prm.leave_subsection();
+        prm.enter_subsection("Layer probe");
+        wc.probe           = prm.get_bool("Enabled");
+        wc.probe_axis      = get_vector(prm, "Axis");
+        wc.probe_thickness = prm.get_double("Thickness");
+        wc.probe_interval  = prm.get_double("Interval");
+        prm.leave_subsection();
+        if (wc.probe && !(wc.probe_axis.norm() > 0))
+          f.fail({wp[0], "Layer probe"}, "Axis", "must not be zero");
 
         prm.enter_subsection("Motion");
         auto              mp   = wp;

@@ -135,7 +135,7 @@ namespace abrade::dem
     placed.reserve(wanted);
     radii.reserve(wanted);
     std::mt19937_64 rng(f.seed);
-    constexpr int   max_attempts = 2000;
+    constexpr int   max_attempts = 20000;
     for (long k = 0; k < wanted; ++k)
       {
         const double r  = f.sizes.sample(rng);

@@ -5,6 +5,7 @@
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/dem/generation.h>
 #include <abrade/dem/simulation.h>
+#include <abrade/dem/wear.h>
 
 #include <string>
 #include <utility>
@@ -44,6 +45,11 @@ namespace abrade::coupling
       dem::Wall        wall;
       dem::Material    material;
       dem::Interaction interaction;
+      dem::WearLaws    wear;
+      bool             probe = false;          ///< the contact-layer probe (geometry bin)
+      dem::Vec3        probe_axis = dem::Vec3::UnitX();
+      double           probe_thickness = 0;    ///< 0: 1.5 x the largest particle radius
+      double           probe_interval  = 1e-3; ///< [s]
     };
     std::vector<WallCase> walls;
     double snapshot_interval = 0.05, force_interval = 1e-3;
