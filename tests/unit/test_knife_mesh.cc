@@ -1,0 +1,152 @@
+// The parametric knife (Gmsh, tetrahedra) has its analytic volume, the clamped top face its
+// area, and cells of good quality; the quality measure gives 1 for ideal cells and flags
+// inverted ones; moving the knife with a mesh-motion solve keeps the mesh valid.
+#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/mesh_motion.h>
+#include <abrade/fem/mesh_quality.h>
+#include <abrade/fem/solid_output.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace dealii;
+using namespace abrade::fem;
+
+namespace
+{
+  std::string tmp(const std::string &n) { return (std::filesystem::temp_directory_path() / n).string(); }
+
+  double face_area(const Triangulation<3> &tria, types::boundary_id id)
+  {
+    double a = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &f : cell->face_iterators())
+        if (f->at_boundary() && f->boundary_id() == id)
+          a += f->measure();
+    return a;
+  }
+} // namespace
+
+TEST(KnifeMesh, ReferenceKnifeVolumeAreaAndQuality)
+{
+  KnifeGeometry    k; // the reference knife: 0.4 x 0.5 x 0.03, 40 mm chisel bevel
+  Triangulation<3> tria;
+  k.mesh(tria, 0.03, tmp("abrade_knife.msh"));
+  EXPECT_NEAR(k.volume(), 0.00576, 1e-15);
+  EXPECT_NEAR(mesh_volume(tria), 0.00576, 1e-12);
+
+  EXPECT_NEAR(face_area(tria, KnifeGeometry::clamped_boundary), 0.4 * 0.03, 1e-12);
+  const MeshQuality q = mesh_quality(tria);
+  EXPECT_EQ(q.n_inverted, 0u);
+  EXPECT_GT(q.min_scaled_jacobian, 0.1);
+  std::printf("reference knife: %u tets, min scaled Jacobian %.3f, max aspect ratio %.2f\n", tria.n_active_cells(),
+              q.min_scaled_jacobian, q.max_aspect_ratio);
+}
+
+TEST(KnifeMesh, ConceptShapes)
+{
+  // one-sided bevel with a lip: a polygon, so the mesh volume is exact
+  KnifeGeometry k;
+  k.bevel_side = KnifeGeometry::BevelSide::plus;
+  k.lip_height = 0.02, k.lip_width = 0.01, k.lip_offset = 0.03;
+  Triangulation<3> tria;
+  k.mesh(tria, 0.03, tmp("abrade_knife_lip.msh"));
+  EXPECT_NEAR(k.volume(), 0.4 * (0.03 * 0.46 + 0.03 * 0.04 / 2 + 0.02 * 0.01), 1e-15);
+  EXPECT_NEAR(mesh_volume(tria), k.volume(), 1e-12);
+  EXPECT_EQ(mesh_quality(tria).n_inverted, 0u);
+
+  // a rounded edge removes a little material at the tip
+  KnifeGeometry r;
+  r.tip_radius = 0.004;
+  Triangulation<3> rounded;
+  r.mesh(rounded, 0.03, tmp("abrade_knife_round.msh"));
+  EXPECT_LT(mesh_volume(rounded), r.volume());
+  EXPECT_GT(mesh_volume(rounded), r.volume() - 0.4 * 0.004 * 0.02);
+}
+
+TEST(KnifeMesh, BadParametersAreClearErrors)
+{
+  KnifeGeometry k;
+  k.bevel = 0.6;
+  EXPECT_THROW(k.check(), std::exception);
+  k       = KnifeGeometry();
+  k.tip_radius = 0.02;
+  EXPECT_THROW(k.check(), std::exception);
+}
+
+TEST(MeshQualityMeasure, IdealAndInvertedCells)
+{
+  Triangulation<3> cube;
+  GridGenerator::hyper_cube(cube);
+  EXPECT_NEAR(mesh_quality(cube).min_scaled_jacobian, 1, 1e-14);
+  EXPECT_NEAR(mesh_quality(cube).max_aspect_ratio, 1, 1e-14);
+
+  Triangulation<3> tet;
+  GridGenerator::reference_cell(tet, ReferenceCells::Tetrahedron);
+  // move the reference tetrahedron to a regular one
+  const double s = 1 / std::sqrt(2.0);
+  std::vector<Tensor<1, 3>> d(4);
+  const Point<3> regular[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  const Point<3> ref[4]     = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  // pick an orientation-preserving assignment: det of the regular set in this order
+  const Tensor<2, 3> J({{regular[1][0] - regular[0][0], regular[2][0] - regular[0][0], regular[3][0] - regular[0][0]},
+                        {regular[1][1] - regular[0][1], regular[2][1] - regular[0][1], regular[3][1] - regular[0][1]},
+                        {regular[1][2] - regular[0][2], regular[2][2] - regular[0][2], regular[3][2] - regular[0][2]}});
+  const bool flip = determinant(J) < 0;
+  for (unsigned v = 0; v < 4; ++v)
+    {
+      const unsigned w = flip && v >= 2 ? 5 - v : v; // swap vertices 2 and 3 to fix the orientation
+      for (unsigned c = 0; c < 3; ++c)
+        d[tet.begin_active()->vertex_index(v)][c] = s * regular[w][c] - ref[v][c];
+    }
+  move_vertices(tet, d);
+  EXPECT_NEAR(mesh_quality(tet).min_scaled_jacobian, 1, 1e-12);
+
+  // push a vertex through the opposite face: inverted
+  std::vector<Tensor<1, 3>> push(tet.n_vertices());
+  push[tet.begin_active()->vertex_index(0)] = 3 * (tet.begin_active()->center() - tet.begin_active()->vertex(0));
+  move_vertices(tet, push);
+  EXPECT_EQ(mesh_quality(tet).n_inverted, 1u);
+  EXPECT_LT(mesh_quality(tet).min_scaled_jacobian, 0);
+}
+
+TEST(KnifeMesh, WornEdgeCarriedIntoTheInteriorKeepsTheMeshValid)
+{
+  // the edge recedes by 8 mm, fading linearly to nothing 0.1 m above it; the top is clamped
+  KnifeGeometry    k;
+  Triangulation<3> tria;
+  k.mesh(tria, 0.02, tmp("abrade_knife_worn.msh"));
+  const double v0 = mesh_volume(tria);
+  class Wear : public Function<3>
+  {
+  public:
+    Wear() : Function<3>(3) {}
+    double value(const Point<3> &p, unsigned c) const override
+    {
+      return c == 2 ? 0.008 * std::max(0.0, 1 - p[2] / 0.1) : 0.0;
+    }
+  } wear;
+  Functions::ZeroFunction<3> zero(3);
+  MeshMotion motion(tria, {1, 1.0, 1e-10});
+  motion.solve({{KnifeGeometry::wearable_boundary, &wear}, {KnifeGeometry::clamped_boundary, &zero}});
+  move_vertices(tria, motion.vertex_displacements());
+  const MeshQuality q = mesh_quality(tria);
+  EXPECT_EQ(q.n_inverted, 0u);
+  EXPECT_GT(q.min_scaled_jacobian, 0.02);
+  // the displacement is linear in z: the lowest 0.1 m of the profile (area 0.03 x 0.06 +
+  // 0.03 x 0.04 / 2 = 0.0024 m^2) is compressed by 8 % over the knife's 0.4 m, exactly
+  EXPECT_NEAR(v0 - mesh_volume(tria), 0.08 * 0.0024 * 0.4, 1e-12);
+  std::printf("worn knife: volume %.6g -> %.6g m^3, min scaled Jacobian %.3f, CG iterations %u\n", v0,
+              mesh_volume(tria), q.min_scaled_jacobian, motion.last_iterations());
+}
+
+int main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
