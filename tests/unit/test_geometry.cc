@@ -1,7 +1,7 @@
 // Triangle meshes: the reference knife's volume, conforming refinement, welding, closedness,
 // the closest-point features, and mesh files through VTK (STL written and read back).
 #include <abrade/common/error.h>
-#include <abrade/dem/closest_point.h>
+#include <abrade/common/closest_point.h>
 #include <abrade/dem/generation.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/dem/triangle_mesh.h>

@@ -8,6 +8,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSTLWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <fstream>
@@ -73,6 +74,29 @@ namespace abrade::io
     writer->SetFileName(path.c_str());
     writer->SetInputData(poly);
     writer->SetDataModeToBinary();
+    if (writer->Write() != 1)
+      throw RunError("cannot write " + path);
+  }
+
+  void write_stl(const std::string &path, const PolyData &data)
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (std::size_t i = 0; i < data.points.size() / 3; ++i)
+      points->InsertNextPoint(&data.points[3 * i]);
+    vtkNew<vtkCellArray> cells;
+    for (const auto &t : data.triangles)
+      {
+        vtkIdType ids[3] = {t[0], t[1], t[2]};
+        cells->InsertNextCell(3, ids);
+      }
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    poly->SetPolys(cells);
+    vtkNew<vtkSTLWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(poly);
+    writer->SetFileTypeToBinary();
     if (writer->Write() != 1)
       throw RunError("cannot write " + path);
   }

@@ -1,5 +1,5 @@
 #include <abrade/common/error.h>
-#include <abrade/dem/closest_point.h>
+#include <abrade/common/closest_point.h>
 #include <abrade/dem/generation.h>
 #include <abrade/dem/simulation.h>
 

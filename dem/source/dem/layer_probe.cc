@@ -1,4 +1,4 @@
-#include <abrade/dem/closest_point.h>
+#include <abrade/common/closest_point.h>
 #include <abrade/dem/layer_probe.h>
 #include <abrade/dem/simulation.h>
 

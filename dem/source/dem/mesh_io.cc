@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/vtk_output.h>
 #include <abrade/dem/mesh_io.h>
 
 #include <vtkCellArray.h>
@@ -8,7 +9,6 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkSTLReader.h>
-#include <vtkSTLWriter.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataReader.h>
@@ -105,24 +105,11 @@ namespace abrade::dem
 
   void write_stl(const std::string &path, const TriangleMesh &mesh)
   {
-    vtkNew<vtkPoints> pts;
-    pts->SetDataTypeToDouble();
+    io::PolyData d;
     for (const auto &v : mesh.vertices)
-      pts->InsertNextPoint(v.data());
-    vtkNew<vtkCellArray> cells;
+      d.points.insert(d.points.end(), {v[0], v[1], v[2]});
     for (const auto &t : mesh.triangles)
-      {
-        vtkIdType ids[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, ids);
-      }
-    vtkNew<vtkPolyData> poly;
-    poly->SetPoints(pts);
-    poly->SetPolys(cells);
-    vtkNew<vtkSTLWriter> w;
-    w->SetFileName(path.c_str());
-    w->SetInputData(poly);
-    w->SetFileTypeToBinary();
-    if (w->Write() != 1)
-      throw RunError("cannot write " + path);
+      d.triangles.push_back({t[0], t[1], t[2]});
+    io::write_stl(path, d);
   }
 } // namespace abrade::dem

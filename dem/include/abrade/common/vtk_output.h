@@ -27,6 +27,9 @@ namespace abrade::io
   /// Writes @p data as a binary, compressed VTK XML PolyData file (.vtp).
   void write_vtp(const std::string &path, const PolyData &data);
 
+  /// Writes the triangles of @p data (fields are ignored) as a binary STL file.
+  void write_stl(const std::string &path, const PolyData &data);
+
   /// A ParaView collection file (.pvd): each added file is written with its time, and the .pvd is
   /// rewritten after every addition so that an interrupted run leaves a valid series behind.
   class PvdSeries

@@ -2,7 +2,7 @@
 // What happened at every particle-wall contact in one time step, handed to the step hooks (wear
 // laws, probes, per-triangle force accumulation) after the force computation. Hooks are called
 // once per step with the whole log, so there is no virtual call per contact.
-#include <abrade/dem/closest_point.h>
+#include <abrade/common/closest_point.h>
 
 #include <cstdint>
 #include <string>

@@ -4,7 +4,7 @@
 // touches several triangles is one contact or several (see wall_contacts in simulation.cc).
 #include <cstdint>
 
-namespace abrade::dem
+namespace abrade::geometry
 {
   /// 0: face; 1, 2, 3: edge (v0,v1), (v1,v2), (v2,v0); 4, 5, 6: vertex v0, v1, v2.
   enum Feature : std::uint8_t
@@ -71,4 +71,9 @@ namespace abrade::dem
     r.feature = face;
     return r;
   }
+} // namespace abrade::geometry
+
+namespace abrade::dem
+{
+  using namespace abrade::geometry;
 } // namespace abrade::dem

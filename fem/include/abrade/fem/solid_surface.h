@@ -1,0 +1,47 @@
+#pragma once
+// The knife's boundary as a triangle surface, for the DEM and for export: outward-oriented
+// triangles (a hexahedral face gives two), each mapped back to the cell face it lies on, and
+// each surface vertex to its triangulation vertex. The map is stable while the mesh moves (it
+// is rebuilt after a remesh), so per-triangle DEM fields come to the FEM boundary and back.
+#include <abrade/common/vtk_output.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace abrade::fem
+{
+  struct SolidSurface
+  {
+    std::vector<dealii::Point<3>>       vertices;
+    std::vector<std::array<unsigned, 3>> triangles;
+    std::vector<unsigned>               tria_vertex;  ///< surface vertex -> triangulation vertex
+    std::vector<std::pair<unsigned, unsigned>> face; ///< triangle -> (active cell index, face no)
+    std::vector<dealii::types::boundary_id>    boundary_id; ///< per triangle
+
+    double area() const;
+    /// Outward unit normal of each surface vertex (area-weighted over its triangles).
+    std::vector<dealii::Tensor<1, 3>> vertex_normals() const;
+    io::PolyData as_polydata() const;
+  };
+
+  /// The boundary faces with the given ids (all boundary faces when @p ids is empty).
+  SolidSurface extract_surface(const dealii::Triangulation<3> &tria,
+                               const std::set<dealii::types::boundary_id> &ids = {});
+
+  /// Reads a solid: a Gmsh .msh file (boundary ids from its physical surface tags), a STEP/IGES
+  /// CAD file or a closed STL surface (both meshed with Gmsh into tetrahedra of size
+  /// @p mesh_size; every boundary face then gets @p boundary_id). Throws InputError naming the
+  /// file when it cannot be read or does not enclose a volume.
+  void read_solid(const std::string &path, double mesh_size, dealii::Triangulation<3> &tria,
+                  dealii::types::boundary_id boundary_id = 1);
+
+  /// Remeshing: a new tetrahedral mesh of size @p mesh_size that fills the current boundary of
+  /// @p tria (through an STL of the surface and Gmsh); boundary ids of the new faces are taken
+  /// from the nearest old boundary face.
+  void remesh(const dealii::Triangulation<3> &tria, double mesh_size, dealii::Triangulation<3> &new_tria,
+              const std::string &work_directory);
+} // namespace abrade::fem

@@ -1,0 +1,229 @@
+#include <abrade/common/closest_point.h>
+#include <abrade/common/error.h>
+#include <abrade/fem/solid_surface.h>
+
+#include <deal.II/grid/grid_in.h>
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+
+namespace abrade::fem
+{
+  using namespace dealii;
+
+  double SolidSurface::area() const
+  {
+    double a = 0;
+    for (const auto &t : triangles)
+      a += 0.5 * cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]).norm();
+    return a;
+  }
+
+  std::vector<Tensor<1, 3>> SolidSurface::vertex_normals() const
+  {
+    std::vector<Tensor<1, 3>> n(vertices.size());
+    for (const auto &t : triangles)
+      {
+        const Tensor<1, 3> a = cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]);
+        for (unsigned v : t)
+          n[v] += a; // |a| = twice the area: area weighting
+      }
+    for (auto &x : n)
+      if (x.norm() > 0)
+        x /= x.norm();
+    return n;
+  }
+
+  io::PolyData SolidSurface::as_polydata() const
+  {
+    io::PolyData d;
+    for (const auto &p : vertices)
+      d.points.insert(d.points.end(), {p[0], p[1], p[2]});
+    for (const auto &t : triangles)
+      d.triangles.push_back({long(t[0]), long(t[1]), long(t[2])});
+    std::vector<double> ids(boundary_id.begin(), boundary_id.end());
+    d.cell_fields.push_back({"boundary_id", 1, ids});
+    return d;
+  }
+
+  SolidSurface extract_surface(const Triangulation<3> &tria, const std::set<types::boundary_id> &ids)
+  {
+    SolidSurface      s;
+    std::vector<long> surface_index(tria.n_vertices(), -1);
+    auto vertex = [&](const typename Triangulation<3>::active_cell_iterator &cell, unsigned f, unsigned v) {
+      const unsigned g = cell->face(f)->vertex_index(v);
+      if (surface_index[g] < 0)
+        {
+          surface_index[g] = static_cast<long>(s.vertices.size());
+          s.vertices.push_back(tria.get_vertices()[g]);
+          s.tria_vertex.push_back(g);
+        }
+      return static_cast<unsigned>(surface_index[g]);
+    };
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned f : cell->face_indices())
+        {
+          const auto face = cell->face(f);
+          if (!face->at_boundary() || (!ids.empty() && !ids.count(face->boundary_id())))
+            continue;
+          std::vector<std::array<unsigned, 3>> tris;
+          if (face->n_vertices() == 3)
+            tris.push_back({vertex(cell, f, 0), vertex(cell, f, 1), vertex(cell, f, 2)});
+          else // quadrilateral: vertices in lexicographic order, cyclic order 0 1 3 2
+            {
+              tris.push_back({vertex(cell, f, 0), vertex(cell, f, 1), vertex(cell, f, 3)});
+              tris.push_back({vertex(cell, f, 0), vertex(cell, f, 3), vertex(cell, f, 2)});
+            }
+          for (auto t : tris)
+            {
+              const Tensor<1, 3> n = cross_product_3d(s.vertices[t[1]] - s.vertices[t[0]], s.vertices[t[2]] - s.vertices[t[0]]);
+              if (n * (face->center() - cell->center()) < 0) // point away from the cell
+                std::swap(t[1], t[2]);
+              s.triangles.push_back(t);
+              s.face.emplace_back(cell->active_cell_index(), f);
+              s.boundary_id.push_back(face->boundary_id());
+            }
+        }
+    return s;
+  }
+
+  namespace
+  {
+    void read_msh_file(const std::string &path, Triangulation<3> &tria)
+    {
+      std::ifstream file(path);
+      GridIn<3>     in;
+      in.attach_triangulation(tria);
+      in.read_msh(file); // deal.II's own parser: physical surface tags become boundary ids
+    }
+
+    /// Gmsh: surfaces in the current model -> one volume -> tetrahedra -> .msh 2.2
+    void mesh_volume_with_gmsh(const std::string &label, double h, types::boundary_id id, const std::string &msh)
+    {
+      gmsh::vectorpair volumes;
+      gmsh::model::getEntities(volumes, 3);
+      if (volumes.empty())
+        throw InputError(label, "the geometry encloses no volume (is the surface closed?)");
+      gmsh::vectorpair surfaces;
+      gmsh::model::getEntities(surfaces, 2);
+      std::vector<int> vtags, stags;
+      for (const auto &v : volumes)
+        vtags.push_back(v.second);
+      for (const auto &f : surfaces)
+        stags.push_back(f.second);
+      gmsh::model::addPhysicalGroup(3, vtags, 1);
+      gmsh::model::addPhysicalGroup(2, stags, id);
+      gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+      gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * h);
+      gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+      gmsh::option::setNumber("Mesh.Optimize", 1);
+      gmsh::model::mesh::generate(3);
+      gmsh::write(msh);
+    }
+
+    template <typename F>
+    void with_gmsh(const std::string &label, F &&f)
+    {
+      gmsh::initialize();
+      gmsh::option::setNumber("General.Terminal", 0);
+      gmsh::logger::start();
+      try
+        {
+          f();
+        }
+      catch (const InputError &)
+        {
+          gmsh::finalize();
+          throw;
+        }
+      catch (...)
+        {
+          std::string last;
+          gmsh::logger::getLastError(last);
+          gmsh::finalize();
+          throw InputError(label, "Gmsh could not mesh it: " + (last.empty() ? std::string("unknown error") : last));
+        }
+      gmsh::finalize();
+    }
+  } // namespace
+
+  void read_solid(const std::string &path, double h, Triangulation<3> &tria, types::boundary_id id)
+  {
+    if (!std::filesystem::exists(path))
+      throw InputError(path, "solid file not found");
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (ext == ".msh")
+      {
+        read_msh_file(path, tria);
+        return;
+      }
+    if (!(h > 0))
+      throw InputError(path, "meshing a CAD or STL solid needs a positive mesh size");
+    const std::string msh = (std::filesystem::temp_directory_path() /
+                             (std::filesystem::path(path).stem().string() + "-abrade-volume.msh"))
+                              .string();
+    if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs")
+      with_gmsh(path, [&] {
+        gmsh::vectorpair shapes;
+        gmsh::model::occ::importShapes(path, shapes);
+        gmsh::model::occ::synchronize();
+        mesh_volume_with_gmsh(path, h, id, msh);
+      });
+    else if (ext == ".stl")
+      with_gmsh(path, [&] {
+        gmsh::merge(path);
+        // sharp edges (more than 15 degrees) stay edges; the facets become remeshable surfaces
+        gmsh::model::mesh::classifySurfaces(15 * M_PI / 180, true, true, M_PI);
+        gmsh::model::mesh::createGeometry();
+        gmsh::vectorpair surfaces;
+        gmsh::model::getEntities(surfaces, 2);
+        std::vector<int> tags;
+        for (const auto &f : surfaces)
+          tags.push_back(f.second);
+        const int loop = gmsh::model::geo::addSurfaceLoop(tags);
+        gmsh::model::geo::addVolume({loop});
+        gmsh::model::geo::synchronize();
+        mesh_volume_with_gmsh(path, h, id, msh);
+      });
+    else
+      throw InputError(path, "unknown solid format '" + ext + "' (use .msh, .step/.stp, .iges/.igs or a closed .stl)");
+    read_msh_file(msh, tria);
+    std::filesystem::remove(msh);
+  }
+
+  void remesh(const Triangulation<3> &tria, double h, Triangulation<3> &new_tria, const std::string &dir)
+  {
+    const SolidSurface old = extract_surface(tria);
+    std::filesystem::create_directories(dir);
+    const std::string stl = dir + "/remesh-surface.stl";
+    io::write_stl(stl, old.as_polydata());
+    read_solid(stl, h, new_tria, 0);
+    // boundary ids from the old boundary triangle closest to each new face's centre
+    for (const auto &cell : new_tria.active_cell_iterators())
+      for (const unsigned f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const Point<3> c = cell->face(f)->center();
+            std::size_t    best = 0;
+            double         best_d2 = std::numeric_limits<double>::infinity();
+            for (std::size_t t = 0; t < old.triangles.size(); ++t)
+              {
+                const auto  &tri = old.triangles[t];
+                const auto   cp  = geometry::closest_point_on_triangle(c.begin_raw(), old.vertices[tri[0]].begin_raw(),
+                                                                       old.vertices[tri[1]].begin_raw(),
+                                                                       old.vertices[tri[2]].begin_raw());
+                const double d2 = c.distance_square(Point<3>(cp.p[0], cp.p[1], cp.p[2]));
+                if (d2 < best_d2)
+                  best_d2 = d2, best = t;
+              }
+            cell->face(f)->set_boundary_id(old.boundary_id[best]);
+          }
+  }
+} // namespace abrade::fem

@@ -1,0 +1,115 @@
+// The knife's boundary surface (outward, closed, the solid's volume by the divergence theorem),
+// solids read from STL and .msh files, and remeshing from the current boundary.
+#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/mesh_quality.h>
+#include <abrade/fem/solid_output.h>
+#include <abrade/fem/solid_surface.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+using namespace dealii;
+using namespace abrade::fem;
+
+namespace
+{
+  std::string tmp(const std::string &n) { return (std::filesystem::temp_directory_path() / n).string(); }
+
+  double enclosed_volume(const SolidSurface &s)
+  {
+    double v = 0;
+    for (const auto &t : s.triangles)
+      v += s.vertices[t[0]] * cross_product_3d(s.vertices[t[1]], s.vertices[t[2]]) / 6;
+    return v;
+  }
+
+  double area_of(const Triangulation<3> &tria, types::boundary_id id)
+  {
+    double a = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &f : cell->face_iterators())
+        if (f->at_boundary() && f->boundary_id() == id)
+          a += f->measure();
+    return a;
+  }
+} // namespace
+
+TEST(SolidSurface, OutwardClosedSurfaceOfTheKnife)
+{
+  KnifeGeometry    k;
+  Triangulation<3> tria;
+  k.mesh(tria, 0.03, tmp("abrade_surface.msh"));
+  const SolidSurface s = extract_surface(tria);
+  EXPECT_NEAR(enclosed_volume(s), 0.00576, 1e-12); // outward orientation everywhere
+  // every edge is shared by exactly two triangles
+  std::map<std::pair<unsigned, unsigned>, int> edges;
+  for (const auto &t : s.triangles)
+    for (int e = 0; e < 3; ++e)
+      ++edges[std::minmax(t[e], t[(e + 1) % 3])];
+  for (const auto &[e, n] : edges)
+    ASSERT_EQ(n, 2);
+  const SolidSurface top = extract_surface(tria, {KnifeGeometry::clamped_boundary});
+  EXPECT_NEAR(top.area(), 0.4 * 0.03, 1e-12);
+  for (const auto &n : top.vertex_normals())
+    EXPECT_NEAR(n[2], 1, 1e-12);
+}
+
+TEST(SolidSurface, StlAndMshFilesRoundTrip)
+{
+  KnifeGeometry    k;
+  Triangulation<3> tria;
+  k.mesh(tria, 0.03, tmp("abrade_roundtrip.msh"));
+  abrade::io::write_stl(tmp("abrade_knife_surface.stl"), extract_surface(tria).as_polydata());
+  Triangulation<3> from_stl;
+  read_solid(tmp("abrade_knife_surface.stl"), 0.02, from_stl);
+  EXPECT_NEAR(mesh_volume(from_stl), 0.00576, 1e-9);
+  EXPECT_EQ(mesh_quality(from_stl).n_inverted, 0u);
+  Triangulation<3> from_msh;
+  read_solid(tmp("abrade_roundtrip.msh"), 0, from_msh);
+  EXPECT_EQ(from_msh.n_active_cells(), tria.n_active_cells());
+  EXPECT_NEAR(area_of(from_msh, KnifeGeometry::clamped_boundary), 0.012, 1e-12);
+}
+
+TEST(SolidSurface, BadSolidFilesAreClearErrors)
+{
+  Triangulation<3> t;
+  EXPECT_THROW(read_solid(tmp("no_such_knife.step"), 0.01, t), std::exception);
+  // an open surface (one triangle) encloses nothing
+  const std::string open = tmp("abrade_open.stl");
+  std::ofstream(open) << "solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                         "endloop\nendfacet\nendsolid o\n";
+  Triangulation<3> t2;
+  try
+    {
+      read_solid(open, 0.1, t2);
+      FAIL() << "an open surface was meshed";
+    }
+  catch (const std::exception &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("abrade_open.stl"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SolidSurface, RemeshKeepsTheShapeAndBoundaryIds)
+{
+  KnifeGeometry    k;
+  Triangulation<3> tria, fresh;
+  k.mesh(tria, 0.03, tmp("abrade_before_remesh.msh"));
+  remesh(tria, 0.015, fresh, tmp("abrade_remesh"));
+  EXPECT_GT(fresh.n_active_cells(), tria.n_active_cells());
+  EXPECT_NEAR(mesh_volume(fresh), 0.00576, 1e-9);
+  EXPECT_NEAR(area_of(fresh, KnifeGeometry::clamped_boundary), 0.012, 1e-9);
+  EXPECT_EQ(mesh_quality(fresh).n_inverted, 0u);
+}
+
+int main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
