@@ -52,6 +52,50 @@ namespace abrade::fem
     return d;
   }
 
+  std::vector<double> local_thickness(const SolidSurface &s)
+  {
+    const auto          normals = s.vertex_normals();
+    std::vector<double> thickness(s.vertices.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t v = 0; v < s.vertices.size(); ++v)
+      {
+        const Point<3>     o = s.vertices[v];
+        const Tensor<1, 3> d = -normals[v];
+        for (const auto &t : s.triangles)
+          {
+            if (t[0] == v || t[1] == v || t[2] == v)
+              continue; // the vertex's own triangles
+            // Moeller-Trumbore ray-triangle intersection
+            const Tensor<1, 3> e1 = s.vertices[t[1]] - s.vertices[t[0]], e2 = s.vertices[t[2]] - s.vertices[t[0]];
+            const Tensor<1, 3> p  = cross_product_3d(d, e2);
+            const double       det = e1 * p;
+            if (std::abs(det) < 1e-300)
+              continue;
+            const Tensor<1, 3> tv = o - s.vertices[t[0]];
+            const double       u  = (tv * p) / det;
+            if (u < 0 || u > 1)
+              continue;
+            const Tensor<1, 3> q = cross_product_3d(tv, e1);
+            const double       w = (d * q) / det;
+            if (w < 0 || u + w > 1)
+              continue;
+            const double dist = (e2 * q) / det;
+            if (dist > 1e-12)
+              thickness[v] = std::min(thickness[v], dist);
+          }
+      }
+    return thickness;
+  }
+
+  std::vector<unsigned> worn_through(const SolidSurface &s, const std::vector<double> &depth, double fraction)
+  {
+    const auto            thickness = local_thickness(s);
+    std::vector<unsigned> out;
+    for (std::size_t v = 0; v < s.vertices.size(); ++v)
+      if (depth[v] >= fraction * thickness[v])
+        out.push_back(static_cast<unsigned>(v));
+    return out;
+  }
+
   SolidSurface extract_surface(const Triangulation<3> &tria, const std::set<types::boundary_id> &ids)
   {
     SolidSurface      s;

@@ -107,6 +107,40 @@ TEST(SolidSurface, RemeshKeepsTheShapeAndBoundaryIds)
   EXPECT_EQ(mesh_quality(fresh).n_inverted, 0u);
 }
 
+TEST(SolidSurface, LocalThicknessAndWornThrough)
+{
+  KnifeGeometry    k;
+  Triangulation<3> tria;
+  k.mesh(tria, 0.03, tmp("abrade_thickness.msh"));
+  const SolidSurface  s = extract_surface(tria);
+  const auto          normals = s.vertex_normals();
+  const auto          thickness = local_thickness(s);
+  std::vector<double> depth(s.vertices.size(), 0.0);
+  int                 side_vertices = 0;
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    {
+      const Point<3> &p = s.vertices[v];
+      // interior vertices of the flat sides (away from edges): the plate is 30 mm thick
+      if (std::abs(std::abs(p[1]) - 0.015) < 1e-9 && p[2] > 0.1 && p[2] < 0.45 && p[0] > 0.05 && p[0] < 0.35)
+        {
+          EXPECT_NEAR(thickness[v], 0.03, 1e-9);
+          ++side_vertices;
+          depth[v] = p[1] > 0 && p[2] < 0.3 ? 0.031 : 0.01; // wear through one region only
+        }
+      // the top face: the ray goes down through the whole knife to the edge or the bevels
+      if (std::abs(p[2] - 0.5) < 1e-9 && std::abs(normals[v][2] - 1) < 1e-12)
+        EXPECT_GT(thickness[v], 0.45);
+    }
+  ASSERT_GT(side_vertices, 4);
+  const auto through = worn_through(s, depth);
+  ASSERT_FALSE(through.empty());
+  for (unsigned v : through)
+    {
+      EXPECT_GT(s.vertices[v][1], 0);
+      EXPECT_LT(s.vertices[v][2], 0.3);
+    }
+}
+
 int main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);

@@ -28,6 +28,15 @@ namespace abrade::fem
     io::PolyData as_polydata() const;
   };
 
+  /// Local wall thickness at every surface vertex: the distance along the inward normal to the
+  /// surface on the other side (ray cast; infinity where the ray leaves through no triangle).
+  std::vector<double> local_thickness(const SolidSurface &surface);
+
+  /// Surface vertices whose inward wear depth reaches @p fraction of the local thickness: where
+  /// the knife is worn through, which ends its life (reported, never carried into the mesh).
+  std::vector<unsigned> worn_through(const SolidSurface &surface, const std::vector<double> &depth,
+                                     double fraction = 1.0);
+
   /// The boundary faces with the given ids (all boundary faces when @p ids is empty).
   SolidSurface extract_surface(const dealii::Triangulation<3> &tria,
                                const std::set<dealii::types::boundary_id> &ids = {});
