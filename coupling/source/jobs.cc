@@ -6,6 +6,7 @@ namespace abrade::coupling
   {
     static const std::vector<JobInfo> jobs = {
       {"dem", "one DEM simulation of the operating cycle's phases", &run_dem_job},
+      {"knife", "the knife's solid model: mesh, quality, VTU/STL, volume and mass", &run_knife_job},
     };
     return jobs;
   }

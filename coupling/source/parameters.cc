@@ -97,14 +97,39 @@ namespace abrade::coupling
 
   void declare_parameters(ParameterHandler &prm, const DeclarationLists &lists)
   {
-    prm.declare_entry("Job", "dem", Selection("dem"),
+    prm.declare_entry("Job", "dem", Selection("dem|knife"),
                       "What `abrade run` does. dem: one DEM simulation of the phases in "
-                      "Simulation/Phases (generate or load the bed, run, write output).");
+                      "Simulation/Phases (generate or load the bed, run, write output); knife: "
+                      "build the knife's solid model (subsection Knife), check its mesh and write "
+                      "it (VTU, STL) with its volume and mass.");
     declare_lists(prm);
     std::string names;
     for (const auto &w : lists.walls)
       names += (names.empty() ? "" : ", ") + w;
     prm.set("Walls", names);
+
+    prm.enter_subsection("Knife");
+    prm.declare_entry("Geometry", "parametric", Selection("parametric|file"),
+                      "parametric: the grab knife below; file: a solid from File (.msh, .step/.stp, "
+                      ".iges/.igs, or a closed .stl).");
+    prm.declare_entry("File", "", Anything(), "Solid file when Geometry = file; relative to the parameter file.");
+    prm.declare_entry("Length", "0.4", Double(1e-6, huge), "[m] Knife length (x). Range: > 0.");
+    prm.declare_entry("Height", "0.5", Double(1e-6, huge), "[m] Knife height (z). Range: > 0.");
+    prm.declare_entry("Thickness", "0.03", Double(1e-6, huge), "[m] Plate thickness (y). Range: > 0.");
+    prm.declare_entry("Bevel height", "0.04", Double(1e-6, huge),
+                      "[m] Height of the bevel that forms the edge; with the thickness it sets the "
+                      "edge angle. Range: (0, Height).");
+    prm.declare_entry("Bevel side", "both", Selection("both|plus|minus"),
+                      "both: chisel edge in the middle; plus / minus: bevel on the +y / -y face only.");
+    prm.declare_entry("Tip radius", "0", Double(0, huge), "[m] Rounding of the edge; 0: sharp. Range: [0, Thickness/2).");
+    prm.declare_entry("Lip height", "0", Double(0, huge),
+                      "[m] Height of a ridge on the +y face above the bevel that holds back a "
+                      "protective layer of material; 0: none. Range: >= 0.");
+    prm.declare_entry("Lip width", "0", Double(0, huge), "[m] How far the ridge stands out of the face. Range: >= 0.");
+    prm.declare_entry("Lip offset", "0", Double(0, huge), "[m] Distance of the ridge above the bevel. Range: >= 0.");
+    prm.declare_entry("Mesh size", "0.015", Double(1e-6, huge), "[m] Target tetrahedron size. Range: > 0.");
+    prm.declare_entry("Density", "7800", Double(1e-6, huge), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
+    prm.leave_subsection();
 
     prm.enter_subsection("Output");
     prm.declare_entry("Directory", "output", Anything(),

@@ -16,12 +16,10 @@ namespace abrade::fem
     }
   } // namespace
 
-  MeshQuality mesh_quality(const Triangulation<3> &tria)
+  namespace
   {
-    MeshQuality q;
-    q.min_scaled_jacobian = std::numeric_limits<double>::infinity();
-    for (const auto &cell : tria.active_cell_iterators())
-      {
+    double worst_scaled_jacobian(const Triangulation<3>::active_cell_iterator &cell)
+    {
         double worst = std::numeric_limits<double>::infinity();
         if (cell->reference_cell().is_simplex())
           {
@@ -49,6 +47,25 @@ namespace abrade::fem
                 worst = std::min(worst, scaled(e[0], e[1], e[2]));
               }
           }
+        return worst;
+    }
+  } // namespace
+
+  std::vector<double> cell_scaled_jacobians(const Triangulation<3> &tria)
+  {
+    std::vector<double> out(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      out[cell->active_cell_index()] = worst_scaled_jacobian(cell);
+    return out;
+  }
+
+  MeshQuality mesh_quality(const Triangulation<3> &tria)
+  {
+    MeshQuality q;
+    q.min_scaled_jacobian = std::numeric_limits<double>::infinity();
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const double worst = worst_scaled_jacobian(cell);
         if (worst <= 0)
           ++q.n_inverted;
         if (worst < q.min_scaled_jacobian)

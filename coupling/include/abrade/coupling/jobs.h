@@ -35,4 +35,5 @@ namespace abrade::coupling
 
   // the jobs
   void run_dem_job(JobContext &ctx);
+  void run_knife_job(JobContext &ctx);
 } // namespace abrade::coupling

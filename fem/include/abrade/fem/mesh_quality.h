@@ -21,6 +21,9 @@ namespace abrade::fem
 
   MeshQuality mesh_quality(const dealii::Triangulation<3> &tria);
 
+  /// The smallest scaled Jacobian of each active cell (for output).
+  std::vector<double> cell_scaled_jacobians(const dealii::Triangulation<3> &tria);
+
   /// Moves every vertex by @p displacement (indexed like tria.get_vertices()).
   void move_vertices(dealii::Triangulation<3> &tria, const std::vector<dealii::Tensor<1, 3>> &displacement);
 } // namespace abrade::fem

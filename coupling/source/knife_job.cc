@@ -1,0 +1,103 @@
+// The `knife` job: the knife's solid model on its own.
+//
+// 1. Build the knife: the parametric grab knife (fem/knife_geometry.h) or a solid from a file.
+// 2. Check the mesh: scaled Jacobians, aspect ratio, inverted cells (an inverted cell is an
+//    error), the wearable and clamped boundary.
+// 3. Write knife/knife.pvd + .vtu (cell field scaled_jacobian), knife/knife.stl (the surface the
+//    DEM would see), and volume, mass and quality into summary.json.
+#include <abrade/common/error.h>
+#include <abrade/coupling/jobs.h>
+#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/mesh_quality.h>
+#include <abrade/fem/solid_output.h>
+#include <abrade/fem/solid_surface.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <filesystem>
+#include <sstream>
+
+namespace abrade::coupling
+{
+  void run_knife_job(JobContext &ctx)
+  {
+    auto &prm = ctx.parameters.handler();
+    prm.enter_subsection("Knife");
+    fem::KnifeGeometry k;
+    k.length     = prm.get_double("Length");
+    k.height     = prm.get_double("Height");
+    k.thickness  = prm.get_double("Thickness");
+    k.bevel      = prm.get_double("Bevel height");
+    const std::string side = prm.get("Bevel side");
+    k.bevel_side = side == "both" ? fem::KnifeGeometry::BevelSide::both
+                   : side == "plus" ? fem::KnifeGeometry::BevelSide::plus
+                                    : fem::KnifeGeometry::BevelSide::minus;
+    k.tip_radius = prm.get_double("Tip radius");
+    k.lip_height = prm.get_double("Lip height");
+    k.lip_width  = prm.get_double("Lip width");
+    k.lip_offset = prm.get_double("Lip offset");
+    const double      h        = prm.get_double("Mesh size");
+    const double      density  = prm.get_double("Density");
+    const std::string geometry = prm.get("Geometry");
+    std::string       file     = prm.get("File");
+    prm.leave_subsection();
+    if (geometry == "file" && !file.empty() && std::filesystem::path(file).is_relative() &&
+        ctx.parameters.file_name().front() != '<')
+      file = (std::filesystem::path(ctx.parameters.file_name()).parent_path() / file).string();
+
+    // PETSc and the FEM need MPI; a single process here
+    static int                                    argc = 1;
+    static char                                   name[] = "abrade", *args[] = {name, nullptr};
+    static char                                 **argv = args;
+    static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+    dealii::Triangulation<3> tria;
+    const std::string        dir = ctx.output.subdirectory("knife");
+    {
+      io::ScopedTimer t(ctx.timers, "mesh knife");
+      if (geometry == "parametric")
+        {
+          try
+            {
+              k.check();
+            }
+          catch (const InputError &e)
+            {
+              throw InputError(ctx.parameters.file_name(), std::string("Knife: ") + e.what());
+            }
+          k.mesh(tria, h, dir + "/knife.msh");
+        }
+      else
+        {
+          if (file.empty())
+            ctx.parameters.fail({"Knife"}, "File", "Geometry = file needs a solid file");
+          fem::read_solid(file, h, tria, fem::KnifeGeometry::wearable_boundary);
+        }
+    }
+    const fem::MeshQuality q = fem::mesh_quality(tria);
+    const double           volume = fem::mesh_volume(tria);
+    std::ostringstream     s;
+    s << "Knife: " << tria.n_active_cells() << " cells, volume " << volume << " m^3, mass " << volume * density
+      << " kg; min scaled Jacobian " << q.min_scaled_jacobian << ", max aspect ratio " << q.max_aspect_ratio;
+    ctx.log.line(s.str());
+    if (q.n_inverted > 0)
+      throw RunError("the knife mesh has " + std::to_string(q.n_inverted) + " inverted cells (cell " +
+                     std::to_string(q.worst_cell) + " is the worst)");
+
+    fem::SolidOutput out(dir, "knife");
+    out.write(tria, {{"scaled_jacobian", fem::cell_scaled_jacobians(tria)}}, 0.0);
+    const fem::SolidSurface surface = fem::extract_surface(tria);
+    io::write_stl(dir + "/knife.stl", surface.as_polydata());
+
+    io::Json &r                  = ctx.results["knife"];
+    r["cells"]                   = static_cast<long>(tria.n_active_cells());
+    r["volume"]                  = volume;
+    r["mass"]                    = volume * density;
+    r["surface_area"]            = surface.area();
+    r["surface_triangles"]       = static_cast<long>(surface.triangles.size());
+    r["min_scaled_jacobian"]     = q.min_scaled_jacobian;
+    r["max_aspect_ratio"]        = q.max_aspect_ratio;
+    if (geometry == "parametric")
+      r["analytic_volume"] = k.volume();
+  }
+} // namespace abrade::coupling
