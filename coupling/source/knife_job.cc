@@ -63,7 +63,9 @@ namespace abrade::coupling
             }
           catch (const InputError &e)
             {
-              throw InputError(ctx.parameters.file_name(), std::string("Knife: ") + e.what());
+              // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
+              const std::string what = e.what();
+              throw InputError(ctx.parameters.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
             }
           k.mesh(tria, h, dir + "/knife.msh");
         }

@@ -50,7 +50,7 @@ namespace abrade::fem
   {
     auto need = [](bool ok, const std::string &what) {
       if (!ok)
-        throw InputError("knife geometry", what);
+        throw InputError("", "knife geometry: " + what);
     };
     need(length > 0 && height > 0 && thickness > 0, "length, height and thickness must be positive");
     need(bevel > 0 && bevel < height, "the bevel height must be positive and below the knife height");
