@@ -103,8 +103,31 @@ namespace abrade::fem
                                      const std::string &msh_file) const
   {
     gmsh::initialize();
-    gmsh::logger::start();
     gmsh::option::setNumber("General.Terminal", 0);
+    const int volume_tag = build(p, h);
+    mesh_built(volume_tag, h, msh_file);
+  }
+
+  void KnifeGeometry::write_step(const std::string &step_file) const
+  {
+    check();
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    try
+      {
+        build(profile(), 1.0);
+        gmsh::write(step_file);
+      }
+    catch (...)
+      {
+        gmsh::finalize();
+        throw RunError("cannot write " + step_file);
+      }
+    gmsh::finalize();
+  }
+
+  int KnifeGeometry::build(const std::vector<std::pair<double, double>> &p, double h) const
+  {
     gmsh::model::add("knife");
     namespace occ = gmsh::model::occ;
     std::vector<int> points;
@@ -144,12 +167,17 @@ namespace abrade::fem
     occ::extrude({{2, section}}, length, 0, 0, extruded);
     occ::synchronize();
 
-    // physical groups: the volume, the clamped top face (z = height), the wearable rest
-    int              volume_tag = -1;
-    std::vector<int> wearable, clamped;
+    int volume_tag = -1;
     for (const auto &[dim, tag] : extruded)
       if (dim == 3)
         volume_tag = tag;
+    return volume_tag;
+  }
+
+  void KnifeGeometry::mesh_built(int volume_tag, double h, const std::string &msh_file) const
+  {
+    // physical groups: the volume, the clamped top face (z = height), the wearable rest
+    std::vector<int> wearable, clamped;
     gmsh::vectorpair surfaces;
     gmsh::model::getEntities(surfaces, 2);
     for (const auto &[dim, tag] : surfaces)

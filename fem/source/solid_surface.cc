@@ -96,6 +96,34 @@ namespace abrade::fem
     return out;
   }
 
+  std::vector<double> transfer_surface_field(const SolidSurface &from, const std::vector<double> &values,
+                                             const SolidSurface &to)
+  {
+    std::vector<double> out(to.vertices.size(), 0.0);
+    for (std::size_t v = 0; v < to.vertices.size(); ++v)
+      {
+        const Point<3> &p = to.vertices[v];
+        double          best_d2 = std::numeric_limits<double>::infinity();
+        for (const auto &t : from.triangles)
+          {
+            const Point<3> &a = from.vertices[t[0]], &b = from.vertices[t[1]], &c = from.vertices[t[2]];
+            const auto      cp = geometry::closest_point_on_triangle(p.begin_raw(), a.begin_raw(), b.begin_raw(),
+                                                                     c.begin_raw());
+            const Point<3>  q(cp.p[0], cp.p[1], cp.p[2]);
+            const double    d2 = p.distance_square(q);
+            if (d2 >= best_d2)
+              continue;
+            best_d2 = d2;
+            // barycentric coordinates of q in (a, b, c)
+            const Tensor<1, 3> n = cross_product_3d(b - a, c - a);
+            const double       inv = 1 / n.norm_square();
+            const double       la = n * cross_product_3d(c - b, q - b) * inv, lb = n * cross_product_3d(a - c, q - c) * inv;
+            out[v] = la * values[t[0]] + lb * values[t[1]] + (1 - la - lb) * values[t[2]];
+          }
+      }
+    return out;
+  }
+
   SolidSurface extract_surface(const Triangulation<3> &tria, const std::set<types::boundary_id> &ids)
   {
     SolidSurface      s;
@@ -176,7 +204,6 @@ namespace abrade::fem
     {
       gmsh::initialize();
       gmsh::option::setNumber("General.Terminal", 0);
-      gmsh::logger::start();
       try
         {
           f();

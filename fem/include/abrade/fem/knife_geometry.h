@@ -51,8 +51,15 @@ namespace abrade::fem
     /// Gmsh file written on the way (kept for inspection).
     void mesh(dealii::Triangulation<3> &tria, double mesh_size, const std::string &msh_file) const;
 
+    /// Writes the knife's CAD geometry (OpenCASCADE) as STEP, for CAD tools or read_solid().
+    void write_step(const std::string &step_file) const;
+
   private:
+    /// Builds the OpenCASCADE model in the current Gmsh session; returns the volume's tag.
+    int  build(const std::vector<std::pair<double, double>> &profile, double mesh_size) const;
     void build_and_mesh(const std::vector<std::pair<double, double>> &profile, double mesh_size,
                         const std::string &msh_file) const;
+    /// Physical groups, tetrahedra, .msh for the model built by build().
+    void mesh_built(int volume_tag, double mesh_size, const std::string &msh_file) const;
   };
 } // namespace abrade::fem

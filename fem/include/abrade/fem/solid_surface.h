@@ -37,6 +37,12 @@ namespace abrade::fem
   std::vector<unsigned> worn_through(const SolidSurface &surface, const std::vector<double> &depth,
                                      double fraction = 1.0);
 
+  /// Carries a per-vertex field (accumulated wear depth, say) from one surface to another (after
+  /// a remesh): each new vertex takes the barycentric interpolation at its closest point on the
+  /// old surface, which is exact for fields linear over each old triangle.
+  std::vector<double> transfer_surface_field(const SolidSurface &from, const std::vector<double> &values,
+                                             const SolidSurface &to);
+
   /// The boundary faces with the given ids (all boundary faces when @p ids is empty).
   SolidSurface extract_surface(const dealii::Triangulation<3> &tria,
                                const std::set<dealii::types::boundary_id> &ids = {});
