@@ -5,6 +5,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_fe.h>
@@ -24,10 +26,39 @@ namespace abrade::fem
   }
 
   std::string SolidOutput::write(const dealii::Triangulation<3> &tria, const std::vector<CellField> &fields,
-                                 double time)
+                                 double time, const std::vector<VertexField> &vertex_fields)
   {
     dealii::DataOut<3> data_out;
     data_out.attach_triangulation(tria);
+    // vertex fields live on linear elements: one degree of freedom per vertex and component
+    std::unique_ptr<dealii::FiniteElement<3>> p1;
+    if (tria.all_reference_cells_are_hyper_cube())
+      p1 = std::make_unique<dealii::FE_Q<3>>(1);
+    else
+      p1 = std::make_unique<dealii::FE_SimplexP<3>>(1);
+    const dealii::FESystem<3> p1_vector(*p1, 3);
+    dealii::DoFHandler<3>     scalar_dofs(tria), vector_dofs(tria);
+    scalar_dofs.distribute_dofs(*p1);
+    vector_dofs.distribute_dofs(p1_vector);
+    std::vector<dealii::Vector<double>> vertex_vectors;
+    vertex_vectors.reserve(vertex_fields.size());
+    for (const auto &f : vertex_fields)
+      {
+        if (f.values.size() != f.n_components * tria.n_vertices() || (f.n_components != 1 && f.n_components != 3))
+          throw std::logic_error("vertex field " + f.name + " has the wrong size");
+        const auto &dofs = f.n_components == 1 ? scalar_dofs : vector_dofs;
+        vertex_vectors.emplace_back(dofs.n_dofs());
+        for (const auto &cell : dofs.active_cell_iterators())
+          for (const unsigned v : cell->vertex_indices())
+            for (unsigned c = 0; c < f.n_components; ++c)
+              vertex_vectors.back()[cell->vertex_dof_index(v, c)] = f.values[f.n_components * cell->vertex_index(v) + c];
+        if (f.n_components == 1)
+          data_out.add_data_vector(scalar_dofs, vertex_vectors.back(), f.name);
+        else
+          data_out.add_data_vector(vector_dofs, vertex_vectors.back(), std::vector<std::string>(3, f.name),
+                                   std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>(
+                                     3, dealii::DataComponentInterpretation::component_is_part_of_vector));
+      }
     std::vector<dealii::Vector<double>> vectors;
     vectors.reserve(fields.size());
     for (const auto &f : fields)

@@ -37,7 +37,11 @@ TEST(SolidOutput, WritesVtuSeries)
   for (std::size_t c = 0; c < depth.size(); ++c)
     depth[c] = 0.001 * c;
   out.write(tria, {{"wear_depth", depth}}, 0.0);
-  const std::string second = out.write(tria, {{"wear_depth", depth}}, 1.0);
+  std::vector<double> d(3 * tria.n_vertices()), z(tria.n_vertices());
+  for (unsigned v = 0; v < tria.n_vertices(); ++v)
+    z[v] = tria.get_vertices()[v][2], d[3 * v + 2] = -0.001 * tria.get_vertices()[v][0];
+  const std::string second =
+    out.write(tria, {{"wear_depth", depth}}, 1.0, {{"depth", 1, z}, {"displacement", 3, d}});
   EXPECT_TRUE(std::filesystem::exists(second));
   std::ifstream      pvd(dir + "/knife.pvd");
   std::ostringstream s;
@@ -47,6 +51,8 @@ TEST(SolidOutput, WritesVtuSeries)
   std::ostringstream v;
   v << vtu.rdbuf();
   EXPECT_NE(v.str().find("wear_depth"), std::string::npos);
+  EXPECT_NE(v.str().find("Name=\"displacement\" NumberOfComponents=\"3\""), std::string::npos);
+  EXPECT_NE(v.str().find("Name=\"depth\""), std::string::npos);
   EXPECT_THROW(out.write(tria, {{"bad", {1.0}}}, 2.0), std::logic_error);
   std::filesystem::remove_all(dir);
 }

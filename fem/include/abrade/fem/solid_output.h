@@ -16,13 +16,23 @@ namespace abrade::fem
     std::vector<double> values; ///< one per active cell
   };
 
+  /// A field at the vertices of the triangulation (indexed like tria.get_vertices()): scalar
+  /// (n_components = 1) or a vector (3, interleaved), e.g. wear depth and displacement.
+  struct VertexField
+  {
+    std::string         name;
+    unsigned            n_components = 1;
+    std::vector<double> values;
+  };
+
   class SolidOutput
   {
   public:
     /// Files go to @p directory as BASE_NNNNN.vtu with BASE.pvd.
     SolidOutput(std::string directory, std::string base);
     /// Writes one update; returns the .vtu path.
-    std::string write(const dealii::Triangulation<3> &tria, const std::vector<CellField> &fields, double time);
+    std::string write(const dealii::Triangulation<3> &tria, const std::vector<CellField> &fields, double time,
+                      const std::vector<VertexField> &vertex_fields = {});
 
   private:
     std::string                                 directory, base;
