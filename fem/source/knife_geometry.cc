@@ -1,6 +1,8 @@
 #include <abrade/common/error.h>
 #include <abrade/fem/knife_geometry.h>
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/grid/grid_in.h>
 
 #include <gmsh.h>
@@ -66,9 +68,13 @@ namespace abrade::fem
     if (!(h > 0))
       throw InputError("knife geometry", "the mesh size must be positive");
     const auto p = profile();
+    // on a parallel triangulation, one process runs Gmsh and all read its file
+    const auto *parallel = dynamic_cast<const dealii::parallel::TriangulationBase<3> *>(&tria);
+    const bool  meshing  = !parallel || dealii::Utilities::MPI::this_mpi_process(parallel->get_communicator()) == 0;
     try
       {
-        build_and_mesh(p, h, msh_file);
+        if (meshing)
+          build_and_mesh(p, h, msh_file);
       }
     catch (const abrade::InputError &)
       {
@@ -92,6 +98,8 @@ namespace abrade::fem
         throw RunError("gmsh could not mesh the knife: " + (last.empty() ? std::string("unknown error") : last));
       }
 
+    if (parallel)
+      MPI_Barrier(parallel->get_communicator());
     // deal.II's own .msh (2.2) parser: physical surface tags become boundary ids
     dealii::GridIn<3> in;
     in.attach_triangulation(tria);

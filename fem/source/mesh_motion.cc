@@ -9,7 +9,9 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/petsc_precondition.h>
 #include <deal.II/lac/petsc_solver.h>
@@ -74,7 +76,13 @@ namespace abrade::fem
   void MeshMotion::solve(const std::map<types::boundary_id, const Function<3> *> &boundary, const Function<3> *rhs)
   {
     const auto &dofs = impl->dofs;
-    const IndexSet all = complete_index_set(dofs.n_dofs());
+    // a parallel::shared triangulation (METIS partitions) is solved by all its processes, each
+    // assembling its own cells; a plain one alone
+    const auto *parallel = dynamic_cast<const parallel::TriangulationBase<3> *>(&impl->tria);
+    const MPI_Comm comm  = parallel ? parallel->get_communicator() : MPI_COMM_SELF;
+    const IndexSet owned = dofs.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
 
     // the cell-size stiffening needs a reference volume: the mean cell volume
     std::vector<double> cell_volume(impl->tria.n_active_cells());
@@ -96,7 +104,7 @@ namespace abrade::fem
     for (unsigned c = 0; c < 3; ++c)
       {
         // constraints: the prescribed displacement component on the listed boundaries
-        AffineConstraints<double> constraints;
+        AffineConstraints<double> constraints(relevant);
         DoFTools::make_hanging_node_constraints(dofs, constraints);
         std::vector<std::unique_ptr<ComponentOf>> parts;
         std::map<types::boundary_id, const Function<3> *> scalar;
@@ -108,13 +116,14 @@ namespace abrade::fem
         VectorTools::interpolate_boundary_values(*impl->mapping, dofs, scalar, constraints);
         constraints.close();
 
-        DynamicSparsityPattern dsp(dofs.n_dofs());
+        DynamicSparsityPattern dsp(relevant);
         DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+        SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
         PETScWrappers::MPI::SparseMatrix matrix;
-        matrix.reinit(all, all, dsp, MPI_COMM_WORLD);
-        PETScWrappers::MPI::Vector rhs_vector(all, MPI_COMM_WORLD), x(all, MPI_COMM_WORLD);
+        matrix.reinit(owned, owned, dsp, comm);
+        PETScWrappers::MPI::Vector rhs_vector(owned, comm), x(owned, comm);
 
-        // assemble -div(k grad u) = f
+        // assemble -div(k grad u) = f on this process's cells
         FEValues<3> fv(*impl->mapping, *impl->fe, *impl->quadrature,
                        update_values | update_gradients | update_JxW_values | update_quadrature_points);
         const unsigned n = impl->fe->n_dofs_per_cell();
@@ -123,6 +132,8 @@ namespace abrade::fem
         std::vector<types::global_dof_index> indices(n);
         for (const auto &cell : dofs.active_cell_iterators())
           {
+            if (!cell->is_locally_owned())
+              continue;
             fv.reinit(cell);
             local_matrix = 0, local_rhs = 0;
             const double k = settings.stiffening == 0
@@ -155,9 +166,14 @@ namespace abrade::fem
             cg.solve(matrix, x, rhs_vector, amg);
             iterations = std::max(iterations, control.last_step());
           }
-        dealii::Vector<double> local(x);
-        constraints.distribute(local);
-        solution[c] = local;
+        constraints.distribute(x);
+        // every process gets the whole field (the mesh is shared): a vector with every entry
+        // as a ghost
+        PETScWrappers::MPI::Vector all(owned, complete_index_set(dofs.n_dofs()), comm);
+        all = x;
+        solution[c].reinit(dofs.n_dofs());
+        for (types::global_dof_index i = 0; i < dofs.n_dofs(); ++i)
+          solution[c][i] = all[i];
       }
   }
 
