@@ -5,6 +5,7 @@
 #include <abrade/fem/mesh_motion.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
+#include <abrade/fem/solid_surface.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
@@ -142,6 +143,56 @@ TEST(KnifeMesh, WornEdgeCarriedIntoTheInteriorKeepsTheMeshValid)
   EXPECT_NEAR(v0 - mesh_volume(tria), 0.08 * 0.0024 * 0.4, 1e-12);
   std::printf("worn knife: volume %.6g -> %.6g m^3, min scaled Jacobian %.3f, CG iterations %u\n", v0,
               mesh_volume(tria), q.min_scaled_jacobian, motion.last_iterations());
+}
+
+TEST(KnifeMesh, HundredWearUpdatesWithRemeshing)
+{
+  // 100 updates, each receding the knife's lowest 0.1 m by up to 0.8 mm (the edge most); the
+  // mesh is moved every time and remeshed when its quality falls below 95 % of the fresh mesh's
+  // (strict, to exercise remeshing: with stiffening the quality stays above half of it for all
+  // 100 updates): it never inverts, and the knife keeps losing material
+  KnifeGeometry    k;
+  auto             tria = std::make_unique<Triangulation<3>>();
+  k.mesh(*tria, 0.02, tmp("abrade_knife_updates.msh"));
+  class Wear : public Function<3>
+  {
+  public:
+    double bottom = 0;
+    Wear() : Function<3>(3) {}
+    double value(const Point<3> &p, unsigned c) const override
+    {
+      return c == 2 ? 0.0008 * std::max(0.0, 1 - (p[2] - bottom) / 0.1) : 0.0;
+    }
+  } wear;
+  Functions::ZeroFunction<3> zero(3);
+  double       volume    = mesh_volume(*tria);
+  int          remeshes  = 0;
+  const double threshold = 0.95 * mesh_quality(*tria).min_scaled_jacobian;
+  for (int update = 0; update < 100; ++update)
+    {
+      MeshMotion motion(*tria, {1, 1.0, 1e-10});
+      motion.solve({{KnifeGeometry::wearable_boundary, &wear}, {KnifeGeometry::clamped_boundary, &zero}});
+      move_vertices(*tria, motion.vertex_displacements());
+      wear.bottom += 0.0008;
+      MeshQuality q = mesh_quality(*tria);
+      ASSERT_EQ(q.n_inverted, 0u) << "update " << update;
+      if (q.min_scaled_jacobian < threshold)
+        {
+          auto fresh = std::make_unique<Triangulation<3>>();
+          remesh(*tria, 0.02, *fresh, tmp("abrade_updates_remesh"));
+          tria = std::move(fresh);
+          ++remeshes;
+          ASSERT_EQ(mesh_quality(*tria).n_inverted, 0u);
+        }
+      const double v = mesh_volume(*tria);
+      ASSERT_LT(v, volume);
+      volume = v;
+    }
+  // the bottom 0.1 m shrank by 8 % a hundred times (a linear squeeze each time)
+  std::printf("100 updates: %d remeshes, volume 0.00576 -> %.6g m^3\n", remeshes, volume);
+  EXPECT_GT(remeshes, 0);
+  EXPECT_LT(remeshes, 100);
+  EXPECT_LT(volume, 0.00576 - 0.0003);
 }
 
 int main(int argc, char **argv)
