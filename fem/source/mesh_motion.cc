@@ -75,6 +75,21 @@ namespace abrade::fem
 
   void MeshMotion::solve(const std::map<types::boundary_id, const Function<3> *> &boundary, const Function<3> *rhs)
   {
+    solve_with(nullptr, boundary, rhs);
+  }
+
+  void MeshMotion::solve(const std::map<unsigned, Tensor<1, 3>>                  &vertices,
+                         const std::map<types::boundary_id, const Function<3> *> &boundary)
+  {
+    if (settings.degree != 1)
+      throw std::logic_error("vertex displacements need degree 1");
+    solve_with(&vertices, boundary, nullptr);
+  }
+
+  void MeshMotion::solve_with(const std::map<unsigned, Tensor<1, 3>>                  *vertices,
+                              const std::map<types::boundary_id, const Function<3> *> &boundary,
+                              const Function<3>                                       *rhs)
+  {
     const auto &dofs = impl->dofs;
     // a parallel::shared triangulation (METIS partitions) is solved by all its processes, each
     // assembling its own cells; a plain one alone
@@ -114,6 +129,18 @@ namespace abrade::fem
             scalar[id] = parts.back().get();
           }
         VectorTools::interpolate_boundary_values(*impl->mapping, dofs, scalar, constraints);
+        if (vertices)
+          for (const auto &cell : dofs.active_cell_iterators())
+            for (const unsigned v : cell->vertex_indices())
+              if (auto it = vertices->find(cell->vertex_index(v)); it != vertices->end())
+                {
+                  const auto dof = cell->vertex_dof_index(v, 0);
+                  if (relevant.is_element(dof) && !constraints.is_constrained(dof))
+                    {
+                      constraints.add_line(dof);
+                      constraints.set_inhomogeneity(dof, it->second[c]);
+                    }
+                }
         constraints.close();
 
         DynamicSparsityPattern dsp(relevant);

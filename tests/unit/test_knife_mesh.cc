@@ -2,6 +2,7 @@
 // area, and cells of good quality; the quality measure gives 1 for ideal cells and flags
 // inverted ones; moving the knife with a mesh-motion solve keeps the mesh valid.
 #include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/knife_model.h>
 #include <abrade/fem/mesh_motion.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -193,6 +194,62 @@ TEST(KnifeMesh, HundredWearUpdatesWithRemeshing)
   EXPECT_GT(remeshes, 0);
   EXPECT_LT(remeshes, 100);
   EXPECT_LT(volume, 0.00576 - 0.0003);
+}
+
+TEST(KnifeModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
+{
+  KnifeModel::Settings settings;
+  settings.mesh_size      = 0.03;
+  settings.work_directory = tmp("abrade_knife_model");
+  KnifeModel knife(KnifeGeometry(), settings);
+  const double v0 = knife.volume();
+
+  // 1 mm off the flat -y face (away from its edges)
+  auto side_depth = [](const SolidSurface &s, double d) {
+    std::vector<double> depth(s.vertices.size(), 0.0);
+    for (std::size_t v = 0; v < depth.size(); ++v)
+      {
+        const auto &p = s.vertices[v];
+        if (std::abs(p[1] + 0.015) < 0.0015 && p[2] > 0.06 && p[2] < 0.48 && p[0] > 0.02 && p[0] < 0.38)
+          depth[v] = d;
+      }
+    return depth;
+  };
+  const SolidSurface before = knife.surface();
+  const auto         depth  = side_depth(before, 0.001);
+  const auto         r      = knife.apply_wear(depth);
+  EXPECT_TRUE(r.worn_through.empty());
+  EXPECT_EQ(r.quality.n_inverted, 0u);
+  EXPECT_LT(r.volume, v0);
+  int moved = 0;
+  for (std::size_t v = 0; v < depth.size(); ++v)
+    if (depth[v] > 0)
+      {
+        EXPECT_NEAR(knife.surface().vertices[v][1] - before.vertices[v][1], 0.001, 1e-12); // inward = +y
+        EXPECT_NEAR(knife.accumulated_depth()[v], 0.001, 1e-15);
+        ++moved;
+      }
+  EXPECT_GT(moved, 3);
+
+  // deeper than the 30 mm plate: worn through, reported, the mesh untouched
+  const double v1 = knife.volume();
+  const auto   through = knife.apply_wear(side_depth(knife.surface(), 0.05));
+  EXPECT_FALSE(through.worn_through.empty());
+  EXPECT_DOUBLE_EQ(knife.volume(), v1);
+
+  // a threshold above the fresh mesh's quality forces a remesh; the accumulated depth comes along
+  KnifeModel::Settings strict = settings;
+  strict.remesh_quality       = 10;
+  KnifeModel   remeshing(KnifeGeometry(), strict);
+  const auto   rr = remeshing.apply_wear(side_depth(remeshing.surface(), 0.002));
+  EXPECT_TRUE(rr.remeshed);
+  EXPECT_EQ(remeshing.n_remeshes(), 1u);
+  double total = 0;
+  for (double d : remeshing.accumulated_depth())
+    total += d;
+  EXPECT_GT(total, 0);
+  SolidOutput out(tmp("abrade_knife_model_out"), "knife");
+  remeshing.write(out, 1.0);
 }
 
 int main(int argc, char **argv)

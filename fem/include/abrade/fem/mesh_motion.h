@@ -38,6 +38,11 @@ namespace abrade::fem
     void solve(const std::map<dealii::types::boundary_id, const dealii::Function<3> *> &boundary,
                const dealii::Function<3> *rhs = nullptr);
 
+    /// Solves with the displacement prescribed at individual vertices (triangulation vertex
+    /// index -> displacement; degree 1 only) and by functions on whole boundaries.
+    void solve(const std::map<unsigned, dealii::Tensor<1, 3>>                        &vertices,
+               const std::map<dealii::types::boundary_id, const dealii::Function<3> *> &boundary);
+
     /// L2 norm and H1 seminorm of (u_c - exact_c), summed over the three components.
     std::pair<double, double> errors(const dealii::Function<3> &exact) const;
 
@@ -49,6 +54,9 @@ namespace abrade::fem
     const dealii::Vector<double> &component(unsigned c) const { return solution[c]; }
 
   private:
+    void solve_with(const std::map<unsigned, dealii::Tensor<1, 3>>                        *vertices,
+                    const std::map<dealii::types::boundary_id, const dealii::Function<3> *> &boundary,
+                    const dealii::Function<3>                                               *rhs);
     struct Impl;
     std::unique_ptr<Impl>                 impl;
     Settings                              settings;
