@@ -1,35 +1,49 @@
-// The case `abrade run` runs when no parameter file is given: a small knife-bed cycle (600
-// seed-material pellets in a 0.8 m x 0.5 m box, the reference knife scaled to it) that finishes
-// in seconds and shows every output.
+// The case `abrade run` runs when no parameter file is given: the main job, a lifetime
+// prediction, on a small case (cases/lifetime/small.prm: 600 pellets, a 0.15 m knife, four
+// updates) that finishes in seconds and shows every output.
 #include <abrade/coupling/parameter_file.h>
 
 namespace abrade::coupling
 {
   const std::string &default_case_text()
   {
-    static const std::string text = R"(# abrade embedded default case: a small knife-bed cycle
-set Job = dem
+    static const std::string text = R"(# abrade embedded default case (= cases/lifetime/small.prm): a small lifetime prediction
+set Job   = lifetime
 set Walls = container, knife
 subsection Output
   set Directory = output
-  set Snapshot interval = 0.05
 end
 subsection Simulation
   set Phases = penetration: 0.1, travel: 0.2
   set Domain min = -0.5, -0.3, -0.1
   set Domain max = 0.5, 0.3, 1.0
+  set Maximum overlap fraction = 0.3
 end
 subsection Particles
   subsection Generation
     set Region min = -0.39, -0.24, 0.01
     set Region max = 0.39, 0.24, 0.6
     set Count = 600
-    set Seed = 1
   end
   subsection Settling
     set Maximum time = 0.8
     set Kinetic energy threshold = 1e-3
   end
+end
+subsection Knife
+  set Length       = 0.15
+  set Height       = 0.25
+  set Thickness    = 0.03
+  set Bevel height = 0.04
+  set Mesh size    = 0.015
+end
+subsection Lifetime
+  # nominal material per pass of the knife through the bed
+  set Tonnes per cycle         = 0.2
+  set Seeds                    = 1
+  set Depth increment fraction = 0.05
+  set Maximum depth            = 0.01
+  set Maximum updates          = 4
 end
 subsection Wall container
   set Geometry = box
@@ -37,11 +51,14 @@ subsection Wall container
   set Box max = 0.4, 0.25, 0.7
 end
 subsection Wall knife
-  set Geometry = chisel knife
-  set Knife length = 0.15
-  set Knife height = 0.25
-  set Offset = -0.2, 0, 0.35
-  set Maximum edge length = 0.02
+  set Geometry = solid model
+  # the knife's edge at x = -0.275 .. -0.125, 0.35 m above the floor
+  set Offset = -0.275, 0, 0.35
+  subsection Wear
+    set Laws = archard
+    # W = K / H for a wear-resistant steel against iron ore: K = 1e-4, H = 5e9 Pa (calibrate!)
+    set Archard coefficient = 2e-14
+  end
   subsection Motion
     set Type = prescribed
     set Velocities = penetration: 0, 0, -1.5; travel: 1.5, 0, 0

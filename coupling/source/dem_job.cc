@@ -43,10 +43,11 @@ namespace abrade::coupling
       return s.str();
     }
 
-    /// Generates (or loads) the bed; returns true when it was loaded.
-    bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
+  } // namespace
+
+  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
+  {
     {
-      std::string bed = c.bed_file;
       if (!bed.empty() && std::filesystem::path(bed).is_relative())
         bed = ctx.output.file(bed);
       if (!bed.empty() && std::filesystem::exists(bed))
@@ -95,7 +96,7 @@ namespace abrade::coupling
         }
       return false;
     }
-  } // namespace
+  }
 
   void run_dem_job(JobContext &ctx)
   {
@@ -103,7 +104,7 @@ namespace abrade::coupling
     dem::Simulation sim(c.settings);
     build_simulation(c, sim);
 
-    const bool loaded = prepare_bed(c, sim, ctx);
+    const bool loaded = prepare_bed(c, sim, ctx, c.bed_file);
     sim.set_time(0);
     flush_warnings(sim, ctx.log);
     ctx.log.line("Particles: " + std::to_string(sim.particles().size()) + ", time step " + fmt(sim.dt()) +

@@ -7,6 +7,7 @@
 //    DEM would see), and volume, mass and quality into summary.json.
 #include <abrade/common/error.h>
 #include <abrade/coupling/jobs.h>
+#include <abrade/coupling/knife_parameters.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -19,11 +20,12 @@
 
 namespace abrade::coupling
 {
-  void run_knife_job(JobContext &ctx)
+  KnifeParameters read_knife_parameters(ParameterFile &file)
   {
-    auto &prm = ctx.parameters.handler();
+    auto           &prm = file.handler();
+    KnifeParameters kp;
+    auto           &k = kp.geometry;
     prm.enter_subsection("Knife");
-    fem::KnifeGeometry k;
     k.length     = prm.get_double("Length");
     k.height     = prm.get_double("Height");
     k.thickness  = prm.get_double("Thickness");
@@ -36,39 +38,53 @@ namespace abrade::coupling
     k.lip_height = prm.get_double("Lip height");
     k.lip_width  = prm.get_double("Lip width");
     k.lip_offset = prm.get_double("Lip offset");
-    const double      h        = prm.get_double("Mesh size");
-    const double      density  = prm.get_double("Density");
-    const std::string geometry = prm.get("Geometry");
-    std::string       file     = prm.get("File");
+    kp.mesh_size = prm.get_double("Mesh size");
+    kp.density   = prm.get_double("Density");
+    kp.from_file = prm.get("Geometry") == "file";
+    kp.file      = prm.get("File");
     prm.leave_subsection();
-    if (geometry == "file" && !file.empty() && std::filesystem::path(file).is_relative() &&
-        ctx.parameters.file_name().front() != '<')
-      file = (std::filesystem::path(ctx.parameters.file_name()).parent_path() / file).string();
+    if (kp.from_file && !kp.file.empty() && std::filesystem::path(kp.file).is_relative() &&
+        file.file_name().front() != '<')
+      kp.file = (std::filesystem::path(file.file_name()).parent_path() / kp.file).string();
+    if (!kp.from_file)
+      try
+        {
+          k.check();
+        }
+      catch (const InputError &e)
+        {
+          // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
+          const std::string what = e.what();
+          throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
+        }
+    return kp;
+  }
 
+  void init_mpi_once()
+  {
     // PETSc and the FEM need MPI; a single process here
-    static int                                    argc = 1;
-    static char                                   name[] = "abrade", *args[] = {name, nullptr};
-    static char                                 **argv = args;
+    static int                                      argc = 1;
+    static char                                     name[] = "abrade", *args[] = {name, nullptr};
+    static char                                   **argv = args;
     static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  }
+
+  void run_knife_job(JobContext &ctx)
+  {
+    const KnifeParameters     kp = read_knife_parameters(ctx.parameters);
+    const fem::KnifeGeometry &k  = kp.geometry;
+    const double              h = kp.mesh_size, density = kp.density;
+    const std::string         geometry = kp.from_file ? "file" : "parametric";
+    const std::string         file     = kp.file;
+
+    init_mpi_once();
 
     dealii::Triangulation<3> tria;
     const std::string        dir = ctx.output.subdirectory("knife");
     {
       io::ScopedTimer t(ctx.timers, "mesh knife");
       if (geometry == "parametric")
-        {
-          try
-            {
-              k.check();
-            }
-          catch (const InputError &e)
-            {
-              // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
-              const std::string what = e.what();
-              throw InputError(ctx.parameters.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
-            }
-          k.mesh(tria, h, dir + "/knife.msh");
-        }
+        k.mesh(tria, h, dir + "/knife.msh");
       else
         {
           if (file.empty())

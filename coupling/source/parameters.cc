@@ -97,11 +97,13 @@ namespace abrade::coupling
 
   void declare_parameters(ParameterHandler &prm, const DeclarationLists &lists)
   {
-    prm.declare_entry("Job", "dem", Selection("dem|knife"),
+    prm.declare_entry("Job", "dem", Selection("dem|knife|lifetime"),
                       "What `abrade run` does. dem: one DEM simulation of the phases in "
                       "Simulation/Phases (generate or load the bed, run, write output); knife: "
                       "build the knife's solid model (subsection Knife), check its mesh and write "
-                      "it (VTU, STL) with its volume and mass.");
+                      "it (VTU, STL) with its volume and mass; lifetime: alternate DEM cycles "
+                      "(on the knife's solid model) and geometry updates until end of life "
+                      "(subsection Lifetime).");
     declare_lists(prm);
     std::string names;
     for (const auto &w : lists.walls)
@@ -129,6 +131,27 @@ namespace abrade::coupling
     prm.declare_entry("Lip offset", "0", Double(0, huge), "[m] Distance of the ridge above the bevel. Range: >= 0.");
     prm.declare_entry("Mesh size", "0.015", Double(1e-6, huge), "[m] Target tetrahedron size. Range: > 0.");
     prm.declare_entry("Density", "7800", Double(1e-6, huge), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Lifetime");
+    prm.declare_entry("Tonnes per cycle", "10", Double(0, huge),
+                      "[t] Material handled per operating cycle (the tonnes axis of the trajectory). Range: >= 0.");
+    prm.declare_entry("Seeds", "1", List(Integer(0)),
+                      "Bed seeds of the replicate DEM cycles run at every update; their wear is "
+                      "averaged (one settled bed per seed, saved and reused).");
+    prm.declare_entry("Cycles per update", "0", Integer(0),
+                      "Real cycles one update stands for; 0: adaptive, so that the largest depth "
+                      "increment is 'Depth increment fraction' of the mesh size. Range: >= 0.");
+    prm.declare_entry("Depth increment fraction", "0.05", Double(1e-6, 1),
+                      "[-] Adaptive updates: largest depth increment per update over the mesh size. Range: (0, 1].");
+    prm.declare_entry("Smoothing radius", "0", Double(0, huge),
+                      "[m] Volume-conserving smoothing of the per-cycle wear over the knife surface; "
+                      "0: the largest particle radius. Range: >= 0.");
+    prm.declare_entry("Maximum depth", "0.02", Double(0, huge),
+                      "[m] End of life: the largest accumulated wear depth. Range: >= 0.");
+    prm.declare_entry("Target tonnes", "0", Double(0, huge),
+                      "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
+    prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -228,10 +251,11 @@ namespace abrade::coupling
     for (const auto &name : lists.walls)
       {
         prm.enter_subsection("Wall " + name);
-        prm.declare_entry("Geometry", "box", Selection("box|plate|chisel knife|file"),
+        prm.declare_entry("Geometry", "box", Selection("box|plate|chisel knife|file|solid model"),
                           "Wall geometry: box (open-top container, inward normals), plate (a "
                           "rectangle), chisel knife (the knife-bed reference knife, see cases.md), "
-                          "or file (a surface mesh).");
+                          "file (a surface mesh), or solid model (the surface of the FEM knife of "
+                          "subsection Knife; lifetime runs move it with its wear).");
         prm.declare_entry("File", "", Anything(),
                           "Surface mesh file (STL ASCII/binary, OBJ, PLY, VTK, VTP) when Geometry = "
                           "file; relative to the parameter file's directory.");
@@ -472,6 +496,8 @@ namespace abrade::coupling
             w.mesh = dem::primitives::plate(get_vector(prm, "Plate centre"), axis, std::stod(size[0]),
                                             std::stod(size[1]), 0, n[0] == '-');
           }
+        else if (geometry == "solid model")
+          w.mesh = dem::TriangleMesh(); // filled from the FEM knife by the job
         else if (geometry == "chisel knife")
           w.mesh = dem::primitives::chisel_knife(prm.get_double("Knife length"), prm.get_double("Knife height"),
                                                  prm.get_double("Knife thickness"), prm.get_double("Bevel height"));
@@ -490,6 +516,8 @@ namespace abrade::coupling
               }
           }
         const Vec3 offset = get_vector(prm, "Offset");
+        wc.offset         = offset;
+        wc.solid_model    = geometry == "solid model";
         w.mesh.translate(offset);
         if (const double h = prm.get_double("Maximum edge length"); h > 0)
           w.mesh.refine(h);

@@ -7,6 +7,7 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/common/timer.h>
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/dem/simulation.h>
 
 #include <string>
 #include <vector>
@@ -33,7 +34,14 @@ namespace abrade::coupling
   /// All jobs, in one place.
   const std::vector<JobInfo> &registered_jobs();
 
+  struct DemCase;
+  /// Loads the settled bed from @p bed_file if it exists (relative: in the output directory),
+  /// otherwise generates, settles and saves it there (empty: generate, save nothing); sets the
+  /// simulation up. Returns true when the bed was loaded.
+  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed_file);
+
   // the jobs
   void run_dem_job(JobContext &ctx);
+  void run_lifetime_job(JobContext &ctx);
   void run_knife_job(JobContext &ctx);
 } // namespace abrade::coupling

@@ -50,6 +50,8 @@ namespace abrade::coupling
       dem::Vec3        probe_axis = dem::Vec3::UnitX();
       double           probe_thickness = 0;    ///< 0: 1.5 x the largest particle radius
       double           probe_interval  = 1e-3; ///< [s]
+      bool             solid_model = false;    ///< the mesh is the FEM knife's surface
+      dem::Vec3        offset = dem::Vec3::Zero();
     };
     std::vector<WallCase> walls;
     double snapshot_interval = 0.05, force_interval = 1e-3;

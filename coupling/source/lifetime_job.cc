@@ -1,0 +1,278 @@
+// The `lifetime` job: a knife's wear over its working life, by alternating DEM cycles and FEM
+// geometry updates (shared/reference/design-notes.md).
+//
+// Every update:
+//  1. DEM: one operating cycle per bed seed on the knife's current surface (each cycle restarts
+//     from that seed's saved bed, so cycles are comparable); the per-triangle Archard volume of
+//     the knife, averaged over the seeds, is the wear of one cycle.
+//  2. Filter and map: each triangle's volume goes to its vertices (a third each), is smoothed
+//     over the surface with a Gaussian of the particle scale (volume conserving: every vertex's
+//     volume is spread with weights that sum to one) and divided by the vertex's area (a third
+//     of its triangles'): the depth per cycle, along the inward normal.
+//  3. Cycles per update: fixed, or adaptive so that the largest depth increment is a set
+//     fraction of the mesh size. Moving vertices along averaged normals does not sweep exactly
+//     the Archard volume (edges, corners): the depths are scaled by the ratio Archard / swept of
+//     the previous update (clipped to [0.5, 2]), and the ratio after the move is recorded.
+//  4. FEM: move the knife (KnifeModel: mesh motion, quality, remesh, worn-through check).
+//  5. Record the trajectory; stop at the maximum depth, a worn-through knife, the target tonnes
+//     or the maximum number of updates.
+#include <abrade/common/csv_writer.h>
+#include <abrade/common/error.h>
+#include <abrade/common/progress.h>
+#include <abrade/coupling/jobs.h>
+#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/parameters.h>
+#include <abrade/dem/wear.h>
+#include <abrade/fem/knife_model.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numeric>
+#include <sstream>
+
+namespace abrade::coupling
+{
+  namespace
+  {
+    dem::TriangleMesh to_dem_mesh(const fem::SolidSurface &s, const dem::Vec3 &offset)
+    {
+      dem::TriangleMesh m;
+      for (const auto &p : s.vertices)
+        m.vertices.emplace_back(p[0] + offset[0], p[1] + offset[1], p[2] + offset[2]);
+      for (const auto &t : s.triangles)
+        m.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
+      return m;
+    }
+
+    /// One DEM cycle on the current knife; returns the knife's per-triangle Archard volume.
+    std::vector<double> run_cycle(DemCase c, const dem::TriangleMesh &knife_mesh, int seed, JobContext &ctx,
+                                  std::size_t &knife_index, double &r_max)
+    {
+      c.fill.seed = static_cast<std::uint64_t>(seed);
+      for (auto &wc : c.walls)
+        if (wc.solid_model)
+          wc.wall.mesh = knife_mesh;
+      c.settings.stop_on_error = false; // a cycle reports overlaps and lost particles, and goes on
+      dem::Simulation sim(c.settings);
+      build_simulation(c, sim);
+      io::Log quiet;
+      JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
+      prepare_bed(c, sim, cycle_ctx, "beds/bed-seed" + std::to_string(seed) + ".bed");
+      sim.set_time(0);
+      std::vector<dem::WearLaws> laws;
+      for (const auto &wc : c.walls)
+        laws.push_back(wc.wear);
+      auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
+      sim.add_hook(wear);
+      for (const auto &[name, duration] : c.phases)
+        sim.run_phase(name, duration);
+      for (std::size_t w = 0; w < c.walls.size(); ++w)
+        if (c.walls[w].solid_model)
+          knife_index = w;
+      r_max = 0;
+      for (double r : sim.particles().radius)
+        r_max = std::max(r_max, r);
+      return wear->values(knife_index, dem::WearRecorder::archard_volume);
+    }
+  } // namespace
+
+  void run_lifetime_job(JobContext &ctx)
+  {
+    init_mpi_once();
+    auto           &prm = ctx.parameters.handler();
+    DemCase         c   = read_dem_case(ctx.parameters);
+    KnifeParameters kp  = read_knife_parameters(ctx.parameters);
+    if (std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
+      ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
+    if (kp.from_file)
+      ctx.parameters.fail({"Knife"}, "Geometry", "lifetime runs use the parametric knife for now");
+    prm.enter_subsection("Lifetime");
+    const double tonnes_per_cycle = prm.get_double("Tonnes per cycle");
+    std::vector<int> seeds;
+    for (const auto &s : dealii::Utilities::split_string_list(prm.get("Seeds")))
+      seeds.push_back(std::stoi(s));
+    const long   fixed_cycles  = prm.get_integer("Cycles per update");
+    const double fraction      = prm.get_double("Depth increment fraction");
+    double       smoothing     = prm.get_double("Smoothing radius");
+    const double max_depth     = prm.get_double("Maximum depth");
+    const double target_tonnes = prm.get_double("Target tonnes");
+    const long   max_updates   = prm.get_integer("Maximum updates");
+    prm.leave_subsection();
+    if (seeds.empty())
+      ctx.parameters.fail({"Lifetime"}, "Seeds", "at least one seed is needed");
+
+    ctx.output.subdirectory("beds");
+    fem::KnifeModel::Settings ks;
+    ks.mesh_size      = kp.mesh_size;
+    ks.density        = kp.density;
+    ks.work_directory = ctx.output.subdirectory("knife/work");
+    fem::KnifeModel knife(kp.geometry, ks);
+    fem::SolidOutput knife_output(ctx.output.subdirectory("knife"), "knife");
+    knife.write(knife_output, 0);
+    const double volume0 = knife.volume();
+    dem::Vec3    offset  = dem::Vec3::Zero();
+    for (const auto &wc : c.walls)
+      if (wc.solid_model)
+        offset = wc.offset;
+
+    io::CsvWriter trajectory(ctx.output.file("trajectory.csv"),
+                             {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
+                              "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed"});
+    ctx.log.line("Lifetime: knife of " + std::to_string(knife.triangulation().n_active_cells()) + " cells, " +
+                 std::to_string(seeds.size()) + " bed seed(s) per update");
+    io::ProgressLine progress("lifetime", double(max_updates));
+    long        cycles = 0;
+    double      archard_total = 0;
+    double      volume_correction = 1; // Archard / swept volume of the previous update
+    std::string end = "maximum updates reached";
+    for (long update = 1; update <= max_updates; ++update)
+      {
+        // 1. DEM cycles on the current surface, averaged over the seeds
+        const fem::SolidSurface &surface = knife.surface();
+        const dem::TriangleMesh  mesh    = to_dem_mesh(surface, offset);
+        std::vector<double>      per_triangle(surface.triangles.size(), 0.0);
+        std::size_t              knife_index = 0;
+        double                   r_max       = 0;
+        {
+          io::ScopedTimer t(ctx.timers, "dem cycles");
+          for (int seed : seeds)
+            {
+              const auto v = run_cycle(c, mesh, seed, ctx, knife_index, r_max);
+              for (std::size_t t = 0; t < v.size(); ++t)
+                per_triangle[t] += v[t] / seeds.size();
+            }
+        }
+        if (smoothing <= 0)
+          smoothing = r_max;
+
+        // 2. per-vertex volume, smoothed (volume conserving), depth per cycle
+        const std::size_t   nv = surface.vertices.size();
+        std::vector<double> vertex_volume(nv, 0.0), vertex_area(nv, 0.0);
+        for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+          {
+            const auto  &tri = surface.triangles[t];
+            const double a   = 0.5 * dealii::cross_product_3d(surface.vertices[tri[1]] - surface.vertices[tri[0]],
+                                                              surface.vertices[tri[2]] - surface.vertices[tri[0]])
+                                     .norm();
+            for (unsigned v : tri)
+              {
+                vertex_area[v] += a / 3;
+                if (surface.boundary_id[t] == fem::KnifeGeometry::wearable_boundary)
+                  vertex_volume[v] += per_triangle[t] / 3;
+              }
+          }
+        std::vector<double> smoothed(nv, 0.0);
+        for (std::size_t u = 0; u < nv; ++u)
+          {
+            if (vertex_volume[u] == 0)
+              continue;
+            std::vector<std::pair<std::size_t, double>> w;
+            double                                      sum = 0;
+            for (std::size_t v = 0; v < nv; ++v)
+              {
+                const double d2 = surface.vertices[u].distance_square(surface.vertices[v]);
+                if (d2 < 9 * smoothing * smoothing)
+                  {
+                    const double k = std::exp(-0.5 * d2 / (smoothing * smoothing)) * vertex_area[v];
+                    w.emplace_back(v, k), sum += k;
+                  }
+              }
+            for (const auto &[v, k] : w)
+              smoothed[v] += vertex_volume[u] * k / sum;
+          }
+        std::vector<double> depth_per_cycle(nv, 0.0);
+        double              max_rate = 0;
+        for (std::size_t v = 0; v < nv; ++v)
+          {
+            depth_per_cycle[v] = vertex_area[v] > 0 ? smoothed[v] / vertex_area[v] : 0.0;
+            max_rate           = std::max(max_rate, depth_per_cycle[v]);
+          }
+        const double archard_cycle = std::accumulate(per_triangle.begin(), per_triangle.end(), 0.0);
+        if (!(max_rate > 0))
+          {
+            end = "no wear on the knife (does the DEM cycle touch it?)";
+            break;
+          }
+
+        // 3. cycles this update stands for
+        const long n = fixed_cycles > 0 ? fixed_cycles
+                                        : std::max(1L, long(std::floor(fraction * kp.mesh_size / max_rate)));
+        std::vector<double> depth(nv);
+        for (std::size_t v = 0; v < nv; ++v)
+          depth[v] = n * depth_per_cycle[v] * volume_correction;
+
+        // 4. move the knife
+        const double volume_before = knife.volume();
+        fem::KnifeModel::UpdateResult r;
+        try
+          {
+            io::ScopedTimer t(ctx.timers, "fem update");
+            r = knife.apply_wear(depth);
+          }
+        catch (const std::exception &e)
+          {
+            end = "the worn surface could not be remeshed at update " + std::to_string(update) +
+                  " (it folds where the wear is deepest; a smaller Lifetime/Depth increment fraction helps): " + e.what();
+            ctx.log.warning(end);
+            break;
+          }
+        if (!r.worn_through.empty())
+          {
+            end = "worn through at update " + std::to_string(update);
+            break;
+          }
+        cycles += n;
+        archard_total += n * archard_cycle;
+
+        // 5. record
+        const auto  &acc  = knife.accumulated_depth();
+        const double dmax = *std::max_element(acc.begin(), acc.end());
+        const double dmean = std::accumulate(acc.begin(), acc.end(), 0.0) / acc.size();
+        const double swept = volume_before - knife.volume();
+        if (swept > 0)
+          volume_correction = std::clamp(volume_correction * n * archard_cycle / swept, 0.5, 2.0);
+        trajectory.row({double(update), double(cycles), cycles * tonnes_per_cycle, dmax, dmean, volume0 - knife.volume(),
+                        (volume0 - knife.volume()) * kp.density, n * archard_cycle, swept / (n * archard_cycle),
+                        r.quality.min_scaled_jacobian, r.remeshed ? 1.0 : 0.0});
+        trajectory.flush();
+        knife.write(knife_output, cycles * tonnes_per_cycle);
+        char stl[64];
+        std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
+        io::write_stl(ctx.output.file(stl), knife.surface().as_polydata());
+        std::ostringstream s;
+        s << "update " << update << ": " << n << " cycles (" << cycles * tonnes_per_cycle << " t), max depth "
+          << dmax << " m, swept/Archard volume " << swept / (n * archard_cycle)
+          << (r.remeshed ? ", remeshed" : "");
+        ctx.log.line(s.str());
+        progress.update(double(update), std::to_string(long(cycles * tonnes_per_cycle)) + " t");
+        if (dmax >= max_depth)
+          {
+            end = "maximum depth reached";
+            break;
+          }
+        if (target_tonnes > 0 && cycles * tonnes_per_cycle >= target_tonnes)
+          {
+            end = "target tonnes reached";
+            break;
+          }
+      }
+    progress.finish();
+    const auto  &acc  = knife.accumulated_depth();
+    const double dmax = acc.empty() ? 0.0 : *std::max_element(acc.begin(), acc.end());
+    io::Json    &r    = ctx.results["lifetime"];
+    r["end"]          = end;
+    r["cycles"]       = cycles;
+    r["tonnes"]       = cycles * tonnes_per_cycle;
+    r["max_depth"]    = dmax;
+    r["worn_volume"]  = volume0 - knife.volume();
+    r["worn_mass"]    = (volume0 - knife.volume()) * kp.density;
+    r["archard_volume"] = archard_total;
+    r["remeshes"]     = static_cast<long>(knife.n_remeshes());
+    // the tonnes to end of life: reached, or extrapolated linearly from the depth rate so far
+    r["predicted_tonnes_to_end_of_life"] =
+      dmax >= max_depth ? cycles * tonnes_per_cycle : (dmax > 0 ? cycles * tonnes_per_cycle * max_depth / dmax : 0.0);
+    ctx.log.line("Lifetime: " + end + " after " + std::to_string(cycles) + " cycles");
+  }
+} // namespace abrade::coupling
