@@ -28,6 +28,9 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
 #include <filesystem>
 #include <numeric>
 #include <sstream>
@@ -76,6 +79,64 @@ namespace abrade::coupling
         r_max = std::max(r_max, r);
       return wear->values(knife_index, dem::WearRecorder::archard_volume);
     }
+    /// The knife's cross-sections at x = f L: segments (y, z) where surface triangles cross the
+    /// plane, appended per update (blank-line separated blocks) to knife/profile_F.csv.
+    void write_profiles(const fem::SolidSurface &s, double length, const std::vector<double> &planes, long update,
+                        const std::string &dir)
+    {
+      for (double f : planes)
+        {
+          const double x0 = f * length;
+          char         name[64];
+          std::snprintf(name, sizeof name, "/profile_%.2f.csv", f);
+          const bool    first = update == 1;
+          std::ofstream out(dir + name, first ? std::ios::trunc : std::ios::app);
+          if (first)
+            out << "# update y0 z0 y1 z1 (one segment per line; a block per update)\n";
+          out.precision(10);
+          for (const auto &t : s.triangles)
+            {
+              std::vector<dealii::Point<3>> cut;
+              for (int e = 0; e < 3; ++e)
+                {
+                  const auto &a = s.vertices[t[e]], &b = s.vertices[t[(e + 1) % 3]];
+                  if ((a[0] - x0) * (b[0] - x0) < 0)
+                    cut.push_back(a + (x0 - a[0]) / (b[0] - a[0]) * (b - a));
+                }
+              if (cut.size() == 2)
+                out << update << ' ' << cut[0][1] << ' ' << cut[0][2] << ' ' << cut[1][1] << ' ' << cut[1][2] << '\n';
+            }
+          out << "\n\n";
+        }
+    }
+
+    /// trajectory.png (depth and worn volume vs tonnes) and knife/profile_F.png, with gnuplot.
+    void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const fem::KnifeGeometry &k)
+    {
+      std::ofstream gp(dir + "/lifetime.gp");
+      gp << "set terminal pngcairo size 900,600\nset grid\nset datafile separator ','\n"
+            "set output 'trajectory.png'\nset xlabel 'handled material [t]'\n"
+            "set ylabel 'largest wear depth [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset key left top\n"
+            "plot 'trajectory.csv' using 3:($4*1000) with linespoints title 'largest depth', "
+            "'' using 3:($6*1e6) axes x1y2 with linespoints title 'worn volume'\n"
+            "set datafile separator whitespace\nunset y2tics\nunset y2label\nset size ratio -1\n";
+      for (double f : planes)
+        {
+          char name[64];
+          std::snprintf(name, sizeof name, "knife/profile_%.2f", f);
+          // the worn end of the knife: three bevel heights, at its true shape
+          gp << "set output '" << name << ".png'\nset xlabel 'y [mm]'\nset ylabel 'z [mm]'\nset key outside\n"
+             << "set xrange [" << -1000 * k.thickness << ":" << 1000 * k.thickness << "]\nset yrange [-2:"
+             << 3000 * k.bevel << "]\n"
+             << "stats '" << name << ".csv' nooutput\n"
+             << "plot for [i=0:STATS_blocks-1] '" << name
+             << ".csv' index i using ($2*1000):($3*1000):(($4-$2)*1000):(($5-$3)*1000) with vectors nohead "
+                "title sprintf('update %d', i+1)\n";
+        }
+      gp.close();
+      if (std::system(("cd '" + dir + "' && gnuplot lifetime.gp > lifetime-gnuplot.log 2>&1").c_str()) != 0)
+        std::cerr << "warning: gnuplot failed or is missing; the plot script is " << dir << "/lifetime.gp" << std::endl;
+    }
   } // namespace
 
   void run_lifetime_job(JobContext &ctx)
@@ -97,6 +158,9 @@ namespace abrade::coupling
     const double fraction      = prm.get_double("Depth increment fraction");
     double       smoothing     = prm.get_double("Smoothing radius");
     const double max_depth     = prm.get_double("Maximum depth");
+    std::vector<double> planes;
+    for (const auto &p : dealii::Utilities::split_string_list(prm.get("Profile planes")))
+      planes.push_back(std::stod(p));
     const double target_tonnes = prm.get_double("Target tonnes");
     const long   max_updates   = prm.get_integer("Maximum updates");
     prm.leave_subsection();
@@ -126,6 +190,9 @@ namespace abrade::coupling
     long        cycles = 0;
     double      archard_total = 0;
     double      volume_correction = 1; // Archard / swept volume of the previous update
+    std::vector<double> seed_volume;   // Archard volume per cycle of each seed (this update)
+    double              relative_spread = 0; // std / mean of seed_volume, over all updates
+    int                 spread_samples  = 0;
     std::string end = "maximum updates reached";
     for (long update = 1; update <= max_updates; ++update)
       {
@@ -137,11 +204,13 @@ namespace abrade::coupling
         double                   r_max       = 0;
         {
           io::ScopedTimer t(ctx.timers, "dem cycles");
+          seed_volume.clear();
           for (int seed : seeds)
             {
               const auto v = run_cycle(c, mesh, seed, ctx, knife_index, r_max);
               for (std::size_t t = 0; t < v.size(); ++t)
                 per_triangle[t] += v[t] / seeds.size();
+              seed_volume.push_back(std::accumulate(v.begin(), v.end(), 0.0));
             }
         }
         if (smoothing <= 0)
@@ -227,6 +296,15 @@ namespace abrade::coupling
         archard_total += n * archard_cycle;
 
         // 5. record
+        if (seed_volume.size() > 1)
+          {
+            const double mean = std::accumulate(seed_volume.begin(), seed_volume.end(), 0.0) / seed_volume.size();
+            double       var  = 0;
+            for (double x : seed_volume)
+              var += (x - mean) * (x - mean) / (seed_volume.size() - 1);
+            relative_spread += std::sqrt(var) / mean, ++spread_samples;
+          }
+        write_profiles(knife.surface(), kp.geometry.length, planes, update, ctx.output.root() + "/knife");
         const auto  &acc  = knife.accumulated_depth();
         const double dmax = *std::max_element(acc.begin(), acc.end());
         const double dmean = std::accumulate(acc.begin(), acc.end(), 0.0) / acc.size();
@@ -273,6 +351,18 @@ namespace abrade::coupling
     // the tonnes to end of life: reached, or extrapolated linearly from the depth rate so far
     r["predicted_tonnes_to_end_of_life"] =
       dmax >= max_depth ? cycles * tonnes_per_cycle : (dmax > 0 ? cycles * tonnes_per_cycle * max_depth / dmax : 0.0);
-    ctx.log.line("Lifetime: " + end + " after " + std::to_string(cycles) + " cycles");
+    // uncertainty from the replicate beds: the wear rate's relative spread carries to the life
+    const double spread = spread_samples ? relative_spread / spread_samples : 0.0;
+    const double life   = r["predicted_tonnes_to_end_of_life"].number();
+    r["wear_rate_relative_spread"] = spread;
+    r["predicted_tonnes_low"]      = life / (1 + spread);
+    r["predicted_tonnes_high"]     = spread < 1 ? life / (1 - spread) : 0.0;
+    plot_lifetime(ctx.output.root(), planes, kp.geometry);
+    std::ostringstream s;
+    s << "Lifetime: " << end << " after " << cycles << " cycles; predicted life " << life << " t";
+    if (spread_samples)
+      s << " (" << life / (1 + spread) << " ... " << (spread < 1 ? life / (1 - spread) : 0.0) << " t from "
+        << seeds.size() << " beds)";
+    ctx.log.line(s.str());
   }
 } // namespace abrade::coupling

@@ -152,6 +152,9 @@ namespace abrade::coupling
     prm.declare_entry("Target tonnes", "0", Double(0, huge),
                       "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
     prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");
+    prm.declare_entry("Profile planes", "0.5", List(Double(0, 1)),
+                      "Cross-sections of the knife written per update (knife/profile_N.csv and .png), "
+                      "at these fractions of the knife's length (planes normal to its length).");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -287,10 +290,12 @@ namespace abrade::coupling
                           "finnie; empty: none). archard: volume W F_n d_t (EDEM); relative: "
                           "cumulative normal and tangential contact energy; finnie: LIGGGHTS' "
                           "impact wear. All are reported per phase (docs/physics.md).");
-        prm.declare_entry("Archard coefficient", "1", Double(0, huge),
-                          "[1/Pa] W = K / H of this wall against the particles. The thesis' SFC study "
-                          "uses W = 1 (relative values); a lifetime prediction needs a calibrated "
-                          "value (K ~ 1e-5..1e-3, H ~ 5e9 Pa for wear-resistant steel). Range: >= 0.");
+        prm.declare_entry("Archard coefficient", "2e-14", Double(0, huge),
+                          "[1/Pa] W = K / H of this wall against the particles. Default: K = 1e-4 "
+                          "(dimensionless wear coefficient of iron ore on steel, within the 1e-5..1e-3 "
+                          "of the literature) over H = 5e9 Pa (a wear-resistant steel, ~500 HB): an "
+                          "order of magnitude only, to be calibrated against measured wear (abrade "
+                          "calibrate). The thesis' SFC study uses W = 1 (relative values). Range: >= 0.");
         prm.declare_entry("Finnie coefficient", "1", Double(0, huge),
                           "[-] k_finnie of the Finnie law (LIGGGHTS' peratomtypepair value). Range: >= 0.");
         prm.leave_subsection();

@@ -29,6 +29,12 @@ namespace abrade::io
     /// Appends to an array (turns a null value into an array).
     void push_back(Json v);
 
+    /// The value as a number (0 if it is not one).
+    double number() const
+    {
+      auto d = std::get_if<double>(&value);
+      return d ? *d : 0.0;
+    }
     std::string dump(int indent = 2) const;
     void        write(const std::string &path) const;
 
