@@ -115,6 +115,19 @@ namespace abrade::coupling
         if (!std::filesystem::is_regular_file(f))
           throw InputError(f, "not a regular file");
         text = read_text(f);
+        // `include FILE` is relative to this file's directory, not to the working directory
+        std::istringstream in(text);
+        std::string        line, resolved;
+        const auto         base = std::filesystem::path(f).parent_path();
+        while (std::getline(in, line))
+          {
+            const std::string t = dealii::Utilities::trim(line);
+            if ((t.rfind("include ", 0) == 0 || t.rfind("INCLUDE ", 0) == 0) &&
+                std::filesystem::path(dealii::Utilities::trim(t.substr(8))).is_relative())
+              line = "include " + (base / dealii::Utilities::trim(t.substr(8))).string();
+            resolved += line + "\n";
+          }
+        text = resolved;
       }
     std::vector<Override> overrides;
     for (const auto &s : set)
