@@ -9,7 +9,9 @@
 //
 // apply_wear moves each wearable surface vertex inward along its normal by its depth (the
 // clamped face stays), carries the motion into the interior (MeshMotion), checks the quality and
-// remeshes below a threshold (relative to the fresh mesh), carrying the accumulated depth over.
+// remeshes when it falls below a threshold (relative to the fresh mesh), or when the surface has
+// moved more than half a mesh size since the last remesh (the mesh then no longer resolves the
+// receding, rounding edge), carrying the accumulated depth and displacement over.
 // A depth that reaches the local wall thickness is reported as worn through and not applied.
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/mesh_quality.h>
@@ -65,6 +67,8 @@ namespace abrade::fem
     std::unique_ptr<dealii::Triangulation<3>> tria;
     SolidSurface                              current_surface;
     std::vector<double>                       accumulated;
+    std::vector<double>                       displacement;   ///< accumulated, 3 per surface vertex
+    std::vector<double>                       since_remesh;   ///< |displacement| since the last remesh
     double                                    quality_threshold = 0;
     unsigned                                  remeshes          = 0;
   };
