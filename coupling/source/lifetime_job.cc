@@ -16,8 +16,12 @@
 //  4. FEM: move the knife (KnifeModel: mesh motion, quality, remesh, worn-through check).
 //  5. Record the trajectory; stop at the maximum depth, a worn-through knife, the target tonnes
 //     or the maximum number of updates.
+//  6. Checkpoint (the knife's exact mesh and fields, the loop's state) after every update;
+//     `abrade run ... --resume` continues from the last one, and, since every cycle restarts from
+//     a saved bed, produces the same trajectory as an uninterrupted run.
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/error.h>
+#include <abrade/common/hash.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
@@ -174,27 +178,74 @@ namespace abrade::coupling
     ks.work_directory = ctx.output.subdirectory("knife/work");
     fem::KnifeModel knife(kp.geometry, ks);
     fem::SolidOutput knife_output(ctx.output.subdirectory("knife"), "knife");
-    knife.write(knife_output, 0);
-    const double volume0 = knife.volume();
     dem::Vec3    offset  = dem::Vec3::Zero();
     for (const auto &wc : c.walls)
       if (wc.solid_model)
         offset = wc.offset;
 
-    io::CsvWriter trajectory(ctx.output.file("trajectory.csv"),
-                             {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
-                              "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed"});
-    ctx.log.line("Lifetime: knife of " + std::to_string(knife.triangulation().n_active_cells()) + " cells, " +
-                 std::to_string(seeds.size()) + " bed seed(s) per update");
-    io::ProgressLine progress("lifetime", double(max_updates));
+    // --- resume: the last checkpoint, and the outputs cut back to it ---
+    const std::string ckpt_dir  = ctx.output.subdirectory("checkpoint");
+    const std::string state_file = ckpt_dir + "/loop.txt";
+    const std::string hash      = io::fnv1a_hex(ctx.parameters.canonical_text());
+    long              first_update = 1;
     long        cycles = 0;
     double      archard_total = 0;
     double      volume_correction = 1; // Archard / swept volume of the previous update
     std::vector<double> seed_volume;   // Archard volume per cycle of each seed (this update)
     double              relative_spread = 0; // std / mean of seed_volume, over all updates
     int                 spread_samples  = 0;
+    double              volume0 = knife.volume();
+    std::vector<std::string> kept_rows;
+    std::vector<double>      output_times = {0.0};
+    if (ctx.resume && std::filesystem::exists(state_file))
+      {
+        std::ifstream in(state_file);
+        std::string   saved_hash;
+        long          done = 0;
+        in >> saved_hash >> done >> cycles >> archard_total >> volume_correction >> relative_spread >> spread_samples >>
+          smoothing >> volume0;
+        if (!in)
+          throw InputError(state_file, "corrupt lifetime checkpoint");
+        if (saved_hash != hash)
+          throw InputError(state_file, "the checkpoint was made with other parameters (hash " + saved_hash +
+                                         ", now " + hash + "); resume with the same parameter file and --set options");
+        knife.load(ckpt_dir + "/knife.ckpt");
+        first_update = done + 1;
+        std::ifstream old(ctx.output.file("trajectory.csv"));
+        std::string   line;
+        std::getline(old, line); // header
+        while (std::getline(old, line) && static_cast<long>(kept_rows.size()) < done)
+          kept_rows.push_back(line);
+        for (const auto &row : kept_rows)
+          output_times.push_back(std::stod(row.substr(row.find(',', row.find(',') + 1) + 1)));
+        for (double f : planes) // profile blocks after the checkpoint go
+          {
+            char name[64];
+            std::snprintf(name, sizeof name, "/knife/profile_%.2f.csv", f);
+            std::ifstream      pin(ctx.output.root() + name);
+            std::ostringstream keep;
+            for (std::string l; std::getline(pin, l);)
+              if (l.empty() || l[0] == '#' || std::stol(l.substr(0, l.find(' '))) <= done)
+                keep << l << '\n';
+            pin.close();
+            std::ofstream(ctx.output.root() + name) << keep.str();
+          }
+        ctx.log.line("Resuming after update " + std::to_string(done) + " (" + std::to_string(cycles) + " cycles)");
+      }
+    knife_output.adopt(output_times);
+    if (first_update == 1)
+      knife.write(knife_output, 0);
+
+    io::CsvWriter trajectory(ctx.output.file("trajectory.csv"),
+                             {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
+                              "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed"});
+    ctx.log.line("Lifetime: knife of " + std::to_string(knife.triangulation().n_active_cells()) + " cells, " +
+                 std::to_string(seeds.size()) + " bed seed(s) per update");
+    for (const auto &row : kept_rows)
+      trajectory.raw_row(row);
+    io::ProgressLine progress("lifetime", double(max_updates));
     std::string end = "maximum updates reached";
-    for (long update = 1; update <= max_updates; ++update)
+    for (long update = first_update; update <= max_updates; ++update)
       {
         // 1. DEM cycles on the current surface, averaged over the seeds
         const fem::SolidSurface &surface = knife.surface();
@@ -325,6 +376,17 @@ namespace abrade::coupling
           << (r.remeshed ? ", remeshed" : "");
         ctx.log.line(s.str());
         progress.update(double(update), std::to_string(long(cycles * tonnes_per_cycle)) + " t");
+
+        // 6. checkpoint: written aside, then renamed, so a kill never leaves half of one
+        knife.save(ckpt_dir + "/knife.ckpt.tmp");
+        {
+          std::ofstream state(state_file + ".tmp");
+          state.precision(17);
+          state << hash << ' ' << update << ' ' << cycles << ' ' << archard_total << ' ' << volume_correction << ' '
+                << relative_spread << ' ' << spread_samples << ' ' << smoothing << ' ' << volume0 << '\n';
+        }
+        std::filesystem::rename(ckpt_dir + "/knife.ckpt.tmp", ckpt_dir + "/knife.ckpt");
+        std::filesystem::rename(state_file + ".tmp", state_file);
         if (dmax >= max_depth)
           {
             end = "maximum depth reached";

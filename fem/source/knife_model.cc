@@ -2,7 +2,13 @@
 #include <abrade/fem/knife_model.h>
 #include <abrade/fem/mesh_motion.h>
 
+#include <deal.II/grid/tria_description.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 namespace abrade::fem
@@ -94,6 +100,100 @@ namespace abrade::fem
       current_surface = extract_surface(*tria);
     r.volume = volume();
     return r;
+  }
+
+  namespace
+  {
+    template <typename T>
+    void put(std::ofstream &out, const std::vector<T> &v)
+    {
+      const std::uint64_t n = v.size();
+      out.write(reinterpret_cast<const char *>(&n), sizeof n);
+      out.write(reinterpret_cast<const char *>(v.data()), n * sizeof(T));
+    }
+    template <typename T>
+    std::vector<T> get(std::ifstream &in, const std::string &path)
+    {
+      std::uint64_t n = 0;
+      in.read(reinterpret_cast<char *>(&n), sizeof n);
+      if (!in || n > (1ULL << 32))
+        throw InputError(path, "corrupt knife checkpoint");
+      std::vector<T> v(n);
+      in.read(reinterpret_cast<char *>(v.data()), n * sizeof(T));
+      if (!in)
+        throw InputError(path, "truncated knife checkpoint");
+      return v;
+    }
+  } // namespace
+
+  void KnifeModel::save(const std::string &path) const
+  {
+    std::vector<double>   vertices;
+    std::vector<unsigned> cells, faces;
+    for (const auto &p : tria->get_vertices())
+      vertices.insert(vertices.end(), {p[0], p[1], p[2]});
+    for (const auto &cell : tria->active_cell_iterators())
+      {
+        if (!cell->reference_cell().is_simplex())
+          throw std::logic_error("knife checkpoints hold tetrahedral meshes");
+        for (const unsigned v : cell->vertex_indices())
+          cells.push_back(cell->vertex_index(v));
+        for (const unsigned f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            faces.insert(faces.end(), {cell->face(f)->vertex_index(0), cell->face(f)->vertex_index(1),
+                                       cell->face(f)->vertex_index(2), unsigned(cell->face(f)->boundary_id())});
+      }
+    const std::vector<double> state = {quality_threshold, double(remeshes)};
+    std::ofstream out(path, std::ios::binary);
+    put(out, vertices), put(out, cells), put(out, faces), put(out, accumulated), put(out, displacement),
+      put(out, since_remesh), put(out, state);
+    if (!out)
+      throw RunError("cannot write " + path);
+  }
+
+  void KnifeModel::load(const std::string &path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw InputError(path, "cannot open knife checkpoint");
+    const auto v = get<double>(in, path);
+    const auto c = get<unsigned>(in, path);
+    const auto f = get<unsigned>(in, path);
+    auto       acc = get<double>(in, path), disp = get<double>(in, path), since = get<double>(in, path);
+    const auto state = get<double>(in, path);
+    std::vector<Point<3>> points;
+    for (std::size_t k = 0; k < v.size(); k += 3)
+      points.emplace_back(v[k], v[k + 1], v[k + 2]);
+    std::vector<CellData<3>> cells(c.size() / 4, CellData<3>(4));
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      for (unsigned j = 0; j < 4; ++j)
+        cells[k].vertices[j] = c[4 * k + j];
+    auto fresh = std::make_unique<Triangulation<3>>();
+    fresh->create_triangulation(points, cells, SubCellData());
+    std::map<std::array<unsigned, 3>, unsigned> ids;
+    for (std::size_t k = 0; k < f.size(); k += 4)
+      {
+        std::array<unsigned, 3> key{f[k], f[k + 1], f[k + 2]};
+        std::sort(key.begin(), key.end());
+        ids[key] = f[k + 3];
+      }
+    for (const auto &cell : fresh->active_cell_iterators())
+      for (const unsigned j : cell->face_indices())
+        if (cell->face(j)->at_boundary())
+          {
+            std::array<unsigned, 3> key{cell->face(j)->vertex_index(0), cell->face(j)->vertex_index(1),
+                                        cell->face(j)->vertex_index(2)};
+            std::sort(key.begin(), key.end());
+            if (auto it = ids.find(key); it != ids.end())
+              cell->face(j)->set_boundary_id(it->second);
+          }
+    tria              = std::move(fresh);
+    current_surface   = extract_surface(*tria);
+    if (acc.size() != current_surface.vertices.size())
+      throw InputError(path, "knife checkpoint does not match its mesh");
+    accumulated.swap(acc), displacement.swap(disp), since_remesh.swap(since);
+    quality_threshold = state.at(0);
+    remeshes          = static_cast<unsigned>(state.at(1));
   }
 
   void KnifeModel::write(SolidOutput &output, double time) const

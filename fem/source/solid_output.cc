@@ -82,6 +82,17 @@ namespace abrade::fem
     return directory + "/" + file;
   }
 
+  void SolidOutput::adopt(const std::vector<double> &times)
+  {
+    records.clear();
+    for (std::size_t k = 0; k < times.size(); ++k)
+      {
+        char tag[16];
+        std::snprintf(tag, sizeof tag, "%05zu", k);
+        records.emplace_back(times[k], base + "_" + tag + ".vtu");
+      }
+  }
+
   double mesh_volume(const dealii::Triangulation<3> &tria)
   {
     double volume = 0;

@@ -252,6 +252,35 @@ TEST(KnifeModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
   remeshing.write(out, 1.0);
 }
 
+TEST(KnifeModel, CheckpointContinuesBitForBit)
+{
+  KnifeModel::Settings settings;
+  settings.mesh_size      = 0.03;
+  settings.work_directory = tmp("abrade_knife_checkpoint");
+  auto wear = [](const SolidSurface &s) {
+    std::vector<double> d(s.vertices.size());
+    for (std::size_t v = 0; v < d.size(); ++v)
+      d[v] = s.vertices[v][2] < 0.1 ? 0.0005 * (1 - s.vertices[v][2] / 0.1) : 0.0;
+    return d;
+  };
+  KnifeModel a(KnifeGeometry(), settings);
+  a.apply_wear(wear(a.surface()));
+  a.save(tmp("abrade_knife.ckpt"));
+  KnifeModel b(KnifeGeometry(), settings);
+  b.load(tmp("abrade_knife.ckpt"));
+  ASSERT_EQ(a.surface().vertices.size(), b.surface().vertices.size());
+  for (int update = 0; update < 2; ++update)
+    {
+      a.apply_wear(wear(a.surface()));
+      b.apply_wear(wear(b.surface()));
+    }
+  for (std::size_t v = 0; v < a.surface().vertices.size(); ++v)
+    for (unsigned c = 0; c < 3; ++c)
+      ASSERT_EQ(a.surface().vertices[v][c], b.surface().vertices[v][c]);
+  EXPECT_EQ(a.accumulated_depth(), b.accumulated_depth());
+  EXPECT_EQ(a.volume(), b.volume());
+}
+
 int main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);

@@ -18,6 +18,8 @@ namespace abrade::io
     void row(const std::vector<double> &values);
     /// Writes one row whose first column is text (a name, a phase).
     void row(const std::string &label, const std::vector<double> &values);
+    /// Writes a row given as text (rows kept from an earlier, resumed run).
+    void raw_row(const std::string &line) { out << line << '\n'; }
     void flush() { out.flush(); }
 
   private:

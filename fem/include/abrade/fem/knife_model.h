@@ -58,6 +58,11 @@ namespace abrade::fem
     double mass() const { return volume() * settings.density; }
     unsigned n_remeshes() const { return remeshes; }
 
+    /// Writes the model's exact state (mesh, boundary ids, accumulated fields) to a binary file,
+    /// and reads it back: a run resumed from it continues bit for bit.
+    void save(const std::string &path) const;
+    void load(const std::string &path);
+
     /// Appends the current state to a VTU series (fields: scaled Jacobian per cell, accumulated
     /// wear depth per vertex).
     void write(SolidOutput &output, double time) const;

@@ -33,6 +33,8 @@ namespace abrade::fem
     /// Writes one update; returns the .vtu path.
     std::string write(const dealii::Triangulation<3> &tria, const std::vector<CellField> &fields, double time,
                       const std::vector<VertexField> &vertex_fields = {});
+    /// A resumed run: files 0..n-1 already written, at these times.
+    void adopt(const std::vector<double> &times);
 
   private:
     std::string                                 directory, base;
