@@ -55,7 +55,7 @@ namespace abrade::coupling
 
     /// One DEM cycle on the current knife; returns the knife's per-triangle Archard volume.
     std::vector<double> run_cycle(DemCase c, const dem::TriangleMesh &knife_mesh, int seed, JobContext &ctx,
-                                  std::size_t &knife_index, double &r_max)
+                                  std::size_t &knife_index, double &r_max, std::vector<double> &per_phase)
     {
       c.fill.seed = static_cast<std::uint64_t>(seed);
       for (auto &wc : c.walls)
@@ -81,6 +81,9 @@ namespace abrade::coupling
       r_max = 0;
       for (double r : sim.particles().radius)
         r_max = std::max(r_max, r);
+      per_phase.clear();
+      for (const auto &phase : c.phases)
+        per_phase.push_back(wear->total(knife_index, dem::WearRecorder::archard_volume, phase.first));
       return wear->values(knife_index, dem::WearRecorder::archard_volume);
     }
     /// The knife's cross-sections at x = f L: segments (y, z) where surface triangles cross the
@@ -166,6 +169,7 @@ namespace abrade::coupling
     for (const auto &p : dealii::Utilities::split_string_list(prm.get("Profile planes")))
       planes.push_back(std::stod(p));
     const double target_tonnes = prm.get_double("Target tonnes");
+    const double max_worn_mass = prm.get_double("Maximum worn mass");
     const long   max_updates   = prm.get_integer("Maximum updates");
     prm.leave_subsection();
     if (seeds.empty())
@@ -192,6 +196,7 @@ namespace abrade::coupling
     double      archard_total = 0;
     double      volume_correction = 1; // Archard / swept volume of the previous update
     std::vector<double> seed_volume;   // Archard volume per cycle of each seed (this update)
+    std::vector<double> phase_volume;  // Archard volume per cycle and phase (seed mean)
     double              relative_spread = 0; // std / mean of seed_volume, over all updates
     int                 spread_samples  = 0;
     double              volume0 = knife.volume();
@@ -236,9 +241,11 @@ namespace abrade::coupling
     if (first_update == 1)
       knife.write(knife_output, 0);
 
-    io::CsvWriter trajectory(ctx.output.file("trajectory.csv"),
-                             {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
-                              "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed"});
+    std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
+                                        "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed"};
+    for (const auto &phase : c.phases)
+      columns.push_back("archard_volume_" + phase.first); // this update's wear per phase of the cycle
+    io::CsvWriter trajectory(ctx.output.file("trajectory.csv"), columns);
     ctx.log.line("Lifetime: knife of " + std::to_string(knife.triangulation().n_active_cells()) + " cells, " +
                  std::to_string(seeds.size()) + " bed seed(s) per update");
     for (const auto &row : kept_rows)
@@ -256,9 +263,13 @@ namespace abrade::coupling
         {
           io::ScopedTimer t(ctx.timers, "dem cycles");
           seed_volume.clear();
+          phase_volume.assign(c.phases.size(), 0.0);
           for (int seed : seeds)
             {
-              const auto v = run_cycle(c, mesh, seed, ctx, knife_index, r_max);
+              std::vector<double> per_phase;
+              const auto v = run_cycle(c, mesh, seed, ctx, knife_index, r_max, per_phase);
+              for (std::size_t p = 0; p < per_phase.size(); ++p)
+                phase_volume[p] += per_phase[p] / seeds.size();
               for (std::size_t t = 0; t < v.size(); ++t)
                 per_triangle[t] += v[t] / seeds.size();
               seed_volume.push_back(std::accumulate(v.begin(), v.end(), 0.0));
@@ -362,9 +373,12 @@ namespace abrade::coupling
         const double swept = volume_before - knife.volume();
         if (swept > 0)
           volume_correction = std::clamp(volume_correction * n * archard_cycle / swept, 0.5, 2.0);
-        trajectory.row({double(update), double(cycles), cycles * tonnes_per_cycle, dmax, dmean, volume0 - knife.volume(),
-                        (volume0 - knife.volume()) * kp.density, n * archard_cycle, swept / (n * archard_cycle),
-                        r.quality.min_scaled_jacobian, r.remeshed ? 1.0 : 0.0});
+        std::vector<double> row = {double(update), double(cycles), cycles * tonnes_per_cycle, dmax, dmean,
+                                   volume0 - knife.volume(), (volume0 - knife.volume()) * kp.density, n * archard_cycle,
+                                   swept / (n * archard_cycle), r.quality.min_scaled_jacobian, r.remeshed ? 1.0 : 0.0};
+        for (double pv : phase_volume)
+          row.push_back(n * pv);
+        trajectory.row(row);
         trajectory.flush();
         knife.write(knife_output, cycles * tonnes_per_cycle);
         char stl[64];
@@ -375,7 +389,8 @@ namespace abrade::coupling
           << dmax << " m, swept/Archard volume " << swept / (n * archard_cycle)
           << (r.remeshed ? ", remeshed" : "");
         ctx.log.line(s.str());
-        progress.update(double(update), std::to_string(long(cycles * tonnes_per_cycle)) + " t");
+        progress.update(double(update), "update " + std::to_string(update) + "/" + std::to_string(max_updates) + ", " +
+                                          std::to_string(long(cycles * tonnes_per_cycle)) + " t");
 
         // 6. checkpoint: written aside, then renamed, so a kill never leaves half of one
         knife.save(ckpt_dir + "/knife.ckpt.tmp");
@@ -390,6 +405,11 @@ namespace abrade::coupling
         if (dmax >= max_depth)
           {
             end = "maximum depth reached";
+            break;
+          }
+        if (max_worn_mass > 0 && (volume0 - knife.volume()) * kp.density >= max_worn_mass)
+          {
+            end = "maximum worn mass reached";
             break;
           }
         if (target_tonnes > 0 && cycles * tonnes_per_cycle >= target_tonnes)
@@ -410,9 +430,12 @@ namespace abrade::coupling
     r["worn_mass"]    = (volume0 - knife.volume()) * kp.density;
     r["archard_volume"] = archard_total;
     r["remeshes"]     = static_cast<long>(knife.n_remeshes());
-    // the tonnes to end of life: reached, or extrapolated linearly from the depth rate so far
+    // the tonnes to end of life: where an end-of-life criterion was met, or extrapolated linearly
+    // from the depth rate so far (to the maximum depth) when the run stopped before one was
+    const bool reached = end != "maximum updates reached" && end.rfind("no wear", 0) != 0;
     r["predicted_tonnes_to_end_of_life"] =
-      dmax >= max_depth ? cycles * tonnes_per_cycle : (dmax > 0 ? cycles * tonnes_per_cycle * max_depth / dmax : 0.0);
+      reached ? cycles * tonnes_per_cycle : (dmax > 0 ? cycles * tonnes_per_cycle * max_depth / dmax : 0.0);
+    r["extrapolated"] = !reached;
     // uncertainty from the replicate beds: the wear rate's relative spread carries to the life
     const double spread = spread_samples ? relative_spread / spread_samples : 0.0;
     const double life   = r["predicted_tonnes_to_end_of_life"].number();

@@ -149,6 +149,8 @@ namespace abrade::coupling
                       "0: the largest particle radius. Range: >= 0.");
     prm.declare_entry("Maximum depth", "0.02", Double(0, huge),
                       "[m] End of life: the largest accumulated wear depth. Range: >= 0.");
+    prm.declare_entry("Maximum worn mass", "0", Double(0, huge),
+                      "[kg] End of life: the mass worn off the knife; 0: no limit. Range: >= 0.");
     prm.declare_entry("Target tonnes", "0", Double(0, huge),
                       "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
     prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");
