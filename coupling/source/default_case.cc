@@ -44,6 +44,8 @@ subsection Lifetime
   set Depth increment fraction = 0.05
   set Maximum depth            = 0.01
   set Maximum updates          = 4
+  # the middle of the edge of this 0.15 m knife
+  set Recession point          = 0.075, 0, 0
 end
 subsection Wall container
   set Geometry = box

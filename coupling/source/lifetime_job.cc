@@ -124,7 +124,10 @@ namespace abrade::coupling
       gp << "set terminal pngcairo size 900,600\nset grid\nset datafile separator ','\n"
             "set output 'trajectory.png'\nset xlabel 'handled material [t]'\n"
             "set ylabel 'largest wear depth [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset key left top\n"
-            "plot 'trajectory.csv' using 3:($4*1000) with linespoints title 'largest depth', "
+            "plot 'trajectory.csv' using 3:($4*1000*(1-$13)):($4*1000*(1+$13)) with filledcurves "
+            "fs transparent solid 0.25 noborder title 'depth +- spread of the beds', "
+            "'' using 3:($4*1000) with linespoints title 'largest depth', "
+            "'' using 3:($12*1000) with linespoints title 'recession of the followed point', "
             "'' using 3:($6*1e6) axes x1y2 with linespoints title 'worn volume'\n"
             "set datafile separator whitespace\nunset y2tics\nunset y2label\nset size ratio -1\n";
       for (double f : planes)
@@ -170,6 +173,9 @@ namespace abrade::coupling
       planes.push_back(std::stod(p));
     const double target_tonnes = prm.get_double("Target tonnes");
     const double max_worn_mass = prm.get_double("Maximum worn mass");
+    const double max_recession = prm.get_double("Maximum recession");
+    const auto   rp            = dealii::Utilities::split_string_list(prm.get("Recession point"));
+    const dealii::Point<3> recession_point(std::stod(rp[0]), std::stod(rp[1]), std::stod(rp[2]));
     const long   max_updates   = prm.get_integer("Maximum updates");
     prm.leave_subsection();
     if (seeds.empty())
@@ -198,6 +204,7 @@ namespace abrade::coupling
     std::vector<double> seed_volume;   // Archard volume per cycle of each seed (this update)
     std::vector<double> phase_volume;  // Archard volume per cycle and phase (seed mean)
     double              relative_spread = 0; // std / mean of seed_volume, over all updates
+    double              relative_spread_last = 0;
     int                 spread_samples  = 0;
     double              volume0 = knife.volume();
     std::vector<std::string> kept_rows;
@@ -242,7 +249,8 @@ namespace abrade::coupling
       knife.write(knife_output, 0);
 
     std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
-                                        "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed"};
+                                        "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed",
+                                        "point_recession", "wear_rate_spread"};
     for (const auto &phase : c.phases)
       columns.push_back("archard_volume_" + phase.first); // this update's wear per phase of the cycle
     io::CsvWriter trajectory(ctx.output.file("trajectory.csv"), columns);
@@ -364,7 +372,8 @@ namespace abrade::coupling
             double       var  = 0;
             for (double x : seed_volume)
               var += (x - mean) * (x - mean) / (seed_volume.size() - 1);
-            relative_spread += std::sqrt(var) / mean, ++spread_samples;
+            relative_spread_last = std::sqrt(var) / mean;
+            relative_spread += relative_spread_last, ++spread_samples;
           }
         write_profiles(knife.surface(), kp.geometry.length, planes, update, ctx.output.root() + "/knife");
         const auto  &acc  = knife.accumulated_depth();
@@ -373,9 +382,19 @@ namespace abrade::coupling
         const double swept = volume_before - knife.volume();
         if (swept > 0)
           volume_correction = std::clamp(volume_correction * n * archard_cycle / swept, 0.5, 2.0);
+        // the recession of the followed point: the accumulated depth of the surface vertex nearest
+        // to where it was
+        std::size_t nearest = 0;
+        for (std::size_t v = 1; v < knife.surface().vertices.size(); ++v)
+          if (knife.surface().vertices[v].distance_square(recession_point) <
+              knife.surface().vertices[nearest].distance_square(recession_point))
+            nearest = v;
+        const double recession = acc[nearest];
+        const double update_spread = seed_volume.size() > 1 ? relative_spread_last : 0.0;
         std::vector<double> row = {double(update), double(cycles), cycles * tonnes_per_cycle, dmax, dmean,
                                    volume0 - knife.volume(), (volume0 - knife.volume()) * kp.density, n * archard_cycle,
-                                   swept / (n * archard_cycle), r.quality.min_scaled_jacobian, r.remeshed ? 1.0 : 0.0};
+                                   swept / (n * archard_cycle), r.quality.min_scaled_jacobian, r.remeshed ? 1.0 : 0.0,
+                                   recession, update_spread};
         for (double pv : phase_volume)
           row.push_back(n * pv);
         trajectory.row(row);
@@ -405,6 +424,11 @@ namespace abrade::coupling
         if (dmax >= max_depth)
           {
             end = "maximum depth reached";
+            break;
+          }
+        if (max_recession > 0 && recession >= max_recession)
+          {
+            end = "maximum recession of the followed point reached";
             break;
           }
         if (max_worn_mass > 0 && (volume0 - knife.volume()) * kp.density >= max_worn_mass)

@@ -149,6 +149,12 @@ namespace abrade::coupling
                       "0: the largest particle radius. Range: >= 0.");
     prm.declare_entry("Maximum depth", "0.02", Double(0, huge),
                       "[m] End of life: the largest accumulated wear depth. Range: >= 0.");
+    declare_vector(prm, "Recession point", "0.2, 0, 0",
+                   "[m] A point of the knife (in its own coordinates: x along the length from 0, y "
+                   "across the thickness from its middle, z up from the edge) whose recession the "
+                   "trajectory follows (column point_recession); default: the middle of the edge.");
+    prm.declare_entry("Maximum recession", "0", Double(0, huge),
+                      "[m] End of life: the recession of the Recession point; 0: no limit. Range: >= 0.");
     prm.declare_entry("Maximum worn mass", "0", Double(0, huge),
                       "[kg] End of life: the mass worn off the knife; 0: no limit. Range: >= 0.");
     prm.declare_entry("Target tonnes", "0", Double(0, huge),

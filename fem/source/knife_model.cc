@@ -22,6 +22,7 @@ namespace abrade::fem
       settings.work_directory = (std::filesystem::temp_directory_path() / "abrade-knife").string();
     std::filesystem::create_directories(settings.work_directory);
     geometry.mesh(*tria, settings.mesh_size, settings.work_directory + "/knife.msh");
+    plate_thickness = geometry.thickness;
     current_surface   = extract_surface(*tria);
     accumulated.assign(current_surface.vertices.size(), 0.0);
     displacement.assign(3 * current_surface.vertices.size(), 0.0);
@@ -36,7 +37,8 @@ namespace abrade::fem
     if (depth.size() != current_surface.vertices.size())
       throw std::logic_error("apply_wear: one depth per surface vertex expected");
     UpdateResult r;
-    r.worn_through = worn_through(current_surface, depth);
+    // through the plate, not the receding edge: regions thinner than half the plate do not count
+    r.worn_through = worn_through(current_surface, depth, 1.0, 0.5 * plate_thickness);
     if (!r.worn_through.empty())
       {
         r.quality = mesh_quality(*tria);

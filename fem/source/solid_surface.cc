@@ -86,12 +86,13 @@ namespace abrade::fem
     return thickness;
   }
 
-  std::vector<unsigned> worn_through(const SolidSurface &s, const std::vector<double> &depth, double fraction)
+  std::vector<unsigned> worn_through(const SolidSurface &s, const std::vector<double> &depth, double fraction,
+                                     double ignore_below)
   {
     const auto            thickness = local_thickness(s);
     std::vector<unsigned> out;
     for (std::size_t v = 0; v < s.vertices.size(); ++v)
-      if (depth[v] >= fraction * thickness[v])
+      if (thickness[v] >= ignore_below && depth[v] >= fraction * thickness[v])
         out.push_back(static_cast<unsigned>(v));
     return out;
   }

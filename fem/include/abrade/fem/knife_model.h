@@ -12,7 +12,9 @@
 // remeshes when it falls below a threshold (relative to the fresh mesh), or when the surface has
 // moved more than half a mesh size since the last remesh (the mesh then no longer resolves the
 // receding, rounding edge), carrying the accumulated depth and displacement over.
-// A depth that reaches the local wall thickness is reported as worn through and not applied.
+// A depth that reaches the local wall thickness is reported as worn through and not applied
+// (only where the knife is at least half its plate thickness thick: near a sharp edge the local
+// thickness vanishes and the receding edge is the mesh motion's and the remeshing's business).
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -75,6 +77,7 @@ namespace abrade::fem
     std::vector<double>                       displacement;   ///< accumulated, 3 per surface vertex
     std::vector<double>                       since_remesh;   ///< |displacement| since the last remesh
     double                                    quality_threshold = 0;
+    double                                    plate_thickness   = 0;
     unsigned                                  remeshes          = 0;
   };
 } // namespace abrade::fem

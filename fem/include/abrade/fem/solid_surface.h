@@ -34,8 +34,10 @@ namespace abrade::fem
 
   /// Surface vertices whose inward wear depth reaches @p fraction of the local thickness: where
   /// the knife is worn through, which ends its life (reported, never carried into the mesh).
+  /// Vertices thinner than @p ignore_below (the region of a sharp edge, whose receding and
+  /// rounding the mesh motion and remeshing follow) are not counted.
   std::vector<unsigned> worn_through(const SolidSurface &surface, const std::vector<double> &depth,
-                                     double fraction = 1.0);
+                                     double fraction = 1.0, double ignore_below = 0.0);
 
   /// Carries a per-vertex field (accumulated wear depth, say) from one surface to another (after
   /// a remesh): each new vertex takes the barycentric interpolation at its closest point on the
