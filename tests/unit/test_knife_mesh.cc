@@ -11,27 +11,16 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include "fem_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 using namespace dealii;
 using namespace abrade::fem;
+using namespace abrade::fem::testing;
 
-namespace
-{
-  std::string tmp(const std::string &n) { return (std::filesystem::temp_directory_path() / n).string(); }
-
-  double face_area(const Triangulation<3> &tria, types::boundary_id id)
-  {
-    double a = 0;
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const auto &f : cell->face_iterators())
-        if (f->at_boundary() && f->boundary_id() == id)
-          a += f->measure();
-    return a;
-  }
-} // namespace
 
 TEST(KnifeMesh, ReferenceKnifeVolumeAreaAndQuality)
 {
@@ -41,7 +30,7 @@ TEST(KnifeMesh, ReferenceKnifeVolumeAreaAndQuality)
   EXPECT_NEAR(k.volume(), 0.00576, 1e-15);
   EXPECT_NEAR(mesh_volume(tria), 0.00576, 1e-12);
 
-  EXPECT_NEAR(face_area(tria, KnifeGeometry::clamped_boundary), 0.4 * 0.03, 1e-12);
+  EXPECT_NEAR(boundary_area(tria, KnifeGeometry::clamped_boundary), 0.4 * 0.03, 1e-12);
   const MeshQuality q = mesh_quality(tria);
   EXPECT_EQ(q.n_inverted, 0u);
   EXPECT_GT(q.min_scaled_jacobian, 0.1);

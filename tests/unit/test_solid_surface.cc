@@ -7,6 +7,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include "fem_test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,27 +17,16 @@
 
 using namespace dealii;
 using namespace abrade::fem;
+using namespace abrade::fem::testing;
 
 namespace
 {
-  std::string tmp(const std::string &n) { return (std::filesystem::temp_directory_path() / n).string(); }
-
   double enclosed_volume(const SolidSurface &s)
   {
     double v = 0;
     for (const auto &t : s.triangles)
       v += s.vertices[t[0]] * cross_product_3d(s.vertices[t[1]], s.vertices[t[2]]) / 6;
     return v;
-  }
-
-  double area_of(const Triangulation<3> &tria, types::boundary_id id)
-  {
-    double a = 0;
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const auto &f : cell->face_iterators())
-        if (f->at_boundary() && f->boundary_id() == id)
-          a += f->measure();
-    return a;
   }
 } // namespace
 
@@ -72,7 +63,7 @@ TEST(SolidSurface, StlAndMshFilesRoundTrip)
   Triangulation<3> from_msh;
   read_solid(tmp("abrade_roundtrip.msh"), 0, from_msh);
   EXPECT_EQ(from_msh.n_active_cells(), tria.n_active_cells());
-  EXPECT_NEAR(area_of(from_msh, KnifeGeometry::clamped_boundary), 0.012, 1e-12);
+  EXPECT_NEAR(boundary_area(from_msh, KnifeGeometry::clamped_boundary), 0.012, 1e-12);
 }
 
 TEST(SolidSurface, StepRoundTrip)
@@ -83,7 +74,7 @@ TEST(SolidSurface, StepRoundTrip)
   Triangulation<3> tria;
   read_solid(tmp("abrade_knife.step"), 0.03, tria);
   EXPECT_NEAR(mesh_volume(tria), k.volume(), 1e-9);
-  EXPECT_NEAR(area_of(tria, 1), extract_surface(tria).area(), 1e-12); // every face wearable
+  EXPECT_NEAR(boundary_area(tria, 1), extract_surface(tria).area(), 1e-12); // every face wearable
 }
 
 TEST(SolidSurface, BadSolidFilesAreClearErrors)
@@ -114,7 +105,7 @@ TEST(SolidSurface, RemeshKeepsTheShapeAndBoundaryIds)
   remesh(tria, 0.015, fresh, tmp("abrade_remesh"));
   EXPECT_GT(fresh.n_active_cells(), tria.n_active_cells());
   EXPECT_NEAR(mesh_volume(fresh), 0.00576, 1e-9);
-  EXPECT_NEAR(area_of(fresh, KnifeGeometry::clamped_boundary), 0.012, 1e-9);
+  EXPECT_NEAR(boundary_area(fresh, KnifeGeometry::clamped_boundary), 0.012, 1e-9);
   EXPECT_EQ(mesh_quality(fresh).n_inverted, 0u);
 
   // a field linear over the surface (a wear depth, say) comes across exactly, up to the

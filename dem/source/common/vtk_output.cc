@@ -8,6 +8,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkSTLWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -30,49 +31,55 @@ namespace abrade::io
       std::copy(f.values.begin(), f.values.end(), a->GetPointer(0));
       return a;
     }
+
+
+    /// The VTK form of @p data: points, triangles (or vertices for a point cloud), fields.
+    vtkSmartPointer<vtkPolyData> to_vtk(const PolyData &data, const std::string &path)
+    {
+      const std::size_t n_points = data.points.size() / 3;
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToDouble();
+      points->SetNumberOfPoints(n_points);
+      for (std::size_t i = 0; i < n_points; ++i)
+        points->SetPoint(i, &data.points[3 * i]);
+
+      auto poly = vtkSmartPointer<vtkPolyData>::New();
+      poly->SetPoints(points);
+      vtkNew<vtkCellArray> cells;
+      std::size_t          n_cells;
+      if (data.triangles.empty())
+        {
+          for (std::size_t i = 0; i < n_points; ++i)
+            {
+              vtkIdType id = i;
+              cells->InsertNextCell(1, &id);
+            }
+          poly->SetVerts(cells);
+          n_cells = n_points;
+        }
+      else
+        {
+          for (const auto &t : data.triangles)
+            {
+              vtkIdType ids[3] = {t[0], t[1], t[2]};
+              cells->InsertNextCell(3, ids);
+            }
+          poly->SetPolys(cells);
+          n_cells = data.triangles.size();
+        }
+      for (const auto &f : data.point_fields)
+        poly->GetPointData()->AddArray(make_array(f, n_points, path));
+      for (const auto &f : data.cell_fields)
+        poly->GetCellData()->AddArray(make_array(f, n_cells, path));
+      return poly;
+    }
   } // namespace
 
   void write_vtp(const std::string &path, const PolyData &data)
   {
-    const std::size_t n_points = data.points.size() / 3;
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(n_points);
-    for (std::size_t i = 0; i < n_points; ++i)
-      points->SetPoint(i, &data.points[3 * i]);
-
-    vtkNew<vtkPolyData> poly;
-    poly->SetPoints(points);
-    vtkNew<vtkCellArray> cells;
-    std::size_t          n_cells;
-    if (data.triangles.empty())
-      {
-        for (std::size_t i = 0; i < n_points; ++i)
-          {
-            vtkIdType id = i;
-            cells->InsertNextCell(1, &id);
-          }
-        poly->SetVerts(cells);
-        n_cells = n_points;
-      }
-    else
-      {
-        for (const auto &t : data.triangles)
-          {
-            vtkIdType ids[3] = {t[0], t[1], t[2]};
-            cells->InsertNextCell(3, ids);
-          }
-        poly->SetPolys(cells);
-        n_cells = data.triangles.size();
-      }
-    for (const auto &f : data.point_fields)
-      poly->GetPointData()->AddArray(make_array(f, n_points, path));
-    for (const auto &f : data.cell_fields)
-      poly->GetCellData()->AddArray(make_array(f, n_cells, path));
-
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetFileName(path.c_str());
-    writer->SetInputData(poly);
+    writer->SetInputData(to_vtk(data, path));
     writer->SetDataModeToBinary();
     if (writer->Write() != 1)
       throw RunError("cannot write " + path);
@@ -80,22 +87,9 @@ namespace abrade::io
 
   void write_stl(const std::string &path, const PolyData &data)
   {
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    for (std::size_t i = 0; i < data.points.size() / 3; ++i)
-      points->InsertNextPoint(&data.points[3 * i]);
-    vtkNew<vtkCellArray> cells;
-    for (const auto &t : data.triangles)
-      {
-        vtkIdType ids[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, ids);
-      }
-    vtkNew<vtkPolyData> poly;
-    poly->SetPoints(points);
-    poly->SetPolys(cells);
     vtkNew<vtkSTLWriter> writer;
     writer->SetFileName(path.c_str());
-    writer->SetInputData(poly);
+    writer->SetInputData(to_vtk(data, path));
     writer->SetFileTypeToBinary();
     if (writer->Write() != 1)
       throw RunError("cannot write " + path);
