@@ -87,16 +87,16 @@ namespace abrade::dem
     const double size = (hi - lo).norm();
     if (!(size > 0) || !std::isfinite(size))
       throw InputError(path, "mesh has no extent or non-finite coordinates");
-    for (std::size_t k = 0; k < mesh.n_triangles(); ++k)
-      if (!(mesh.area(k) > 1e-14 * size * size))
-        {
-          const std::size_t before = mesh.n_triangles();
-          mesh.weld(1e-9 * size);
+    mesh.weld(1e-9 * size);
           if (mesh.n_triangles() == 0)
             throw InputError(path, "all " + std::to_string(before) + " triangles are degenerate");
           break;
         }
+    // shared vertices for neighbouring triangles; triangles that collapse are dropped
+    const std::size_t before = mesh.n_triangles();
     mesh.weld(1e-9 * size);
+    if (mesh.n_triangles() == 0)
+      throw InputError(path, "all " + std::to_string(before) + " triangles are degenerate");
     for (std::size_t k = 0; k < mesh.n_triangles(); ++k)
       if (!(mesh.area(k) > 1e-14 * size * size))
         throw InputError(path, "triangle " + std::to_string(k) + " has zero area");
