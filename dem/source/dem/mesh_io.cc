@@ -87,11 +87,6 @@ namespace abrade::dem
     const double size = (hi - lo).norm();
     if (!(size > 0) || !std::isfinite(size))
       throw InputError(path, "mesh has no extent or non-finite coordinates");
-    mesh.weld(1e-9 * size);
-          if (mesh.n_triangles() == 0)
-            throw InputError(path, "all " + std::to_string(before) + " triangles are degenerate");
-          break;
-        }
     // shared vertices for neighbouring triangles; triangles that collapse are dropped
     const std::size_t before = mesh.n_triangles();
     mesh.weld(1e-9 * size);
