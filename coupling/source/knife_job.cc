@@ -74,8 +74,6 @@ namespace abrade::coupling
     const KnifeParameters     kp = read_knife_parameters(ctx.parameters);
     const fem::KnifeGeometry &k  = kp.geometry;
     const double              h = kp.mesh_size, density = kp.density;
-    const std::string         geometry = kp.from_file ? "file" : "parametric";
-    const std::string         file     = kp.file;
 
     init_mpi_once();
 
@@ -83,13 +81,13 @@ namespace abrade::coupling
     const std::string        dir = ctx.output.subdirectory("knife");
     {
       io::ScopedTimer t(ctx.timers, "mesh knife");
-      if (geometry == "parametric")
+      if (!kp.from_file)
         k.mesh(tria, h, dir + "/knife.msh");
       else
         {
-          if (file.empty())
+          if (kp.file.empty())
             ctx.parameters.fail({"Knife"}, "File", "Geometry = file needs a solid file");
-          fem::read_solid(file, h, tria, fem::KnifeGeometry::wearable_boundary);
+          fem::read_solid(kp.file, h, tria, fem::KnifeGeometry::wearable_boundary);
         }
     }
     const fem::MeshQuality q = fem::mesh_quality(tria);
@@ -115,7 +113,7 @@ namespace abrade::coupling
     r["surface_triangles"]       = static_cast<long>(surface.triangles.size());
     r["min_scaled_jacobian"]     = q.min_scaled_jacobian;
     r["max_aspect_ratio"]        = q.max_aspect_ratio;
-    if (geometry == "parametric")
+    if (!kp.from_file)
       r["analytic_volume"] = k.volume();
   }
 } // namespace abrade::coupling

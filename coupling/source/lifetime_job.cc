@@ -291,11 +291,8 @@ namespace abrade::coupling
         std::vector<double> vertex_volume(nv, 0.0), vertex_area(nv, 0.0);
         for (std::size_t t = 0; t < surface.triangles.size(); ++t)
           {
-            const auto  &tri = surface.triangles[t];
-            const double a   = 0.5 * dealii::cross_product_3d(surface.vertices[tri[1]] - surface.vertices[tri[0]],
-                                                              surface.vertices[tri[2]] - surface.vertices[tri[0]])
-                                     .norm();
-            for (unsigned v : tri)
+            const double a = surface.triangle_area(t);
+            for (unsigned v : surface.triangles[t])
               {
                 vertex_area[v] += a / 3;
                 if (surface.boundary_id[t] == fem::KnifeGeometry::wearable_boundary)

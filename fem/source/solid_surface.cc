@@ -17,11 +17,17 @@ namespace abrade::fem
 {
   using namespace dealii;
 
+  double SolidSurface::triangle_area(std::size_t k) const
+  {
+    const auto &t = triangles[k];
+    return 0.5 * cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]).norm();
+  }
+
   double SolidSurface::area() const
   {
     double a = 0;
-    for (const auto &t : triangles)
-      a += 0.5 * cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]).norm();
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      a += triangle_area(t);
     return a;
   }
 

@@ -22,6 +22,7 @@ namespace abrade::fem
     std::vector<std::pair<unsigned, unsigned>> face; ///< triangle -> (active cell index, face no)
     std::vector<dealii::types::boundary_id>    boundary_id; ///< per triangle
 
+    double triangle_area(std::size_t t) const;
     double area() const;
     /// Outward unit normal of each surface vertex (area-weighted over its triangles).
     std::vector<dealii::Tensor<1, 3>> vertex_normals() const;
