@@ -45,7 +45,7 @@ subsection Lifetime
   set Maximum depth            = 0.01
   set Maximum updates          = 4
   # the middle of the edge of this 0.15 m knife
-  set Recession point          = 0.075, 0, 0
+  set Recession points         = 0.075, 0, 0
 end
 subsection Wall container
   set Geometry = box

@@ -10,10 +10,12 @@
 //     volume is spread with weights that sum to one) and divided by the vertex's area (a third
 //     of its triangles'): the depth per cycle, along the inward normal.
 //  3. Cycles per update: fixed, or adaptive so that the largest depth increment is a set
-//     fraction of the mesh size. Moving vertices along averaged normals does not sweep exactly
-//     the Archard volume (edges, corners): the depths are scaled by the ratio Archard / swept of
-//     the previous update (clipped to [0.5, 2]), and the ratio after the move is recorded.
-//  4. FEM: move the knife (KnifeModel: mesh motion, quality, remesh, worn-through check).
+//     fraction of the mesh size.
+//  4. FEM: move the knife (KnifeModel: the surface moves as its offset surface does, so the
+//     swept volume is the Archard volume, also at the edge; mesh motion, quality, remesh,
+//     worn-through check). The ratio swept / Archard volume is recorded as a check.
+//     Wear on the border of the clamped region is lost (clamped vertices do not move).
+//     Nothing is rescaled: a mismatch shows in the column swept_over_archard.
 //  5. Record the trajectory; stop at the maximum depth, a worn-through knife, the target tonnes
 //     or the maximum number of updates.
 //  6. Checkpoint (the knife's exact mesh and fields, the loop's state) after every update;
@@ -29,6 +31,7 @@
 #include <abrade/dem/wear.h>
 #include <abrade/fem/knife_model.h>
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
@@ -155,8 +158,7 @@ namespace abrade::coupling
     auto           &prm = ctx.parameters.handler();
     DemCase         c   = read_dem_case(ctx.parameters);
     KnifeParameters kp  = read_knife_parameters(ctx.parameters);
-    if (std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
-      ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
+
     if (kp.from_file)
       ctx.parameters.fail({"Knife"}, "Geometry", "lifetime runs use the parametric knife for now");
     prm.enter_subsection("Lifetime");
@@ -174,10 +176,34 @@ namespace abrade::coupling
     const double target_tonnes = prm.get_double("Target tonnes");
     const double max_worn_mass = prm.get_double("Maximum worn mass");
     const double max_recession = prm.get_double("Maximum recession");
-    const auto   rp            = dealii::Utilities::split_string_list(prm.get("Recession point"));
-    const dealii::Point<3> recession_point(std::stod(rp[0]), std::stod(rp[1]), std::stod(rp[2]));
+    std::vector<dealii::Point<3>> recession_points;
+    for (const auto &point : dealii::Utilities::split_string_list(prm.get("Recession points"), ';'))
+      {
+        const auto xyz = dealii::Utilities::split_string_list(point);
+        recession_points.emplace_back(std::stod(xyz[0]), std::stod(xyz[1]), std::stod(xyz[2]));
+      }
     const long   max_updates   = prm.get_integer("Maximum updates");
+    const bool   analytic      = prm.get("Wear source") == "analytic";
+    const std::string rate_expression = prm.get("Analytic wear rate");
     prm.leave_subsection();
+    if (!analytic && std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
+      ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
+    dealii::FunctionParser<3> analytic_rate;
+    if (analytic)
+      {
+        if (tonnes_per_cycle <= 0)
+          ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle", "the analytic wear rate is per tonne: set Tonnes per cycle > 0");
+        try
+          {
+            analytic_rate.initialize("x,y,z", rate_expression, {});
+            analytic_rate.value(dealii::Point<3>());
+          }
+        catch (const std::exception &e)
+          {
+            ctx.parameters.fail({"Lifetime"}, "Analytic wear rate",
+                                "cannot evaluate '" + rate_expression + "' as a function of x, y, z");
+          }
+      }
     if (seeds.empty())
       ctx.parameters.fail({"Lifetime"}, "Seeds", "at least one seed is needed");
 
@@ -200,7 +226,6 @@ namespace abrade::coupling
     long              first_update = 1;
     long        cycles = 0;
     double      archard_total = 0;
-    double      volume_correction = 1; // Archard / swept volume of the previous update
     std::vector<double> seed_volume;   // Archard volume per cycle of each seed (this update)
     std::vector<double> phase_volume;  // Archard volume per cycle and phase (seed mean)
     double              relative_spread = 0; // std / mean of seed_volume, over all updates
@@ -214,7 +239,7 @@ namespace abrade::coupling
         std::ifstream in(state_file);
         std::string   saved_hash;
         long          done = 0;
-        in >> saved_hash >> done >> cycles >> archard_total >> volume_correction >> relative_spread >> spread_samples >>
+        in >> saved_hash >> done >> cycles >> archard_total >> relative_spread >> spread_samples >>
           smoothing >> volume0;
         if (!in)
           throw InputError(state_file, "corrupt lifetime checkpoint");
@@ -253,6 +278,8 @@ namespace abrade::coupling
                                         "point_recession", "wear_rate_spread"};
     for (const auto &phase : c.phases)
       columns.push_back("archard_volume_" + phase.first); // this update's wear per phase of the cycle
+    for (std::size_t p = 1; p < recession_points.size(); ++p)
+      columns.push_back("point_recession_" + std::to_string(p + 1));
     io::CsvWriter trajectory(ctx.output.file("trajectory.csv"), columns);
     ctx.log.line("Lifetime: knife of " + std::to_string(knife.triangulation().n_active_cells()) + " cells, " +
                  std::to_string(seeds.size()) + " bed seed(s) per update");
@@ -268,10 +295,25 @@ namespace abrade::coupling
         std::vector<double>      per_triangle(surface.triangles.size(), 0.0);
         std::size_t              knife_index = 0;
         double                   r_max       = 0;
+        seed_volume.clear();
+        phase_volume.assign(c.phases.size(), 0.0);
+        if (analytic)
+          {
+            // a known wear rate instead of DEM (verification): depth per tonne at the triangle's
+            // centroid, on the wearable surface
+            for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+              if (surface.boundary_id[t] == fem::KnifeGeometry::wearable_boundary)
+                {
+                  const auto &tri = surface.triangles[t];
+                  const dealii::Point<3> centroid(
+                    (surface.vertices[tri[0]] + surface.vertices[tri[1]] + surface.vertices[tri[2]]) / 3);
+                  per_triangle[t] = analytic_rate.value(centroid) * tonnes_per_cycle * surface.triangle_area(t);
+                }
+            seed_volume.push_back(std::accumulate(per_triangle.begin(), per_triangle.end(), 0.0));
+          }
+        else
         {
           io::ScopedTimer t(ctx.timers, "dem cycles");
-          seed_volume.clear();
-          phase_volume.assign(c.phases.size(), 0.0);
           for (int seed : seeds)
             {
               std::vector<double> per_phase;
@@ -283,8 +325,8 @@ namespace abrade::coupling
               seed_volume.push_back(std::accumulate(v.begin(), v.end(), 0.0));
             }
         }
-        if (smoothing <= 0)
-          smoothing = r_max;
+        if (smoothing <= 0 && !analytic)
+          smoothing = r_max; // analytic rates: no smoothing unless asked for
 
         // 2. per-vertex volume, smoothed (volume conserving), depth per cycle
         const std::size_t   nv = surface.vertices.size();
@@ -299,8 +341,8 @@ namespace abrade::coupling
                   vertex_volume[v] += per_triangle[t] / 3;
               }
           }
-        std::vector<double> smoothed(nv, 0.0);
-        for (std::size_t u = 0; u < nv; ++u)
+        std::vector<double> smoothed(smoothing > 0 ? std::vector<double>(nv, 0.0) : vertex_volume);
+        for (std::size_t u = 0; u < nv && smoothing > 0; ++u)
           {
             if (vertex_volume[u] == 0)
               continue;
@@ -337,7 +379,7 @@ namespace abrade::coupling
                                         : std::max(1L, long(std::floor(fraction * kp.mesh_size / max_rate)));
         std::vector<double> depth(nv);
         for (std::size_t v = 0; v < nv; ++v)
-          depth[v] = n * depth_per_cycle[v] * volume_correction;
+          depth[v] = n * depth_per_cycle[v];
 
         // 4. move the knife
         const double volume_before = knife.volume();
@@ -377,23 +419,16 @@ namespace abrade::coupling
         const double dmax = *std::max_element(acc.begin(), acc.end());
         const double dmean = std::accumulate(acc.begin(), acc.end(), 0.0) / acc.size();
         const double swept = volume_before - knife.volume();
-        if (swept > 0)
-          volume_correction = std::clamp(volume_correction * n * archard_cycle / swept, 0.5, 2.0);
-        // the recession of the followed point: the accumulated depth of the surface vertex nearest
-        // to where it was
-        std::size_t nearest = 0;
-        for (std::size_t v = 1; v < knife.surface().vertices.size(); ++v)
-          if (knife.surface().vertices[v].distance_square(recession_point) <
-              knife.surface().vertices[nearest].distance_square(recession_point))
-            nearest = v;
-        const double recession = acc[nearest];
+        // the recession of the followed points (the surface points that were there on the fresh knife)
+        const std::vector<double> recession = knife.recession_at(recession_points);
         const double update_spread = seed_volume.size() > 1 ? relative_spread_last : 0.0;
         std::vector<double> row = {double(update), double(cycles), cycles * tonnes_per_cycle, dmax, dmean,
                                    volume0 - knife.volume(), (volume0 - knife.volume()) * kp.density, n * archard_cycle,
                                    swept / (n * archard_cycle), r.quality.min_scaled_jacobian, r.remeshed ? 1.0 : 0.0,
-                                   recession, update_spread};
+                                   recession[0], update_spread};
         for (double pv : phase_volume)
           row.push_back(n * pv);
+        row.insert(row.end(), recession.begin() + 1, recession.end());
         trajectory.row(row);
         trajectory.flush();
         knife.write(knife_output, cycles * tonnes_per_cycle);
@@ -413,7 +448,7 @@ namespace abrade::coupling
         {
           std::ofstream state(state_file + ".tmp");
           state.precision(17);
-          state << hash << ' ' << update << ' ' << cycles << ' ' << archard_total << ' ' << volume_correction << ' '
+          state << hash << ' ' << update << ' ' << cycles << ' ' << archard_total << ' '
                 << relative_spread << ' ' << spread_samples << ' ' << smoothing << ' ' << volume0 << '\n';
         }
         std::filesystem::rename(ckpt_dir + "/knife.ckpt.tmp", ckpt_dir + "/knife.ckpt");
@@ -423,9 +458,9 @@ namespace abrade::coupling
             end = "maximum depth reached";
             break;
           }
-        if (max_recession > 0 && recession >= max_recession)
+        if (max_recession > 0 && *std::max_element(recession.begin(), recession.end()) >= max_recession)
           {
-            end = "maximum recession of the followed point reached";
+            end = "maximum recession of a followed point reached";
             break;
           }
         if (max_worn_mass > 0 && (volume0 - knife.volume()) * kp.density >= max_worn_mass)

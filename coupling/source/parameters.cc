@@ -146,20 +146,31 @@ namespace abrade::coupling
                       "[-] Adaptive updates: largest depth increment per update over the mesh size. Range: (0, 1].");
     prm.declare_entry("Smoothing radius", "0", Double(0, huge),
                       "[m] Volume-conserving smoothing of the per-cycle wear over the knife surface; "
-                      "0: the largest particle radius. Range: >= 0.");
+                      "0: the largest particle radius (DEM wear), none (analytic wear). Range: >= 0.");
     prm.declare_entry("Maximum depth", "0.02", Double(0, huge),
                       "[m] End of life: the largest accumulated wear depth. Range: >= 0.");
-    declare_vector(prm, "Recession point", "0.2, 0, 0",
-                   "[m] A point of the knife (in its own coordinates: x along the length from 0, y "
-                   "across the thickness from its middle, z up from the edge) whose recession the "
-                   "trajectory follows (column point_recession); default: the middle of the edge.");
+    prm.declare_entry("Recession points", "0.2, 0, 0", List(List(Double(-huge, huge), 3, 3), 1, 100, ";"),
+                      "[m] Points of the knife (in its own coordinates: x along the length from 0, y "
+                      "across the thickness from its middle, z up from the edge), separated by ';', whose "
+                      "recession (the accumulated depth of the surface point that was there on the fresh "
+                      "knife, interpolated) the trajectory "
+                      "follows: column point_recession for the first, point_recession_2, ... for the "
+                      "others. Default: the middle of the edge of the default knife.");
     prm.declare_entry("Maximum recession", "0", Double(0, huge),
-                      "[m] End of life: the recession of the Recession point; 0: no limit. Range: >= 0.");
+                      "[m] End of life: the largest recession of the Recession points; 0: no limit. Range: >= 0.");
     prm.declare_entry("Maximum worn mass", "0", Double(0, huge),
                       "[kg] End of life: the mass worn off the knife; 0: no limit. Range: >= 0.");
     prm.declare_entry("Target tonnes", "0", Double(0, huge),
                       "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
     prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");
+    prm.declare_entry("Wear source", "dem", Selection("dem|analytic"),
+                      "dem: every update runs the DEM cycles on the knife's current surface; analytic: "
+                      "the wear comes from 'Analytic wear rate' instead (verification of the loop, or "
+                      "wear rates measured elsewhere).");
+    prm.declare_entry("Analytic wear rate", "1e-6", Anything(),
+                      "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
+                      "inward normal, as a function of the knife's current coordinates x, y, z (the "
+                      "knife's own frame, see Recession points), e.g. '1e-6*exp(-z/0.01)'. muparser syntax.");
     prm.declare_entry("Profile planes", "0.5", List(Double(0, 1)),
                       "Cross-sections of the knife written per update (knife/profile_N.csv and .png), "
                       "at these fractions of the knife's length (planes normal to its length).");

@@ -46,8 +46,9 @@ namespace abrade::fem
         return r; // end of life: reported, not carried into the mesh
       }
 
-    // inward along the vertex normals, on the wearable surface only (clamped vertices stay)
-    const auto                             normals = current_surface.vertex_normals();
+    // inward, as the offset surface moves (SolidSurface::inward_offsets), on the wearable surface
+    // only (clamped vertices stay)
+    const auto                             offsets = current_surface.inward_offsets(depth);
     std::vector<bool>                      clamped(current_surface.vertices.size(), false);
     for (std::size_t t = 0; t < current_surface.triangles.size(); ++t)
       if (current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary)
@@ -55,7 +56,7 @@ namespace abrade::fem
           clamped[v] = true;
     std::map<unsigned, Tensor<1, 3>> prescribed;
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
-      prescribed[current_surface.tria_vertex[v]] = clamped[v] ? Tensor<1, 3>() : Tensor<1, 3>(-depth[v] * normals[v]);
+      prescribed[current_surface.tria_vertex[v]] = clamped[v] ? Tensor<1, 3>() : offsets[v];
     MeshMotion motion(*tria, {1, settings.stiffening, 1e-10});
     motion.solve(prescribed, {});
     move_vertices(*tria, motion.vertex_displacements());
@@ -63,7 +64,7 @@ namespace abrade::fem
     for (std::size_t v = 0; v < accumulated.size(); ++v)
       {
         const Tensor<1, 3> d = prescribed[current_surface.tria_vertex[v]];
-        accumulated[v] += clamped[v] ? 0.0 : depth[v];
+        accumulated[v] += clamped[v] ? 0.0 : offsets[v].norm(); // how far the surface receded here
         for (unsigned c = 0; c < 3; ++c)
           displacement[3 * v + c] += d[c];
         since_remesh[v] += d.norm();
@@ -102,6 +103,17 @@ namespace abrade::fem
       current_surface = extract_surface(*tria);
     r.volume = volume();
     return r;
+  }
+
+  std::vector<double> KnifeModel::recession_at(const std::vector<Point<3>> &points) const
+  {
+    SolidSurface fresh = current_surface;
+    for (std::size_t v = 0; v < fresh.vertices.size(); ++v)
+      for (unsigned c = 0; c < 3; ++c)
+        fresh.vertices[v][c] -= displacement[3 * v + c];
+    SolidSurface at;
+    at.vertices = points;
+    return transfer_surface_field(fresh, accumulated, at);
   }
 
   namespace

@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 #include <abrade/fem/solid_surface.h>
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/grid/grid_in.h>
 
 #include <gmsh.h>
@@ -44,6 +45,37 @@ namespace abrade::fem
       if (x.norm() > 0)
         x /= x.norm();
     return n;
+  }
+
+  std::vector<Tensor<1, 3>> SolidSurface::inward_offsets(const std::vector<double> &depth) const
+  {
+    // per vertex: M = sum A n n^T, b = -sum A n depth (n outward); u minimises sum A (n.u + depth)^2
+    std::vector<SymmetricTensor<2, 3>> m(vertices.size());
+    std::vector<Tensor<1, 3>>          b(vertices.size());
+    for (const auto &t : triangles)
+      {
+        Tensor<1, 3> n    = cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]);
+        const double area = 0.5 * n.norm();
+        if (area <= 0)
+          continue;
+        n /= 2 * area;
+        const SymmetricTensor<2, 3> nn = symmetrize(outer_product(n, n));
+        for (unsigned v : t)
+          m[v] += area * nn, b[v] -= area * depth[v] * n;
+      }
+    std::vector<Tensor<1, 3>> u(vertices.size());
+    for (std::size_t v = 0; v < vertices.size(); ++v)
+      {
+        if (depth[v] == 0 || m[v].norm() == 0)
+          continue;
+        const auto eig = eigenvectors(m[v]); // descending eigenvalues
+        for (const auto &[lambda, e] : eig)
+          if (lambda > 1e-3 * eig[0].first)
+            u[v] += (e * b[v]) / lambda * e;
+        if (u[v].norm() > 4 * std::abs(depth[v]))
+          u[v] *= 4 * std::abs(depth[v]) / u[v].norm();
+      }
+    return u;
   }
 
   io::PolyData SolidSurface::as_polydata() const

@@ -141,7 +141,9 @@ TEST(SolidSurface, LocalThicknessAndWornThrough)
         }
       // the top face: the ray goes down through the whole knife to the edge or the bevels
       if (std::abs(p[2] - 0.5) < 1e-9 && std::abs(normals[v][2] - 1) < 1e-12)
-        EXPECT_GT(thickness[v], 0.45);
+        {
+          EXPECT_GT(thickness[v], 0.45);
+        }
     }
   ASSERT_GT(side_vertices, 4);
   const auto through = worn_through(s, depth);
@@ -151,6 +153,52 @@ TEST(SolidSurface, LocalThicknessAndWornThrough)
       EXPECT_GT(s.vertices[v][1], 0);
       EXPECT_LT(s.vertices[v][2], 0.3);
     }
+}
+
+// The offset surface: a uniform inward depth d moves the flat faces by d along their normals,
+// the chisel tip up by d / sin(half angle) (where the two offset bevels meet), and every vertex
+// on the bevel-side edge to the intersection of its two offset faces.
+TEST(SolidSurface, InwardOffsetsFollowTheOffsetSurfaceAtEdges)
+{
+  KnifeGeometry    k; // 30 mm plate, 40 mm bevel on both sides
+  Triangulation<3> tria;
+  k.mesh(tria, 0.03, tmp("abrade_offsets.msh"));
+  const SolidSurface        s = extract_surface(tria);
+  const double              d = 1e-3;
+  const auto                u = s.inward_offsets(std::vector<double>(s.vertices.size(), d));
+  const double              sin_half = 0.015 / std::hypot(0.015, 0.04);
+  int                       tips = 0, flats = 0, bevel_edges = 0;
+  const Tensor<1, 3>        bevel_plus({0, 0.04 / std::hypot(0.015, 0.04), -sin_half}); // outward
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    {
+      const Point<3> &p = s.vertices[v];
+      if (p[0] < 0.01 || p[0] > 0.39 || p[2] > 0.49)
+        continue; // not near the end faces or the top
+      if (std::abs(p[2]) < 1e-12)
+        {
+          EXPECT_NEAR(u[v][2], d / sin_half, 1e-12);
+          EXPECT_NEAR(u[v][0], 0, 1e-12);
+          EXPECT_NEAR(u[v][1], 0, 1e-12);
+          ++tips;
+        }
+      else if (std::abs(p[1] - 0.015) < 1e-12 && std::abs(p[2] - 0.04) < 1e-12)
+        {
+          // on the +y face's plane moved by d, and on the +y bevel's plane moved by d
+          EXPECT_NEAR(u[v][1], -d, 1e-12);
+          EXPECT_NEAR(u[v] * bevel_plus, -d, 1e-12);
+          ++bevel_edges;
+        }
+      else if (std::abs(p[1] - 0.015) < 1e-12 && p[2] > 0.05 && p[2] < 0.45)
+        {
+          EXPECT_NEAR(u[v][1], -d, 1e-12);
+          EXPECT_NEAR(u[v][0], 0, 1e-12);
+          EXPECT_NEAR(u[v][2], 0, 1e-12);
+          ++flats;
+        }
+    }
+  EXPECT_GT(tips, 3);
+  EXPECT_GT(bevel_edges, 3);
+  EXPECT_GT(flats, 3);
 }
 
 int main(int argc, char **argv)

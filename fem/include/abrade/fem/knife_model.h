@@ -56,6 +56,9 @@ namespace abrade::fem
     const SolidSurface           &surface() const { return current_surface; }
     const std::vector<double>    &accumulated_depth() const { return accumulated; }
     const dealii::Triangulation<3> &triangulation() const { return *tria; }
+    /// The accumulated wear depth of the surface points that were at @p points on the fresh
+    /// knife (the surface moved back by its accumulated displacement, interpolated linearly).
+    std::vector<double> recession_at(const std::vector<dealii::Point<3>> &points) const;
     double volume() const;
     double mass() const { return volume() * settings.density; }
     unsigned n_remeshes() const { return remeshes; }

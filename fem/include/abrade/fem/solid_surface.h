@@ -26,6 +26,14 @@ namespace abrade::fem
     double area() const;
     /// Outward unit normal of each surface vertex (area-weighted over its triangles).
     std::vector<dealii::Tensor<1, 3>> vertex_normals() const;
+    /// The displacement that moves every vertex inward by its @p depth: the point that moves each
+    /// of the vertex's triangle planes inward by the depth, in the least-squares sense
+    /// (area-weighted). On a smooth surface this is depth times the inward normal; at a sharp
+    /// edge or corner it is the intersection of the offset faces, so a chisel tip recedes by
+    /// depth / sin(half angle) as the offset surface does, instead of by the depth alone (which
+    /// leaves a growing spike). Directions the planes hardly constrain (eigenvalues below 1e-3 of
+    /// the largest) are left out; the displacement is capped at 4 x depth.
+    std::vector<dealii::Tensor<1, 3>> inward_offsets(const std::vector<double> &depth) const;
     io::PolyData as_polydata() const;
   };
 
