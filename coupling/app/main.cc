@@ -3,6 +3,8 @@
 //   abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
 //   abrade params [--format text|prm]
 //   abrade export-walls [FILE.prm] --output DIR
+//   abrade compare --predicted WORN --scan SCAN [--reference DESIGN] --output DIR [...]
+//   abrade calibrate --run DIR... --measurements FILE.csv --output DIR
 //   abrade --version
 //
 // Exit codes: 0 success, 2 bad input (command line, parameter file, mesh), 3 run-time failure
@@ -17,6 +19,7 @@
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/sweep.h>
 #include <abrade/dem/mesh_io.h>
+#include <abrade/field/commands.h>
 
 #include <chrono>
 #include <filesystem>
@@ -194,9 +197,13 @@ int main(int argc, char **argv)
       if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" ||
                         std::string(argv[1]) == "help"))
         {
-          std::cout << usage;
+          std::cout << usage << field::compare_usage << field::calibrate_usage;
           return 0;
         }
+      if (argc >= 2 && std::string(argv[1]) == "compare")
+        return field::run_compare_command(std::vector<std::string>(argv + 2, argv + argc));
+      if (argc >= 2 && std::string(argv[1]) == "calibrate")
+        return field::run_calibrate_command(std::vector<std::string>(argv + 2, argv + argc));
       const CommandLine cl = parse(argc, argv);
       if (cl.command == "run")
         return run(cl);

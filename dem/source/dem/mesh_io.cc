@@ -1,61 +1,20 @@
 #include <abrade/common/error.h>
+#include <abrade/common/vtk_input.h>
 #include <abrade/common/vtk_output.h>
 #include <abrade/dem/mesh_io.h>
 
 #include <vtkCellArray.h>
 #include <vtkNew.h>
-#include <vtkOBJReader.h>
-#include <vtkPLYReader.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
-#include <vtkSTLReader.h>
-#include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
-#include <vtkXMLPolyDataReader.h>
 
-#include <algorithm>
-#include <filesystem>
+#include <cmath>
 
 namespace abrade::dem
 {
-  namespace
-  {
-    std::string extension(const std::string &path)
-    {
-      std::string e = std::filesystem::path(path).extension().string();
-      std::transform(e.begin(), e.end(), e.begin(), ::tolower);
-      return e;
-    }
-
-    template <typename Reader>
-    vtkSmartPointer<vtkPolyData> read_with(const std::string &path)
-    {
-      vtkNew<Reader> r;
-      r->SetFileName(path.c_str());
-      r->Update();
-      vtkSmartPointer<vtkPolyData> p = r->GetOutput();
-      return p;
-    }
-  } // namespace
-
   TriangleMesh read_surface_mesh(const std::string &path, double scale)
   {
-    if (!std::filesystem::exists(path))
-      throw InputError(path, "mesh file not found");
-    const std::string            ext = extension(path);
-    vtkSmartPointer<vtkPolyData> poly;
-    if (ext == ".stl")
-      poly = read_with<vtkSTLReader>(path);
-    else if (ext == ".obj")
-      poly = read_with<vtkOBJReader>(path);
-    else if (ext == ".ply")
-      poly = read_with<vtkPLYReader>(path);
-    else if (ext == ".vtk")
-      poly = read_with<vtkPolyDataReader>(path);
-    else if (ext == ".vtp")
-      poly = read_with<vtkXMLPolyDataReader>(path);
-    else
-      throw InputError(path, "unknown mesh format '" + ext + "' (use .stl, .obj, .ply, .vtk or .vtp)");
+    const vtkSmartPointer<vtkPolyData> poly = io::read_polydata(path);
     if (!poly || poly->GetNumberOfPolys() == 0)
       throw InputError(path, "no triangles could be read (empty or malformed file)");
 

@@ -1,0 +1,340 @@
+#include <abrade/common/error.h>
+#include <abrade/field/calibration.h>
+
+#include <vtkDataArray.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkTriangle.h>
+#include <vtkTriangleFilter.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace abrade::field
+{
+  namespace
+  {
+    std::vector<std::string> split_csv(const std::string &line)
+    {
+      std::vector<std::string> out;
+      std::stringstream        s(line);
+      std::string              cell;
+      while (std::getline(s, cell, ','))
+        {
+          const auto b = cell.find_first_not_of(" \t\r"), e = cell.find_last_not_of(" \t\r");
+          out.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
+        }
+      return out;
+    }
+
+    /// A CSV table: its header's column indices and its rows with their line numbers.
+    struct Table
+    {
+      std::map<std::string, std::size_t>                         column;
+      std::vector<std::pair<long, std::vector<std::string>>>     rows;
+    };
+
+    Table read_table(const std::string &path)
+    {
+      std::ifstream in(path);
+      if (!in)
+        throw InputError(path, "file not found");
+      Table       t;
+      std::string line;
+      long        number = 0;
+      bool        header = true;
+      while (std::getline(in, line))
+        {
+          ++number;
+          if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#')
+            continue;
+          auto cells = split_csv(line);
+          if (header)
+            {
+              for (std::size_t c = 0; c < cells.size(); ++c)
+                {
+                  std::string name = cells[c];
+                  std::transform(name.begin(), name.end(), name.begin(), ::tolower);
+                  t.column[name] = c;
+                }
+              header = false;
+            }
+          else
+            t.rows.emplace_back(number, std::move(cells));
+        }
+      if (header)
+        throw InputError(path, "empty table (a header line and at least one row expected)");
+      return t;
+    }
+
+    double number(const std::string &path, long line, const std::vector<std::string> &row, std::size_t c,
+                  const std::string &name)
+    {
+      const std::string where = path + ":" + std::to_string(line);
+      if (c >= row.size() || row[c].empty())
+        throw InputError(where, "no value in column '" + name + "'");
+      try
+        {
+          std::size_t used = 0;
+          const double v = std::stod(row[c], &used);
+          if (used != row[c].size() || !std::isfinite(v))
+            throw std::invalid_argument("");
+          return v;
+        }
+      catch (const std::exception &)
+        {
+          throw InputError(where, "'" + row[c] + "' in column '" + name + "' is not a number");
+        }
+    }
+
+    std::string columns_of(const Table &t)
+    {
+      std::string s;
+      for (const auto &[name, c] : t.column)
+        s += (s.empty() ? "" : ", ") + name;
+      return s;
+    }
+
+    /// Depth at the material points that were at @p points on the fresh knife, on one output's
+    /// surface: the surface is moved back by its accumulated displacement (the fresh knife's
+    /// configuration), and the depth interpolated linearly at the closest point there.
+    std::vector<double> depth_at(vtkPolyData *surface, const std::vector<std::array<double, 3>> &points)
+    {
+      vtkDataArray *depth        = surface->GetPointData()->GetArray("wear_depth");
+      vtkDataArray *displacement = surface->GetPointData()->GetArray("wear_displacement");
+      vtkNew<vtkTriangleFilter> tri;
+      tri->SetInputData(surface);
+      tri->Update();
+      vtkNew<vtkPolyData> fresh;
+      fresh->DeepCopy(tri->GetOutput());
+      vtkPoints *pts = fresh->GetPoints();
+      for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+        {
+          double x[3];
+          pts->GetPoint(i, x);
+          const double *d = displacement->GetTuple3(i);
+          pts->SetPoint(i, x[0] - d[0], x[1] - d[1], x[2] - d[2]);
+        }
+      vtkNew<vtkStaticCellLocator> locator;
+      locator->SetDataSet(fresh);
+      locator->BuildLocator();
+      std::vector<double> out;
+      for (const auto &p : points)
+        {
+          double    q[3], d2;
+          vtkIdType cell;
+          int       sub;
+          locator->FindClosestPoint(p.data(), q, cell, sub, d2);
+          vtkIdType        n;
+          const vtkIdType *ids;
+          fresh->GetCellPoints(cell, n, ids);
+          double a[3], b[3], c[3], w[3];
+          fresh->GetPoint(ids[0], a), fresh->GetPoint(ids[1], b), fresh->GetPoint(ids[2], c);
+          vtkTriangle::BarycentricCoords(q, a, b, c, w);
+          out.push_back(w[0] * depth->GetTuple1(ids[0]) + w[1] * depth->GetTuple1(ids[1]) + w[2] * depth->GetTuple1(ids[2]));
+        }
+      return out;
+    }
+
+    double read_archard_coefficient(const std::string &summary)
+    {
+      std::ifstream in(summary);
+      std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      std::smatch   m;
+      if (std::regex_search(text, m, std::regex("\"archard_coefficient\": *([-+0-9.eE]+)")))
+        return std::stod(m[1]);
+      return 0;
+    }
+  } // namespace
+
+  std::vector<Measurement> read_measurements(const std::string &path, const std::string &locations)
+  {
+    const Table t = read_table(path);
+    std::map<std::string, std::array<double, 3>> named;
+    if (!locations.empty())
+      {
+        const Table l = read_table(locations);
+        for (const char *c : {"name", "x", "y", "z"})
+          if (!l.column.count(c))
+            throw InputError(locations, std::string("missing column '") + c + "' (found: " + columns_of(l) + ")");
+        for (const auto &[line, row] : l.rows)
+          named[row[l.column.at("name")]] = {number(locations, line, row, l.column.at("x"), "x"),
+                                             number(locations, line, row, l.column.at("y"), "y"),
+                                             number(locations, line, row, l.column.at("z"), "z")};
+      }
+    const bool by_name = t.column.count("location") > 0;
+    std::vector<std::string> required = {"tonnes"};
+    if (!by_name)
+      required.insert(required.end(), {"x", "y", "z"});
+    for (const auto &c : required)
+      if (!t.column.count(c))
+        throw InputError(path, "missing column '" + c + "' (found: " + columns_of(t) +
+                                 "; needed: tonnes, depth or depth_mm, and x, y, z or location)");
+    const bool in_mm = !t.column.count("depth") && t.column.count("depth_mm");
+    if (!t.column.count("depth") && !in_mm)
+      throw InputError(path, "missing column 'depth' [m] or 'depth_mm' (found: " + columns_of(t) + ")");
+    if (by_name && named.empty())
+      throw InputError(path, "column 'location' names points: give their coordinates with --locations FILE");
+    std::vector<Measurement> out;
+    for (const auto &[line, row] : t.rows)
+      {
+        Measurement m;
+        m.where  = path + ":" + std::to_string(line);
+        m.tonnes = number(path, line, row, t.column.at("tonnes"), "tonnes");
+        m.depth  = in_mm ? 1e-3 * number(path, line, row, t.column.at("depth_mm"), "depth_mm")
+                         : number(path, line, row, t.column.at("depth"), "depth");
+        if (by_name)
+          {
+            const std::string name = t.column.at("location") < row.size() ? row[t.column.at("location")] : "";
+            if (!named.count(name))
+              throw InputError(m.where, "unknown location '" + name + "' (not in " + locations + ")");
+            m.point = named[name];
+          }
+        else
+          m.point = {number(path, line, row, t.column.at("x"), "x"), number(path, line, row, t.column.at("y"), "y"),
+                     number(path, line, row, t.column.at("z"), "z")};
+        if (m.tonnes < 0)
+          throw InputError(m.where, "negative tonnes");
+        out.push_back(m);
+      }
+    if (out.empty())
+      throw InputError(path, "no measurements (the table has a header only)");
+    return out;
+  }
+
+  RunSeries read_run(const std::string &directory, const std::vector<std::array<double, 3>> &points)
+  {
+    RunSeries         run;
+    run.directory     = directory;
+    const std::string pvd = directory + "/knife/knife.pvd";
+    std::ifstream     in(pvd);
+    if (!in)
+      throw InputError(pvd, "not found: is " + directory + " the output folder of a lifetime run?");
+    run.archard_coefficient = read_archard_coefficient(directory + "/summary.json");
+    const std::regex entry("timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+    std::string      line;
+    while (std::getline(in, line))
+      {
+        std::smatch m;
+        if (!std::regex_search(line, m, entry))
+          continue;
+        const std::string file = directory + "/knife/" + m[2].str();
+        vtkNew<vtkXMLUnstructuredGridReader> reader;
+        reader->SetFileName(file.c_str());
+        vtkNew<vtkDataSetSurfaceFilter> surface;
+        surface->SetInputConnection(reader->GetOutputPort());
+        surface->Update();
+        vtkPolyData *s = surface->GetOutput();
+        if (!s->GetPointData()->GetArray("wear_depth") || !s->GetPointData()->GetArray("wear_displacement") ||
+            s->GetNumberOfCells() == 0)
+          throw InputError(file, "no knife surface with wear_depth and wear_displacement");
+        run.tonnes.push_back(std::stod(m[1]));
+        run.depth.push_back(depth_at(s, points));
+      }
+    if (run.tonnes.size() < 2)
+      throw InputError(pvd, "fewer than two outputs: the run has not made an update yet");
+    return run;
+  }
+
+  double RunSeries::at(std::size_t p, double t, bool *extrapolated) const
+  {
+    std::size_t k = 1;
+    while (k + 1 < tonnes.size() && tonnes[k] < t)
+      ++k;
+    if (extrapolated && t > tonnes.back())
+      *extrapolated = true;
+    const double f = (t - tonnes[k - 1]) / (tonnes[k] - tonnes[k - 1]);
+    return depth[k - 1][p] + f * (depth[k][p] - depth[k - 1][p]);
+  }
+
+  double student_t95(int dof)
+  {
+    static const double t[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                               2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                               2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+    if (dof < 1)
+      return std::numeric_limits<double>::infinity();
+    if (dof <= 30)
+      return t[dof - 1];
+    return 1.960 + 2.4 / dof; // within 0.2 % of the quantile above 30
+  }
+
+  CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &ms)
+  {
+    CalibrationResult r;
+    r.directory = run.directory;
+    auto sse    = [&](double s) {
+      double sum = 0;
+      for (std::size_t i = 0; i < ms.size(); ++i)
+        {
+          const double e = run.at(i, s * ms[i].tonnes) - ms[i].depth;
+          sum += e * e;
+        }
+      return sum;
+    };
+    // a log-spaced scan over six decades, then golden sections around the best
+    double best = 1, best_sse = sse(1);
+    for (int k = -300; k <= 300; ++k)
+      {
+        const double s = std::pow(10.0, k / 100.0), e = sse(s);
+        if (e < best_sse)
+          best = s, best_sse = e;
+      }
+    double       a = best * std::pow(10.0, -0.01), b = best * std::pow(10.0, 0.01);
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    for (int it = 0; it < 100; ++it)
+      {
+        const double c = b - g * (b - a), d = a + g * (b - a);
+        if (sse(c) < sse(d))
+          b = d;
+        else
+          a = c;
+      }
+    r.scale = 0.5 * (a + b);
+    // linearised confidence interval: J_i = d depth / d s = T_i D'(s T_i)
+    double jj = 0, mean_m = 0, mean_p = 0;
+    std::vector<double> predicted(ms.size());
+    for (std::size_t i = 0; i < ms.size(); ++i)
+      {
+        const double h = 1e-4 * r.scale;
+        const double j = (run.at(i, (r.scale + h) * ms[i].tonnes) - run.at(i, (r.scale - h) * ms[i].tonnes)) / (2 * h);
+        jj += j * j;
+        predicted[i] = run.at(i, r.scale * ms[i].tonnes, &r.extrapolated);
+        mean_m += ms[i].depth / ms.size(), mean_p += predicted[i] / ms.size();
+      }
+    const double sum_sq = sse(r.scale);
+    r.rms_residual      = std::sqrt(sum_sq / ms.size());
+    const int    dof    = int(ms.size()) - 1;
+    const double se     = dof > 0 && jj > 0 ? std::sqrt(sum_sq / dof / jj) : std::numeric_limits<double>::infinity();
+    r.scale_low         = std::max(0.0, r.scale - student_t95(dof) * se);
+    r.scale_high        = r.scale + student_t95(dof) * se;
+    double smm = 0, spp = 0, smp = 0;
+    for (std::size_t i = 0; i < ms.size(); ++i)
+      {
+        smm += (ms[i].depth - mean_m) * (ms[i].depth - mean_m);
+        spp += (predicted[i] - mean_p) * (predicted[i] - mean_p);
+        smp += (ms[i].depth - mean_m) * (predicted[i] - mean_p);
+      }
+    r.correlation = smm > 0 && spp > 0 ? smp / std::sqrt(smm * spp) : 0.0;
+    if (run.archard_coefficient > 0)
+      {
+        r.archard_coefficient = r.scale * run.archard_coefficient;
+        r.low                 = r.scale_low * run.archard_coefficient;
+        r.high                = r.scale_high * run.archard_coefficient;
+      }
+    return r;
+  }
+} // namespace abrade::field

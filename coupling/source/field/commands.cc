@@ -1,0 +1,216 @@
+#include <abrade/common/error.h>
+#include <abrade/common/json.h>
+#include <abrade/common/output_directory.h>
+#include <abrade/field/calibration.h>
+#include <abrade/field/commands.h>
+#include <abrade/field/compare.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace abrade::field
+{
+  const char *compare_usage = R"(  abrade compare --predicted WORN --scan SCAN [--reference DESIGN] --output DIR
+                 [--scan-units auto|m|mm] [--register-on XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX]
+                 [--no-coarse] [--profile-axis x|y|z] [--profile-planes A,B,...] [--tonnes T]
+      register a field scan (surface: .stl .ply .obj .vtp; point cloud: .ply .xyz .csv) to the
+      predicted worn knife (.stl/.vtu of a run) or the design, and write the deviations
+      (comparison.json, deviation.vtp, profile_*.csv/.png, measured_depths.csv)
+)";
+  const char *calibrate_usage = R"(  abrade calibrate --run DIR [--run DIR]... --measurements FILE.csv [--locations FILE.csv]
+                   --output DIR
+      fit the Archard coefficient W of each lifetime run to measured wear depths (columns
+      tonnes, depth or depth_mm, x, y, z or location), with its 95 % interval, and rank the
+      runs by pattern agreement (calibration.json/.md, residuals.csv, calibration.png)
+)";
+
+  namespace
+  {
+    std::vector<double> numbers(const std::string &flag, const std::string &text, std::size_t count = 0)
+    {
+      std::vector<double> v;
+      std::stringstream   s(text);
+      std::string         item;
+      while (std::getline(s, item, ','))
+        try
+          {
+            v.push_back(std::stod(item));
+          }
+        catch (const std::exception &)
+          {
+            throw InputError(flag, "'" + item + "' is not a number");
+          }
+      if (count && v.size() != count)
+        throw InputError(flag, std::to_string(count) + " comma-separated numbers expected, got '" + text + "'");
+      return v;
+    }
+
+    /// Walks the arguments: @p handle(flag, value-getter) returns false for an unknown flag.
+    template <typename Handle>
+    void parse(const std::vector<std::string> &args, const char *usage, Handle handle)
+    {
+      for (std::size_t k = 0; k < args.size(); ++k)
+        {
+          auto value = [&]() -> std::string {
+            if (k + 1 >= args.size())
+              throw InputError("command line", args[k] + " needs a value");
+            return args[++k];
+          };
+          if (!handle(args[k], value))
+            throw InputError("command line", "unknown option '" + args[k] + "'\nusage:\n" + usage);
+        }
+    }
+
+    void print(const char *what, const DeviationStatistics &d)
+    {
+      std::printf("  %-20s %zu points: RMS %.3f mm, mean %+.3f mm, max %.3f mm, 95 %% %.3f mm, Hausdorff %.3f mm\n",
+                  what, d.n, 1e3 * d.rms, 1e3 * d.mean, 1e3 * d.max_abs, 1e3 * d.p95, 1e3 * d.hausdorff);
+    }
+  } // namespace
+
+  int run_compare_command(const std::vector<std::string> &args)
+  {
+    CompareSettings s;
+    parse(args, compare_usage, [&](const std::string &flag, auto value) {
+      if (flag == "--predicted")
+        s.predicted = value();
+      else if (flag == "--scan")
+        s.scan = value();
+      else if (flag == "--reference")
+        s.reference = value();
+      else if (flag == "--output" || flag == "-o")
+        s.output = value();
+      else if (flag == "--scan-units")
+        s.scan_units = value();
+      else if (flag == "--register-on")
+        {
+          const auto b         = numbers(flag, value(), 6);
+          s.registration.region = Box{{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
+        }
+      else if (flag == "--no-coarse")
+        s.registration.coarse = false;
+      else if (flag == "--profile-axis")
+        {
+          const std::string a = value();
+          if (a != "x" && a != "y" && a != "z")
+            throw InputError(flag, "x, y or z expected, got '" + a + "'");
+          s.profile_axis = a[0] - 'x';
+        }
+      else if (flag == "--profile-planes")
+        s.profile_planes = numbers(flag, value());
+      else if (flag == "--tonnes")
+        s.tonnes = numbers(flag, value(), 1)[0];
+      else
+        return false;
+      return true;
+    });
+    if (s.predicted.empty() || s.scan.empty() || s.output.empty())
+      throw InputError("command line", std::string("compare needs --predicted, --scan and --output\nusage:\n") +
+                                         compare_usage);
+    const CompareResult r = compare(s);
+    for (const auto &w : r.warnings)
+      std::cerr << "warning: " << w << '\n';
+    std::printf("Registered %s (%zu points; scale %g) with an RMS distance of %.3f mm\n", s.scan.c_str(),
+                r.registration.points_used, r.scan_scale, 1e3 * r.registration.rms);
+    print("scan to prediction:", r.to_predicted);
+    if (r.has_reference)
+      {
+        print("scan to design:", r.to_reference);
+        std::printf("  worn volume: measured %.4g cm^3, predicted %.4g cm^3 (%s)\n", 1e6 * r.measured_volume,
+                    1e6 * r.predicted_volume, r.volume_method.c_str());
+      }
+    std::printf("Output in %s\n", s.output.c_str());
+    return 0;
+  }
+
+  int run_calibrate_command(const std::vector<std::string> &args)
+  {
+    std::vector<std::string> runs;
+    std::string              table, locations, output;
+    parse(args, calibrate_usage, [&](const std::string &flag, auto value) {
+      if (flag == "--run")
+        runs.push_back(value());
+      else if (flag == "--measurements")
+        table = value();
+      else if (flag == "--locations")
+        locations = value();
+      else if (flag == "--output" || flag == "-o")
+        output = value();
+      else
+        return false;
+      return true;
+    });
+    if (runs.empty() || table.empty() || output.empty())
+      throw InputError("command line", std::string("calibrate needs --run, --measurements and --output\nusage:\n") +
+                                         calibrate_usage);
+    const auto                         ms = read_measurements(table, locations);
+    std::vector<std::array<double, 3>> points;
+    for (const auto &m : ms)
+      points.push_back(m.point);
+    io::OutputDirectory            out(output);
+    std::vector<CalibrationResult> results;
+    std::ofstream                  residuals(out.file("residuals.csv"));
+    residuals.precision(10);
+    residuals << "run,x,y,z,tonnes,measured_depth,predicted_depth\n";
+    for (const auto &dir : runs)
+      {
+        const RunSeries run = read_run(dir, points);
+        results.push_back(calibrate(run, ms));
+        const auto &r = results.back();
+        for (std::size_t i = 0; i < ms.size(); ++i)
+          residuals << dir << ',' << ms[i].point[0] << ',' << ms[i].point[1] << ',' << ms[i].point[2] << ','
+                    << ms[i].tonnes << ',' << ms[i].depth << ',' << run.at(i, r.scale * ms[i].tonnes) << '\n';
+        if (r.extrapolated)
+          std::cerr << "warning: " << dir << ": at the fitted W the measurements lie beyond the run's last update "
+                    << "(the depths there are extrapolated linearly); run it further\n";
+      }
+    residuals.close();
+    std::vector<std::size_t> order(results.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return results[a].correlation > results[b].correlation; });
+    io::Json      json;
+    std::ofstream md(out.file("calibration.md"));
+    md << "# Calibration against " << table << " (" << ms.size() << " measurements)\n\n"
+       << "Runs ranked by pattern agreement (correlation of measured and predicted depth at the fitted W).\n\n"
+       << "| rank | run | correlation | W [1/Pa] | 95 % interval | scale W/W0 | RMS residual [mm] |\n"
+       << "|---|---|---|---|---|---|---|\n";
+    std::printf("%zu measurements from %s\n", ms.size(), table.c_str());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      {
+        const auto &r = results[order[k]];
+        io::Json    j;
+        j["run"] = r.directory, j["rank"] = long(k + 1), j["correlation"] = r.correlation, j["scale"] = r.scale;
+        j["scale_low"] = r.scale_low, j["scale_high"] = r.scale_high, j["rms_residual"] = r.rms_residual;
+        j["archard_coefficient"] = r.archard_coefficient, j["archard_coefficient_low"] = r.low;
+        j["archard_coefficient_high"] = r.high, j["extrapolated"] = r.extrapolated;
+        json["runs"].push_back(j);
+        char line[512];
+        std::snprintf(line, sizeof line, "| %zu | %s | %.4f | %.4g | %.4g ... %.4g | %.4g | %.4g |\n", k + 1,
+                      r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale, 1e3 * r.rms_residual);
+        md << line;
+        std::printf("  %zu. %s: correlation %.4f, W = %.4g (%.4g ... %.4g) 1/Pa, scale %.4g, RMS residual %.3g mm\n", k + 1,
+                    r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale, 1e3 * r.rms_residual);
+      }
+    json["measurements"] = table;
+    json.write(out.file("calibration.json"));
+    md.close();
+    std::ofstream gp(out.file("calibration.gp"));
+    gp << "set terminal pngcairo size 800,700\nset output 'calibration.png'\nset datafile separator ','\nset grid\n"
+          "set key left top\nset xlabel 'measured depth [mm]'\nset ylabel 'predicted depth at the fitted W [mm]'\n"
+          "set size ratio -1\nplot x with lines dt 2 lc rgb 'black' title 'equal'";
+    for (const auto &dir : runs)
+      gp << ", 'residuals.csv' using (strcol(1) eq '" << dir << "' ? $6*1000 : 1/0):($7*1000) with points pt 7 title '"
+         << dir << "'";
+    gp << '\n';
+    gp.close();
+    if (std::system(("cd '" + out.root() + "' && gnuplot calibration.gp > /dev/null 2>&1").c_str()) != 0)
+      std::cerr << "warning: gnuplot failed or is missing; the plot script is " << out.file("calibration.gp") << '\n';
+    std::printf("Output in %s\n", output.c_str());
+    return 0;
+  }
+} // namespace abrade::field

@@ -1,0 +1,320 @@
+#include <abrade/common/error.h>
+#include <abrade/common/json.h>
+#include <abrade/common/output_directory.h>
+#include <abrade/field/compare.h>
+
+#include <vtkCellArray.h>
+#include <vtkCutter.h>
+#include <vtkDoubleArray.h>
+#include <vtkImplicitPolyDataDistance.h>
+#include <vtkKdTreePointLocator.h>
+#include <vtkNew.h>
+#include <vtkPlane.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTriangle.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numeric>
+
+namespace abrade::field
+{
+  namespace
+  {
+    /// Signed distance of every point of @p points to the closed surface @p surface (> 0 outside).
+    std::vector<double> signed_distances(vtkPolyData *points, vtkPolyData *surface)
+    {
+      vtkNew<vtkImplicitPolyDataDistance> d;
+      d->SetInput(surface);
+      std::vector<double> out(points->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+        out[i] = d->EvaluateFunction(points->GetPoint(i));
+      return out;
+    }
+
+    /// Largest distance from the model's points within the scan's bounding box to the scan.
+    double model_to_scan(const Geometry &model, const Geometry &scan)
+    {
+      double b[6];
+      scan.data->GetBounds(b);
+      const double margin = 0.02 * scan.size();
+      vtkNew<vtkImplicitPolyDataDistance> surface;
+      vtkNew<vtkKdTreePointLocator>       cloud;
+      if (scan.point_cloud)
+        cloud->SetDataSet(scan.data), cloud->BuildLocator();
+      else
+        surface->SetInput(scan.data);
+      double worst = 0;
+      for (vtkIdType i = 0; i < model.data->GetNumberOfPoints(); ++i)
+        {
+          const double *p = model.data->GetPoint(i);
+          bool          inside = true;
+          for (int k = 0; k < 3; ++k)
+            inside = inside && p[k] >= b[2 * k] - margin && p[k] <= b[2 * k + 1] + margin;
+          if (!inside)
+            continue;
+          double d;
+          if (scan.point_cloud)
+            {
+              double q[3];
+              scan.data->GetPoint(cloud->FindClosestPoint(p), q);
+              d = std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
+            }
+          else
+            d = std::abs(surface->EvaluateFunction(const_cast<double *>(p)));
+          worst = std::max(worst, d);
+        }
+      return worst;
+    }
+
+    /// Worn volume within the scanned area: the depth field integrated over the scan's triangles.
+    double integrate_over_scan(const Geometry &scan, const std::vector<double> &depth)
+    {
+      double v = 0;
+      for (vtkIdType t = 0; t < scan.data->GetNumberOfCells(); ++t)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          scan.data->GetCellPoints(t, n, ids);
+          double a[3], b[3], c[3];
+          scan.data->GetPoint(ids[0], a), scan.data->GetPoint(ids[1], b), scan.data->GetPoint(ids[2], c);
+          v += vtkTriangle::TriangleArea(a, b, c) * std::max(0.0, (depth[ids[0]] + depth[ids[1]] + depth[ids[2]]) / 3);
+        }
+      return v;
+    }
+
+    void add_array(vtkPolyData *p, const char *name, const std::vector<double> &values)
+    {
+      vtkNew<vtkDoubleArray> a;
+      a->SetName(name);
+      for (double x : values)
+        a->InsertNextValue(x);
+      p->GetPointData()->AddArray(a);
+    }
+
+    /// Segments of a surface in a plane, or the points of a cloud within a thin slab of it:
+    /// "curve u0 v0 u1 v1" lines (a point is a zero-length segment).
+    void write_section(std::ofstream &out, const std::string &curve, const Geometry &g, int axis, double at)
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      if (g.point_cloud)
+        {
+          const double slab = 0.5 * g.size() / std::sqrt(double(g.data->GetNumberOfPoints()));
+          for (vtkIdType i = 0; i < g.data->GetNumberOfPoints(); ++i)
+            {
+              const double *p = g.data->GetPoint(i);
+              if (std::abs(p[axis] - at) <= slab)
+                out << curve << ' ' << p[u] << ' ' << p[v] << ' ' << p[u] << ' ' << p[v] << '\n';
+            }
+          return;
+        }
+      vtkNew<vtkPlane> plane;
+      double           origin[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
+      origin[axis] = at, normal[axis] = 1;
+      plane->SetOrigin(origin);
+      plane->SetNormal(normal);
+      vtkNew<vtkCutter> cut;
+      cut->SetCutFunction(plane);
+      cut->SetInputData(g.data);
+      cut->Update();
+      vtkPolyData *lines = cut->GetOutput();
+      for (vtkIdType c = 0; c < lines->GetNumberOfCells(); ++c)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          lines->GetCellPoints(c, n, ids);
+          for (vtkIdType k = 0; k + 1 < n; ++k)
+            {
+              const double *a = lines->GetPoint(ids[k]);
+              const double  pa[3] = {a[0], a[1], a[2]};
+              const double *b = lines->GetPoint(ids[k + 1]);
+              out << curve << ' ' << pa[u] << ' ' << pa[v] << ' ' << b[u] << ' ' << b[v] << '\n';
+            }
+        }
+    }
+
+    void write_profiles(const CompareSettings &s, const Geometry &predicted, const Geometry &scan,
+                        const Geometry *reference, io::OutputDirectory &out)
+    {
+      const char *axes = "xyz";
+      for (double at : s.profile_planes)
+        {
+          char name[64];
+          std::snprintf(name, sizeof name, "profile_%c%.4g", axes[s.profile_axis], at);
+          std::ofstream csv(out.file(std::string(name) + ".csv"));
+          csv.precision(10);
+          csv << "# curve u0 v0 u1 v1 [m]: sections of the plane " << axes[s.profile_axis] << " = " << at
+              << " (u, v: the next two axes)\n";
+          write_section(csv, "predicted", predicted, s.profile_axis, at);
+          write_section(csv, "scan", scan, s.profile_axis, at);
+          if (reference)
+            write_section(csv, "design", *reference, s.profile_axis, at);
+          csv.close();
+          std::ofstream gp(out.file(std::string(name) + ".gp"));
+          const char    u = axes[(s.profile_axis + 1) % 3], v = axes[(s.profile_axis + 2) % 3];
+          gp << "set terminal pngcairo size 800,800\nset output '" << name << ".png'\nset size ratio -1\nset grid\n"
+             << "set xlabel '" << u << " [mm]'\nset ylabel '" << v << " [mm]'\nset title 'section " << axes[s.profile_axis]
+             << " = " << at << " m'\n"
+             << "plot '" << name << ".csv' using ($2*1000):($3*1000):(($4-$2)*1000):(($5-$3)*1000) every ::0 "
+             << "with vectors nohead lw 2 lc rgb 'blue' title 'predicted' , '' using "
+             << "(strcol(1) eq 'scan' ? $2*1000 : 1/0):($3*1000) with points pt 7 ps 0.3 lc rgb 'red' title 'scan'";
+          if (reference)
+            gp << ", '' using (strcol(1) eq 'design' ? $2*1000 : 1/0):($3*1000):(($4-$2)*1000):(($5-$3)*1000) "
+                  "with vectors nohead dt 2 lc rgb 'black' title 'design'";
+          gp << '\n';
+          gp.close();
+          if (std::system(("cd '" + out.root() + "' && gnuplot " + name + ".gp > /dev/null 2>&1").c_str()) != 0)
+            std::fprintf(stderr, "warning: gnuplot failed or is missing; the plot script is %s.gp\n", name);
+        }
+    }
+  } // namespace
+
+  DeviationStatistics statistics(std::vector<double> d)
+  {
+    DeviationStatistics s;
+    s.n = d.size();
+    if (d.empty())
+      return s;
+    double sum = 0, sum2 = 0;
+    for (double x : d)
+      sum += x, sum2 += x * x, s.max_abs = std::max(s.max_abs, std::abs(x));
+    s.mean = sum / d.size();
+    s.rms  = std::sqrt(sum2 / d.size());
+    for (double &x : d)
+      x = std::abs(x);
+    const std::size_t k = std::min(d.size() - 1, std::size_t(std::ceil(0.95 * d.size())) - 1);
+    std::nth_element(d.begin(), d.begin() + k, d.end());
+    s.p95 = d[k];
+    return s;
+  }
+
+  CompareResult compare(const CompareSettings &s)
+  {
+    CompareResult r;
+    Geometry      predicted = read_geometry(s.predicted, r.warnings);
+    if (predicted.point_cloud)
+      throw InputError(s.predicted, "the predicted geometry must be a surface (STL or VTU from a run)");
+    Geometry scan = read_geometry(s.scan, r.warnings);
+    Geometry reference;
+    r.has_reference = !s.reference.empty();
+    if (r.has_reference)
+      {
+        reference = read_geometry(s.reference, r.warnings);
+        if (reference.point_cloud)
+          throw InputError(s.reference, "the design must be a surface");
+      }
+    r.scan_scale = check_units(scan, predicted, s.scan_units, r.warnings);
+
+    // register on the design where there is one (the unworn parts are the same in both), else
+    // on the prediction
+    const Geometry &frame = r.has_reference ? reference : predicted;
+    r.registration        = register_scan(scan, frame, s.registration);
+    if (r.registration.rms > 0.05 * frame.size())
+      throw InputError(s.scan, "does not overlap the model: after registration its points lie " +
+                                 std::to_string(r.registration.rms) + " m (RMS) from the model's surface, " +
+                                 std::to_string(100 * r.registration.rms / frame.size()) + " % of its size");
+
+    const std::vector<double> deviation = signed_distances(scan.data, predicted.data);
+    r.to_predicted                      = statistics(deviation);
+    r.to_predicted.hausdorff            = std::max(r.to_predicted.max_abs, model_to_scan(predicted, scan));
+    std::vector<double> measured, predicted_depth;
+    if (r.has_reference)
+      {
+        const std::vector<double> to_design = signed_distances(scan.data, reference.data);
+        r.to_reference                      = statistics(to_design);
+        r.to_reference.hausdorff            = std::max(r.to_reference.max_abs, model_to_scan(reference, scan));
+        for (std::size_t i = 0; i < to_design.size(); ++i)
+          {
+            measured.push_back(-to_design[i]);
+            predicted_depth.push_back(-to_design[i] + deviation[i]); // the prediction's depth below this point
+          }
+        if (scan.closed && predicted.closed && reference.closed)
+          {
+            r.measured_volume  = reference.volume() - scan.volume();
+            r.predicted_volume = reference.volume() - predicted.volume();
+            r.volume_method    = "enclosed volumes (design minus worn)";
+          }
+        else if (!scan.point_cloud)
+          {
+            r.measured_volume  = integrate_over_scan(scan, measured);
+            r.predicted_volume = integrate_over_scan(scan, predicted_depth);
+            r.volume_method    = "depth below the design integrated over the scanned area";
+          }
+        else
+          {
+            r.volume_method = "none (a point cloud has no area)";
+            r.warnings.push_back(s.scan + ": a point cloud: worn volumes are not computed");
+          }
+      }
+
+    // outputs
+    io::OutputDirectory out(s.output);
+    add_array(scan.data, "deviation", deviation);
+    if (r.has_reference)
+      add_array(scan.data, "measured_depth", measured), add_array(scan.data, "predicted_depth", predicted_depth);
+    if (scan.point_cloud)
+      {
+        vtkNew<vtkCellArray> verts; // so that ParaView draws the points
+        for (vtkIdType i = 0; i < scan.data->GetNumberOfPoints(); ++i)
+          verts->InsertNextCell(1, &i);
+        scan.data->SetVerts(verts);
+      }
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetFileName(out.file("deviation.vtp").c_str());
+    w->SetInputData(scan.data);
+    w->Write();
+    if (r.has_reference)
+      {
+        if (s.tonnes < 0)
+          r.warnings.push_back("measured_depths.csv has no tonnage (pass --tonnes T to use it for calibration)");
+        std::ofstream m(out.file("measured_depths.csv"));
+        m.precision(10);
+        m << "x,y,z,tonnes,depth\n";
+        for (vtkIdType i = 0; i < scan.data->GetNumberOfPoints(); ++i)
+          {
+            const double *p = scan.data->GetPoint(i);
+            m << p[0] << ',' << p[1] << ',' << p[2] << ',';
+            if (s.tonnes >= 0)
+              m << s.tonnes;
+            m << ',' << measured[i] << '\n';
+          }
+      }
+    write_profiles(s, predicted, scan, r.has_reference ? &reference : nullptr, out);
+
+    io::Json json;
+    json["predicted"] = s.predicted;
+    json["scan"]      = s.scan;
+    if (r.has_reference)
+      json["design"] = s.reference;
+    json["scan_scale_applied"] = r.scan_scale;
+    auto &reg                   = json["registration"];
+    std::vector<double> matrix(r.registration.matrix.begin(), r.registration.matrix.end());
+    reg["matrix_row_major"] = matrix;
+    reg["rms_distance"]     = r.registration.rms;
+    reg["points_used"]      = long(r.registration.points_used);
+    reg["on"]               = std::string(r.has_reference ? "design" : "prediction") +
+                (s.registration.region ? " (within the region given)" : " (all of it)");
+    auto put = [](io::Json &j, const DeviationStatistics &d) {
+      j["points"] = long(d.n), j["rms"] = d.rms, j["mean"] = d.mean, j["max_abs"] = d.max_abs, j["p95_abs"] = d.p95,
+      j["hausdorff"] = d.hausdorff;
+    };
+    put(json["scan_to_prediction"], r.to_predicted);
+    if (r.has_reference)
+      {
+        put(json["scan_to_design"], r.to_reference);
+        json["worn_volume"]["measured"]  = r.measured_volume;
+        json["worn_volume"]["predicted"] = r.predicted_volume;
+        json["worn_volume"]["method"]    = r.volume_method;
+      }
+    json["warnings"] = std::vector<double>{};
+    for (const auto &w : r.warnings)
+      json["warnings"].push_back(w);
+    json.write(out.file("comparison.json"));
+    return r;
+  }
+} // namespace abrade::field

@@ -1,0 +1,21 @@
+#pragma once
+// Reading geometry files through VTK into vtkPolyData: one dispatch on the file extension for
+// every reader of the project (wall meshes, knife solids' surfaces, field scans). Needs VTK's
+// include directories (the libraries that call it link VTK).
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+
+namespace abrade::io
+{
+  /// Reads .stl, .obj, .ply, .vtk (legacy polydata), .vtp, or the outer surface of a .vtu.
+  /// Throws InputError naming the file when it is missing or its extension is unknown; the
+  /// result may hold no cells (a point cloud) or nothing (an empty or malformed file): callers
+  /// check what they need. VTK's own error messages are silenced while reading.
+  vtkSmartPointer<vtkPolyData> read_polydata(const std::string &path);
+
+  /// The lower-case extension of @p path, with its dot (".stl").
+  std::string lower_extension(const std::string &path);
+} // namespace abrade::io

@@ -1,0 +1,320 @@
+// Field scans and measurements (abrade compare / calibrate): synthetic scans of known geometry
+// under a known rigid transform and noise are registered back and give the known deviations;
+// the design against itself gives zero deviation; bad scans and tables are clear errors.
+#include <abrade/common/error.h>
+#include <abrade/dem/triangle_mesh.h>
+#include <abrade/field/calibration.h>
+#include <abrade/field/compare.h>
+
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSTLWriter.h>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+using namespace abrade;
+using namespace abrade::field;
+
+namespace
+{
+  const double L = 0.4, H = 0.5, T = 0.03, bevel = 0.06;
+
+  std::string tmp(const std::string &name)
+  {
+    const auto dir = std::filesystem::temp_directory_path() / "abrade_field_test";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+  }
+
+  /// A knife with its bevel on the +y side only (no rotational symmetry), the edge at y = -T/2,
+  /// z = 0; with @p cut > 0 the edge is worn flat to height cut. Extruded along x, refined.
+  dem::TriangleMesh knife(double cut = 0)
+  {
+    std::vector<std::pair<double, double>> profile; // (y, z), counter-clockwise seen from +x
+    if (cut > 0)
+      profile = {{-T / 2, cut}, {-T / 2 + T * cut / bevel, cut}};
+    else
+      profile = {{-T / 2, 0}};
+    profile.insert(profile.end(), {{T / 2, bevel}, {T / 2, H}, {-T / 2, H}});
+    dem::TriangleMesh m;
+    const int         n = int(profile.size());
+    for (double x : {0.0, L})
+      for (const auto &[y, z] : profile)
+        m.vertices.emplace_back(x, y, z);
+    for (int k = 0; k < n; ++k) // sides
+      {
+        const int a = k, b = (k + 1) % n;
+        m.triangles.push_back({a, b, n + b});
+        m.triangles.push_back({a, n + b, n + a});
+      }
+    for (int k = 1; k + 1 < n; ++k) // end caps (convex profile: fans)
+      {
+        m.triangles.push_back({0, k + 1, k});
+        m.triangles.push_back({n, n + k, n + k + 1});
+      }
+    m.refine(0.02);
+    return m;
+  }
+
+  /// Writes @p m as STL after x -> scale (R x + t) plus Gaussian noise along random directions.
+  void write(const dem::TriangleMesh &m, const std::string &path, const Eigen::Isometry3d &move = Eigen::Isometry3d::Identity(),
+             double scale = 1, double noise = 0)
+  {
+    std::mt19937                     rng(7);
+    std::normal_distribution<double> g(0, noise > 0 ? noise : 1);
+    vtkNew<vtkPoints>                pts;
+    for (const auto &v : m.vertices)
+      {
+        Eigen::Vector3d p = move * v;
+        if (noise > 0)
+          p += Eigen::Vector3d(g(rng), g(rng), g(rng));
+        p *= scale;
+        pts->InsertNextPoint(p.data());
+      }
+    vtkNew<vtkCellArray> cells;
+    for (const auto &t : m.triangles)
+      {
+        const vtkIdType ids[3] = {t[0], t[1], t[2]};
+        cells->InsertNextCell(3, ids);
+      }
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(pts);
+    poly->SetPolys(cells);
+    vtkNew<vtkSTLWriter> w;
+    w->SetFileName(path.c_str());
+    w->SetInputData(poly);
+    w->SetFileTypeToBinary();
+    w->Write();
+  }
+
+  Eigen::Isometry3d some_move()
+  {
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+    t.rotate(Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 2, 3).normalized()));
+    t.pretranslate(Eigen::Vector3d(0.3, -0.1, 0.05));
+    return t;
+  }
+
+  /// Angle [rad] and shift [m] between a registration and the inverse of the applied move.
+  std::pair<double, double> error_of(const Registration &r, const Eigen::Isometry3d &move)
+  {
+    Eigen::Matrix4d m;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        m(i, j) = r.matrix[4 * i + j];
+    const Eigen::Matrix4d e = m * move.matrix(); // identity if exact
+    const double          angle = Eigen::AngleAxisd(Eigen::Matrix3d(e.block<3, 3>(0, 0))).angle();
+    return {angle, e.block<3, 1>(0, 3).norm()};
+  }
+} // namespace
+
+TEST(FieldCompare, DesignAgainstItselfIsZero)
+{
+  write(knife(), tmp("design.stl"));
+  CompareSettings s;
+  s.predicted = s.scan = s.reference = tmp("design.stl");
+  s.output                            = tmp("self");
+  const auto r = compare(s);
+  EXPECT_LT(r.to_predicted.max_abs, 1e-7);
+  EXPECT_LT(r.to_predicted.hausdorff, 1e-7);
+  EXPECT_LT(r.registration.rms, 1e-7);
+  EXPECT_NEAR(r.measured_volume, 0, 1e-10);
+}
+
+TEST(FieldCompare, MovedNoisyScanInMillimetresIsRegisteredBack)
+{
+  write(knife(), tmp("design.stl"));
+  const auto   move  = some_move();
+  const double sigma = 1e-4; // 0.1 mm per coordinate
+  write(knife(), tmp("scan_mm.stl"), move, 1000, sigma);
+  CompareSettings s;
+  s.predicted = tmp("design.stl"), s.scan = tmp("scan_mm.stl"), s.output = tmp("moved");
+  s.profile_planes = {0.2};
+  const auto r     = compare(s);
+  EXPECT_DOUBLE_EQ(r.scan_scale, 1e-3);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.back().find("millimetres"), std::string::npos);
+  const auto [angle, shift] = error_of(r.registration, move);
+  EXPECT_LT(angle, 1e-3 * M_PI / 180 * 50); // 0.05 degrees
+  EXPECT_LT(shift, 5e-5);                   // 0.05 mm
+  // the noise along the normal: sigma (one of three components), mean zero
+  EXPECT_NEAR(r.to_predicted.rms, sigma, 0.1 * sigma);
+  EXPECT_NEAR(r.to_predicted.mean, 0, 0.1 * sigma);
+  EXPECT_NEAR(r.to_predicted.p95, 1.96 * sigma, 0.2 * sigma);
+  EXPECT_TRUE(std::filesystem::exists(tmp("moved/deviation.vtp")));
+  EXPECT_TRUE(std::filesystem::exists(tmp("moved/comparison.json")));
+  EXPECT_GT(std::filesystem::file_size(tmp("moved/profile_x0.2.csv")), 100u);
+}
+
+TEST(FieldCompare, WornScanRegisteredOnTheUnwornPartGivesTheWear)
+{
+  const double cut = 0.01; // the edge worn flat 10 mm up
+  write(knife(), tmp("design.stl"));
+  write(knife(cut), tmp("worn.stl"));
+  const auto move = some_move();
+  write(knife(cut), tmp("worn_scan.stl"), move);
+  CompareSettings s;
+  s.predicted = tmp("worn.stl"), s.scan = tmp("worn_scan.stl"), s.reference = tmp("design.stl");
+  s.output              = tmp("worn");
+  s.tonnes              = 1000;
+  s.registration.region = Box{{-1, -1, 0.1}, {1, 1, 1}}; // the top 80 %, which does not wear
+  const auto r          = compare(s);
+  const auto [angle, shift] = error_of(r.registration, move);
+  EXPECT_LT(angle, 1e-5);
+  EXPECT_LT(shift, 1e-5); // 0.01 mm: ICP converges slowly along the prism
+  EXPECT_LT(r.to_predicted.max_abs, 1e-5); // the scan is the prediction
+  const double removed = L * 0.5 * cut * (T * cut / bevel);
+  EXPECT_NEAR(r.measured_volume, removed, 1e-3 * removed);
+  EXPECT_NEAR(r.predicted_volume, removed, 1e-3 * removed);
+  // deepest point of the cut: where it is as far from the -y face as from the bevel
+  const double deepest = cut * T / (std::hypot(T, bevel) + bevel);
+  EXPECT_NEAR(r.to_reference.max_abs, deepest, 0.02 * deepest);
+  // the measured depths go out as a calibration table
+  const auto table = read_measurements(tmp("worn/measured_depths.csv"));
+  EXPECT_EQ(table.size(), r.to_reference.n);
+}
+
+TEST(FieldCompare, PredictionWithoutWearAgainstWornScan)
+{
+  const double cut = 0.01;
+  write(knife(), tmp("design.stl"));
+  write(knife(cut), tmp("worn_scan2.stl"), some_move());
+  CompareSettings s;
+  s.predicted = tmp("design.stl"), s.scan = tmp("worn_scan2.stl"), s.output = tmp("unworn_prediction");
+  s.registration.region = Box{{-1, -1, 0.1}, {1, 1, 1}};
+  const auto r          = compare(s);
+  EXPECT_LT(r.to_predicted.mean, 0);                 // the scan lies inside: more wear than predicted
+  EXPECT_GT(r.to_predicted.max_abs, 0.3 * cut * T / std::hypot(T, bevel));
+  EXPECT_LE(r.to_predicted.max_abs, cut + 1e-6);
+}
+
+TEST(FieldCompare, BadScansAreClearErrors)
+{
+  write(knife(), tmp("design.stl"));
+  std::ofstream(tmp("empty.stl")).close();
+  CompareSettings s;
+  s.predicted = tmp("design.stl"), s.output = tmp("bad");
+  s.scan = tmp("empty.stl");
+  EXPECT_THROW(compare(s), InputError);
+  s.scan = tmp("missing.ply");
+  EXPECT_THROW(compare(s), InputError);
+  // ten times too large: neither metres nor millimetres
+  write(knife(), tmp("scan_x10.stl"), Eigen::Isometry3d::Identity(), 10);
+  s.scan = tmp("scan_x10.stl");
+  try
+    {
+      compare(s);
+      FAIL() << "no error for a scan 10x too large";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("wrong file or unit"), std::string::npos) << e.what();
+    }
+  // a point table with a bad line names it
+  {
+    std::ofstream xyz(tmp("bad.xyz"));
+    xyz << "x y z\n";
+    for (int i = 0; i < 20; ++i)
+      xyz << 0.01 * i << " 0 0.1\n";
+    xyz << "0.3 oops 0.1\n";
+  }
+  s.scan = tmp("bad.xyz");
+  try
+    {
+      compare(s);
+      FAIL() << "no error for a bad line";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("bad.xyz:22"), std::string::npos) << e.what();
+    }
+  // no overlap: a ball of points is no knife
+  {
+    std::ofstream xyz(tmp("ball.xyz"));
+    std::mt19937  rng(3);
+    std::normal_distribution<double> g(0, 1);
+    for (int i = 0; i < 2000; ++i)
+      {
+        Eigen::Vector3d p(g(rng), g(rng), g(rng));
+        p = 0.3 * p.normalized();
+        xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+      }
+  }
+  s.scan = tmp("ball.xyz");
+  try
+    {
+      compare(s);
+      FAIL() << "no error for a scan that does not overlap";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("does not overlap"), std::string::npos) << e.what();
+    }
+}
+
+TEST(FieldCompare, NonManifoldScanIsAWarning)
+{
+  auto m = knife();
+  m.vertices.emplace_back(0.2, 0.1, 0.3); // a fin on an existing edge: three triangles share it
+  m.triangles.push_back({m.triangles[0][0], m.triangles[0][1], int(m.vertices.size() - 1)});
+  write(m, tmp("fin.stl"));
+  std::vector<std::string> warnings;
+  const auto               g = read_geometry(tmp("fin.stl"), warnings);
+  EXPECT_GT(g.non_manifold_edges, 0);
+  EXPECT_FALSE(g.closed);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("non-manifold"), std::string::npos);
+}
+
+TEST(FieldMeasurements, TablesAndTheirErrors)
+{
+  {
+    std::ofstream t(tmp("m.csv"));
+    t << "location,tonnes,depth_mm\nA,1000,1.5\nB,2000,3\n";
+    std::ofstream l(tmp("locations.csv"));
+    l << "name,x,y,z\nA,0.1,0,0\nB,0.2,0,0.01\n";
+  }
+  const auto m = read_measurements(tmp("m.csv"), tmp("locations.csv"));
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_DOUBLE_EQ(m[1].depth, 0.003);
+  EXPECT_DOUBLE_EQ(m[1].point[2], 0.01);
+  auto error_of_table = [](const std::string &text) {
+    std::ofstream(tmp("e.csv")) << text;
+    try
+      {
+        read_measurements(tmp("e.csv"));
+      }
+    catch (const InputError &e)
+      {
+        return std::string(e.what());
+      }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of_table("x,y,z,depth\n0,0,0,1\n").find("missing column 'tonnes'"), std::string::npos);
+  EXPECT_NE(error_of_table("x,y,z,tonnes\n0,0,0,1\n").find("'depth'"), std::string::npos);
+  EXPECT_NE(error_of_table("x,y,z,tonnes,depth\n0,0,0,1,0.1\n0,0,zero,1,0.1\n").find("e.csv:3"), std::string::npos);
+  EXPECT_NE(error_of_table("x,y,z,tonnes,depth\n").find("no measurements"), std::string::npos);
+  EXPECT_NE(error_of_table("").find("empty table"), std::string::npos);
+}
+
+TEST(FieldStatistics, KnownValues)
+{
+  std::vector<double> d;
+  for (int i = 1; i <= 100; ++i)
+    d.push_back(i % 2 ? -0.001 * i : 0.001 * i);
+  const auto s = statistics(d);
+  EXPECT_EQ(s.n, 100u);
+  EXPECT_NEAR(s.mean, 0.0005, 1e-15);
+  EXPECT_NEAR(s.max_abs, 0.1, 1e-15);
+  EXPECT_NEAR(s.p95, 0.095, 1e-15);
+  EXPECT_NEAR(s.rms, 0.001 * std::sqrt(101.0 * 201 / 6), 1e-12);
+  EXPECT_NEAR(student_t95(10), 2.228, 1e-12);
+}
