@@ -233,7 +233,7 @@ namespace abrade::coupling
     int                 spread_samples  = 0;
     double              volume0 = knife.volume();
     std::vector<std::string> kept_rows;
-    std::vector<double>      output_times = {0.0};
+    std::vector<double>      output_times; // of the knife series already written (resume)
     if (ctx.resume && std::filesystem::exists(state_file))
       {
         std::ifstream in(state_file);
@@ -253,6 +253,7 @@ namespace abrade::coupling
         std::getline(old, line); // header
         while (std::getline(old, line) && static_cast<long>(kept_rows.size()) < done)
           kept_rows.push_back(line);
+        output_times.push_back(0.0); // the fresh knife
         for (const auto &row : kept_rows)
           output_times.push_back(std::stod(row.substr(row.find(',', row.find(',') + 1) + 1)));
         for (double f : planes) // profile blocks after the checkpoint go
@@ -486,6 +487,9 @@ namespace abrade::coupling
     r["worn_mass"]    = (volume0 - knife.volume()) * kp.density;
     r["archard_volume"] = archard_total;
     r["remeshes"]     = static_cast<long>(knife.n_remeshes());
+    for (const auto &wc : c.walls) // the W the depths scale with (abrade calibrate rescales it)
+      if (wc.solid_model && !analytic)
+        r["archard_coefficient"] = wc.wear.archard_coefficient;
     // the tonnes to end of life: where an end-of-life criterion was met, or extrapolated linearly
     // from the depth rate so far (to the maximum depth) when the run stopped before one was
     const bool reached = end != "maximum updates reached" && end.rfind("no wear", 0) != 0;

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/vtk_input.h>
 #include <abrade/field/calibration.h>
 
 #include <vtkDataArray.h>
@@ -13,6 +14,8 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
@@ -108,6 +111,16 @@ namespace abrade::field
       return s;
     }
 
+    /// Barycentric coordinates of @p q (in the triangle's plane) in the triangle (a, b, c).
+    std::array<double, 3> barycentric(const double *q, const double *a, const double *b, const double *c)
+    {
+      const Eigen::Vector3d A(a), B(b), C(c), Q(q);
+      const Eigen::Vector3d n   = (B - A).cross(C - A);
+      const double          inv = 1 / n.squaredNorm();
+      const double          la = n.dot((C - B).cross(Q - B)) * inv, lb = n.dot((A - C).cross(Q - C)) * inv;
+      return {la, lb, 1 - la - lb};
+    }
+
     /// Depth at the material points that were at @p points on the fresh knife, on one output's
     /// surface: the surface is moved back by its accumulated displacement (the fresh knife's
     /// configuration), and the depth interpolated linearly at the closest point there.
@@ -115,11 +128,8 @@ namespace abrade::field
     {
       vtkDataArray *depth        = surface->GetPointData()->GetArray("wear_depth");
       vtkDataArray *displacement = surface->GetPointData()->GetArray("wear_displacement");
-      vtkNew<vtkTriangleFilter> tri;
-      tri->SetInputData(surface);
-      tri->Update();
       vtkNew<vtkPolyData> fresh;
-      fresh->DeepCopy(tri->GetOutput());
+      fresh->DeepCopy(surface);
       vtkPoints *pts = fresh->GetPoints();
       for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
         {
@@ -141,9 +151,9 @@ namespace abrade::field
           vtkIdType        n;
           const vtkIdType *ids;
           fresh->GetCellPoints(cell, n, ids);
-          double a[3], b[3], c[3], w[3];
+          double a[3], b[3], c[3];
           fresh->GetPoint(ids[0], a), fresh->GetPoint(ids[1], b), fresh->GetPoint(ids[2], c);
-          vtkTriangle::BarycentricCoords(q, a, b, c, w);
+          const auto w = barycentric(q, a, b, c);
           out.push_back(w[0] * depth->GetTuple1(ids[0]) + w[1] * depth->GetTuple1(ids[1]) + w[2] * depth->GetTuple1(ids[2]));
         }
       return out;
@@ -232,12 +242,8 @@ namespace abrade::field
         if (!std::regex_search(line, m, entry))
           continue;
         const std::string file = directory + "/knife/" + m[2].str();
-        vtkNew<vtkXMLUnstructuredGridReader> reader;
-        reader->SetFileName(file.c_str());
-        vtkNew<vtkDataSetSurfaceFilter> surface;
-        surface->SetInputConnection(reader->GetOutputPort());
-        surface->Update();
-        vtkPolyData *s = surface->GetOutput();
+        const auto        surface = io::read_polydata(file);
+        vtkPolyData      *s       = surface;
         if (!s->GetPointData()->GetArray("wear_depth") || !s->GetPointData()->GetArray("wear_displacement") ||
             s->GetNumberOfCells() == 0)
           throw InputError(file, "no knife surface with wear_depth and wear_displacement");

@@ -193,8 +193,13 @@ namespace abrade::field
         std::snprintf(line, sizeof line, "| %zu | %s | %.4f | %.4g | %.4g ... %.4g | %.4g | %.4g |\n", k + 1,
                       r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale, 1e3 * r.rms_residual);
         md << line;
-        std::printf("  %zu. %s: correlation %.4f, W = %.4g (%.4g ... %.4g) 1/Pa, scale %.4g, RMS residual %.3g mm\n", k + 1,
-                    r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale, 1e3 * r.rms_residual);
+        if (r.archard_coefficient > 0)
+          std::printf("  %zu. %s: correlation %.4f, W = %.4g (%.4g ... %.4g) 1/Pa, scale %.4g, RMS residual %.3g mm\n",
+                      k + 1, r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale,
+                      1e3 * r.rms_residual);
+        else // an analytic-wear run: no W, the rate's scale
+          std::printf("  %zu. %s: correlation %.4f, scale %.4g (%.4g ... %.4g), RMS residual %.3g mm\n", k + 1,
+                      r.directory.c_str(), r.correlation, r.scale, r.scale_low, r.scale_high, 1e3 * r.rms_residual);
       }
     json["measurements"] = table;
     json.write(out.file("calibration.json"));

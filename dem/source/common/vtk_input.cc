@@ -1,7 +1,11 @@
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_input.h>
 
+#include <vtkCellArray.h>
+#include <vtkCleanPolyData.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkPointData.h>
+#include <vtkTriangleFilter.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkObject.h>
@@ -14,7 +18,9 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
+#include <map>
 
 namespace abrade::io
 {
@@ -68,8 +74,40 @@ namespace abrade::io
         r->SetFileName(path.c_str());
         vtkNew<vtkDataSetSurfaceFilter> surface;
         surface->SetInputConnection(r->GetOutputPort());
-        surface->Update();
-        vtkSmartPointer<vtkPolyData> p = surface->GetOutput();
+        // deal.II's DataOut writes every cell with its own copies of its vertices: merge them,
+        // then the faces two cells share come twice and are dropped (the outer surface remains)
+        vtkNew<vtkCleanPolyData> merge;
+        merge->SetInputConnection(surface->GetOutputPort());
+        merge->SetTolerance(0);
+        merge->ConvertPolysToLinesOff();
+        vtkNew<vtkTriangleFilter> triangles;
+        triangles->SetInputConnection(merge->GetOutputPort());
+        triangles->Update();
+        vtkSmartPointer<vtkPolyData> all = triangles->GetOutput();
+        std::map<std::array<vtkIdType, 3>, int> count;
+        auto key = [&](vtkIdType c) {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          all->GetCellPoints(c, n, ids);
+          std::array<vtkIdType, 3> k = {ids[0], ids[1], ids[2]};
+          std::sort(k.begin(), k.end());
+          return k;
+        };
+        for (vtkIdType c = 0; c < all->GetNumberOfCells(); ++c)
+          ++count[key(c)];
+        vtkNew<vtkCellArray> outer;
+        for (vtkIdType c = 0; c < all->GetNumberOfCells(); ++c)
+          if (count[key(c)] == 1)
+            {
+              vtkIdType        n;
+              const vtkIdType *ids;
+              all->GetCellPoints(c, n, ids);
+              outer->InsertNextCell(n, ids);
+            }
+        auto p = vtkSmartPointer<vtkPolyData>::New();
+        p->SetPoints(all->GetPoints());
+        p->GetPointData()->ShallowCopy(all->GetPointData());
+        p->SetPolys(outer);
         return p;
       }
     throw InputError(path, "unknown geometry format '" + ext + "' (use .stl, .obj, .ply, .vtk, .vtp or .vtu)");
