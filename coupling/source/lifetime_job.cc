@@ -272,7 +272,10 @@ namespace abrade::coupling
       }
     knife_output.adopt(output_times);
     if (first_update == 1)
-      knife.write(knife_output, 0);
+      {
+        knife.write(knife_output, 0);
+        io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife.surface().as_polydata()); // the design
+      }
 
     std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
                                         "archard_volume", "swept_over_archard", "min_scaled_jacobian", "remeshed",
@@ -287,7 +290,8 @@ namespace abrade::coupling
     for (const auto &row : kept_rows)
       trajectory.raw_row(row);
     io::ProgressLine progress("lifetime", double(max_updates));
-    std::string end = "maximum updates reached";
+    std::string end         = "maximum updates reached";
+    bool        end_of_life = false; // an end-of-life criterion was met (not a target or a limit)
     for (long update = first_update; update <= max_updates; ++update)
       {
         // 1. DEM cycles on the current surface, averaged over the seeds
@@ -400,6 +404,7 @@ namespace abrade::coupling
         if (!r.worn_through.empty())
           {
             end = "worn through at update " + std::to_string(update);
+            end_of_life = true;
             break;
           }
         cycles += n;
@@ -457,16 +462,19 @@ namespace abrade::coupling
         if (dmax >= max_depth)
           {
             end = "maximum depth reached";
+            end_of_life = true;
             break;
           }
         if (max_recession > 0 && *std::max_element(recession.begin(), recession.end()) >= max_recession)
           {
             end = "maximum recession of a followed point reached";
+            end_of_life = true;
             break;
           }
         if (max_worn_mass > 0 && (volume0 - knife.volume()) * kp.density >= max_worn_mass)
           {
             end = "maximum worn mass reached";
+            end_of_life = true;
             break;
           }
         if (target_tonnes > 0 && cycles * tonnes_per_cycle >= target_tonnes)
@@ -491,8 +499,9 @@ namespace abrade::coupling
       if (wc.solid_model && !analytic)
         r["archard_coefficient"] = wc.wear.archard_coefficient;
     // the tonnes to end of life: where an end-of-life criterion was met, or extrapolated linearly
-    // from the depth rate so far (to the maximum depth) when the run stopped before one was
-    const bool reached = end != "maximum updates reached" && end.rfind("no wear", 0) != 0;
+    // from the depth rate so far (to the maximum depth) when the run stopped before one was (at
+    // the target tonnes, the maximum updates, or a surface that could not be remeshed)
+    const bool reached = end_of_life;
     r["predicted_tonnes_to_end_of_life"] =
       reached ? cycles * tonnes_per_cycle : (dmax > 0 ? cycles * tonnes_per_cycle * max_depth / dmax : 0.0);
     r["extrapolated"] = !reached;

@@ -138,10 +138,22 @@ namespace abrade::field
         }
     }
 
+    /// The plots zoom to where the scan differs most: the (u, v) box of the scan points whose
+    /// @p emphasis (measured depth, or |deviation|) exceeds half its largest, widened.
     void write_profiles(const CompareSettings &s, const Geometry &predicted, const Geometry &scan,
-                        const Geometry *reference, io::OutputDirectory &out)
+                        const Geometry *reference, const std::vector<double> &emphasis, io::OutputDirectory &out)
     {
       const char *axes = "xyz";
+      const int   u_axis = (s.profile_axis + 1) % 3, v_axis = (s.profile_axis + 2) % 3;
+      const double top = emphasis.empty() ? 0.0 : *std::max_element(emphasis.begin(), emphasis.end());
+      double       lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+      for (std::size_t i = 0; i < emphasis.size() && top > 0; ++i)
+        if (emphasis[i] > 0.5 * top)
+          {
+            const double *p = scan.data->GetPoint(vtkIdType(i));
+            lo[0] = std::min(lo[0], p[u_axis]), hi[0] = std::max(hi[0], p[u_axis]);
+            lo[1] = std::min(lo[1], p[v_axis]), hi[1] = std::max(hi[1], p[v_axis]);
+          }
       for (double at : s.profile_planes)
         {
           char name[64];
@@ -157,15 +169,21 @@ namespace abrade::field
           csv.close();
           std::ofstream gp(out.file(std::string(name) + ".gp"));
           const char    u = axes[(s.profile_axis + 1) % 3], v = axes[(s.profile_axis + 2) % 3];
+          if (lo[0] < hi[0] + 1e-300 && top > 0)
+            for (int k = 0; k < 2; ++k)
+              {
+                const double pad = 0.5 * (hi[k] - lo[k]) + 0.01;
+                gp << "set " << (k ? 'y' : 'x') << "range [" << 1000 * (lo[k] - pad) << ':' << 1000 * (hi[k] + pad) << "]\n";
+              }
           gp << "set terminal pngcairo size 800,800\nset output '" << name << ".png'\nset size ratio -1\nset grid\n"
              << "set xlabel '" << u << " [mm]'\nset ylabel '" << v << " [mm]'\nset title 'section " << axes[s.profile_axis]
-             << " = " << at << " m'\n"
-             << "plot '" << name << ".csv' using ($2*1000):($3*1000):(($4-$2)*1000):(($5-$3)*1000) every ::0 "
+             << " = " << at << " m (zoomed to where the scan differs most)'\n"
+             << "plot '" << name << ".csv' using (strcol(1) eq 'predicted' ? $2*1000 : 1/0):($3*1000):(($4-$2)*1000):(($5-$3)*1000) "
              << "with vectors nohead lw 2 lc rgb 'blue' title 'predicted' , '' using "
              << "(strcol(1) eq 'scan' ? $2*1000 : 1/0):($3*1000) with points pt 7 ps 0.3 lc rgb 'red' title 'scan'";
           if (reference)
             gp << ", '' using (strcol(1) eq 'design' ? $2*1000 : 1/0):($3*1000):(($4-$2)*1000):(($5-$3)*1000) "
-                  "with vectors nohead dt 2 lc rgb 'black' title 'design'";
+                  "with vectors nohead dt 2 lw 1.5 lc rgb 'black' title 'design'";
           gp << '\n';
           gp.close();
           if (std::system(("cd '" + out.root() + "' && gnuplot " + name + ".gp > /dev/null 2>&1").c_str()) != 0)
@@ -284,7 +302,11 @@ namespace abrade::field
             m << ',' << measured[i] << '\n';
           }
       }
-    write_profiles(s, predicted, scan, r.has_reference ? &reference : nullptr, out);
+    std::vector<double> emphasis = measured;
+    if (emphasis.empty())
+      for (double d : deviation)
+        emphasis.push_back(std::abs(d));
+    write_profiles(s, predicted, scan, r.has_reference ? &reference : nullptr, emphasis, out);
 
     io::Json json;
     json["predicted"] = s.predicted;
