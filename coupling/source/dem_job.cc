@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -45,6 +46,18 @@ namespace abrade::coupling
 
   } // namespace
 
+  namespace
+  {
+    /// The bed's top: the highest particle's top [m].
+    double bed_top(const dem::Simulation &sim)
+    {
+      double top = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < sim.particles().size(); ++i)
+        top = std::max(top, sim.particles().z[i] + sim.particles().radius[i]);
+      return top;
+    }
+  } // namespace
+
   bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
   {
     {
@@ -54,7 +67,8 @@ namespace abrade::coupling
         {
           io::ScopedTimer t(ctx.timers, "load bed");
           dem::load_bed(sim, bed);
-          ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.particles().size()) + " particles");
+          ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.particles().size()) +
+                       " particles, top at z = " + fmt(bed_top(sim), 4) + " m");
           sim.setup();
           return true;
         }
@@ -85,7 +99,8 @@ namespace abrade::coupling
         });
       }
       const double ke = sim.kinetic_energy() / std::max<std::size_t>(1, sim.particles().size());
-      ctx.log.line("Settled for " + fmt(sim.time()) + " s: kinetic energy " + fmt(ke) + " J per particle");
+      ctx.log.line("Settled for " + fmt(sim.time()) + " s: kinetic energy " + fmt(ke) + " J per particle, top at z = " +
+                   fmt(bed_top(sim), 4) + " m");
       if (c.settle_ke > 0 && ke > c.settle_ke)
         ctx.log.warning("the bed did not settle below " + fmt(c.settle_ke) +
                         " J per particle within Particles/Settling/Maximum time");
@@ -183,6 +198,16 @@ namespace abrade::coupling
         ph["duration"]        = duration;
         ph["steps"]           = steps;
         ph["particle_steps_per_second"] = rate;
+        ph["particles"]       = static_cast<long>(sim.particles().size());
+        if (c.payload_height)
+          {
+            double held = 0;
+            for (std::size_t i = 0; i < sim.particles().size(); ++i)
+              if (sim.particles().z[i] > *c.payload_height)
+                held += sim.particles().mass[i];
+            ph["mass_above_payload_height"] = held;
+            ctx.log.line("Phase " + name + ": " + fmt(held, 4) + " kg above the payload height");
+          }
         for (std::size_t w = 0; w < sim.n_walls(); ++w)
           {
             const dem::Vec3 mean = steps ? dem::Vec3(force_sum[w] / steps) : dem::Vec3::Zero();

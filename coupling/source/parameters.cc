@@ -226,6 +226,11 @@ namespace abrade::coupling
                       "[s] The operating cycle as named phases with durations, in order: "
                       "'name: duration, name: duration'. Walls take their velocity per phase "
                       "name (Wall NAME/Motion/Velocities); wear and forces are reported per phase.");
+    prm.declare_entry("Payload height", "", Anything(),
+                      "[m] Payload of a grab: at the end of every phase, the mass of the particles "
+                      "whose centre is above this height is reported (summary.json, per phase: "
+                      "mass_above_payload_height); empty: not reported. Set it above the pile, so "
+                      "that after hoisting it counts what the grab holds.");
     prm.leave_subsection();
 
     prm.enter_subsection("Particles");
@@ -273,9 +278,10 @@ namespace abrade::coupling
     for (const auto &name : lists.walls)
       {
         prm.enter_subsection("Wall " + name);
-        prm.declare_entry("Geometry", "box", Selection("box|plate|chisel knife|file|solid model"),
+        prm.declare_entry("Geometry", "box", Selection("box|plate|chisel knife|clamshell shell|file|solid model"),
                           "Wall geometry: box (open-top container, inward normals), plate (a "
                           "rectangle), chisel knife (the knife-bed reference knife, see cases.md), "
+                          "clamshell shell (one shell of a grab: Shell ... below), "
                           "file (a surface mesh), or solid model (the surface of the FEM knife of "
                           "subsection Knife; lifetime runs move it with its wear).");
         prm.declare_entry("File", "", Anything(),
@@ -295,6 +301,17 @@ namespace abrade::coupling
         prm.declare_entry("Knife thickness", "0.03", Double(0, huge), "[m] Chisel knife: thickness along Y.");
         prm.declare_entry("Bevel height", "0.04", Double(0, huge),
                           "[m] Chisel knife: height of the bevel that forms the bottom edge.");
+        prm.declare_entry("Shell radius", "0.6", Double(0, huge),
+                          "[m] Clamshell shell: radius of its bottom about the hinge (the hinge is the "
+                          "shell's origin, its axis along Y; Offset places it).");
+        prm.declare_entry("Shell width", "1", Double(0, huge), "[m] Clamshell shell: width along the hinge (Y).");
+        prm.declare_entry("Shell sector", "90", Double(1, 180),
+                          "[deg] Clamshell shell: angle its bottom spans, from the lip. Range: [1, 180].");
+        prm.declare_entry("Shell opening", "0", Double(0, 180),
+                          "[deg] Clamshell shell: angle of its lip from straight down at t = 0 (0: "
+                          "closed). Range: [0, 180].");
+        prm.declare_entry("Shell side", "+x", Selection("+x|-x"),
+                          "Clamshell shell: which way it opens (the other shell of the grab: the other side).");
         declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
         prm.declare_entry("Maximum edge length", "0", Double(0, huge),
                           "[m] Refine the mesh until no triangle edge is longer than this (per-"
@@ -351,6 +368,15 @@ namespace abrade::coupling
         prm.declare_entry("Free degrees of freedom", "", List(Selection("tx|ty|tz|rx|ry|rz")),
                           "Rigid body: which of tx, ty, tz, rx, ry, rz move freely.");
         prm.declare_entry("Gravity", "true", Bool(), "Rigid body: whether gravity acts on it.");
+        prm.declare_entry("Body", "", Anything(),
+                          "Rigid body: walls with the same Body name move as one body (a grab's two "
+                          "shells): their forces, torques about the common Centre, masses and "
+                          "inertias add up. They need the same Type, Centre, free degrees of freedom "
+                          "and free phases. Empty: a body of its own.");
+        prm.declare_entry("Free in phases", "", Anything(),
+                          "Rigid body: the phases in which the free degrees of freedom are free, "
+                          "comma separated; in the others the wall follows Velocities and Angular "
+                          "velocities entirely (a grab hoisted by its crane). Empty: all phases.");
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -461,6 +487,17 @@ namespace abrade::coupling
         const auto colon = item.find(':');
         c.phases.emplace_back(trim(item.substr(0, colon)), std::stod(item.substr(colon + 1)));
       }
+    if (const std::string h = prm.get("Payload height"); !h.empty())
+      {
+        try
+          {
+            c.payload_height = std::stod(h);
+          }
+        catch (const std::exception &)
+          {
+            f.fail({"Simulation"}, "Payload height", "'" + h + "' is not a number");
+          }
+      }
     prm.leave_subsection();
     if (!(s.domain_min.array() < s.domain_max.array()).all())
       f.fail({"Simulation"}, "Domain max", "must exceed Domain min in x, y and z");
@@ -522,6 +559,15 @@ namespace abrade::coupling
           }
         else if (geometry == "solid model")
           w.mesh = dem::TriangleMesh(); // filled from the FEM knife by the job
+        else if (geometry == "clamshell shell")
+          {
+            const double h = prm.get_double("Maximum edge length");
+            w.mesh = dem::primitives::clamshell_shell(prm.get_double("Shell radius"), prm.get_double("Shell width"),
+                                                      prm.get_double("Shell sector") * M_PI / 180,
+                                                      prm.get_double("Shell opening") * M_PI / 180,
+                                                      prm.get("Shell side") == "+x" ? 1 : -1,
+                                                      h > 0 ? h : 0.1 * prm.get_double("Shell radius"));
+          }
         else if (geometry == "chisel knife")
           w.mesh = dem::primitives::chisel_knife(prm.get_double("Knife length"), prm.get_double("Knife height"),
                                                  prm.get_double("Knife thickness"), prm.get_double("Bevel height"));
@@ -587,6 +633,13 @@ namespace abrade::coupling
           m.free[std::find(dofs.begin(), dofs.end(), d) - dofs.begin()] = true;
         if (m.kind == dem::WallMotion::Kind::rigid_body && !(m.mass > 0))
           f.fail(mp, "Mass", "a rigid-body wall needs a positive mass");
+        m.body = trim(prm.get("Body"));
+        for (const auto &phase : split_string_list(prm.get("Free in phases")))
+          {
+            if (std::none_of(c.phases.begin(), c.phases.end(), [&](const auto &p) { return p.first == phase; }))
+              f.fail(mp, "Free in phases", "'" + phase + "' is not a phase of Simulation/Phases");
+            m.free_phases.insert(phase);
+          }
         prm.leave_subsection();
         prm.leave_subsection();
         c.walls.push_back(std::move(wc));

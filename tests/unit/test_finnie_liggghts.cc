@@ -122,7 +122,7 @@ TEST(FinnieAgainstLiggghts, SameImpactSameWearPerTriangle)
   const std::string dir = (std::filesystem::temp_directory_path() / "abrade_finnie_peer").string();
   // a glancing impact (angle 31 deg, Finnie's cos^2/3 branch) and a flatter one (14 deg, the
   // sin(2g) - 3 sin^2(g) branch)
-  for (const auto [vx, vz] : {std::pair{2.0, -1.2}, std::pair{3.0, -0.75}})
+  for (const auto &[vx, vz] : {std::pair{2.0, -1.2}, std::pair{3.0, -0.75}})
     {
       const auto peer = liggghts_wear(dir, vx, vz);
       ASSERT_EQ(peer.size(), 2u) << "could not read LIGGGHTS' wear dump in " << dir;

@@ -120,10 +120,38 @@ namespace abrade::dem
       throw InputError("wall '" + w.name + "'", "mesh has no triangles");
     if (w.motion.kind == WallMotion::Kind::rigid_body && !(w.motion.mass > 0))
       throw InputError("wall '" + w.name + "'", "a rigid-body wall needs a positive mass");
+    if (!w.motion.body.empty())
+      for (const Wall &o : walls)
+        if (o.motion.body == w.motion.body &&
+            (o.motion.kind != w.motion.kind || o.motion.free != w.motion.free || o.motion.centre != w.motion.centre ||
+             o.motion.free_phases != w.motion.free_phases))
+          throw InputError("wall '" + w.name + "'", "walls of one body ('" + w.motion.body + "', with '" + o.name +
+                                                       "') need the same motion type, centre, free degrees of freedom "
+                                                       "and free phases");
     w.initialise();
     walls.push_back(std::move(w));
     is_set_up = false;
     return static_cast<int>(walls.size()) - 1;
+  }
+
+  void Simulation::accelerate_walls(double dt)
+  {
+    // a body's walls share its loads, mass and inertia (checked in add_wall: same centre, same
+    // free degrees of freedom); each gets the same velocity change
+    for (std::size_t a = 0; a < walls.size(); ++a)
+      {
+        Wall &w = walls[a];
+        if (!w.free_now())
+          continue;
+        Vec3   f = w.force, t = w.torque, inertia = w.motion.inertia;
+        double mass = w.motion.mass;
+        if (!w.motion.body.empty())
+          for (std::size_t b = 0; b < walls.size(); ++b)
+            if (b != a && walls[b].motion.body == w.motion.body)
+              f += walls[b].force, t += walls[b].torque, mass += walls[b].motion.mass,
+                inertia += walls[b].motion.inertia;
+        w.accelerate(config.gravity, dt, f, t, mass, inertia);
+      }
   }
 
   int Simulation::wall_index(const std::string &name) const
@@ -945,8 +973,7 @@ namespace abrade::dem
         if (ii > 0)
           P.wx[i] += h * P.tx[i] * ii, P.wy[i] += h * P.ty[i] * ii, P.wz[i] += h * P.tz[i] * ii;
       }
-    for (auto &w : walls)
-      w.accelerate(config.gravity, dt);
+    accelerate_walls(dt);
 
     // built-in per-triangle impulses, then the plug-ins
     m.log.for_each([&](const WallContactRecord &r) {

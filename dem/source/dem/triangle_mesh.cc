@@ -281,5 +281,35 @@ namespace abrade::dem
         }
       return m;
     }
+
+    TriangleMesh clamshell_shell(double R, double W, double sector, double opening, int side, double max_edge)
+    {
+      // a point at angle a from straight down (towards side x), at y
+      auto at = [&](double a, double y) { return Vec3(side * R * std::sin(a), y, -R * std::cos(a)); };
+      const int    n_arc = std::max(2, int(std::ceil(R * sector / max_edge)));
+      const int    n_w   = std::max(1, int(std::ceil(W / max_edge)));
+      TriangleMesh m;
+      for (int i = 0; i <= n_arc; ++i) // the bottom: (n_arc + 1) x (n_w + 1) grid
+        for (int j = 0; j <= n_w; ++j)
+          m.vertices.push_back(at(opening + sector * i / n_arc, -W / 2 + W * j / n_w));
+      auto id = [&](int i, int j) { return i * (n_w + 1) + j; };
+      for (int i = 0; i < n_arc; ++i)
+        for (int j = 0; j < n_w; ++j)
+          {
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+          }
+      for (const double y : {-W / 2, W / 2}) // side plates: fans from the hinge
+        {
+          const int hub = int(m.vertices.size());
+          m.vertices.emplace_back(0, y, 0);
+          const int j = y < 0 ? 0 : n_w;
+          for (int i = 0; i < n_arc; ++i)
+            m.triangles.push_back({hub, id(i, j), id(i + 1, j)});
+        }
+      m.weld(1e-9 * R);
+      m.refine(max_edge); // the side fans' long edges
+      return m;
+    }
   } // namespace primitives
 } // namespace abrade::dem

@@ -26,9 +26,10 @@ namespace abrade::dem
     PhaseVelocity pv;
     if (auto it = motion.phases.find(phase); it != motion.phases.end())
       pv = it->second;
+    free_in_phase = motion.free_phases.empty() || motion.free_phases.count(phase) > 0;
     for (int d = 0; d < 3; ++d)
       {
-        const bool rb = motion.kind == WallMotion::Kind::rigid_body;
+        const bool rb = free_now();
         if (!(rb && motion.free[d]))
           velocity[d] = pv.velocity[d];
         if (!(rb && motion.free[3 + d]))
@@ -53,16 +54,16 @@ namespace abrade::dem
       }
   }
 
-  void Wall::accelerate(const Vec3 &gravity, double dt)
+  void Wall::accelerate(const Vec3 &gravity, double dt, const Vec3 &f, const Vec3 &t, double mass, const Vec3 &inertia)
   {
-    if (motion.kind != WallMotion::Kind::rigid_body)
+    if (!free_now())
       return;
     for (int d = 0; d < 3; ++d)
       {
         if (motion.free[d])
-          velocity[d] += dt * (force[d] / motion.mass + (motion.gravity ? gravity[d] : 0.0));
-        if (motion.free[3 + d] && motion.inertia[d] > 0)
-          angular_velocity[d] += dt * torque[d] / motion.inertia[d];
+          velocity[d] += dt * (f[d] / mass + (motion.gravity ? gravity[d] : 0.0));
+        if (motion.free[3 + d] && inertia[d] > 0)
+          angular_velocity[d] += dt * t[d] / inertia[d];
       }
   }
 

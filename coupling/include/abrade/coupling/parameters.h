@@ -7,6 +7,7 @@
 #include <abrade/dem/simulation.h>
 #include <abrade/dem/wear.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,7 @@ namespace abrade::coupling
     double                   settle_ke = 1e-4, settle_max_time = 1;
     std::string              bed_file;
     std::vector<Phase>       phases;
+    std::optional<double>    payload_height; ///< report the mass above it after every phase
     struct WallCase
     {
       dem::Wall        wall;

@@ -125,6 +125,8 @@ namespace abrade::dem
     std::unique_ptr<Impl> impl;
 
     void build_neighbour_lists();
+    /// Rigid-body walls: velocity updates from this step's loads (a body's walls together).
+    void accelerate_walls(double dt);
     bool needs_rebuild() const;
     void compute_forces();
     template <bool rotation>

@@ -55,5 +55,14 @@ namespace abrade::dem
     /// length L (X), height H (Z), thickness T (Y), its bottom edge a chisel over height B; the
     /// origin is the middle of the bottom edge.
     TriangleMesh chisel_knife(double length, double height, double thickness, double bevel);
+    /// One shell of a clamshell grab (shared/reference/cases.md), a thin surface: the hinge axis
+    /// is the y axis through the origin; the shell is a cylindrical bottom of radius R about it,
+    /// @p width along y, and two side plates (circular sectors from the hinge). Its lip (the
+    /// knife's place) is at angle @p opening from straight down, towards +x for side +1, -x for
+    /// side -1; the bottom spans @p sector radians beyond the lip, away from the other shell.
+    /// Closed (opening 0), two mirrored shells meet under the hinge and hold a volume of
+    /// sector R^2 width (both together).
+    TriangleMesh clamshell_shell(double radius, double width, double sector, double opening, int side,
+                                 double max_edge);
   } // namespace primitives
 } // namespace abrade::dem

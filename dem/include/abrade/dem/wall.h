@@ -8,6 +8,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,13 @@ namespace abrade::dem
     Vec3                 inertia = Vec3::Zero();  ///< principal moments about centre [kg m^2]
     std::array<bool, 6>  free{};                  ///< tx, ty, tz, rx, ry, rz
     bool                 gravity = true;          ///< does gravity act on the body
+    /// Walls with the same (non-empty) body name move as one rigid body: their forces and
+    /// torques (about their common centre) add up, as do their masses and inertias (a grab's
+    /// two shells on one hinge, free to sink or rise together).
+    std::string           body;
+    /// Phases in which the free degrees of freedom are free (empty: all); in the others the
+    /// wall follows its velocity table in every degree of freedom (a grab hoisted by its crane).
+    std::set<std::string> free_phases;
   };
 
   struct Wall
@@ -58,6 +66,7 @@ namespace abrade::dem
     std::vector<double> at_build;  ///< vertex positions at the last neighbour-list build
 
     // --- loads (from particles, this step) ---
+    bool free_in_phase = true;  ///< set by set_phase
     Vec3 force  = Vec3::Zero(); ///< total force on the wall [N]
     Vec3 torque = Vec3::Zero(); ///< about the current centre [N m]
     std::vector<double> normal_impulse;     ///< per triangle, accumulated |F_n| dt [N s]
@@ -76,8 +85,11 @@ namespace abrade::dem
     void set_phase(const std::string &phase);
     /// Advances the pose by dt with the current (angular) velocity and updates vertex positions.
     void advance(double dt);
-    /// Rigid body: velocity update from this step's particle loads (and gravity).
-    void accelerate(const Vec3 &gravity, double dt);
+    /// Rigid body: velocity update from the loads @p f and @p t (this step's, of this wall or of
+    /// its whole body) on @p mass and @p inertia, and gravity.
+    void accelerate(const Vec3 &gravity, double dt, const Vec3 &f, const Vec3 &t, double mass, const Vec3 &inertia);
+    /// Whether the free degrees of freedom are free in the current phase.
+    bool free_now() const { return motion.kind == WallMotion::Kind::rigid_body && free_in_phase; }
     /// Largest vertex displacement since the last neighbour-list build.
     double max_displacement_since_build() const;
     void   mark_build() { at_build = current; }

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The coarse grab cycle end to end (cases/grab/grab_coarse.prm): no particle is lost in any
+# phase (mass conservation), the grab body sinks into the pile and the closing lifts or lowers
+# it as the material resists (the shells move as one body), the payload after hoisting is a
+# plausible fraction of the closed shells' capacity times the pile's bulk density (20 ... 110 %
+# of 0.151 m^3 x ~2200 kg/m^3: a coarse sanity bound, the measured value is in docs/grab.md),
+# and the shells' wear is reported per phase.
+#   check_grab.sh ABRADE PRM OUTDIR
+set -euo pipefail
+abrade=$1 prm=$2 out=$3
+rm -rf "$out"
+"$abrade" run "$prm" --output "$out" --quiet > /dev/null
+! grep -q "left the domain" "$out/log.txt"
+python3 - "$out" <<'PY'
+import csv, json, sys, os
+out = sys.argv[1]
+s = json.load(open(os.path.join(out, "summary.json")))["results"]
+phases = s["phases"]
+counts = {p: v["particles"] for p, v in phases.items()}
+assert len(set(counts.values())) == 1, f"particles lost: {counts}"
+payload = phases["hoisting"]["mass_above_payload_height"]
+capacity = 3.14159265 / 2 * 0.4**2 * 0.6 * 2200
+assert 0.2 * capacity < payload < 1.1 * capacity, f"payload {payload} kg against a capacity of {capacity:.0f} kg"
+z = {}
+for row in csv.DictReader(open(os.path.join(out, "walls", "right_forces.csv"))):
+    z.setdefault(row["phase"], []).append(float(row["cz"]))
+left = [float(r["cz"]) for r in csv.DictReader(open(os.path.join(out, "walls", "left_forces.csv")))]
+right = [float(r["cz"]) for r in csv.DictReader(open(os.path.join(out, "walls", "right_forces.csv")))]
+assert max(abs(a - b) for a, b in zip(left, right)) < 1e-12, "the shells parted"
+assert z["sinking"][-1] < z["sinking"][0], "the grab did not sink into the pile"
+wear = {r["phase"]: float(r["archard_volume"]) for r in csv.DictReader(open(os.path.join(out, "walls", "right_wear.csv")))}
+assert wear["closing"] > 0 and wear["total"] > 0
+share = {p: wear[p] / wear["total"] for p in ("descent", "sinking", "closing", "hoisting", "opening")}
+print(f"ok: payload {payload:.1f} kg ({100 * payload / capacity:.0f} % of {capacity:.0f} kg); hinge "
+      f"{z['sinking'][0]:.3f} -> {z['sinking'][-1]:.3f} m sinking, -> {z['closing'][-1]:.3f} m closing; "
+      "wear share " + ", ".join(f"{p} {100 * v:.1f} %" for p, v in share.items()))
+PY
