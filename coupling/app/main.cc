@@ -15,6 +15,7 @@
 #include <abrade/common/progress.h>
 #include <abrade/common/version.h>
 #include <abrade/coupling/jobs.h>
+#include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/sweep.h>
@@ -246,8 +247,9 @@ int main(int argc, char **argv)
           if (cl.output.empty())
             throw InputError("command line", "export-walls needs --output DIR");
           coupling::ParameterFile p(cl.file, cl.sets);
-          const auto               c = coupling::read_dem_case(p);
+          auto                     c = coupling::read_dem_case(p);
           io::OutputDirectory      out(cl.output);
+          coupling::fill_solid_model_walls(c, p, out.root()); // the FEM knife's surface, placed
           for (const auto &w : c.walls)
             {
               dem::write_stl(out.file(w.wall.name + ".stl"), w.wall.mesh);

@@ -11,6 +11,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/jobs.h>
+#include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/common/csv_writer.h>
 #include <abrade/dem/generation.h>
@@ -115,7 +116,8 @@ namespace abrade::coupling
 
   void run_dem_job(JobContext &ctx)
   {
-    DemCase         c = read_dem_case(ctx.parameters);
+    DemCase c = read_dem_case(ctx.parameters);
+    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"));
     dem::Simulation sim(c.settings);
     build_simulation(c, sim);
 

@@ -60,6 +60,37 @@ namespace abrade::coupling
     return kp;
   }
 
+  dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc)
+  {
+    dem::TriangleMesh m;
+    for (const auto &p : surface.vertices)
+      m.vertices.push_back(wc.rotation * dem::Vec3(p[0], p[1], p[2]) + wc.offset);
+    for (const auto &t : surface.triangles)
+      m.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
+    return m;
+  }
+
+  void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory)
+  {
+    if (std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
+      return;
+    init_mpi_once();
+    const KnifeParameters    kp = read_knife_parameters(file);
+    dealii::Triangulation<3> tria;
+    if (!kp.from_file)
+      kp.geometry.mesh(tria, kp.mesh_size, directory + "/knife.msh");
+    else
+      {
+        if (kp.file.empty())
+          file.fail({"Knife"}, "File", "Geometry = file needs a solid file");
+        fem::read_solid(kp.file, kp.mesh_size, tria, fem::KnifeGeometry::wearable_boundary);
+      }
+    const fem::SolidSurface surface = fem::extract_surface(tria);
+    for (auto &wc : c.walls)
+      if (wc.solid_model)
+        wc.wall.mesh = place_surface(surface, wc);
+  }
+
   void init_mpi_once()
   {
     // PETSc and the FEM need MPI; a single process here

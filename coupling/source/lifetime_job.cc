@@ -46,24 +46,27 @@ namespace abrade::coupling
 {
   namespace
   {
-    dem::TriangleMesh to_dem_mesh(const fem::SolidSurface &s, const dem::Vec3 &offset)
+    /// What one DEM cycle gives the loop.
+    struct CycleResult
     {
-      dem::TriangleMesh m;
-      for (const auto &p : s.vertices)
-        m.vertices.emplace_back(p[0] + offset[0], p[1] + offset[1], p[2] + offset[2]);
-      for (const auto &t : s.triangles)
-        m.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
-      return m;
-    }
+      std::vector<double> per_triangle; ///< Archard volume per knife triangle, mean of the knife walls
+      std::vector<double> per_phase;    ///< the same, summed over the knife, per phase
+      double              r_max   = 0;  ///< largest particle radius
+      double              payload = 0;  ///< [kg] most mass above the payload height at a phase's end
+    };
 
-    /// One DEM cycle on the current knife; returns the knife's per-triangle Archard volume.
-    std::vector<double> run_cycle(DemCase c, const dem::TriangleMesh &knife_mesh, int seed, JobContext &ctx,
-                                  std::size_t &knife_index, double &r_max, std::vector<double> &per_phase)
+    /// One DEM cycle on the current knife surface, placed on every knife wall (a grab carries
+    /// two: their wear is averaged, triangle by triangle, as two more replicates).
+    CycleResult run_cycle(DemCase c, const fem::SolidSurface &surface, int seed, JobContext &ctx)
     {
       c.fill.seed = static_cast<std::uint64_t>(seed);
-      for (auto &wc : c.walls)
-        if (wc.solid_model)
-          wc.wall.mesh = knife_mesh;
+      std::vector<std::size_t> knives;
+      for (std::size_t w = 0; w < c.walls.size(); ++w)
+        if (c.walls[w].solid_model)
+          {
+            c.walls[w].wall.mesh = place_surface(surface, c.walls[w]);
+            knives.push_back(w);
+          }
       c.settings.stop_on_error = false; // a cycle reports overlaps and lost particles, and goes on
       dem::Simulation sim(c.settings);
       build_simulation(c, sim);
@@ -76,19 +79,34 @@ namespace abrade::coupling
         laws.push_back(wc.wear);
       auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
       sim.add_hook(wear);
+      CycleResult r;
       for (const auto &[name, duration] : c.phases)
-        sim.run_phase(name, duration);
-      for (std::size_t w = 0; w < c.walls.size(); ++w)
-        if (c.walls[w].solid_model)
-          knife_index = w;
-      r_max = 0;
-      for (double r : sim.particles().radius)
-        r_max = std::max(r_max, r);
-      per_phase.clear();
-      for (const auto &phase : c.phases)
-        per_phase.push_back(wear->total(knife_index, dem::WearRecorder::archard_volume, phase.first));
-      return wear->values(knife_index, dem::WearRecorder::archard_volume);
+        {
+          sim.run_phase(name, duration);
+          if (c.payload_height)
+            {
+              double held = 0;
+              for (std::size_t i = 0; i < sim.particles().size(); ++i)
+                if (sim.particles().z[i] > *c.payload_height)
+                  held += sim.particles().mass[i];
+              r.payload = std::max(r.payload, held);
+            }
+        }
+      for (double radius : sim.particles().radius)
+        r.r_max = std::max(r.r_max, radius);
+      r.per_triangle.assign(surface.triangles.size(), 0.0);
+      r.per_phase.assign(c.phases.size(), 0.0);
+      for (std::size_t k : knives)
+        {
+          const auto v = wear->values(k, dem::WearRecorder::archard_volume);
+          for (std::size_t t = 0; t < v.size(); ++t)
+            r.per_triangle[t] += v[t] / knives.size();
+          for (std::size_t p = 0; p < c.phases.size(); ++p)
+            r.per_phase[p] += wear->total(k, dem::WearRecorder::archard_volume, c.phases[p].first) / knives.size();
+        }
+      return r;
     }
+
     /// The knife's cross-sections at x = f L: segments (y, z) where surface triangles cross the
     /// plane, appended per update (blank-line separated blocks) to knife/profile_F.csv.
     void write_profiles(const fem::SolidSurface &s, double length, const std::vector<double> &planes, long update,
@@ -163,6 +181,7 @@ namespace abrade::coupling
       ctx.parameters.fail({"Knife"}, "Geometry", "lifetime runs use the parametric knife for now");
     prm.enter_subsection("Lifetime");
     const double tonnes_per_cycle = prm.get_double("Tonnes per cycle");
+    const bool   payload_from_dem = tonnes_per_cycle == 0; // the DEM's payload (a grab)
     std::vector<int> seeds;
     for (const auto &s : dealii::Utilities::split_string_list(prm.get("Seeds")))
       seeds.push_back(std::stoi(s));
@@ -186,6 +205,9 @@ namespace abrade::coupling
     const bool   analytic      = prm.get("Wear source") == "analytic";
     const std::string rate_expression = prm.get("Analytic wear rate");
     prm.leave_subsection();
+    if (payload_from_dem && !analytic && !c.payload_height)
+      ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
+                          "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");
     if (!analytic && std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
       ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
     dealii::FunctionParser<3> analytic_rate;
@@ -214,10 +236,6 @@ namespace abrade::coupling
     ks.work_directory = ctx.output.subdirectory("knife/work");
     fem::KnifeModel knife(kp.geometry, ks);
     fem::SolidOutput knife_output(ctx.output.subdirectory("knife"), "knife");
-    dem::Vec3    offset  = dem::Vec3::Zero();
-    for (const auto &wc : c.walls)
-      if (wc.solid_model)
-        offset = wc.offset;
 
     // --- resume: the last checkpoint, and the outputs cut back to it ---
     const std::string ckpt_dir  = ctx.output.subdirectory("checkpoint");
@@ -225,6 +243,7 @@ namespace abrade::coupling
     const std::string hash      = io::fnv1a_hex(ctx.parameters.canonical_text());
     long              first_update = 1;
     long        cycles = 0;
+    double      tonnes = 0; // handled so far
     double      archard_total = 0;
     std::vector<double> seed_volume;   // Archard volume per cycle of each seed (this update)
     std::vector<double> phase_volume;  // Archard volume per cycle and phase (seed mean)
@@ -239,7 +258,7 @@ namespace abrade::coupling
         std::ifstream in(state_file);
         std::string   saved_hash;
         long          done = 0;
-        in >> saved_hash >> done >> cycles >> archard_total >> relative_spread >> spread_samples >>
+        in >> saved_hash >> done >> cycles >> tonnes >> archard_total >> relative_spread >> spread_samples >>
           smoothing >> volume0;
         if (!in)
           throw InputError(state_file, "corrupt lifetime checkpoint");
@@ -284,6 +303,7 @@ namespace abrade::coupling
       columns.push_back("archard_volume_" + phase.first); // this update's wear per phase of the cycle
     for (std::size_t p = 1; p < recession_points.size(); ++p)
       columns.push_back("point_recession_" + std::to_string(p + 1));
+    columns.push_back("tonnes_per_cycle"); // nominal, or the DEM's payload (Tonnes per cycle = 0)
     io::CsvWriter trajectory(ctx.output.file("trajectory.csv"), columns);
     ctx.log.line("Lifetime: knife of " + std::to_string(knife.triangulation().n_active_cells()) + " cells, " +
                  std::to_string(seeds.size()) + " bed seed(s) per update");
@@ -296,10 +316,9 @@ namespace abrade::coupling
       {
         // 1. DEM cycles on the current surface, averaged over the seeds
         const fem::SolidSurface &surface = knife.surface();
-        const dem::TriangleMesh  mesh    = to_dem_mesh(surface, offset);
         std::vector<double>      per_triangle(surface.triangles.size(), 0.0);
-        std::size_t              knife_index = 0;
         double                   r_max       = 0;
+        double                   update_tonnes_per_cycle = tonnes_per_cycle;
         seed_volume.clear();
         phase_volume.assign(c.phases.size(), 0.0);
         if (analytic)
@@ -319,15 +338,26 @@ namespace abrade::coupling
         else
         {
           io::ScopedTimer t(ctx.timers, "dem cycles");
+          double          payload = 0;
           for (int seed : seeds)
             {
-              std::vector<double> per_phase;
-              const auto v = run_cycle(c, mesh, seed, ctx, knife_index, r_max, per_phase);
-              for (std::size_t p = 0; p < per_phase.size(); ++p)
-                phase_volume[p] += per_phase[p] / seeds.size();
-              for (std::size_t t = 0; t < v.size(); ++t)
-                per_triangle[t] += v[t] / seeds.size();
-              seed_volume.push_back(std::accumulate(v.begin(), v.end(), 0.0));
+              const CycleResult cr = run_cycle(c, surface, seed, ctx);
+              for (std::size_t p = 0; p < cr.per_phase.size(); ++p)
+                phase_volume[p] += cr.per_phase[p] / seeds.size();
+              for (std::size_t t = 0; t < cr.per_triangle.size(); ++t)
+                per_triangle[t] += cr.per_triangle[t] / seeds.size();
+              seed_volume.push_back(std::accumulate(cr.per_triangle.begin(), cr.per_triangle.end(), 0.0));
+              r_max = cr.r_max;
+              payload += cr.payload / seeds.size();
+            }
+          if (payload_from_dem)
+            {
+              update_tonnes_per_cycle = payload / 1000;
+              if (!(update_tonnes_per_cycle > 0))
+                {
+                  end = "no payload: nothing above Simulation/Payload height at the end of any phase";
+                  break;
+                }
             }
         }
         if (smoothing <= 0 && !analytic)
@@ -428,33 +458,35 @@ namespace abrade::coupling
         // the recession of the followed points (the surface points that were there on the fresh knife)
         const std::vector<double> recession = knife.recession_at(recession_points);
         const double update_spread = seed_volume.size() > 1 ? relative_spread_last : 0.0;
-        std::vector<double> row = {double(update), double(cycles), cycles * tonnes_per_cycle, dmax, dmean,
+        tonnes += n * update_tonnes_per_cycle;
+        std::vector<double> row = {double(update), double(cycles), tonnes, dmax, dmean,
                                    volume0 - knife.volume(), (volume0 - knife.volume()) * kp.density, n * archard_cycle,
                                    swept / (n * archard_cycle), r.quality.min_scaled_jacobian, r.remeshed ? 1.0 : 0.0,
                                    recession[0], update_spread};
         for (double pv : phase_volume)
           row.push_back(n * pv);
         row.insert(row.end(), recession.begin() + 1, recession.end());
+        row.push_back(update_tonnes_per_cycle);
         trajectory.row(row);
         trajectory.flush();
-        knife.write(knife_output, cycles * tonnes_per_cycle);
+        knife.write(knife_output, tonnes);
         char stl[64];
         std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
         io::write_stl(ctx.output.file(stl), knife.surface().as_polydata());
         std::ostringstream s;
-        s << "update " << update << ": " << n << " cycles (" << cycles * tonnes_per_cycle << " t), max depth "
+        s << "update " << update << ": " << n << " cycles (" << tonnes << " t), max depth "
           << dmax << " m, swept/Archard volume " << swept / (n * archard_cycle)
           << (r.remeshed ? ", remeshed" : "");
         ctx.log.line(s.str());
         progress.update(double(update), "update " + std::to_string(update) + "/" + std::to_string(max_updates) + ", " +
-                                          std::to_string(long(cycles * tonnes_per_cycle)) + " t");
+                                          std::to_string(long(tonnes)) + " t");
 
         // 6. checkpoint: written aside, then renamed, so a kill never leaves half of one
         knife.save(ckpt_dir + "/knife.ckpt.tmp");
         {
           std::ofstream state(state_file + ".tmp");
           state.precision(17);
-          state << hash << ' ' << update << ' ' << cycles << ' ' << archard_total << ' '
+          state << hash << ' ' << update << ' ' << cycles << ' ' << tonnes << ' ' << archard_total << ' '
                 << relative_spread << ' ' << spread_samples << ' ' << smoothing << ' ' << volume0 << '\n';
         }
         std::filesystem::rename(ckpt_dir + "/knife.ckpt.tmp", ckpt_dir + "/knife.ckpt");
@@ -477,7 +509,7 @@ namespace abrade::coupling
             end_of_life = true;
             break;
           }
-        if (target_tonnes > 0 && cycles * tonnes_per_cycle >= target_tonnes)
+        if (target_tonnes > 0 && tonnes >= target_tonnes)
           {
             end = "target tonnes reached";
             break;
@@ -489,7 +521,7 @@ namespace abrade::coupling
     io::Json    &r    = ctx.results["lifetime"];
     r["end"]          = end;
     r["cycles"]       = cycles;
-    r["tonnes"]       = cycles * tonnes_per_cycle;
+    r["tonnes"]       = tonnes;
     r["max_depth"]    = dmax;
     r["worn_volume"]  = volume0 - knife.volume();
     r["worn_mass"]    = (volume0 - knife.volume()) * kp.density;
@@ -503,7 +535,7 @@ namespace abrade::coupling
     // the target tonnes, the maximum updates, or a surface that could not be remeshed)
     const bool reached = end_of_life;
     r["predicted_tonnes_to_end_of_life"] =
-      reached ? cycles * tonnes_per_cycle : (dmax > 0 ? cycles * tonnes_per_cycle * max_depth / dmax : 0.0);
+      reached ? tonnes : (dmax > 0 ? tonnes * max_depth / dmax : 0.0);
     r["extrapolated"] = !reached;
     // uncertainty from the replicate beds: the wear rate's relative spread carries to the life
     const double spread = spread_samples ? relative_spread / spread_samples : 0.0;

@@ -135,7 +135,10 @@ namespace abrade::coupling
 
     prm.enter_subsection("Lifetime");
     prm.declare_entry("Tonnes per cycle", "10", Double(0, huge),
-                      "[t] Material handled per operating cycle (the tonnes axis of the trajectory). Range: >= 0.");
+                      "[t] Material handled per operating cycle (the tonnes axis of the trajectory); 0: "
+                      "the DEM's payload, the most mass above Simulation/Payload height at the end of a "
+                      "phase, measured at every update (a grab: a knife that burrows worse takes less). "
+                      "Range: >= 0.");
     prm.declare_entry("Seeds", "1", List(Integer(0)),
                       "Bed seeds of the replicate DEM cycles run at every update; their wear is "
                       "averaged (one settled bed per seed, saved and reused).");
@@ -312,6 +315,14 @@ namespace abrade::coupling
                           "closed). Range: [0, 180].");
         prm.declare_entry("Shell side", "+x", Selection("+x|-x"),
                           "Clamshell shell: which way it opens (the other shell of the grab: the other side).");
+        prm.declare_entry("Knife mount", "", Anything(),
+                          "Solid model: the name of a clamshell shell wall whose lip carries this "
+                          "knife. The knife (subsection Knife) lies along the shell's width, its edge "
+                          "'Knife protrusion' beyond the lip, its height along the shell's bottom, and "
+                          "it moves with the shell (the shell's Motion is used; this wall's own Motion "
+                          "and Offset are ignored). Empty: placed by Offset.");
+        prm.declare_entry("Knife protrusion", "0.02", Double(0, huge),
+                          "[m] Mounted knife: how far its edge stands beyond the shell's lip. Range: >= 0.");
         declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
         prm.declare_entry("Maximum edge length", "0", Double(0, huge),
                           "[m] Refine the mesh until no triangle edge is longer than this (per-"
@@ -458,6 +469,46 @@ namespace abrade::coupling
     }
   } // namespace
 
+  namespace
+  {
+    /// Places every mounted knife on its shell's lip and gives it the shell's motion (one rigid
+    /// body with it). Knife frame: x along the length from 0, y across the thickness, z from
+    /// the edge up; on the shell: x along the hinge (y), z along the shell's bottom from the lip
+    /// inwards, the edge 'Knife protrusion' beyond the lip.
+    void mount_knives(ParameterFile &f, DemCase &c)
+    {
+      auto &prm = f.handler();
+      prm.enter_subsection("Knife");
+      const double length = prm.get_double("Length");
+      prm.leave_subsection();
+      for (auto &wc : c.walls)
+        {
+          if (wc.mount.empty())
+            continue;
+          const std::vector<std::string> wp = {"Wall " + wc.wall.name};
+          auto shell = std::find_if(c.walls.begin(), c.walls.end(), [&](const auto &o) { return o.wall.name == wc.mount; });
+          if (shell == c.walls.end() || !shell->shell)
+            f.fail(wp, "Knife mount", "'" + wc.mount + "' is not a wall with Geometry = clamshell shell (in Walls)");
+          const auto  &sh = *shell->shell;
+          const double th = sh.opening;
+          const Vec3   along(0, 1, 0), up(sh.side * std::cos(th), 0, std::sin(th)); // into the shell
+          const Vec3   across = up.cross(along);
+          const Vec3   lip    = shell->offset + Vec3(sh.side * sh.radius * std::sin(th), 0, -sh.radius * std::cos(th));
+          wc.rotation.col(0)  = along, wc.rotation.col(1) = across, wc.rotation.col(2) = up;
+          wc.offset           = lip - wc.protrusion * up - 0.5 * length * along;
+          wc.wall.motion      = shell->wall.motion;
+          if (wc.wall.motion.kind == dem::WallMotion::Kind::rigid_body)
+            {
+              if (shell->wall.motion.body.empty())
+                shell->wall.motion.body = "shell " + shell->wall.name;
+              wc.wall.motion.body = shell->wall.motion.body;
+              wc.wall.motion.mass = 0; // the shell's mass is the body's
+              wc.wall.motion.inertia = Vec3::Zero();
+            }
+        }
+    }
+  } // namespace
+
   DemCase read_dem_case(ParameterFile &f)
   {
     ParameterHandler &prm = f.handler();
@@ -588,6 +639,13 @@ namespace abrade::coupling
         const Vec3 offset = get_vector(prm, "Offset");
         wc.offset         = offset;
         wc.solid_model    = geometry == "solid model";
+        if (geometry == "clamshell shell")
+          wc.shell = DemCase::WallCase::Shell{prm.get_double("Shell radius"), prm.get_double("Shell opening") * M_PI / 180,
+                                              prm.get("Shell side") == "+x" ? 1 : -1};
+        wc.mount = trim(prm.get("Knife mount"));
+        if (!wc.mount.empty() && !wc.solid_model)
+          f.fail(wp, "Knife mount", "only a wall with Geometry = solid model (a knife) can be mounted on a shell");
+        wc.protrusion = prm.get_double("Knife protrusion");
         w.mesh.translate(offset);
         if (const double h = prm.get_double("Maximum edge length"); h > 0)
           w.mesh.refine(h);
@@ -631,9 +689,9 @@ namespace abrade::coupling
         static const std::vector<std::string> dofs = {"tx", "ty", "tz", "rx", "ry", "rz"};
         for (const auto &d : get_list(prm, "Free degrees of freedom"))
           m.free[std::find(dofs.begin(), dofs.end(), d) - dofs.begin()] = true;
-        if (m.kind == dem::WallMotion::Kind::rigid_body && !(m.mass > 0))
-          f.fail(mp, "Mass", "a rigid-body wall needs a positive mass");
         m.body = trim(prm.get("Body"));
+        if (m.kind == dem::WallMotion::Kind::rigid_body && m.body.empty() && !(m.mass > 0))
+          f.fail(mp, "Mass", "a rigid-body wall needs a positive mass (or a Body whose other walls have one)");
         for (const auto &phase : split_string_list(prm.get("Free in phases")))
           {
             if (std::none_of(c.phases.begin(), c.phases.end(), [&](const auto &p) { return p.first == phase; }))
@@ -644,6 +702,7 @@ namespace abrade::coupling
         prm.leave_subsection();
         c.walls.push_back(std::move(wc));
       }
+    mount_knives(f, c);
     return c;
   }
 

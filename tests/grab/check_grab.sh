@@ -4,7 +4,7 @@
 # it as the material resists (the shells move as one body), the payload after hoisting is a
 # plausible fraction of the closed shells' capacity times the pile's bulk density (20 ... 110 %
 # of 0.151 m^3 x ~2200 kg/m^3: a coarse sanity bound, the measured value is in docs/grab.md),
-# and the shells' wear is reported per phase.
+# and the knives' wear is reported per phase.
 #   check_grab.sh ABRADE PRM OUTDIR
 set -euo pipefail
 abrade=$1 prm=$2 out=$3
@@ -28,7 +28,7 @@ left = [float(r["cz"]) for r in csv.DictReader(open(os.path.join(out, "walls", "
 right = [float(r["cz"]) for r in csv.DictReader(open(os.path.join(out, "walls", "right_forces.csv")))]
 assert max(abs(a - b) for a, b in zip(left, right)) < 1e-12, "the shells parted"
 assert z["sinking"][-1] < z["sinking"][0], "the grab did not sink into the pile"
-wear = {r["phase"]: float(r["archard_volume"]) for r in csv.DictReader(open(os.path.join(out, "walls", "right_wear.csv")))}
+wear = {r["phase"]: float(r["archard_volume"]) for r in csv.DictReader(open(os.path.join(out, "walls", "right_knife_wear.csv")))}
 assert wear["closing"] > 0 and wear["total"] > 0
 share = {p: wear[p] / wear["total"] for p in ("descent", "sinking", "closing", "hoisting", "opening")}
 print(f"ok: payload {payload:.1f} kg ({100 * payload / capacity:.0f} % of {capacity:.0f} kg); hinge "

@@ -118,8 +118,10 @@ namespace abrade::dem
       throw InputError("wall '" + w.name + "'", "unknown material index");
     if (w.mesh.n_triangles() == 0)
       throw InputError("wall '" + w.name + "'", "mesh has no triangles");
-    if (w.motion.kind == WallMotion::Kind::rigid_body && !(w.motion.mass > 0))
+    if (w.motion.kind == WallMotion::Kind::rigid_body && w.motion.body.empty() && !(w.motion.mass > 0))
       throw InputError("wall '" + w.name + "'", "a rigid-body wall needs a positive mass");
+    if (w.motion.kind == WallMotion::Kind::rigid_body && w.motion.mass < 0)
+      throw InputError("wall '" + w.name + "'", "negative mass");
     if (!w.motion.body.empty())
       for (const Wall &o : walls)
         if (o.motion.body == w.motion.body &&
@@ -187,6 +189,16 @@ namespace abrade::dem
 
   void Simulation::setup()
   {
+    for (const Wall &w : walls) // a body's walls may carry no mass of their own, the body must
+      if (w.motion.kind == WallMotion::Kind::rigid_body && !w.motion.body.empty())
+        {
+          double mass = 0;
+          for (const Wall &o : walls)
+            if (o.motion.body == w.motion.body)
+              mass += o.motion.mass;
+          if (!(mass > 0))
+            throw InputError("wall '" + w.name + "'", "the rigid body '" + w.motion.body + "' has no mass");
+        }
     const std::size_t nm = mats.size();
     if (nm == 0)
       throw InputError("", "no materials defined");

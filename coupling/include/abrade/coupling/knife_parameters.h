@@ -2,7 +2,9 @@
 // The knife's solid model as the parameter file describes it (subsection Knife), shared by the
 // knife and lifetime jobs.
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters.h>
 #include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/solid_surface.h>
 
 #include <string>
 
@@ -19,6 +21,13 @@ namespace abrade::coupling
 
   /// Reads and checks subsection Knife; errors name the file.
   KnifeParameters read_knife_parameters(ParameterFile &file);
+
+  /// The knife's surface placed as wall @p wc's geometry (its rotation, then its offset).
+  dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc);
+
+  /// Meshes the knife of subsection Knife (into @p directory) and gives every wall with
+  /// Geometry = solid model its surface, placed.
+  void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory);
 
   /// MPI (for PETSc) in this single process, initialised once.
   void init_mpi_once();

@@ -7,6 +7,7 @@
 #include <abrade/dem/simulation.h>
 #include <abrade/dem/wear.h>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -53,7 +54,19 @@ namespace abrade::coupling
       double           probe_thickness = 0;    ///< 0: 1.5 x the largest particle radius
       double           probe_interval  = 1e-3; ///< [s]
       bool             solid_model = false;    ///< the mesh is the FEM knife's surface
-      dem::Vec3        offset = dem::Vec3::Zero();
+      /// Placement of the geometry: p -> rotation p + offset (rotation: identity unless the wall
+      /// is a knife mounted on a shell's lip).
+      dem::Vec3        offset   = dem::Vec3::Zero();
+      Eigen::Matrix3d  rotation = Eigen::Matrix3d::Identity();
+      /// A clamshell shell: its radius, lip angle at t = 0 [rad] and side (+1: opens to +x).
+      struct Shell
+      {
+        double radius = 0, opening = 0;
+        int    side   = 1;
+      };
+      std::optional<Shell> shell;
+      std::string          mount; ///< the shell whose lip carries this knife ("": none)
+      double               protrusion = 0.02; ///< of a mounted knife's edge beyond the lip [m]
     };
     std::vector<WallCase> walls;
     double snapshot_interval = 0.05, force_interval = 1e-3;
