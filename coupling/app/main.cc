@@ -14,6 +14,7 @@
 #include <abrade/common/json.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/version.h>
+#include <abrade/coupling/concepts.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameter_file.h>
@@ -43,6 +44,12 @@ namespace
                [--jobs N] [--set ...]... --output DIR
       run the case for every value and seed (one settled bed per seed, reused), in parallel,
       and write study.csv/.md (mean and std over seeds), plots/*.png and surfaces/*.vtp
+  abrade concepts BASELINE.prm CONCEPT.prm... [--seeds 1,2] [--knives right_knife,left_knife]
+                  [--lifetime-updates N] [--jobs N] [--set ...]... --output DIR
+      run every knife concept's cycle per bed seed (the same beds for all), and write the
+      knives' wear per phase, payload, wear per tonne and the change against the baseline with
+      its uncertainty (concepts.md/.csv, wear.png); with --lifetime-updates, each concept's
+      knife life too (lifetime/NAME/, lifetime.png)
   abrade export-walls [FILE.prm] [--set ...]... --output DIR
       write every wall of the case, as the simulation sees it at t = 0, as DIR/NAME.stl
   abrade --version
@@ -55,11 +62,38 @@ namespace
     std::vector<std::string> sets;
     std::string              output;
     std::string              format = "text";
-    std::string              vary, seeds = "1,2,3", wall = "knife";
+    std::string              vary, seeds, wall = "knife"; ///< seeds: each command has its default
     int                      jobs = 0;
     bool                     quiet  = false;
     bool                     resume = false;
+    std::vector<std::string> more_files;             ///< concepts: the files after the first
+    std::string              knives = "right_knife,left_knife";
+    int                      lifetime_updates = 0;
   };
+
+  int integer(const std::string &flag, const std::string &v)
+  {
+    try
+      {
+        std::size_t used = 0;
+        const int   n    = std::stoi(v, &used);
+        if (used == v.size())
+          return n;
+      }
+    catch (const std::exception &)
+      {
+      }
+    throw InputError("command line", flag + " needs a whole number, got '" + v + "'");
+  }
+
+  std::vector<int> seed_list(const std::string &text)
+  {
+    std::vector<int>  seeds;
+    std::stringstream ss(text);
+    for (std::string s; std::getline(ss, s, ',');)
+      seeds.push_back(integer("--seeds", s));
+    return seeds;
+  }
 
   CommandLine parse(int argc, char **argv)
   {
@@ -90,17 +124,11 @@ namespace
         else if (a[k] == "--wall")
           cl.wall = value("--wall");
         else if (a[k] == "--jobs")
-          {
-            const std::string v = value("--jobs");
-            try
-              {
-                cl.jobs = std::stoi(v);
-              }
-            catch (const std::exception &)
-              {
-                throw InputError("command line", "--jobs needs a number, got '" + v + "'");
-              }
-          }
+          cl.jobs = integer("--jobs", value("--jobs"));
+        else if (a[k] == "--knives")
+          cl.knives = value("--knives");
+        else if (a[k] == "--lifetime-updates")
+          cl.lifetime_updates = integer("--lifetime-updates", value("--lifetime-updates"));
         else if (a[k] == "--quiet" || a[k] == "-q")
           cl.quiet = true;
         else if (a[k] == "--resume")
@@ -109,6 +137,8 @@ namespace
           throw InputError("command line", "unknown option '" + a[k] + "'");
         else if (cl.file.empty())
           cl.file = a[k];
+        else if (cl.command == "concepts")
+          cl.more_files.push_back(a[k]);
         else
           throw InputError("command line", "more than one parameter file given ('" + cl.file + "', '" + a[k] + "')");
       }
@@ -227,20 +257,27 @@ int main(int argc, char **argv)
           coupling::SweepOptions  o;
           o.parameter_file = std::filesystem::absolute(cl.file).string();
           coupling::parse_vary(cl.vary.empty() ? "" : cl.vary, o);
-          o.seeds.clear();
-          std::stringstream ss(cl.seeds);
-          for (std::string s; std::getline(ss, s, ',');)
-            try
-              {
-                o.seeds.push_back(std::stoi(s));
-              }
-            catch (const std::exception &)
-              {
-                throw InputError("--seeds '" + cl.seeds + "'", "expected integers separated by commas");
-              }
+          o.seeds = seed_list(cl.seeds.empty() ? "1,2,3" : cl.seeds);
           o.sets = cl.sets, o.output = cl.output, o.wall = cl.wall, o.jobs = cl.jobs, o.quiet = cl.quiet;
           io::ProgressLine::set_quiet(cl.quiet);
           return coupling::run_sweep(o, std::filesystem::canonical("/proc/self/exe").string());
+        }
+      if (cl.command == "concepts")
+        {
+          coupling::ConceptOptions o;
+          o.files.push_back(cl.file);
+          o.files.insert(o.files.end(), cl.more_files.begin(), cl.more_files.end());
+          for (const auto &f : o.files) // fail early on a bad file
+            coupling::ParameterFile check(f, cl.sets);
+          o.seeds = seed_list(cl.seeds.empty() ? "1,2" : cl.seeds);
+          o.knives.clear();
+          std::stringstream ks(cl.knives);
+          for (std::string k; std::getline(ks, k, ',');)
+            o.knives.push_back(k);
+          o.sets = cl.sets, o.output = cl.output, o.jobs = cl.jobs, o.quiet = cl.quiet;
+          o.lifetime_updates = cl.lifetime_updates;
+          io::ProgressLine::set_quiet(cl.quiet);
+          return coupling::run_concepts(o, std::filesystem::canonical("/proc/self/exe").string());
         }
       if (cl.command == "export-walls")
         {

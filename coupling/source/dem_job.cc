@@ -170,6 +170,10 @@ namespace abrade::coupling
     io::ProgressLine progress("dem", total);
     io::Json        &phases = ctx.results["phases"];
     const auto       stats0 = sim.statistics();
+    std::unique_ptr<io::CsvWriter> payload_table; // payload.csv: phase, mass above the payload height
+    if (c.payload_height)
+      payload_table = std::make_unique<io::CsvWriter>(ctx.output.file("payload.csv"),
+                                                      std::vector<std::string>{"phase", "mass_above_payload_height"});
     for (const auto &[name, duration] : c.phases)
       {
         io::ScopedTimer   timer(ctx.timers, "phase " + name);
@@ -203,11 +207,9 @@ namespace abrade::coupling
         ph["particles"]       = static_cast<long>(sim.particles().size());
         if (c.payload_height)
           {
-            double held = 0;
-            for (std::size_t i = 0; i < sim.particles().size(); ++i)
-              if (sim.particles().z[i] > *c.payload_height)
-                held += sim.particles().mass[i];
+            const double held = sim.particles().mass_above(*c.payload_height);
             ph["mass_above_payload_height"] = held;
+            payload_table->row(name, {held});
             ctx.log.line("Phase " + name + ": " + fmt(held, 4) + " kg above the payload height");
           }
         for (std::size_t w = 0; w < sim.n_walls(); ++w)

@@ -84,13 +84,7 @@ namespace abrade::coupling
         {
           sim.run_phase(name, duration);
           if (c.payload_height)
-            {
-              double held = 0;
-              for (std::size_t i = 0; i < sim.particles().size(); ++i)
-                if (sim.particles().z[i] > *c.payload_height)
-                  held += sim.particles().mass[i];
-              r.payload = std::max(r.payload, held);
-            }
+            r.payload = std::max(r.payload, sim.particles().mass_above(*c.payload_height));
         }
       for (double radius : sim.particles().radius)
         r.r_max = std::max(r.r_max, radius);

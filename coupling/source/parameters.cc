@@ -473,8 +473,9 @@ namespace abrade::coupling
   {
     /// Places every mounted knife on its shell's lip and gives it the shell's motion (one rigid
     /// body with it). Knife frame: x along the length from 0, y across the thickness, z from
-    /// the edge up; on the shell: x along the hinge (y), z along the shell's bottom from the lip
-    /// inwards, the edge 'Knife protrusion' beyond the lip.
+    /// the edge up; on the shell: x along the hinge (y; -y on a -x shell), z along the shell's
+    /// bottom from the lip inwards, +y towards the shell's inside (the hinge), the edge 'Knife
+    /// protrusion' beyond the lip.
     void mount_knives(ParameterFile &f, DemCase &c)
     {
       auto &prm = f.handler();
@@ -491,7 +492,8 @@ namespace abrade::coupling
             f.fail(wp, "Knife mount", "'" + wc.mount + "' is not a wall with Geometry = clamshell shell (in Walls)");
           const auto  &sh = *shell->shell;
           const double th = sh.opening;
-          const Vec3   along(0, 1, 0), up(sh.side * std::cos(th), 0, std::sin(th)); // into the shell
+          // along the hinge, mirrored with the shell, so that the knife's +y face is inside both shells
+          const Vec3   along(0, sh.side, 0), up(sh.side * std::cos(th), 0, std::sin(th)); // into the shell
           const Vec3   across = up.cross(along);
           const Vec3   lip    = shell->offset + Vec3(sh.side * sh.radius * std::sin(th), 0, -sh.radius * std::cos(th));
           wc.rotation.col(0)  = along, wc.rotation.col(1) = across, wc.rotation.col(2) = up;

@@ -14,68 +14,22 @@
 #include <abrade/common/error.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/common/progress.h>
+#include <abrade/coupling/child_runs.h>
 #include <abrade/coupling/sweep.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
 namespace abrade::coupling
 {
   namespace
   {
-    struct Table
-    {
-      std::vector<std::string>              header;
-      std::vector<std::vector<std::string>> rows;
-      int column(const std::string &name, const std::string &file) const
-      {
-        for (std::size_t c = 0; c < header.size(); ++c)
-          if (header[c] == name)
-            return static_cast<int>(c);
-        throw RunError(file + ": no column '" + name + "'");
-      }
-    };
-
-    Table read_csv(const std::string &path)
-    {
-      std::ifstream in(path);
-      if (!in)
-        throw RunError("sweep: missing output " + path);
-      Table       t;
-      std::string line;
-      auto split = [](const std::string &l) {
-        std::vector<std::string> out;
-        std::stringstream        ss(l);
-        std::string              cell;
-        while (std::getline(ss, cell, ','))
-          out.push_back(cell);
-        return out;
-      };
-      if (std::getline(in, line))
-        t.header = split(line);
-      while (std::getline(in, line))
-        if (!line.empty())
-          t.rows.push_back(split(line));
-      return t;
-    }
-
-    std::string shell_quote(const std::string &s)
-    {
-      std::string q = "'";
-      for (char c : s)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-      return q + "'";
-    }
-
     struct RunMetrics
     {
       std::map<std::string, double> value; // metric name -> value
@@ -87,15 +41,15 @@ namespace abrade::coupling
     {
       RunMetrics m;
       const std::string wear_file = dir + "/walls/" + wall + "_wear.csv";
-      const Table       wear      = read_csv(wear_file);
-      const int         vol       = wear.column("archard_volume", wear_file);
+      const CsvTable    wear      = read_csv_table(wear_file);
+      const int         vol       = wear.column("archard_volume");
       for (const auto &r : wear.rows)
         m.value["wear_" + r[0]] = std::stod(r[vol]);
 
       const std::string force_file = dir + "/walls/" + wall + "_forces.csv";
-      const Table       f          = read_csv(force_file);
-      const int         t = f.column("time", force_file), fx = f.column("fx", force_file),
-              fy = f.column("fy", force_file), fz = f.column("fz", force_file);
+      const CsvTable       f          = read_csv_table(force_file);
+      const int         t = f.column("time"), fx = f.column("fx"),
+              fy = f.column("fy"), fz = f.column("fz");
       double peak = 0, steady = 0, t_last_start = 1e300, t_end = 0;
       for (const auto &r : f.rows)
         if (r[0] == phases.back())
@@ -118,9 +72,9 @@ namespace abrade::coupling
       const std::string layer_file = dir + "/walls/" + wall + "_layer.csv";
       if (std::filesystem::exists(layer_file))
         {
-          const Table l = read_csv(layer_file);
-          const int   lt = l.column("time", layer_file), lv = l.column("mean_velocity", layer_file),
-                    lw = l.column("wall_velocity", layer_file);
+          const CsvTable l = read_csv_table(layer_file);
+          const int   lt = l.column("time"), lv = l.column("mean_velocity"),
+                    lw = l.column("wall_velocity");
           double sum_v = 0, sum_slip = 0;
           int    n     = 0;
           for (const auto &r : l.rows)
@@ -216,9 +170,7 @@ namespace abrade::coupling
           (k == 0 || !reuse_beds ? first : rest).push_back(r);
         }
 
-    auto command = [&](const Run &r) {
-      std::string c = shell_quote(abrade) + " run " + shell_quote(o.parameter_file) + " --quiet --output " +
-                      shell_quote(r.dir);
+    auto child = [&](const Run &r) {
       std::vector<std::string> sets = o.sets;
       sets.push_back(o.key + "=" + r.value);
       sets.push_back("Particles/Generation/Seed=" + std::to_string(r.seed));
@@ -227,49 +179,23 @@ namespace abrade::coupling
       sets.push_back("Simulation/Threads=1");
       sets.push_back("Output/Write particles=false");
       sets.push_back("Output/Snapshot interval=0");
-      for (const auto &s : sets)
-        c += " --set " + shell_quote(s);
-      return c + " > " + shell_quote(r.dir + ".log") + " 2>&1";
+      return ChildRun{r.dir, run_command(abrade, o.parameter_file, r.dir, sets)};
     };
-
-    const int jobs = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-    const std::size_t total = first.size() + rest.size();
-    std::atomic<std::size_t> done{0};
-    std::mutex               failure_mutex;
-    std::string              failure;
-    io::ProgressLine         progress("sweep", total);
-    auto run_all = [&](const std::vector<Run> &runs) {
-      std::atomic<std::size_t> next{0};
-      std::vector<std::thread> pool;
-      for (int j = 0; j < jobs; ++j)
-        pool.emplace_back([&] {
-          for (std::size_t k; (k = next++) < runs.size();)
-            {
-              const int rc = std::system(command(runs[k]).c_str());
-              if (rc != 0)
-                {
-                  std::lock_guard<std::mutex> lock(failure_mutex);
-                  failure = "run " + runs[k].dir + " failed (see " + runs[k].dir + ".log)";
-                }
-              progress.update(double(++done), std::to_string(done.load()) + "/" + std::to_string(total) + " runs");
-            }
-        });
-      for (auto &t : pool)
-        t.join();
-      if (!failure.empty())
-        throw RunError("sweep: " + failure);
-    };
+    std::vector<ChildRun> makes_beds, uses_beds;
+    for (const auto &r : first)
+      makes_beds.push_back(child(r));
+    for (const auto &r : rest)
+      uses_beds.push_back(child(r));
     if (!o.quiet)
       std::cout << "sweep: " << o.key << " over " << o.values.size() << " values x " << o.seeds.size()
-                << " seeds = " << total << " runs, " << jobs << " at a time, output in " << root << std::endl;
-    run_all(first); // makes the beds
-    run_all(rest);
-    progress.finish();
+                << " seeds = " << first.size() + rest.size() << " runs, output in " << root << std::endl;
+    run_children(makes_beds, o.jobs, "sweep (first runs, which settle the beds)");
+    run_children(uses_beds, o.jobs, "sweep");
 
     // --- reduce ---
     std::vector<std::string> phases;
     {
-      const Table w = read_csv(first[0].dir + "/walls/" + o.wall + "_wear.csv");
+      const CsvTable w = read_csv_table(first[0].dir + "/walls/" + o.wall + "_wear.csv");
       for (const auto &r : w.rows)
         if (r[0] != "total")
           phases.push_back(r[0]);

@@ -20,6 +20,15 @@ namespace abrade::dem
     std::vector<std::int64_t> id;               ///< stable identifier (survives reordering)
 
     std::size_t size() const { return x.size(); }
+    /// Mass of the particles whose centre lies above height @p z [kg] (a grab's payload).
+    double mass_above(double z_min) const
+    {
+      double m = 0;
+      for (std::size_t i = 0; i < size(); ++i)
+        if (z[i] > z_min)
+          m += mass[i];
+      return m;
+    }
 
     /// Appends a particle at rest; returns its index.
     std::size_t add(std::int64_t id, double x, double y, double z, double radius, double density,

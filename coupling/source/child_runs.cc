@@ -1,0 +1,91 @@
+#include <abrade/common/error.h>
+#include <abrade/common/progress.h>
+#include <abrade/coupling/child_runs.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+namespace abrade::coupling
+{
+  std::string shell_quote(const std::string &s)
+  {
+    std::string q = "'";
+    for (char c : s)
+      q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  }
+
+  std::string run_command(const std::string &abrade, const std::string &file, const std::string &dir,
+                          const std::vector<std::string> &sets)
+  {
+    std::string c = shell_quote(abrade) + " run " + shell_quote(file) + " --quiet --output " + shell_quote(dir);
+    for (const auto &s : sets)
+      c += " --set " + shell_quote(s);
+    return c + " > " + shell_quote(dir + ".log") + " 2>&1";
+  }
+
+  void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what)
+  {
+    if (jobs <= 0)
+      jobs = int(std::max(1u, std::thread::hardware_concurrency()));
+    std::atomic<std::size_t> next{0}, done{0};
+    std::mutex               failure_mutex;
+    std::string              failure;
+    io::ProgressLine         progress(what, double(runs.size()));
+    std::vector<std::thread> pool;
+    for (int j = 0; j < jobs; ++j)
+      pool.emplace_back([&] {
+        for (std::size_t k; (k = next++) < runs.size();)
+          {
+            if (std::system(runs[k].command.c_str()) != 0)
+              {
+                std::lock_guard<std::mutex> lock(failure_mutex);
+                failure = "run " + runs[k].dir + " failed (see " + runs[k].dir + ".log)";
+              }
+            progress.update(double(++done), std::to_string(done.load()) + "/" + std::to_string(runs.size()) + " runs");
+          }
+      });
+    for (auto &t : pool)
+      t.join();
+    progress.finish();
+    if (!failure.empty())
+      throw RunError(what + ": " + failure);
+  }
+
+  int CsvTable::column(const std::string &name) const
+  {
+    for (std::size_t c = 0; c < header.size(); ++c)
+      if (header[c] == name)
+        return static_cast<int>(c);
+    throw RunError(file + ": no column '" + name + "'");
+  }
+
+  CsvTable read_csv_table(const std::string &path)
+  {
+    std::ifstream in(path);
+    if (!in)
+      throw RunError("missing output " + path);
+    CsvTable    t;
+    t.file = path;
+    std::string line;
+    auto        split = [](const std::string &l) {
+      std::vector<std::string> out;
+      std::stringstream        ss(l);
+      std::string              cell;
+      while (std::getline(ss, cell, ','))
+        out.push_back(cell);
+      return out;
+    };
+    if (std::getline(in, line))
+      t.header = split(line);
+    while (std::getline(in, line))
+      if (!line.empty())
+        t.rows.push_back(split(line));
+    return t;
+  }
+} // namespace abrade::coupling

@@ -1,0 +1,300 @@
+// `abrade concepts`: see concepts.h.
+//
+// Per run (concept, seed): the knives' Archard volume per phase (walls/KNIFE_wear.csv, averaged
+// over the knives: the grab's two knives are replicates) and the payload (payload.csv: the most
+// mass above Simulation/Payload height at the end of a phase). Per concept: mean and standard
+// deviation over the seeds of the wear per phase and in total, the payload, and the wear per
+// tonne (per seed, then averaged). The change against the baseline is the ratio of the means
+// minus one, with the uncertainty of the ratio from the two standard errors (independent
+// beds: first-order propagation).
+#include <abrade/common/error.h>
+#include <abrade/common/output_directory.h>
+#include <abrade/coupling/child_runs.h>
+#include <abrade/coupling/concepts.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+namespace abrade::coupling
+{
+  namespace
+  {
+    std::string label_of(const std::string &file)
+    {
+      return std::filesystem::path(file).stem().string();
+    }
+
+    struct Sample
+    {
+      std::map<std::string, double> wear; ///< per phase and "total" [m^3 per cycle]
+      double                        payload = 0; ///< [t per cycle]
+    };
+
+    Sample reduce(const std::string &dir, const std::vector<std::string> &knives)
+    {
+      Sample s;
+      for (const auto &k : knives)
+        {
+          const CsvTable t   = read_csv_table(dir + "/walls/" + k + "_wear.csv");
+          const int      vol = t.column("archard_volume");
+          for (const auto &row : t.rows)
+            s.wear[row[0]] += std::stod(row[vol]) / knives.size();
+        }
+      const CsvTable p = read_csv_table(dir + "/payload.csv");
+      const int      m = p.column("mass_above_payload_height");
+      for (const auto &row : p.rows)
+        s.payload = std::max(s.payload, std::stod(row[m]) / 1000);
+      return s;
+    }
+
+    struct Stat
+    {
+      double mean = 0, std = 0, se = 0;
+    };
+
+    Stat stat(const std::vector<double> &v)
+    {
+      Stat s;
+      for (double x : v)
+        s.mean += x / v.size();
+      for (double x : v)
+        s.std += v.size() > 1 ? (x - s.mean) * (x - s.mean) / (v.size() - 1) : 0.0;
+      s.std = std::sqrt(s.std);
+      s.se  = s.std / std::sqrt(double(v.size()));
+      return s;
+    }
+
+    /// Relative change of @p c against @p b [%] and its uncertainty.
+    std::pair<double, double> change(const Stat &c, const Stat &b)
+    {
+      if (!(b.mean != 0) || !(c.mean != 0))
+        return {0, 0};
+      const double r = c.mean / b.mean;
+      return {100 * (r - 1), 100 * r * std::hypot(c.se / c.mean, b.se / b.mean)};
+    }
+  } // namespace
+
+  int run_concepts(const ConceptOptions &o, const std::string &abrade)
+  {
+    if (o.files.size() < 2)
+      throw InputError("command line", "concepts needs at least two parameter files (the first is the baseline)");
+    if (o.output.empty())
+      throw InputError("command line", "concepts needs --output DIR");
+    std::vector<std::string> labels;
+    for (const auto &f : o.files)
+      {
+        if (!std::filesystem::is_regular_file(f))
+          throw InputError(f, "file not found");
+        labels.push_back(label_of(f));
+        if (std::count(labels.begin(), labels.end(), labels.back()) > 1)
+          throw InputError(f, "two concepts named '" + labels.back() + "' (the file names name them)");
+      }
+    const io::OutputDirectory out(o.output);
+    const std::string         root = std::filesystem::absolute(o.output).string();
+    out.subdirectory("beds"), out.subdirectory("runs");
+
+    // --- the cycles: the baseline first (its runs settle the beds), then the others ---
+    auto child = [&](std::size_t k, int seed) {
+      std::vector<std::string> sets = o.sets;
+      sets.push_back("Particles/Generation/Seed=" + std::to_string(seed));
+      sets.push_back("Particles/Settling/Bed file=" + root + "/beds/bed-seed" + std::to_string(seed) + ".bed");
+      sets.push_back("Simulation/Threads=1");
+      sets.push_back("Output/Write particles=false");
+      sets.push_back("Output/Snapshot interval=0");
+      const std::string dir = root + "/runs/" + labels[k] + "-seed" + std::to_string(seed);
+      return ChildRun{dir, run_command(abrade, std::filesystem::absolute(o.files[k]).string(), dir, sets)};
+    };
+    std::vector<ChildRun> baseline, others;
+    for (int seed : o.seeds)
+      {
+        baseline.push_back(child(0, seed));
+        for (std::size_t k = 1; k < o.files.size(); ++k)
+          others.push_back(child(k, seed));
+      }
+    if (!o.quiet)
+      std::cout << "concepts: " << o.files.size() << " concepts x " << o.seeds.size() << " seeds, output in " << root
+                << std::endl;
+    run_children(baseline, o.jobs, "concepts (baseline, settles the beds)");
+    run_children(others, o.jobs, "concepts");
+
+    // --- optional: each concept's knife life ---
+    std::map<std::string, std::string> life; // label -> predicted tonnes (text)
+    if (o.lifetime_updates > 0)
+      {
+        std::vector<ChildRun> runs;
+        std::string           seeds;
+        for (int s : o.seeds)
+          seeds += (seeds.empty() ? "" : ",") + std::to_string(s);
+        for (std::size_t k = 0; k < o.files.size(); ++k)
+          {
+            const std::string dir = root + "/lifetime/" + labels[k];
+            std::filesystem::create_directories(dir + "/beds");
+            for (int s : o.seeds) // the same beds
+              std::filesystem::copy_file(root + "/beds/bed-seed" + std::to_string(s) + ".bed",
+                                         dir + "/beds/bed-seed" + std::to_string(s) + ".bed",
+                                         std::filesystem::copy_options::overwrite_existing);
+            std::vector<std::string> sets = o.sets;
+            sets.insert(sets.end(), {"Job=lifetime", "Lifetime/Tonnes per cycle=0",
+                                     "Lifetime/Maximum updates=" + std::to_string(o.lifetime_updates),
+                                     "Lifetime/Seeds=" + seeds, "Simulation/Threads=1", "Output/Write particles=false",
+                                     "Output/Snapshot interval=0", "Particles/Settling/Bed file="});
+            runs.push_back({dir, run_command(abrade, std::filesystem::absolute(o.files[k]).string(), dir, sets)});
+          }
+        run_children(runs, o.jobs, "concepts (lifetime)");
+        for (const auto &l : labels)
+          {
+            std::ifstream in(root + "/lifetime/" + l + "/summary.json");
+            std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            const auto    at = text.find("\"predicted_tonnes_to_end_of_life\":");
+            if (at == std::string::npos)
+              life[l] = "-";
+            else
+              {
+                char t[32];
+                std::snprintf(t, sizeof t, "%.3g", std::stod(text.substr(at + 34)));
+                life[l] = t;
+              }
+          }
+        std::ofstream gp(out.file("lifetime.gp"));
+        gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'lifetime.png'\nset datafile separator ','\nset grid\n"
+              "set key left top\nset xlabel 'handled material [t]'\nset ylabel 'largest wear depth [mm]'\nplot ";
+        for (std::size_t k = 0; k < labels.size(); ++k)
+          gp << (k ? ", " : "") << "'lifetime/" << labels[k] << "/trajectory.csv' using 3:($4*1000) with linespoints title '"
+             << labels[k] << "'";
+        gp << '\n';
+      }
+
+    // --- reduce ---
+    std::vector<std::vector<Sample>> samples(o.files.size());
+    for (std::size_t k = 0; k < o.files.size(); ++k)
+      for (int seed : o.seeds)
+        samples[k].push_back(reduce(root + "/runs/" + labels[k] + "-seed" + std::to_string(seed), o.knives));
+    std::vector<std::string> phases;
+    for (const auto &[p, v] : samples[0][0].wear)
+      if (p != "total")
+        phases.push_back(p);
+    {
+      // the phases in the order of the wear table
+      const CsvTable t = read_csv_table(root + "/runs/" + labels[0] + "-seed" + std::to_string(o.seeds[0]) + "/walls/" +
+                                        o.knives[0] + "_wear.csv");
+      phases.clear();
+      for (const auto &row : t.rows)
+        if (row[0] != "total")
+          phases.push_back(row[0]);
+    }
+    struct Summary
+    {
+      std::map<std::string, Stat> wear;
+      Stat                        payload, per_tonne;
+    };
+    std::vector<Summary> sum(o.files.size());
+    for (std::size_t k = 0; k < o.files.size(); ++k)
+      {
+        std::vector<double> pay, per_t;
+        for (const auto &s : samples[k])
+          pay.push_back(s.payload), per_t.push_back(s.payload > 0 ? s.wear.at("total") / s.payload : 0.0);
+        for (const auto &p : phases)
+          {
+            std::vector<double> w;
+            for (const auto &s : samples[k])
+              w.push_back(s.wear.count(p) ? s.wear.at(p) : 0.0);
+            sum[k].wear[p] = stat(w);
+          }
+        std::vector<double> tot;
+        for (const auto &s : samples[k])
+          tot.push_back(s.wear.at("total"));
+        sum[k].wear["total"] = stat(tot);
+        sum[k].payload       = stat(pay);
+        sum[k].per_tonne     = stat(per_t);
+      }
+
+    std::ofstream csv(out.file("concepts.csv"));
+    csv.precision(8);
+    csv << "concept";
+    for (const auto &p : phases)
+      csv << ",wear_" << p << ",wear_" << p << "_std";
+    csv << ",wear_total,wear_total_std,payload,payload_std,wear_per_tonne,wear_per_tonne_std,"
+           "change_wear_total_percent,change_wear_total_uncertainty,change_payload_percent,change_payload_uncertainty,"
+           "change_wear_per_tonne_percent,change_wear_per_tonne_uncertainty,predicted_life_tonnes\n";
+    std::ofstream md(out.file("concepts.md"));
+    md << "# Knife concepts (" << o.seeds.size() << " beds each; baseline: " << labels[0] << ")\n\n"
+       << "Knife wear per cycle (Archard volume, mean of the knives) in mm^3, payload in kg per cycle, mean +- "
+          "standard deviation over the beds; changes against the baseline with their uncertainty (standard errors).\n\n"
+       << "| concept |";
+    for (const auto &p : phases)
+      md << " wear " << p << " |";
+    md << " wear total | payload [kg] | wear per tonne [mm^3/t] | change in wear | change in payload | change in wear per tonne |"
+       << (o.lifetime_updates > 0 ? " predicted life [t] |" : "") << "\n|---|";
+    for (std::size_t p = 0; p < phases.size() + 6 + (o.lifetime_updates > 0); ++p)
+      md << "---|";
+    md << '\n';
+    char buf[128];
+    auto pm = [&](const Stat &s, double scale) {
+      std::snprintf(buf, sizeof buf, "%.3g +- %.2g", scale * s.mean, scale * s.std);
+      return std::string(buf);
+    };
+    auto pct = [&](std::pair<double, double> c) {
+      std::snprintf(buf, sizeof buf, "%+.1f +- %.1f %%", c.first, c.second);
+      return std::string(buf);
+    };
+    for (std::size_t k = 0; k < o.files.size(); ++k)
+      {
+        const auto cw = change(sum[k].wear["total"], sum[0].wear["total"]), cp = change(sum[k].payload, sum[0].payload),
+                   ct = change(sum[k].per_tonne, sum[0].per_tonne);
+        csv << labels[k];
+        md << "| " << labels[k] << " |";
+        for (const auto &p : phases)
+          {
+            csv << ',' << sum[k].wear[p].mean << ',' << sum[k].wear[p].std;
+            md << ' ' << pm(sum[k].wear[p], 1e9) << " |";
+          }
+        csv << ',' << sum[k].wear["total"].mean << ',' << sum[k].wear["total"].std << ',' << sum[k].payload.mean << ','
+            << sum[k].payload.std << ',' << sum[k].per_tonne.mean << ',' << sum[k].per_tonne.std << ',' << cw.first << ','
+            << cw.second << ',' << cp.first << ',' << cp.second << ',' << ct.first << ',' << ct.second << ','
+            << (life.count(labels[k]) ? life[labels[k]] : "") << '\n';
+        md << ' ' << pm(sum[k].wear["total"], 1e9) << " | " << pm(sum[k].payload, 1e3) << " | "
+           << pm(sum[k].per_tonne, 1e9) << " | " << (k ? pct(cw) : "baseline") << " | " << (k ? pct(cp) : "baseline")
+           << " | " << (k ? pct(ct) : "baseline") << " |";
+        if (o.lifetime_updates > 0)
+          md << ' ' << life[labels[k]] << " |";
+        md << '\n';
+      }
+    csv.close(), md.close();
+
+    // a bar chart of the wear per phase
+    {
+      std::ofstream dat(out.file("wear.dat"));
+      dat << "concept";
+      for (const auto &p : phases)
+        dat << ' ' << p;
+      dat << '\n';
+      for (std::size_t k = 0; k < labels.size(); ++k)
+        {
+          dat << labels[k];
+          for (const auto &p : phases)
+            dat << ' ' << 1e9 * sum[k].wear[p].mean;
+          dat << '\n';
+        }
+      std::ofstream gp(out.file("wear.gp"));
+      gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'wear.png'\nset style data histograms\n"
+            "set style histogram rowstacked\nset style fill solid 0.8 border -1\nset boxwidth 0.6\nset grid y\n"
+            "set ylabel 'knife wear per cycle [mm^3]'\nset key outside\nplot for [c=2:"
+         << phases.size() + 1 << "] 'wear.dat' using c:xtic(1) title columnhead\n";
+    }
+    for (const char *plot : {"wear.gp", "lifetime.gp"})
+      if (std::filesystem::exists(out.file(plot)) &&
+          std::system(("cd '" + root + "' && gnuplot " + plot + " > /dev/null 2>&1").c_str()) != 0 && !o.quiet)
+        std::cerr << "warning: gnuplot failed on " << out.file(plot) << std::endl;
+    if (!o.quiet)
+      {
+        std::ifstream table(out.file("concepts.md"));
+        std::cout << table.rdbuf() << "Output in " << root << std::endl;
+      }
+    return 0;
+  }
+} // namespace abrade::coupling
