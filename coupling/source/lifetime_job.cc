@@ -404,24 +404,44 @@ namespace abrade::coupling
           }
 
         // 3. cycles this update stands for
-        const long n = fixed_cycles > 0 ? fixed_cycles
+        long n = fixed_cycles > 0 ? fixed_cycles
                                         : std::max(1L, long(std::floor(fraction * kp.mesh_size / max_rate)));
         std::vector<double> depth(nv);
         for (std::size_t v = 0; v < nv; ++v)
           depth[v] = n * depth_per_cycle[v];
 
-        // 4. move the knife
+        // 4. move the knife. A surface that cannot be remeshed (it folds where the wear is deepest)
+        //    rejects the step: the knife goes back to where it was and the update is retried
+        //    with half the cycles, up to three times.
         const double volume_before = knife.volume();
         fem::KnifeModel::UpdateResult r;
-        try
-          {
-            io::ScopedTimer t(ctx.timers, "fem update");
-            r = knife.apply_wear(depth);
-          }
-        catch (const std::exception &e)
+        bool                          moved = false;
+        for (int attempt = 0; !moved; ++attempt)
+          try
+            {
+              io::ScopedTimer t(ctx.timers, "fem update");
+              if (attempt > 0)
+                knife.load(ckpt_dir + "/before-update.ckpt");
+              else
+                knife.save(ckpt_dir + "/before-update.ckpt");
+              r     = knife.apply_wear(depth);
+              moved = true;
+            }
+          catch (const std::exception &e)
+            {
+              if (attempt == 3 || n == 1)
+                break;
+              n = std::max(1L, n / 2);
+              for (std::size_t v = 0; v < nv; ++v)
+                depth[v] = n * depth_per_cycle[v];
+              ctx.log.warning("update " + std::to_string(update) + ": " + e.what() + "; retried with " +
+                              std::to_string(n) + " cycles");
+            }
+        if (!moved)
           {
             end = "the worn surface could not be remeshed at update " + std::to_string(update) +
-                  " (it folds where the wear is deepest; a smaller Lifetime/Depth increment fraction helps): " + e.what();
+                  ", also with an eighth of the cycles (it folds where the wear is deepest; a larger Lifetime/Smoothing "
+                  "radius or a finer Knife/Mesh size helps)";
             ctx.log.warning(end);
             break;
           }
