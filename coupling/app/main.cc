@@ -29,7 +29,6 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
-#include <omp.h>
 
 using namespace abrade;
 
@@ -169,7 +168,7 @@ namespace
     std::ofstream(out.file("parameters.prm")) << canonical;
 
     prm.enter_subsection("Simulation");
-    const long threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : omp_get_max_threads();
+    const long threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : dem::default_thread_count();
     prm.leave_subsection();
     log.line("abrade " + std::string(version_string) + ": job '" + job_name + "' from " + params.file_name() +
              ", output in " + dir + ", " + std::to_string(threads) + " threads");

@@ -73,11 +73,17 @@ namespace abrade::dem
     {
       return t[0] == v || t[1] == v || t[2] == v;
     }
+    // The thread count OpenMP offers when the program starts (OMP_NUM_THREADS, or the cores),
+    // taken before anything else can lower it: deal.II's MPI set-up for the FEM limits the
+    // threads of the process to one.
+    const int threads_at_start = omp_get_max_threads();
   } // namespace
+
+  int default_thread_count() { return threads_at_start; }
 
   Simulation::Simulation(const Settings &s) : config(s), impl(std::make_unique<Impl>())
   {
-    impl->n_threads = config.threads > 0 ? config.threads : omp_get_max_threads();
+    impl->n_threads = config.threads > 0 ? config.threads : threads_at_start;
   }
 
   Simulation::Simulation(Simulation &&) noexcept = default;

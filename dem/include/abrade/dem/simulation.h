@@ -51,6 +51,9 @@ namespace abrade::dem
     long   particle_steps = 0;
   };
 
+  /// Threads used when Settings::threads is 0: what OpenMP offered when the program started.
+  int default_thread_count();
+
   class Simulation
   {
   public:
