@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/external.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/child_runs.h>
 
@@ -12,17 +13,10 @@
 
 namespace abrade::coupling
 {
-  std::string shell_quote(const std::string &s)
-  {
-    std::string q = "'";
-    for (char c : s)
-      q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-  }
-
   std::string run_command(const std::string &abrade, const std::string &file, const std::string &dir,
                           const std::vector<std::string> &sets)
   {
+    using io::shell_quote;
     std::string c = shell_quote(abrade) + " run " + shell_quote(file) + " --quiet --output " + shell_quote(dir);
     for (const auto &s : sets)
       c += " --set " + shell_quote(s);

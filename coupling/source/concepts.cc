@@ -8,6 +8,7 @@
 // minus one, with the uncertainty of the ratio from the two standard errors (independent
 // beds: first-order propagation).
 #include <abrade/common/error.h>
+#include <abrade/common/external.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/coupling/child_runs.h>
 #include <abrade/coupling/concepts.h>
@@ -287,9 +288,8 @@ namespace abrade::coupling
          << phases.size() + 1 << "] 'wear.dat' using c:xtic(1) title columnhead\n";
     }
     for (const char *plot : {"wear.gp", "lifetime.gp"})
-      if (std::filesystem::exists(out.file(plot)) &&
-          std::system(("cd '" + root + "' && gnuplot " + plot + " > /dev/null 2>&1").c_str()) != 0 && !o.quiet)
-        std::cerr << "warning: gnuplot failed on " << out.file(plot) << std::endl;
+      if (std::filesystem::exists(out.file(plot)))
+        io::run_gnuplot(root, plot, o.quiet);
     if (!o.quiet)
       {
         std::ifstream table(out.file("concepts.md"));

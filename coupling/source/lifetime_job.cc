@@ -23,6 +23,7 @@
 //     a saved bed, produces the same trajectory as an uninterrupted run.
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/error.h>
+#include <abrade/common/external.h>
 #include <abrade/common/hash.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/jobs.h>
@@ -159,8 +160,7 @@ namespace abrade::coupling
                 "title sprintf('update %d', i+1)\n";
         }
       gp.close();
-      if (std::system(("cd '" + dir + "' && gnuplot lifetime.gp > lifetime-gnuplot.log 2>&1").c_str()) != 0)
-        std::cerr << "warning: gnuplot failed or is missing; the plot script is " << dir << "/lifetime.gp" << std::endl;
+      io::run_gnuplot(dir, "lifetime.gp");
     }
   } // namespace
 

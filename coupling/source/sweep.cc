@@ -12,6 +12,7 @@
 //    value (each averaged over the seeds); the final wear-coloured wall surface of every run.
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/error.h>
+#include <abrade/common/external.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/child_runs.h>
@@ -292,10 +293,7 @@ namespace abrade::coupling
         gp << (k ? ", " : "") << "'layer.dat' index " << k << " using 1:2 with lines title '" << o.values[k] << "'";
       gp << "\n";
     }
-    const int gp_rc = std::system(("cd " + shell_quote(root + "/plots") + " && gnuplot plots.gp > gnuplot.log 2>&1").c_str());
-    if (gp_rc != 0 && !o.quiet)
-      std::cerr << "warning: gnuplot failed or is missing (scripts/install-deps.sh installs it); the data and "
-                   "script are in plots/" << std::endl;
+    io::run_gnuplot(root + "/plots", "plots.gp", o.quiet);
     for (const auto &list : {first, rest})
       for (const auto &r : list)
         {

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/external.h>
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/field/calibration.h>
@@ -213,8 +214,7 @@ namespace abrade::field
          << dir << "'";
     gp << '\n';
     gp.close();
-    if (std::system(("cd '" + out.root() + "' && gnuplot calibration.gp > /dev/null 2>&1").c_str()) != 0)
-      std::cerr << "warning: gnuplot failed or is missing; the plot script is " << out.file("calibration.gp") << '\n';
+    io::run_gnuplot(out.root(), "calibration.gp");
     std::printf("Output in %s\n", output.c_str());
     return 0;
   }

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/external.h>
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/field/compare.h>
@@ -186,8 +187,7 @@ namespace abrade::field
                   "with vectors nohead dt 2 lw 1.5 lc rgb 'black' title 'design'";
           gp << '\n';
           gp.close();
-          if (std::system(("cd '" + out.root() + "' && gnuplot " + name + ".gp > /dev/null 2>&1").c_str()) != 0)
-            std::fprintf(stderr, "warning: gnuplot failed or is missing; the plot script is %s.gp\n", name);
+          io::run_gnuplot(out.root(), std::string(name) + ".gp");
         }
     }
   } // namespace

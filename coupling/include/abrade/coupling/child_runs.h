@@ -33,6 +33,4 @@ namespace abrade::coupling
     int column(const std::string &name) const;
   };
   CsvTable read_csv_table(const std::string &path);
-
-  std::string shell_quote(const std::string &s);
 } // namespace abrade::coupling
