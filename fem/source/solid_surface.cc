@@ -152,12 +152,9 @@ namespace abrade::fem
             const double    d2 = p.distance_square(q);
             if (d2 >= best_d2)
               continue;
-            best_d2 = d2;
-            // barycentric coordinates of q in (a, b, c)
-            const Tensor<1, 3> n = cross_product_3d(b - a, c - a);
-            const double       inv = 1 / n.norm_square();
-            const double       la = n * cross_product_3d(c - b, q - b) * inv, lb = n * cross_product_3d(a - c, q - c) * inv;
-            out[v] = la * values[t[0]] + lb * values[t[1]] + (1 - la - lb) * values[t[2]];
+            best_d2      = d2;
+            const auto w = geometry::barycentric(cp.p, a.begin_raw(), b.begin_raw(), c.begin_raw());
+            out[v]       = w[0] * values[t[0]] + w[1] * values[t[1]] + w[2] * values[t[2]];
           }
       }
     return out;

@@ -1,3 +1,4 @@
+#include <abrade/common/closest_point.h>
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_input.h>
 #include <abrade/field/calibration.h>
@@ -14,8 +15,6 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-
-#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
@@ -111,16 +110,6 @@ namespace abrade::field
       return s;
     }
 
-    /// Barycentric coordinates of @p q (in the triangle's plane) in the triangle (a, b, c).
-    std::array<double, 3> barycentric(const double *q, const double *a, const double *b, const double *c)
-    {
-      const Eigen::Vector3d A(a), B(b), C(c), Q(q);
-      const Eigen::Vector3d n   = (B - A).cross(C - A);
-      const double          inv = 1 / n.squaredNorm();
-      const double          la = n.dot((C - B).cross(Q - B)) * inv, lb = n.dot((A - C).cross(Q - C)) * inv;
-      return {la, lb, 1 - la - lb};
-    }
-
     /// Depth at the material points that were at @p points on the fresh knife, on one output's
     /// surface: the surface is moved back by its accumulated displacement (the fresh knife's
     /// configuration), and the depth interpolated linearly at the closest point there.
@@ -153,7 +142,7 @@ namespace abrade::field
           fresh->GetCellPoints(cell, n, ids);
           double a[3], b[3], c[3];
           fresh->GetPoint(ids[0], a), fresh->GetPoint(ids[1], b), fresh->GetPoint(ids[2], c);
-          const auto w = barycentric(q, a, b, c);
+          const auto w = geometry::barycentric(q, a, b, c);
           out.push_back(w[0] * depth->GetTuple1(ids[0]) + w[1] * depth->GetTuple1(ids[1]) + w[2] * depth->GetTuple1(ids[2]));
         }
       return out;

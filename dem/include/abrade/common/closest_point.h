@@ -2,6 +2,7 @@
 // Closest point on a triangle to a point, with the feature (face, edge, vertex) it lies on
 // (Ericson, Real-Time Collision Detection, 5.1.5). The feature decides whether a contact that
 // touches several triangles is one contact or several (see wall_contacts in simulation.cc).
+#include <array>
 #include <cstdint>
 
 namespace abrade::geometry
@@ -70,6 +71,25 @@ namespace abrade::geometry
       r.p[d] = a[d] + ab[d] * v + ac[d] * w;
     r.feature = face;
     return r;
+  }
+
+  /// Barycentric coordinates (weights of a, b, c) of @p q, a point in the plane of the triangle
+  /// (a closest point, say): the values of a field linear over the triangle interpolate exactly.
+  inline std::array<double, 3> barycentric(const double q[3], const double a[3], const double b[3], const double c[3])
+  {
+    auto cross = [](const double *u0, const double *u1, const double *v0, const double *v1, double *w) {
+      double u[3], v[3];
+      for (int d = 0; d < 3; ++d)
+        u[d] = u1[d] - u0[d], v[d] = v1[d] - v0[d];
+      w[0] = u[1] * v[2] - u[2] * v[1], w[1] = u[2] * v[0] - u[0] * v[2], w[2] = u[0] * v[1] - u[1] * v[0];
+    };
+    auto dot = [](const double *u, const double *v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+    double n[3], na[3], nb[3];
+    cross(a, b, a, c, n);   // (b - a) x (c - a)
+    cross(b, c, b, q, na);  // (c - b) x (q - b)
+    cross(c, a, c, q, nb);  // (a - c) x (q - c)
+    const double inv = 1 / dot(n, n), la = dot(n, na) * inv, lb = dot(n, nb) * inv;
+    return {la, lb, 1 - la - lb};
   }
 } // namespace abrade::geometry
 
