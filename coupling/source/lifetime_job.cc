@@ -288,6 +288,7 @@ namespace abrade::coupling
       {
         knife.write(knife_output, 0);
         io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife.surface().as_polydata()); // the design
+        knife.save(ckpt_dir + "/knife.ckpt"); // the state a rejected first update returns to
       }
 
     std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
@@ -411,8 +412,8 @@ namespace abrade::coupling
           depth[v] = n * depth_per_cycle[v];
 
         // 4. move the knife. A surface that cannot be remeshed (it folds where the wear is deepest)
-        //    rejects the step: the knife goes back to where it was and the update is retried
-        //    with half the cycles, up to three times.
+        //    rejects the step: the knife goes back to its last checkpoint (the state before this
+        //    update) and the update is retried with half the cycles, up to three times.
         const double volume_before = knife.volume();
         fem::KnifeModel::UpdateResult r;
         bool                          moved = false;
@@ -421,9 +422,7 @@ namespace abrade::coupling
             {
               io::ScopedTimer t(ctx.timers, "fem update");
               if (attempt > 0)
-                knife.load(ckpt_dir + "/before-update.ckpt");
-              else
-                knife.save(ckpt_dir + "/before-update.ckpt");
+                knife.load(ckpt_dir + "/knife.ckpt");
               r     = knife.apply_wear(depth);
               moved = true;
             }
