@@ -9,6 +9,7 @@
 // beds: first-order propagation).
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
+#include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/coupling/child_runs.h>
 #include <abrade/coupling/concepts.h>
@@ -32,7 +33,8 @@ namespace abrade::coupling
 
     struct Sample
     {
-      std::map<std::string, double> wear; ///< per phase and "total" [m^3 per cycle]
+      std::vector<std::string>      phases;      ///< in the order of the cycle
+      std::map<std::string, double> wear;        ///< per phase and "total" [m^3 per cycle]
       double                        payload = 0; ///< [t per cycle]
     };
 
@@ -44,7 +46,11 @@ namespace abrade::coupling
           const CsvTable t   = read_csv_table(dir + "/walls/" + k + "_wear.csv");
           const int      vol = t.column("archard_volume");
           for (const auto &row : t.rows)
-            s.wear[row[0]] += std::stod(row[vol]) / knives.size();
+            {
+              if (k == knives.front() && row[0] != "total")
+                s.phases.push_back(row[0]);
+              s.wear[row[0]] += std::stod(row[vol]) / knives.size();
+            }
         }
       const CsvTable p = read_csv_table(dir + "/payload.csv");
       const int      m = p.column("mass_above_payload_height");
@@ -149,17 +155,12 @@ namespace abrade::coupling
         run_children(runs, o.jobs, "concepts (lifetime)");
         for (const auto &l : labels)
           {
-            std::ifstream in(root + "/lifetime/" + l + "/summary.json");
-            std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            const auto    at = text.find("\"predicted_tonnes_to_end_of_life\":");
-            if (at == std::string::npos)
-              life[l] = "-";
-            else
-              {
-                char t[32];
-                std::snprintf(t, sizeof t, "%.3g", std::stod(text.substr(at + 34)));
-                life[l] = t;
-              }
+            const auto tonnes =
+              io::summary_number(root + "/lifetime/" + l + "/summary.json", "predicted_tonnes_to_end_of_life");
+            char text[32] = "-";
+            if (tonnes)
+              std::snprintf(text, sizeof text, "%.3g", *tonnes);
+            life[l] = text;
           }
         std::ofstream gp(out.file("lifetime.gp"));
         gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'lifetime.png'\nset datafile separator ','\nset grid\n"
@@ -175,19 +176,7 @@ namespace abrade::coupling
     for (std::size_t k = 0; k < o.files.size(); ++k)
       for (int seed : o.seeds)
         samples[k].push_back(reduce(root + "/runs/" + labels[k] + "-seed" + std::to_string(seed), o.knives));
-    std::vector<std::string> phases;
-    for (const auto &[p, v] : samples[0][0].wear)
-      if (p != "total")
-        phases.push_back(p);
-    {
-      // the phases in the order of the wear table
-      const CsvTable t = read_csv_table(root + "/runs/" + labels[0] + "-seed" + std::to_string(o.seeds[0]) + "/walls/" +
-                                        o.knives[0] + "_wear.csv");
-      phases.clear();
-      for (const auto &row : t.rows)
-        if (row[0] != "total")
-          phases.push_back(row[0]);
-    }
+    const std::vector<std::string> &phases = samples[0][0].phases;
     struct Summary
     {
       std::map<std::string, Stat> wear;

@@ -1,5 +1,6 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/error.h>
+#include <abrade/common/json.h>
 #include <abrade/common/vtk_input.h>
 #include <abrade/field/calibration.h>
 
@@ -147,16 +148,6 @@ namespace abrade::field
         }
       return out;
     }
-
-    double read_archard_coefficient(const std::string &summary)
-    {
-      std::ifstream in(summary);
-      std::string   text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      std::smatch   m;
-      if (std::regex_search(text, m, std::regex("\"archard_coefficient\": *([-+0-9.eE]+)")))
-        return std::stod(m[1]);
-      return 0;
-    }
   } // namespace
 
   std::vector<Measurement> read_measurements(const std::string &path, const std::string &locations)
@@ -222,7 +213,7 @@ namespace abrade::field
     std::ifstream     in(pvd);
     if (!in)
       throw InputError(pvd, "not found: is " + directory + " the output folder of a lifetime run?");
-    run.archard_coefficient = read_archard_coefficient(directory + "/summary.json");
+    run.archard_coefficient = io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0);
     const std::regex entry("timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
     std::string      line;
     while (std::getline(in, line))

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <regex>
 
 namespace abrade::io
 {
@@ -114,5 +116,15 @@ namespace abrade::io
     if (!f)
       throw RunError("cannot write " + path);
     f << dump();
+  }
+
+  std::optional<double> summary_number(const std::string &path, const std::string &key)
+  {
+    std::ifstream     in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::smatch       m;
+    if (std::regex_search(text, m, std::regex("\"" + key + "\": *([-+0-9.eE]+)")))
+      return std::stod(m[1]);
+    return std::nullopt;
   }
 } // namespace abrade::io

@@ -1,8 +1,10 @@
 #pragma once
-// A small ordered JSON value for writing run summaries (summary.json). Writing only: abrade reads
-// its input from deal.II parameter files, never from JSON.
+// A small ordered JSON value for writing run summaries (summary.json). Input comes from deal.II
+// parameter files, never from JSON; studies that read a finished run's summary back only look a
+// number up (summary_number).
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -44,4 +46,8 @@ namespace abrade::io
     std::variant<std::nullptr_t, bool, double, std::string, Object, Array> value;
     void dump(std::string &out, int indent, int level) const;
   };
+
+  /// The first number stored under @p key in the summary.json file @p path (keys are unique in
+  /// a run's results); nothing when the file or the key is missing.
+  std::optional<double> summary_number(const std::string &path, const std::string &key);
 } // namespace abrade::io
