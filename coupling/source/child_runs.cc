@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
-#include <fstream>
+#include <filesystem>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -51,35 +51,10 @@ namespace abrade::coupling
       throw RunError(what + ": " + failure);
   }
 
-  int CsvTable::column(const std::string &name) const
-  {
-    for (std::size_t c = 0; c < header.size(); ++c)
-      if (header[c] == name)
-        return static_cast<int>(c);
-    throw RunError(file + ": no column '" + name + "'");
-  }
-
   CsvTable read_csv_table(const std::string &path)
   {
-    std::ifstream in(path);
-    if (!in)
+    if (!std::filesystem::is_regular_file(path))
       throw RunError("missing output " + path);
-    CsvTable    t;
-    t.file = path;
-    std::string line;
-    auto        split = [](const std::string &l) {
-      std::vector<std::string> out;
-      std::stringstream        ss(l);
-      std::string              cell;
-      while (std::getline(ss, cell, ','))
-        out.push_back(cell);
-      return out;
-    };
-    if (std::getline(in, line))
-      t.header = split(line);
-    while (std::getline(in, line))
-      if (!line.empty())
-        t.rows.push_back(split(line));
-    return t;
+    return io::read_csv(path);
   }
 } // namespace abrade::coupling

@@ -1,4 +1,5 @@
 #include <abrade/common/closest_point.h>
+#include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
 #include <abrade/common/json.h>
 #include <abrade/common/vtk_input.h>
@@ -30,83 +31,43 @@ namespace abrade::field
 {
   namespace
   {
-    std::vector<std::string> split_csv(const std::string &line)
+    /// A user's table: read_csv, its column names in lower case; an error when it is empty.
+    io::CsvTable read_table(const std::string &path)
     {
-      std::vector<std::string> out;
-      std::stringstream        s(line);
-      std::string              cell;
-      while (std::getline(s, cell, ','))
-        {
-          const auto b = cell.find_first_not_of(" \t\r"), e = cell.find_last_not_of(" \t\r");
-          out.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
-        }
-      return out;
-    }
-
-    /// A CSV table: its header's column indices and its rows with their line numbers.
-    struct Table
-    {
-      std::map<std::string, std::size_t>                         column;
-      std::vector<std::pair<long, std::vector<std::string>>>     rows;
-    };
-
-    Table read_table(const std::string &path)
-    {
-      std::ifstream in(path);
-      if (!in)
-        throw InputError(path, "file not found");
-      Table       t;
-      std::string line;
-      long        number = 0;
-      bool        header = true;
-      while (std::getline(in, line))
-        {
-          ++number;
-          if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#')
-            continue;
-          auto cells = split_csv(line);
-          if (header)
-            {
-              for (std::size_t c = 0; c < cells.size(); ++c)
-                {
-                  std::string name = cells[c];
-                  std::transform(name.begin(), name.end(), name.begin(), ::tolower);
-                  t.column[name] = c;
-                }
-              header = false;
-            }
-          else
-            t.rows.emplace_back(number, std::move(cells));
-        }
-      if (header)
+      io::CsvTable t = io::read_csv(path);
+      if (t.header.empty())
         throw InputError(path, "empty table (a header line and at least one row expected)");
+      for (auto &name : t.header)
+        std::transform(name.begin(), name.end(), name.begin(), ::tolower);
       return t;
     }
 
-    double number(const std::string &path, long line, const std::vector<std::string> &row, std::size_t c,
-                  const std::string &name)
+    /// The number in column @p name of row @p r; InputError naming the file and line.
+    double number(const io::CsvTable &t, std::size_t r, const std::string &name)
     {
-      const std::string where = path + ":" + std::to_string(line);
-      if (c >= row.size() || row[c].empty())
+      const std::string  where = t.file + ":" + std::to_string(t.line[r]);
+      const int          c     = t.find(name);
+      const std::string &cell  = c >= 0 && std::size_t(c) < t.rows[r].size() ? t.rows[r][c] : std::string();
+      if (cell.empty())
         throw InputError(where, "no value in column '" + name + "'");
       try
         {
-          std::size_t used = 0;
-          const double v = std::stod(row[c], &used);
-          if (used != row[c].size() || !std::isfinite(v))
+          std::size_t  used = 0;
+          const double v    = std::stod(cell, &used);
+          if (used != cell.size() || !std::isfinite(v))
             throw std::invalid_argument("");
           return v;
         }
       catch (const std::exception &)
         {
-          throw InputError(where, "'" + row[c] + "' in column '" + name + "' is not a number");
+          throw InputError(where, "'" + cell + "' in column '" + name + "' is not a number");
         }
     }
 
-    std::string columns_of(const Table &t)
+    std::string columns_of(const io::CsvTable &t)
     {
       std::string s;
-      for (const auto &[name, c] : t.column)
+      for (const auto &name : t.header)
         s += (s.empty() ? "" : ", ") + name;
       return s;
     }
@@ -152,50 +113,49 @@ namespace abrade::field
 
   std::vector<Measurement> read_measurements(const std::string &path, const std::string &locations)
   {
-    const Table t = read_table(path);
+    const io::CsvTable t = read_table(path);
+    auto has = [](const io::CsvTable &table, const std::string &c) { return table.find(c) >= 0; };
     std::map<std::string, std::array<double, 3>> named;
     if (!locations.empty())
       {
-        const Table l = read_table(locations);
+        const io::CsvTable l = read_table(locations);
         for (const char *c : {"name", "x", "y", "z"})
-          if (!l.column.count(c))
+          if (!has(l, c))
             throw InputError(locations, std::string("missing column '") + c + "' (found: " + columns_of(l) + ")");
-        for (const auto &[line, row] : l.rows)
-          named[row[l.column.at("name")]] = {number(locations, line, row, l.column.at("x"), "x"),
-                                             number(locations, line, row, l.column.at("y"), "y"),
-                                             number(locations, line, row, l.column.at("z"), "z")};
+        for (std::size_t r = 0; r < l.rows.size(); ++r)
+          named[l.rows[r][l.find("name")]] = {number(l, r, "x"), number(l, r, "y"), number(l, r, "z")};
       }
-    const bool by_name = t.column.count("location") > 0;
+    const bool by_name = has(t, "location");
     std::vector<std::string> required = {"tonnes"};
     if (!by_name)
       required.insert(required.end(), {"x", "y", "z"});
     for (const auto &c : required)
-      if (!t.column.count(c))
+      if (!has(t, c))
         throw InputError(path, "missing column '" + c + "' (found: " + columns_of(t) +
                                  "; needed: tonnes, depth or depth_mm, and x, y, z or location)");
-    const bool in_mm = !t.column.count("depth") && t.column.count("depth_mm");
-    if (!t.column.count("depth") && !in_mm)
+    const bool in_mm = !has(t, "depth") && has(t, "depth_mm");
+    if (!has(t, "depth") && !in_mm)
       throw InputError(path, "missing column 'depth' [m] or 'depth_mm' (found: " + columns_of(t) + ")");
     if (by_name && named.empty())
       throw InputError(path, "column 'location' names points: give their coordinates with --locations FILE");
     std::vector<Measurement> out;
-    for (const auto &[line, row] : t.rows)
+    for (std::size_t r = 0; r < t.rows.size(); ++r)
       {
         Measurement m;
-        m.where  = path + ":" + std::to_string(line);
-        m.tonnes = number(path, line, row, t.column.at("tonnes"), "tonnes");
-        m.depth  = in_mm ? 1e-3 * number(path, line, row, t.column.at("depth_mm"), "depth_mm")
-                         : number(path, line, row, t.column.at("depth"), "depth");
+        m.where  = path + ":" + std::to_string(t.line[r]);
+        m.tonnes = number(t, r, "tonnes");
+        m.depth  = in_mm ? 1e-3 * number(t, r, "depth_mm") : number(t, r, "depth");
         if (by_name)
           {
-            const std::string name = t.column.at("location") < row.size() ? row[t.column.at("location")] : "";
+            const auto       &row  = t.rows[r];
+            const std::size_t c    = std::size_t(t.find("location"));
+            const std::string name = c < row.size() ? row[c] : "";
             if (!named.count(name))
               throw InputError(m.where, "unknown location '" + name + "' (not in " + locations + ")");
             m.point = named[name];
           }
         else
-          m.point = {number(path, line, row, t.column.at("x"), "x"), number(path, line, row, t.column.at("y"), "y"),
-                     number(path, line, row, t.column.at("z"), "z")};
+          m.point = {number(t, r, "x"), number(t, r, "y"), number(t, r, "z")};
         if (m.tonnes < 0)
           throw InputError(m.where, "negative tonnes");
         out.push_back(m);

@@ -1,6 +1,8 @@
 #pragma once
 // Studies made of many `abrade run`s (sweep, concepts): child processes, as many at a time as
 // asked, their output tables read back.
+#include <abrade/common/csv_reader.h>
+
 #include <map>
 #include <string>
 #include <vector>
@@ -23,14 +25,7 @@ namespace abrade::coupling
   /// throws RunError naming a failed run's log.
   void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what);
 
-  /// A CSV file as header and rows of strings.
-  struct CsvTable
-  {
-    std::vector<std::string>              header;
-    std::vector<std::vector<std::string>> rows;
-    std::string                           file;
-    /// The index of column @p name; RunError naming the file if there is none.
-    int column(const std::string &name) const;
-  };
+  using io::CsvTable;
+  /// A table a child run wrote; RunError when the run left none.
   CsvTable read_csv_table(const std::string &path);
 } // namespace abrade::coupling
