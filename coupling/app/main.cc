@@ -21,9 +21,11 @@
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/sweep.h>
 #include <abrade/dem/mesh_io.h>
+#include <abrade/dem/parallel.h>
 #include <abrade/field/commands.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <ctime>
@@ -161,8 +163,17 @@ namespace
     prm.leave_subsection();
     const std::string job_name = prm.get("Job");
 
-    io::OutputDirectory out(dir);
+    // Under mpirun every rank runs the job (the DEM spread over the ranks, the rest on
+    // globally reduced data); rank 0 writes the results, the others into DIR/.rank-N.
+    if (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"))
+      coupling::init_mpi_once();
+    const dem::Parallel ranks = dem::Parallel::world();
+    const bool          root  = ranks.rank() == 0;
+    io::OutputDirectory out(root ? dir : dir + "/.rank-" + std::to_string(ranks.rank()), dir);
     io::Log             log;
+    log.set_echo(root);
+    if (!root)
+      io::ProgressLine::set_quiet(true);
     log.open(out.file("log.txt"));
     const std::string canonical = params.canonical_text();
     std::ofstream(out.file("parameters.prm")) << canonical;
@@ -171,7 +182,8 @@ namespace
     const long threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : dem::default_thread_count();
     prm.leave_subsection();
     log.line("abrade " + std::string(version_string) + ": job '" + job_name + "' from " + params.file_name() +
-             ", output in " + dir + ", " + std::to_string(threads) + " threads");
+             ", output in " + dir + ", " + std::to_string(threads) + " threads" +
+             (ranks.distributed() ? " on each of " + std::to_string(ranks.size()) + " MPI ranks" : ""));
 
     io::Json summary;
     summary["abrade_version"] = version_string;
@@ -185,6 +197,7 @@ namespace
       summary["started"] = buf;
     }
     summary["threads"] = threads;
+    summary["mpi_ranks"] = static_cast<long>(ranks.size());
     io::Timers           timers;
     io::Json            &results = summary["results"];
     coupling::JobContext ctx{params, out, results, timers, log, cl.resume};

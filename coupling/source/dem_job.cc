@@ -26,6 +26,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
 
 namespace abrade::coupling
 {
@@ -50,12 +51,13 @@ namespace abrade::coupling
   namespace
   {
     /// The bed's top: the highest particle's top [m].
-    double bed_top(const dem::Simulation &sim)
+    double bed_top(const dem::Simulation &sim) // collective
     {
-      double top = -std::numeric_limits<double>::infinity();
-      for (std::size_t i = 0; i < sim.particles().size(); ++i)
-        top = std::max(top, sim.particles().z[i] + sim.particles().radius[i]);
-      return top;
+      const auto &P   = sim.particles();
+      double      top = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < P.size(); ++i)
+        top = std::max(top, P.z[i] + P.radius[i]);
+      return sim.parallel().max(top);
     }
   } // namespace
 
@@ -63,14 +65,14 @@ namespace abrade::coupling
   {
     {
       if (!bed.empty() && std::filesystem::path(bed).is_relative())
-        bed = ctx.output.file(bed);
+        bed = ctx.output.shared_file(bed);
       if (!bed.empty() && std::filesystem::exists(bed))
         {
           io::ScopedTimer t(ctx.timers, "load bed");
           dem::load_bed(sim, bed);
-          ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.particles().size()) +
-                       " particles, top at z = " + fmt(bed_top(sim), 4) + " m");
           sim.setup();
+          ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.n_particles()) +
+                       " particles, top at z = " + fmt(bed_top(sim), 4) + " m");
           return true;
         }
 
@@ -95,11 +97,11 @@ namespace abrade::coupling
         io::ProgressLine progress("settling", c.settle_max_time);
         const double     t0 = sim.time();
         sim.settle(c.settle_ke, c.settle_max_time, [&](const dem::Simulation &s) {
-          const double ke = s.kinetic_energy() / std::max<std::size_t>(1, s.particles().size());
+          const double ke = s.kinetic_energy() / std::max<std::size_t>(1, s.n_particles());
           progress.update(s.time() - t0, "kinetic energy " + fmt(ke, 3) + " J per particle");
         });
       }
-      const double ke = sim.kinetic_energy() / std::max<std::size_t>(1, sim.particles().size());
+      const double ke = sim.kinetic_energy() / std::max<std::size_t>(1, sim.n_particles());
       ctx.log.line("Settled for " + fmt(sim.time()) + " s: kinetic energy " + fmt(ke) + " J per particle, top at z = " +
                    fmt(bed_top(sim), 4) + " m");
       if (c.settle_ke > 0 && ke > c.settle_ke)
@@ -124,7 +126,7 @@ namespace abrade::coupling
     const bool loaded = prepare_bed(c, sim, ctx, c.bed_file);
     sim.set_time(0);
     flush_warnings(sim, ctx.log);
-    ctx.log.line("Particles: " + std::to_string(sim.particles().size()) + ", time step " + fmt(sim.dt()) +
+    ctx.log.line("Particles: " + std::to_string(sim.n_particles()) + ", time step " + fmt(sim.dt()) +
                  " s (" + fmt(sim.dt() / sim.rayleigh_time_step()) + " x Rayleigh)");
 
     // wear laws and contact-layer probes
@@ -135,8 +137,9 @@ namespace abrade::coupling
     sim.add_hook(wear);
     std::vector<std::shared_ptr<dem::LayerProbe>> probes;
     double r_max = 0;
-    for (double r : sim.particles().radius)
-      r_max = std::max(r_max, r);
+    for (std::size_t i = 0; i < std::as_const(sim).particles().size(); ++i)
+      r_max = std::max(r_max, std::as_const(sim).particles().radius[i]);
+    r_max = sim.parallel().max(r_max);
     for (std::size_t w = 0; w < c.walls.size(); ++w)
       if (c.walls[w].probe)
         {
@@ -198,16 +201,17 @@ namespace abrade::coupling
           output.write_snapshot(sim);
         flush_warnings(sim, ctx.log);
         const auto   after = sim.statistics();
-        const double rate  = (after.particle_steps - before.particle_steps) /
-                            std::max(1e-12, after.loop_seconds - before.loop_seconds);
+        // all ranks' particle-steps over the slowest rank's time
+        const double rate = sim.parallel().sum(double(after.particle_steps - before.particle_steps)) /
+                            std::max(1e-12, sim.parallel().max(after.loop_seconds - before.loop_seconds));
         io::Json &ph          = phases[name];
         ph["duration"]        = duration;
         ph["steps"]           = steps;
         ph["particle_steps_per_second"] = rate;
-        ph["particles"]       = static_cast<long>(sim.particles().size());
+        ph["particles"]       = static_cast<long>(sim.n_particles());
         if (c.payload_height)
           {
-            const double held = sim.particles().mass_above(*c.payload_height);
+            const double held = sim.mass_above(*c.payload_height);
             ph["mass_above_payload_height"] = held;
             payload_table->row(name, {held});
             ctx.log.line("Phase " + name + ": " + fmt(held, 4) + " kg above the payload height");
@@ -279,12 +283,16 @@ namespace abrade::coupling
       }
     const auto stats = sim.statistics();
     io::Json  &r     = ctx.results;
-    r["particles"]   = static_cast<long>(sim.particles().size());
+    r["particles"]   = static_cast<long>(sim.n_particles());
+    r["ranks"]       = static_cast<long>(sim.parallel().size());
+    r["rebalances"]  = stats.rebalances;
+    r["migrated_particles"] = sim.parallel().sum(stats.migrated); // moves to another rank
     r["bed_loaded"]  = loaded;
     r["time_step"]   = sim.dt();
     r["steps"]       = stats.steps - stats0.steps;
     r["neighbour_rebuilds"] = stats.rebuilds;
     r["particle_steps_per_second"] =
-      (stats.particle_steps - stats0.particle_steps) / std::max(1e-12, stats.loop_seconds - stats0.loop_seconds);
+      sim.parallel().sum(double(stats.particle_steps - stats0.particle_steps)) /
+      std::max(1e-12, sim.parallel().max(stats.loop_seconds - stats0.loop_seconds));
   }
 } // namespace abrade::coupling

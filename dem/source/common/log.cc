@@ -6,7 +6,8 @@ namespace abrade::io
 {
   void Log::line(const std::string &text)
   {
-    std::cout << text << std::endl;
+    if (echo)
+      std::cout << text << std::endl;
     if (file)
       file << text << std::endl;
   }

@@ -5,7 +5,8 @@
 
 namespace abrade::io
 {
-  OutputDirectory::OutputDirectory(std::string root) : root_path(std::move(root))
+  OutputDirectory::OutputDirectory(std::string root, std::string shared)
+    : root_path(std::move(root)), shared_path(shared.empty() ? root_path : std::move(shared))
   {
     std::error_code ec;
     std::filesystem::create_directories(root_path, ec);

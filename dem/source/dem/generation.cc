@@ -191,10 +191,12 @@ namespace abrade::dem
 
   void save_bed(const Simulation &sim, const std::string &path)
   {
+    const ParticleStore P = sim.gather_particles(); // sorted by id: the same file on any ranks
+    if (sim.parallel().rank() != 0)
+      return;
     std::ofstream out(path, std::ios::binary);
     if (!out)
       throw RunError("cannot write bed file " + path);
-    const auto         &P = sim.particles();
     const std::uint64_t n = P.size();
     out.write(bed_magic, 8);
     out.write(reinterpret_cast<const char *>(&n), sizeof n);

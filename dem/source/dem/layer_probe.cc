@@ -79,6 +79,9 @@ namespace abrade::dem
             sum += axis.dot(Vec3(P.vx[i], P.vy[i], P.vz[i]));
           }
       }
+    // every rank sees its own particles
+    count = sim.parallel().sum(count);
+    sum   = sim.parallel().sum(sum);
     taken.push_back({sim.time(), current, count, count ? sum / count : 0.0, axis.dot(w.velocity)});
   }
 } // namespace abrade::dem

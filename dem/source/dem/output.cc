@@ -36,7 +36,7 @@ namespace abrade::dem
     std::snprintf(tag, sizeof tag, "%05d", counter++);
     if (particles_on)
       {
-        const auto  &P = sim.particles();
+        const ParticleStore P = sim.gather_particles(); // all ranks' particles on rank 0
         io::PolyData d;
         const std::size_t n = P.size();
         d.points.resize(3 * n);
@@ -66,8 +66,10 @@ namespace abrade::dem
         d.points = wall.current;
         for (const auto &t : wall.mesh.triangles)
           d.triangles.push_back({t[0], t[1], t[2]});
-        d.cell_fields.push_back({"normal_impulse", 1, wall.normal_impulse});
-        d.cell_fields.push_back({"tangential_impulse", 1, wall.tangential_impulse});
+        std::vector<double> normal = wall.normal_impulse, tangential = wall.tangential_impulse;
+        sim.parallel().sum(normal), sim.parallel().sum(tangential); // each rank has its own contacts'
+        d.cell_fields.push_back({"normal_impulse", 1, normal});
+        d.cell_fields.push_back({"tangential_impulse", 1, tangential});
         for (const auto &[name, f] : fields)
           d.cell_fields.push_back({name, 1, f(sim, w)});
         const std::string file = wall.name + "_" + tag + ".vtp";

@@ -1,7 +1,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/closest_point.h>
 #include <abrade/dem/hertz_mindlin.h>
-#include <abrade/dem/simulation.h>
+#include "simulation_impl.h"
 
 #include <omp.h>
 
@@ -13,51 +13,6 @@
 
 namespace abrade::dem
 {
-  // Neighbour lists, histories and per-thread scratch space: everything the time loop needs
-  // that is not particle state.
-  struct Simulation::Impl
-  {
-    int n_threads = 1;
-
-    // particle-particle half list (CSR) with the tangential history of each pair
-    std::vector<std::size_t> offsets;
-    std::vector<int>         neighbours;
-    std::vector<double>      shear; // 3 per pair, for the row particle relative to the column
-
-    // particle-wall candidates (CSR) and up to K contact histories per particle
-    static constexpr int        K = 4;
-    std::vector<std::size_t>    wall_offsets;
-    std::vector<int>            candidate_wall, candidate_triangle;
-    std::vector<int>            hist_wall, hist_tri; // K per particle, -1: free slot
-    std::vector<double>         hist_shear;          // 3 K per particle
-    std::vector<unsigned char>  hist_used;           // K per particle
-
-    // per-thread ranges of the pair loop, balanced by pair count (deterministic, unlike a
-    // dynamic schedule)
-    std::vector<std::size_t> thread_begin;
-
-    // positions at the last build
-    std::vector<double> x0, y0, z0;
-    double              max_displacement = 0;
-
-    // cell grid
-    double              cell = 1;
-    Vec3                lo;
-    long                nx = 1, ny = 1, nz = 1;
-    std::vector<int>    cell_start;
-
-    // per-thread force buffers (thread 0 writes to the particle arrays) and wall loads
-    std::vector<std::vector<double>> buffers; // 6 N per thread >= 1
-    std::vector<std::vector<double>> wall_loads; // 6 per wall per thread
-    ContactLog                       log;
-
-    // problems found during a step
-    long   first_bad_particle = -1;
-    double worst_overlap_ratio = 0;
-    long   worst_overlap_i = -1, worst_overlap_j = -1;
-    bool   force_rebuild = true;
-  };
-
   namespace
   {
     inline bool triangles_share_vertex(const std::array<int, 3> &a, const std::array<int, 3> &b)
@@ -84,6 +39,7 @@ namespace abrade::dem
   Simulation::Simulation(const Settings &s) : config(s), impl(std::make_unique<Impl>())
   {
     impl->n_threads = config.threads > 0 ? config.threads : threads_at_start;
+    impl->parallel  = config.distribute ? Parallel::world() : Parallel();
   }
 
   Simulation::Simulation(Simulation &&) noexcept = default;
@@ -190,7 +146,7 @@ namespace abrade::dem
         dt = std::min(dt, M_PI * store.radius[i] * std::sqrt(m.density / m.shear_modulus()) /
                             (0.1631 * m.poisson_ratio + 0.8766));
       }
-    return dt;
+    return impl->parallel.min(dt);
   }
 
   void Simulation::setup()
@@ -208,6 +164,7 @@ namespace abrade::dem
     const std::size_t nm = mats.size();
     if (nm == 0)
       throw InputError("", "no materials defined");
+    distribute_new_particles();
     coefficients.assign(nm * nm, PairCoefficients());
     for (std::size_t a = 0; a < nm; ++a)
       for (std::size_t b = 0; b < nm; ++b)
@@ -227,9 +184,10 @@ namespace abrade::dem
 
     // Time step: explicit, or a fraction of the Rayleigh time step of the smallest particle.
     double r_min = std::numeric_limits<double>::infinity(), r_max = 0;
-    for (double r : store.radius)
-      r_min = std::min(r_min, r), r_max = std::max(r_max, r);
-    if (store.size() == 0)
+    for (std::size_t i = 0; i < store.size(); ++i)
+      r_min = std::min(r_min, store.radius[i]), r_max = std::max(r_max, store.radius[i]);
+    r_min = impl->parallel.min(r_min), r_max = impl->parallel.max(r_max);
+    if (n_particles() == 0)
       r_min = r_max = 1;
     time_step = config.time_step > 0 ? config.time_step : config.rayleigh_fraction * rayleigh_time_step();
     if (!(time_step > 0) || !std::isfinite(time_step))
@@ -295,247 +253,6 @@ namespace abrade::dem
     return false;
   }
 
-  void Simulation::build_neighbour_lists()
-  {
-    Impl             &m = *impl;
-    const std::size_t n_old = store.size();
-
-    // 1. Grid over the particles that are still inside the domain.
-    std::vector<char> keep(n_old, 1);
-    Vec3              lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-    double            r_max = 0;
-    for (std::size_t i = 0; i < n_old; ++i)
-      {
-        const Vec3 p(store.x[i], store.y[i], store.z[i]);
-        if (!(p.array() >= config.domain_min.array()).all() || !(p.array() <= config.domain_max.array()).all())
-          {
-            keep[i] = 0; // lost; reported by check_step() before we get here
-            continue;
-          }
-        lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-        r_max = std::max(r_max, store.radius[i]);
-      }
-    if (lo[0] > hi[0])
-      lo = hi = Vec3::Zero();
-    m.cell = std::max(2 * r_max + skin, 1e-12);
-    // keep the number of cells bounded (a few particles far apart must not allocate a huge grid)
-    const double max_cells = 8.0 * std::max<std::size_t>(n_old, 64);
-    while (((hi - lo) / m.cell).array().floor().prod() > max_cells)
-      m.cell *= 1.5;
-    m.lo = lo - Vec3::Constant(1e-9);
-    m.nx = std::max(1L, long((hi[0] - m.lo[0]) / m.cell) + 1);
-    m.ny = std::max(1L, long((hi[1] - m.lo[1]) / m.cell) + 1);
-    m.nz = std::max(1L, long((hi[2] - m.lo[2]) / m.cell) + 1);
-    const long n_cells = m.nx * m.ny * m.nz;
-    auto cell_of = [&m](double x, double y, double z) {
-      const long i = std::clamp(long((x - m.lo[0]) / m.cell), 0L, m.nx - 1);
-      const long j = std::clamp(long((y - m.lo[1]) / m.cell), 0L, m.ny - 1);
-      const long k = std::clamp(long((z - m.lo[2]) / m.cell), 0L, m.nz - 1);
-      return (k * m.ny + j) * m.nx + i;
-    };
-
-    // 2. Sort particles by cell (counting sort), dropping lost ones.
-    std::vector<long> cell_index(n_old);
-    m.cell_start.assign(n_cells + 1, 0);
-    for (std::size_t i = 0; i < n_old; ++i)
-      if (keep[i])
-        {
-          cell_index[i] = cell_of(store.x[i], store.y[i], store.z[i]);
-          ++m.cell_start[cell_index[i] + 1];
-        }
-    for (long c = 0; c < n_cells; ++c)
-      m.cell_start[c + 1] += m.cell_start[c];
-    const std::size_t n = m.cell_start[n_cells];
-    std::vector<std::size_t> order(n);
-    {
-      std::vector<int> fill(m.cell_start.begin(), m.cell_start.end() - 1);
-      for (std::size_t i = 0; i < n_old; ++i)
-        if (keep[i])
-          order[fill[cell_index[i]]++] = i;
-    }
-    std::vector<long> old_to_new(n_old, -1);
-    for (std::size_t k = 0; k < n; ++k)
-      old_to_new[order[k]] = static_cast<long>(k);
-    store.permute(order, m.n_threads);
-
-    auto permute_slots = [&order, n](auto &v, int per) {
-      std::remove_reference_t<decltype(v)> w(per * n);
-      for (std::size_t k = 0; k < n; ++k)
-        for (int s = 0; s < per; ++s)
-          w[per * k + s] = v[per * order[k] + s];
-      v.swap(w);
-    };
-    permute_slots(m.hist_wall, Impl::K);
-    permute_slots(m.hist_tri, Impl::K);
-    permute_slots(m.hist_shear, 3 * Impl::K);
-    permute_slots(m.hist_used, Impl::K);
-
-    // 3. Half neighbour list: own cell (j > i) and the 13 forward neighbour cells.
-    static const int stencil[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
-                                       {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
-                                       {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
-    std::vector<std::size_t> old_offsets;
-    std::vector<int>         old_neighbours;
-    std::vector<double>      old_shear;
-    old_offsets.swap(m.offsets);
-    old_neighbours.swap(m.neighbours);
-    old_shear.swap(m.shear);
-    m.offsets.assign(n + 1, 0);
-
-    const double *X = store.x.data(), *Y = store.y.data(), *Z = store.z.data(), *R = store.radius.data();
-    const double  sk = skin;
-    auto for_each_candidate = [&](std::size_t i, auto &&visit) {
-      const long c  = cell_of(X[i], Y[i], Z[i]);
-      const long ci = c % m.nx, cj = (c / m.nx) % m.ny, ck = c / (m.nx * m.ny);
-      for (int j = m.cell_start[c]; j < m.cell_start[c + 1]; ++j)
-        if (std::size_t(j) > i)
-          visit(j);
-      for (const auto &s : stencil)
-        {
-          const long a = ci + s[0], b = cj + s[1], d = ck + s[2];
-          if (a < 0 || b < 0 || d < 0 || a >= m.nx || b >= m.ny || d >= m.nz)
-            continue;
-          const long cc = (d * m.ny + b) * m.nx + a;
-          for (int j = m.cell_start[cc]; j < m.cell_start[cc + 1]; ++j)
-            visit(j);
-        }
-    };
-    auto close = [&](std::size_t i, int j) {
-      const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
-      const double cut = R[i] + R[j] + sk;
-      return dx * dx + dy * dy + dz * dz < cut * cut;
-    };
-#pragma omp parallel for schedule(static) num_threads(m.n_threads)
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        std::size_t count = 0;
-        for_each_candidate(i, [&](int j) { count += close(i, j); });
-        m.offsets[i + 1] = count;
-      }
-    for (std::size_t i = 0; i < n; ++i)
-      m.offsets[i + 1] += m.offsets[i];
-    m.neighbours.resize(m.offsets[n]);
-    m.shear.assign(3 * m.offsets[n], 0.0);
-#pragma omp parallel for schedule(static) num_threads(m.n_threads)
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        std::size_t k = m.offsets[i];
-        for_each_candidate(i, [&](int j) {
-          if (close(i, j))
-            m.neighbours[k++] = j;
-        });
-        // carry over the tangential history of pairs that were in the old list
-        if (old_offsets.empty())
-          continue;
-        for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)
-          {
-            const std::size_t oi = order[i], oj = order[m.neighbours[q]];
-            auto find = [&](std::size_t row, std::size_t col) -> long {
-              for (std::size_t p = old_offsets[row]; p < old_offsets[row + 1]; ++p)
-                if (std::size_t(old_neighbours[p]) == col)
-                  return static_cast<long>(p);
-              return -1;
-            };
-            double sign = 1;
-            long   p    = find(oi, oj);
-            if (p < 0)
-              {
-                p    = find(oj, oi);
-                sign = -1;
-              }
-            if (p >= 0)
-              for (int d = 0; d < 3; ++d)
-                m.shear[3 * q + d] = sign * old_shear[3 * p + d];
-          }
-      }
-
-    // balanced ranges for the pair loop: equal shares of (pairs + a constant per particle)
-    m.thread_begin.assign(m.n_threads + 1, n);
-    m.thread_begin[0] = 0;
-    {
-      const double total = double(m.offsets[n]) + 4.0 * n;
-      std::size_t  i     = 0;
-      for (int t = 1; t < m.n_threads; ++t)
-        {
-          const double target = total * t / m.n_threads;
-          while (i < n && double(m.offsets[i]) + 4.0 * i < target)
-            ++i;
-          m.thread_begin[t] = i;
-        }
-    }
-
-    // 4. Wall candidates: particles within radius + skin of each triangle.
-    std::vector<std::vector<std::array<int, 3>>> found(m.n_threads);
-    for (std::size_t w = 0; w < walls.size(); ++w)
-      {
-        const Wall  &wall = walls[w];
-        const double *V   = wall.current.data();
-#pragma omp parallel for schedule(dynamic, 16) num_threads(m.n_threads)
-        for (std::size_t t = 0; t < wall.mesh.n_triangles(); ++t)
-          {
-            const auto   &tri = wall.mesh.triangles[t];
-            const double *a = V + 3 * tri[0], *b = V + 3 * tri[1], *c = V + 3 * tri[2];
-            long          lo_c[3], hi_c[3];
-            const long    dims[3] = {m.nx, m.ny, m.nz};
-            bool          empty   = false;
-            for (int d = 0; d < 3; ++d)
-              {
-                const double mn = std::min({a[d], b[d], c[d]}) - r_max - sk;
-                const double mx = std::max({a[d], b[d], c[d]}) + r_max + sk;
-                lo_c[d] = std::max(0L, long(std::floor((mn - m.lo[d]) / m.cell)));
-                hi_c[d] = std::min(dims[d] - 1, long(std::floor((mx - m.lo[d]) / m.cell)));
-                empty |= lo_c[d] > hi_c[d];
-              }
-            if (empty)
-              continue;
-            auto &out = found[omp_get_thread_num()];
-            for (long kk = lo_c[2]; kk <= hi_c[2]; ++kk)
-              for (long jj = lo_c[1]; jj <= hi_c[1]; ++jj)
-                for (long ii = lo_c[0]; ii <= hi_c[0]; ++ii)
-                  {
-                    const long cc = (kk * m.ny + jj) * m.nx + ii;
-                    for (int p = m.cell_start[cc]; p < m.cell_start[cc + 1]; ++p)
-                      {
-                        const double q[3] = {X[p], Y[p], Z[p]};
-                        const auto   cp   = closest_point_on_triangle(q, a, b, c);
-                        const double dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
-                        const double cut = R[p] + sk;
-                        if (dx * dx + dy * dy + dz * dz < cut * cut)
-                          out.push_back({p, int(w), int(t)});
-                      }
-                  }
-          }
-      }
-    m.wall_offsets.assign(n + 1, 0);
-    for (const auto &f : found)
-      for (const auto &e : f)
-        ++m.wall_offsets[e[0] + 1];
-    for (std::size_t i = 0; i < n; ++i)
-      m.wall_offsets[i + 1] += m.wall_offsets[i];
-    m.candidate_wall.resize(m.wall_offsets[n]);
-    m.candidate_triangle.resize(m.wall_offsets[n]);
-    {
-      std::vector<std::size_t> fill(m.wall_offsets.begin(), m.wall_offsets.end() - 1);
-      for (const auto &f : found)
-        for (const auto &e : f)
-          {
-            const std::size_t k   = fill[e[0]]++;
-            m.candidate_wall[k]     = e[1];
-            m.candidate_triangle[k] = e[2];
-          }
-    }
-
-    // 5. Reference positions for the displacement criterion.
-    m.x0 = store.x, m.y0 = store.y, m.z0 = store.z;
-    m.max_displacement = 0;
-    for (auto &w : walls)
-      w.mark_build();
-    for (auto &b : m.buffers)
-      b.assign(6 * n, 0.0);
-    m.force_rebuild = false;
-    ++stats.rebuilds;
-  }
-
   // ---------------------------------------------------------------------------------------------
   // Forces
   // ---------------------------------------------------------------------------------------------
@@ -544,7 +261,7 @@ namespace abrade::dem
   void Simulation::pair_forces()
   {
     Impl             &m  = *impl;
-    const std::size_t n  = store.size();
+    const std::size_t n  = store.n_local(); // owned and ghosts (forces on ghosts are dropped)
     const std::size_t nm = mats.size();
     const double      dt = time_step;
     ParticleStore    &P  = store;
@@ -663,6 +380,7 @@ namespace abrade::dem
   {
     Impl             &m  = *impl;
     const std::size_t n  = store.size();
+    const std::size_t nl = store.n_local(); // the per-thread buffers hold owned and ghosts
     const std::size_t nm = mats.size();
     const std::size_t nw = walls.size();
     const double      dt = time_step;
@@ -703,9 +421,9 @@ namespace abrade::dem
           for (int b = 1; b < m.n_threads; ++b)
             {
               const double *buf = m.buffers[b].data();
-              fx += buf[i], fy += buf[n + i], fz += buf[2 * n + i];
+              fx += buf[i], fy += buf[nl + i], fz += buf[2 * nl + i];
               if (rotation)
-                tx += buf[3 * n + i], ty += buf[4 * n + i], tz += buf[5 * n + i];
+                tx += buf[3 * nl + i], ty += buf[4 * nl + i], tz += buf[5 * nl + i];
             }
           fx += P.mass[i] * g[0], fy += P.mass[i] * g[1], fz += P.mass[i] * g[2];
 
@@ -893,14 +611,16 @@ namespace abrade::dem
       if (my_worst > worst)
         worst = my_worst, worst_i = my_i;
     }
+    // the walls' loads from all threads and ranks
+    std::vector<double> &total = m.wall_loads[0];
+    for (std::size_t b = 1; b < m.wall_loads.size(); ++b)
+      for (std::size_t k = 0; k < total.size(); ++k)
+        total[k] += m.wall_loads[b][k];
+    m.parallel.sum(total);
     for (std::size_t w = 0; w < nw; ++w)
       {
-        Vec3 F = Vec3::Zero(), T = Vec3::Zero();
-        for (const auto &l : m.wall_loads)
-          for (int d = 0; d < 3; ++d)
-            F[d] += l[6 * w + d], T[d] += l[6 * w + 3 + d];
-        walls[w].force  = F;
-        walls[w].torque = T;
+        walls[w].force  = Vec3(total[6 * w], total[6 * w + 1], total[6 * w + 2]);
+        walls[w].torque = Vec3(total[6 * w + 3], total[6 * w + 4], total[6 * w + 5]);
       }
     if (worst > m.worst_overlap_ratio)
       {
@@ -957,27 +677,42 @@ namespace abrade::dem
               P.z[i] >= dmin[2] && P.z[i] <= dmax[2]))
           bad = std::min(bad, long(i));
       }
-    m.max_displacement = std::sqrt(max_d2);
     for (auto &w : walls)
       w.advance(dt);
     t += dt;
     ++stats.steps;
-
-    if (bad != std::numeric_limits<long>::max())
-      {
-        const bool nan = !std::isfinite(P.x[bad] + P.y[bad] + P.z[bad]);
-        std::ostringstream s;
-        s << (nan ? "NaN position" : "particle left the domain") << ": particle id " << P.id[bad]
-          << " at step " << stats.steps << " (t = " << t << " s), position (" << P.x[bad] << ", "
-          << P.y[bad] << ", " << P.z[bad] << ")";
-        if (nan || config.stop_on_error)
-          throw RunError(s.str());
-        warn(s.str() + "; removed");
-        m.force_rebuild = true;
-      }
+    // one reduction for the rebuild criterion and the problems of all ranks
+    {
+      std::vector<double> flags{max_d2, bad != std::numeric_limits<long>::max() ? 1.0 : 0.0,
+                                m.force_rebuild ? 1.0 : 0.0};
+      m.parallel.max(flags);
+      m.max_displacement = std::sqrt(flags[0]);
+      m.force_rebuild    = flags[2] > 0;
+      if (flags[1] > 0)
+        {
+          std::ostringstream s;
+          bool               nan = false;
+          if (bad != std::numeric_limits<long>::max())
+            {
+              nan = !std::isfinite(P.x[bad] + P.y[bad] + P.z[bad]);
+              s << (nan ? "NaN position" : "particle left the domain") << ": particle id " << P.id[bad]
+                << " at step " << stats.steps << " (t = " << t << " s), position (" << P.x[bad] << ", "
+                << P.y[bad] << ", " << P.z[bad] << ")";
+            }
+          const int   holder = m.parallel.max_location(s.str().empty() ? 0.0 : 1.0 + nan).second;
+          std::string text   = m.parallel.broadcast(s.str(), holder);
+          nan                = text.rfind("NaN", 0) == 0;
+          if (nan || config.stop_on_error)
+            throw RunError(text);
+          warn(text + "; removed");
+          m.force_rebuild = true;
+        }
+    }
 
     if (needs_rebuild())
       build_neighbour_lists();
+    else
+      update_ghosts();
     compute_forces();
 
     // second half kick
@@ -1012,22 +747,27 @@ namespace abrade::dem
   void Simulation::check_step()
   {
     const Impl &m = *impl;
-    if (m.worst_overlap_ratio > config.max_overlap_fraction)
+    const auto [worst, holder] = m.parallel.max_location(m.worst_overlap_ratio);
+    if (worst > config.max_overlap_fraction)
       {
         std::ostringstream s;
-        s << "overlap of " << 100 * m.worst_overlap_ratio << " % of the radius (limit "
-          << 100 * config.max_overlap_fraction << " %): particle id " << store.id[m.worst_overlap_i];
-        if (m.worst_overlap_j >= 0)
-          s << " with particle id " << store.id[m.worst_overlap_j];
-        else
-          s << " with a wall";
-        s << " at step " << stats.steps << " (t = " << t << " s): the time step is too large, or the loads too high for the "
-             "particles' stiffness";
+        if (holder == m.parallel.rank())
+          {
+            s << "overlap of " << 100 * m.worst_overlap_ratio << " % of the radius (limit "
+              << 100 * config.max_overlap_fraction << " %): particle id " << store.id[m.worst_overlap_i];
+            if (m.worst_overlap_j >= 0)
+              s << " with particle id " << store.id[m.worst_overlap_j];
+            else
+              s << " with a wall";
+            s << " at step " << stats.steps << " (t = " << t
+              << " s): the time step is too large, or the loads too high for the particles' stiffness";
+          }
+        const std::string text = m.parallel.broadcast(s.str(), holder);
         if (config.stop_on_error)
-          throw RunError(s.str());
+          throw RunError(text);
         // warn once per phase, not every step
         if (warnings.empty() || warnings.back().rfind("overlap", 0) != 0)
-          warn(s.str());
+          warn(text);
       }
   }
 
@@ -1082,20 +822,23 @@ namespace abrade::dem
           e += 0.5 / store.inv_inertia[i] *
                (store.wx[i] * store.wx[i] + store.wy[i] * store.wy[i] + store.wz[i] * store.wz[i]);
       }
-    return e;
+    return impl->parallel.sum(e);
   }
 
   std::size_t Simulation::n_particle_contacts() const
   {
-    std::size_t c = 0;
-    for (std::size_t i = 0; i < store.size(); ++i)
+    // a pair with a ghost is counted by both ranks: half each
+    double            c = 0;
+    const std::size_t n = impl->offsets.empty() ? 0 : store.size();
+    for (std::size_t i = 0; i < n; ++i)
       for (std::size_t k = impl->offsets[i]; k < impl->offsets[i + 1]; ++k)
         {
-          const int    j  = impl->neighbours[k];
-          const double dx = store.x[i] - store.x[j], dy = store.y[i] - store.y[j], dz = store.z[i] - store.z[j];
-          const double sr = store.radius[i] + store.radius[j];
-          c += dx * dx + dy * dy + dz * dz < sr * sr;
+          const std::size_t j  = impl->neighbours[k];
+          const double      dx = store.x[i] - store.x[j], dy = store.y[i] - store.y[j], dz = store.z[i] - store.z[j];
+          const double      sr = store.radius[i] + store.radius[j];
+          if (dx * dx + dy * dy + dz * dz < sr * sr)
+            c += j < n ? 1.0 : 0.5;
         }
-    return c;
+    return std::size_t(std::lround(impl->parallel.sum(c)));
   }
 } // namespace abrade::dem

@@ -13,7 +13,7 @@ namespace abrade::dem
     return names[f];
   }
 
-  WearRecorder::WearRecorder(const Simulation &sim, std::vector<WearLaws> laws)
+  WearRecorder::WearRecorder(const Simulation &sim, std::vector<WearLaws> laws) : ranks(sim.parallel())
   {
     walls.resize(sim.n_walls());
     for (std::size_t w = 0; w < sim.n_walls(); ++w)
@@ -160,6 +160,7 @@ namespace abrade::dem
       if (phase.empty() || name == phase)
         for (std::size_t t = 0; t < out.size(); ++t)
           out[t] += per[f][t];
+    ranks.sum(out);
     return out;
   }
 

@@ -10,6 +10,8 @@ namespace abrade::io
   {
   public:
     void open(const std::string &path) { file.open(path, std::ios::app); }
+    /// Whether lines also go to stdout (off on MPI ranks > 0).
+    void set_echo(bool on) { echo = on; }
     void line(const std::string &text);
     void warning(const std::string &text) { line("warning: " + text); }
     /// Only into log.txt (for what is printed elsewhere, such as the final error on stderr).
@@ -21,5 +23,6 @@ namespace abrade::io
 
   private:
     std::ofstream file;
+    bool          echo = true;
   };
 } // namespace abrade::io

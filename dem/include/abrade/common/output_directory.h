@@ -7,6 +7,8 @@
 //   DIR/walls/            wall .vtp files + <wall>.pvd, <wall>_forces.csv
 //   DIR/knife/            FEM knife .vtu/.pvd/.stl (lifetime runs)
 //   DIR/checkpoint/       restart data
+//   DIR/.rank-N/          under mpirun, what rank N > 0 writes (each rank runs the same job on
+//                         globally reduced data; rank 0's files are the results)
 #include <string>
 
 namespace abrade::io
@@ -14,14 +16,18 @@ namespace abrade::io
   class OutputDirectory
   {
   public:
-    explicit OutputDirectory(std::string root);
+    /// @p shared: the directory that inputs named relative to the output (a settled bed) are
+    /// read from and written to, if not @p root itself (a rank > 0 writes into its own root).
+    explicit OutputDirectory(std::string root, std::string shared = "");
     const std::string &root() const { return root_path; }
     /// Path of @p name inside the root directory.
     std::string file(const std::string &name) const { return root_path + "/" + name; }
+    /// Path of @p name inside the shared directory (the root, except on MPI ranks > 0).
+    std::string shared_file(const std::string &name) const { return shared_path + "/" + name; }
     /// Creates (if needed) and returns the subdirectory @p name.
     std::string subdirectory(const std::string &name) const;
 
   private:
-    std::string root_path;
+    std::string root_path, shared_path;
   };
 } // namespace abrade::io

@@ -55,7 +55,9 @@ namespace abrade::dem
   bool inside_mesh(const TriangleMesh &mesh, const Vec3 &p);
 
   /// Saves the particle state (a settled bed) to a binary file, and reads it back. A bed
-  /// restarts every operating cycle from the same packing without settling again.
+  /// restarts every operating cycle from the same packing without settling again. Under MPI
+  /// save_bed is collective (rank 0 writes all particles, sorted by id) and every rank loads the
+  /// whole file (Simulation::setup() spreads the particles over the ranks).
   void save_bed(const Simulation &sim, const std::string &path);
   /// Replaces the simulation's particles with those in @p path; throws InputError naming the
   /// file if it is not a bed file or refers to unknown materials.

@@ -13,8 +13,19 @@
 // checks. Neighbours come from a cell list with a Verlet skin, rebuilt when any particle (or
 // wall) has moved far enough to bring a new pair into contact; particles are sorted by cell at
 // each rebuild. Threads (OpenMP) work over particles; pair forces go to per-thread buffers.
+//
+// Under `mpirun -np N` the particles are spread over the ranks by recursive coordinate bisection
+// (decomposition.h): each rank integrates the particles it owns and keeps ghost copies of the
+// other ranks' particles within one interaction range (2 r_max + skin) of its box, updated every
+// step. A pair across a domain boundary is computed on both ranks, each keeping the force on its
+// own particle, so no forces travel back. At every neighbour-list build the particles that left
+// a box move to their new owner with their contact histories, and the boxes are cut again when
+// the particle counts differ by more than Settings::rebalance_threshold. Walls are replicated:
+// their loads are summed over the ranks every step, their per-triangle fields when read.
+// Every rank must add the same particles; setup() spreads the ones added since its last call.
 #include <abrade/dem/contact_log.h>
 #include <abrade/dem/material.h>
+#include <abrade/dem/parallel.h>
 #include <abrade/dem/particles.h>
 #include <abrade/dem/wall.h>
 
@@ -42,11 +53,16 @@ namespace abrade::dem
     /// What to do with a lost particle or an excessive overlap: stop, or warn and go on
     /// (lost particles are then removed). NaN always stops.
     bool   stop_on_error = true;
+    /// Spread the particles over the MPI ranks when running under mpirun with several ranks.
+    bool   distribute = true;
+    /// Cut the domains again when the largest rank owns more than this times the mean count.
+    double rebalance_threshold = 1.1;
   };
 
   struct StepStatistics
   {
     long   steps = 0, rebuilds = 0;
+    long   rebalances = 0, migrated = 0; ///< domain cuts; particles that changed rank (this rank)
     double loop_seconds = 0;
     long   particle_steps = 0;
   };
@@ -67,8 +83,12 @@ namespace abrade::dem
     void set_interaction(int material_a, int material_b, const Interaction &i);
     int  add_wall(Wall wall);
     void add_hook(std::shared_ptr<StepHook> hook);
-    ParticleStore       &particles() { return store; }
+    /// The particles owned by this rank (all of them in a serial run). Non-const access drops
+    /// the ghost layer (the next step rebuilds it), so particles may be added or moved.
+    ParticleStore       &particles();
     const ParticleStore &particles() const { return store; }
+    /// The ranks the particles are spread over (serial: one).
+    const Parallel &parallel() const;
     /// Precomputes pair coefficients, chooses the time step, builds neighbour lists. Call after
     /// the particles, walls and materials are in place, and again after adding particles.
     void setup();
@@ -90,7 +110,14 @@ namespace abrade::dem
     long   step_number() const { return stats.steps; }
     const std::string &phase() const { return current_phase; }
     double rayleigh_time_step() const;
+    /// Kinetic energy of all particles (collective under MPI, like the others below) [J].
     double kinetic_energy() const;
+    /// Number of particles on all ranks.
+    std::size_t n_particles() const;
+    /// Mass of all particles whose centre lies above @p z [kg] (a grab's payload).
+    double mass_above(double z) const;
+    /// Every particle of every rank, sorted by id, on rank 0 (empty elsewhere).
+    ParticleStore gather_particles() const;
     std::size_t n_walls() const { return walls.size(); }
     Wall       &wall(std::size_t w) { return walls[w]; }
     const Wall &wall(std::size_t w) const { return walls[w]; }
@@ -128,6 +155,15 @@ namespace abrade::dem
     std::unique_ptr<Impl> impl;
 
     void build_neighbour_lists();
+    // domain decomposition (domain_exchange.cc)
+    void distribute_new_particles();
+    void drop_ghosts();
+    void carry_pair_histories();
+    void rebalance_and_migrate();
+    void exchange_ghosts(double cutoff);
+    void sort_ghosts();
+    void update_ghosts();
+    void permute_wall_histories(const std::vector<std::size_t> &order);
     /// Rigid-body walls: velocity updates from this step's loads (a body's walls together).
     void accelerate_walls(double dt);
     bool needs_rebuild() const;

@@ -15,7 +15,11 @@
 // vertex (found from the point's barycentric coordinates, within 1e-9), so the total is
 // deposited once. Each triangle's share of a depth-like quantity is
 // divided by that triangle's own area.
+//
+// Under MPI each rank records the contacts of its own particles; the accessors return the sums
+// over all ranks, so they are collective (every rank calls them, in the same order).
 #include <abrade/dem/contact_log.h>
+#include <abrade/dem/parallel.h>
 
 #include <map>
 #include <string>
@@ -74,6 +78,7 @@ namespace abrade::dem
       // phase -> field -> per-triangle values
       std::map<std::string, std::vector<std::vector<double>>> data;
     };
+    Parallel                 ranks;
     std::vector<WallData>    walls;
     std::vector<std::string> phase_order;
     std::string              current = "-";

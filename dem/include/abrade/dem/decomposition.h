@@ -1,0 +1,72 @@
+#pragma once
+// Spatial domain decomposition of the particles over the ranks by recursive coordinate
+// bisection (RCB): the set of ranks is halved, the space cut across its longest particle
+// extent at the plane that splits the particles in the ranks' proportion, and each half cut
+// again, until every rank has one box. Boxes tile all of space (the outer ones reach to
+// infinity), so every position has exactly one owner; the cut planes follow the particles, so
+// a bed that settles or is pushed aside by a knife is rebalanced by cutting again.
+//
+// The cuts are found in parallel (bisection on the cut coordinate with a global count per
+// trial plane), so no rank needs all particles.
+#include <abrade/dem/parallel.h>
+#include <abrade/dem/triangle_mesh.h>
+
+#include <vector>
+
+namespace abrade::dem
+{
+  struct Box
+  {
+    Vec3 lo = Vec3::Constant(-std::numeric_limits<double>::infinity());
+    Vec3 hi = Vec3::Constant(std::numeric_limits<double>::infinity());
+    /// Distance from @p p to the box (0 inside).
+    double distance(double x, double y, double z) const
+    {
+      const double dx = std::max({lo[0] - x, 0.0, x - hi[0]}), dy = std::max({lo[1] - y, 0.0, y - hi[1]}),
+                   dz = std::max({lo[2] - z, 0.0, z - hi[2]});
+      return std::sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    /// Distance from @p p (inside) to the nearest face.
+    double depth(double x, double y, double z) const
+    {
+      return std::min({x - lo[0], hi[0] - x, y - lo[1], hi[1] - y, z - lo[2], hi[2] - z});
+    }
+  };
+
+  class Decomposition
+  {
+  public:
+    /// Everything on rank 0 until balance() is called.
+    Decomposition() { reset(1); }
+
+    /// Cuts space into one box per rank of @p parallel with equal numbers of the particles at
+    /// (x, y, z) (this rank's n of them) in each. Collective.
+    void balance(const Parallel &parallel, const double *x, const double *y, const double *z, std::size_t n);
+
+    int owner(double x, double y, double z) const
+    {
+      int k = 0;
+      while (nodes[k].axis >= 0)
+        {
+          const double p[3] = {x, y, z};
+          k = p[nodes[k].axis] < nodes[k].cut ? nodes[k].left : nodes[k].left + 1;
+        }
+      return nodes[k].rank;
+    }
+    const Box &box(int rank) const { return boxes[rank]; }
+    int        n_domains() const { return static_cast<int>(boxes.size()); }
+
+  private:
+    struct Node
+    {
+      int    axis = -1; ///< -1: a leaf (one rank's box)
+      double cut  = 0;  ///< below: left child, at or above: right child (left + 1)
+      int    left = -1;
+      int    rank = 0;  ///< leaves only
+    };
+    std::vector<Node> nodes;
+    std::vector<Box>  boxes;
+
+    void reset(int n_ranks);
+  };
+} // namespace abrade::dem

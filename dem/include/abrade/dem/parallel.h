@@ -1,0 +1,75 @@
+#pragma once
+// The processes one DEM simulation is spread over, and the few collective operations the
+// engine needs (sums, maxima, sparse point-to-point exchanges, gathers). A simulation uses
+// MPI_COMM_WORLD when the program runs under `mpirun -np N` with N > 1 and MPI has been
+// initialised; otherwise it is serial and no MPI function is ever called (so the engine and its
+// unit tests work without MPI_Init).
+//
+// Every collective here must be called by all ranks in the same order; the engine calls them at
+// the same points of every step on every rank.
+#include <mpi.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace abrade::dem
+{
+  class Parallel
+  {
+  public:
+    /// Serial.
+    Parallel() = default;
+    /// MPI_COMM_WORLD if MPI is initialised (and not finalised) with more than one rank,
+    /// otherwise serial.
+    static Parallel world();
+
+    int  rank() const { return my_rank; }
+    int  size() const { return n_ranks; }
+    bool distributed() const { return n_ranks > 1; }
+
+    double sum(double v) const;
+    double max(double v) const;
+    double min(double v) const;
+    long   sum(long v) const;
+    /// Element-wise sums (in place).
+    void sum(std::vector<double> &v) const;
+    /// Element-wise maxima (in place).
+    void max(std::vector<double> &v) const;
+    /// The rank holding the largest @p v (ties: the lowest rank) and that value.
+    std::pair<double, int> max_location(double v) const;
+    /// @p text as held by rank @p root, on every rank.
+    std::string broadcast(const std::string &text, int root) const;
+
+    /// Sends send[r] to rank r and returns what every rank sent here, concatenated in rank
+    /// order; the counts received from each rank go to @p received (if given). Collective
+    /// (all-to-all of the counts, then point-to-point messages to the ranks with data).
+    std::vector<double> exchange(const std::vector<std::vector<double>> &send,
+                                 std::vector<int>                       *received = nullptr) const;
+    /// As exchange(), with the receive counts already known (a ghost update between two
+    /// neighbour-list builds): only the ranks with non-zero counts talk to each other.
+    void exchange_known(const std::vector<std::vector<double>> &send, const std::vector<int> &receive_counts,
+                        std::vector<double> &received) const;
+    /// Concatenation of every rank's @p local on rank 0 (empty elsewhere).
+    std::vector<double> gather(const std::vector<double> &local) const;
+
+  private:
+    MPI_Comm comm    = MPI_COMM_NULL;
+    int      my_rank = 0, n_ranks = 1;
+  };
+
+  /// Packs an integer into a double's bits (and back) for the exchange buffers.
+  inline double pack_integer(std::int64_t v)
+  {
+    double d;
+    static_assert(sizeof d == sizeof v);
+    __builtin_memcpy(&d, &v, sizeof d);
+    return d;
+  }
+  inline std::int64_t unpack_integer(double d)
+  {
+    std::int64_t v;
+    __builtin_memcpy(&v, &d, sizeof v);
+    return v;
+  }
+} // namespace abrade::dem

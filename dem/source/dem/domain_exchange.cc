@@ -1,0 +1,376 @@
+// Domain decomposition of a Simulation under MPI: spreading the particles over the ranks,
+// carrying pair histories across a rebuild, migrating particles to their new owner, and the
+// ghost layer (built at every neighbour-list build, updated every step). In a serial run only
+// carry_pair_histories() does anything.
+#include "simulation_impl.h"
+
+#include <abrade/common/error.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace abrade::dem
+{
+  ParticleStore &Simulation::particles()
+  {
+    drop_ghosts();
+    return store;
+  }
+
+  const Parallel &Simulation::parallel() const { return impl->parallel; }
+
+  void Simulation::drop_ghosts()
+  {
+    if (store.n_ghost == 0)
+      return;
+    carry_pair_histories(); // the list still names the ghosts
+    store.resize_arrays(store.size());
+    impl->force_rebuild = true;
+  }
+
+  // Pair histories keyed by the partner's id, so that they survive the cell sort and a move to
+  // another rank. A pair of two owned particles is recorded under both (with opposite signs), a
+  // pair with a ghost under the owned particle only: the ghost's owner keeps its own copy.
+  void Simulation::carry_pair_histories()
+  {
+    Impl &m = *impl;
+    if (m.offsets.empty()) // no list, or already carried
+      return;
+    const std::size_t n = m.offsets.size() - 1, n_own = std::min(n, store.size());
+    std::vector<std::size_t> count(n_own + 1, 0);
+    auto has_history = [&m](std::size_t q) {
+      return m.shear[3 * q] != 0 || m.shear[3 * q + 1] != 0 || m.shear[3 * q + 2] != 0;
+    };
+    for (std::size_t i = 0; i < n_own; ++i)
+      for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)
+        if (has_history(q))
+          {
+            ++count[i + 1];
+            if (std::size_t(m.neighbours[q]) < n_own)
+              ++count[m.neighbours[q] + 1];
+          }
+    std::partial_sum(count.begin(), count.end(), count.begin());
+    m.carried_offsets = count;
+    m.carried_partner.resize(count[n_own]);
+    m.carried_shear.resize(3 * count[n_own]);
+    m.carried_owner.assign(store.id.begin(), store.id.begin() + n_own);
+    std::vector<std::size_t> fill(count.begin(), count.end() - 1);
+    for (std::size_t i = 0; i < n_own; ++i)
+      for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)
+        if (has_history(q))
+          {
+            const std::size_t j = m.neighbours[q];
+            std::size_t       a = fill[i]++;
+            m.carried_partner[a] = store.id[j];
+            for (int d = 0; d < 3; ++d)
+              m.carried_shear[3 * a + d] = m.shear[3 * q + d];
+            if (j < n_own)
+              {
+                a = fill[j]++;
+                m.carried_partner[a] = store.id[i];
+                for (int d = 0; d < 3; ++d)
+                  m.carried_shear[3 * a + d] = -m.shear[3 * q + d];
+              }
+          }
+    m.offsets.clear(); // the list is stale from here on
+  }
+
+  void Simulation::permute_wall_histories(const std::vector<std::size_t> &order)
+  {
+    Impl             &m = *impl;
+    const std::size_t n = order.size();
+    auto permute_slots = [&order, n](auto &v, int per) {
+      std::remove_reference_t<decltype(v)> w(per * n);
+      for (std::size_t k = 0; k < n; ++k)
+        for (int s = 0; s < per; ++s)
+          w[per * k + s] = v[per * order[k] + s];
+      v.swap(w);
+    };
+    permute_slots(m.hist_wall, Impl::K);
+    permute_slots(m.hist_tri, Impl::K);
+    permute_slots(m.hist_shear, 3 * Impl::K);
+    permute_slots(m.hist_used, Impl::K);
+  }
+
+  void Simulation::distribute_new_particles()
+  {
+    Impl &m = *impl;
+    if (!m.parallel.distributed())
+      {
+        store.n_distributed = store.size();
+        return;
+      }
+    drop_ghosts();
+    const std::size_t first = std::min(store.n_distributed, store.size()), n = store.size();
+    const double      added = double(n - first);
+    double            id_sum = 0;
+    for (std::size_t k = first; k < n; ++k)
+      id_sum += double(store.id[k]);
+    if (m.parallel.max(added) != m.parallel.min(added) || m.parallel.max(id_sum) != m.parallel.min(id_sum))
+      throw RunError("under MPI every rank must add the same particles before Simulation::setup() (ranks added " +
+                     std::to_string(long(m.parallel.min(added))) + " to " + std::to_string(long(m.parallel.max(added))) +
+                     " particles, or different ones)");
+    if (first == n)
+      return;
+    // keep every size-th new particle; the first build moves them to their owners
+    std::vector<std::size_t> order(first);
+    std::iota(order.begin(), order.end(), 0);
+    for (std::size_t k = first; k < n; ++k)
+      if (long(k - first) % m.parallel.size() == m.parallel.rank())
+        order.push_back(k);
+    for (auto *h : {&m.hist_wall, &m.hist_tri})
+      h->resize(Impl::K * n, -1);
+    m.hist_shear.resize(3 * Impl::K * n, 0.0);
+    m.hist_used.resize(Impl::K * n, 0);
+    store.permute(order, m.n_threads);
+    permute_wall_histories(order);
+    store.n_distributed = store.size();
+    m.balanced          = false;
+    m.force_rebuild     = true;
+  }
+
+  // Cuts the domains again if the counts are out of balance, then sends every particle outside
+  // this rank's box to its owner with its wall and pair histories.
+  void Simulation::rebalance_and_migrate()
+  {
+    Impl &m = *impl;
+    if (!m.parallel.distributed())
+      return;
+    const std::size_t n = store.size();
+    const double      largest = m.parallel.max(double(n)), mean = m.parallel.sum(double(n)) / m.parallel.size();
+    if (!m.balanced || largest > config.rebalance_threshold * mean)
+      {
+        m.decomposition.balance(m.parallel, store.x.data(), store.y.data(), store.z.data(), n);
+        m.balanced = true;
+        ++stats.rebalances;
+      }
+
+    const int                        me = m.parallel.rank();
+    std::vector<std::vector<double>> send(m.parallel.size());
+    std::vector<std::size_t>         stay;
+    stay.reserve(n);
+    constexpr int K = Impl::K;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const int r = m.decomposition.owner(store.x[i], store.y[i], store.z[i]);
+        if (r == me)
+          {
+            stay.push_back(i);
+            continue;
+          }
+        auto &b = send[r];
+        store.pack(i, b);
+        for (int s = 0; s < K; ++s)
+          {
+            b.push_back(m.hist_wall[K * i + s]), b.push_back(m.hist_tri[K * i + s]),
+              b.push_back(m.hist_used[K * i + s]);
+            for (int d = 0; d < 3; ++d)
+              b.push_back(m.hist_shear[3 * (K * i + s) + d]);
+          }
+        const bool        carried = i < m.carried_owner.size() && m.carried_owner[i] == store.id[i];
+        const std::size_t c0 = carried ? m.carried_offsets[i] : 0, c1 = carried ? m.carried_offsets[i + 1] : 0;
+        b.push_back(double(c1 - c0));
+        for (std::size_t c = c0; c < c1; ++c)
+          {
+            b.push_back(pack_integer(m.carried_partner[c]));
+            for (int d = 0; d < 3; ++d)
+              b.push_back(m.carried_shear[3 * c + d]);
+          }
+      }
+    const std::vector<double> in = m.parallel.exchange(send);
+
+    // the ones that stay, then the arrivals
+    std::vector<std::size_t>  offsets{0};
+    std::vector<std::int64_t> partner, owner;
+    std::vector<double>       shear;
+    for (std::size_t i : stay)
+      {
+        owner.push_back(store.id[i]);
+        if (i < m.carried_owner.size() && m.carried_owner[i] == store.id[i])
+          for (std::size_t c = m.carried_offsets[i]; c < m.carried_offsets[i + 1]; ++c)
+            {
+              partner.push_back(m.carried_partner[c]);
+              shear.insert(shear.end(), &m.carried_shear[3 * c], &m.carried_shear[3 * c] + 3);
+            }
+        offsets.push_back(partner.size());
+      }
+    stats.migrated += long(n - stay.size());
+    store.permute(stay, m.n_threads);
+    permute_wall_histories(stay);
+    for (std::size_t p = 0; p < in.size();)
+      {
+        const std::size_t i = store.unpack(&in[p]);
+        p += ParticleStore::record_size;
+        for (int s = 0; s < K; ++s, p += 6)
+          {
+            m.hist_wall.push_back(int(in[p])), m.hist_tri.push_back(int(in[p + 1]));
+            m.hist_used.push_back(static_cast<unsigned char>(in[p + 2]));
+            m.hist_shear.insert(m.hist_shear.end(), &in[p + 3], &in[p + 6]);
+          }
+        const std::size_t count = std::size_t(in[p++]);
+        for (std::size_t c = 0; c < count; ++c, p += 4)
+          {
+            partner.push_back(unpack_integer(in[p]));
+            shear.insert(shear.end(), &in[p + 1], &in[p + 4]);
+          }
+        owner.push_back(store.id[i]);
+        offsets.push_back(partner.size());
+        ++stats.migrated;
+      }
+    m.carried_offsets.swap(offsets);
+    m.carried_partner.swap(partner);
+    m.carried_shear.swap(shear);
+    m.carried_owner.swap(owner);
+    store.n_distributed = store.size();
+  }
+
+  // Ghosts: every owned particle within @p cutoff of another rank's box goes there (state,
+  // radius, mass, material, id); what arrives is appended after the owned particles.
+  void Simulation::exchange_ghosts(double cutoff)
+  {
+    Impl     &m  = *impl;
+    const int me = m.parallel.rank(), P = m.parallel.size();
+    m.ghost_send.assign(P, {});
+    const Box        &mine = m.decomposition.box(me);
+    const std::size_t n    = store.size();
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const double x = store.x[i], y = store.y[i], z = store.z[i];
+        if (mine.depth(x, y, z) >= cutoff)
+          continue;
+        for (int r = 0; r < P; ++r)
+          if (r != me && m.decomposition.box(r).distance(x, y, z) < cutoff)
+            m.ghost_send[r].push_back(static_cast<int>(i));
+      }
+    constexpr int record = Impl::ghost_state + 4;
+    std::vector<std::vector<double>> send(P);
+    for (int r = 0; r < P; ++r)
+      for (int i : m.ghost_send[r])
+        {
+          auto &b = send[r];
+          for (const auto *a : {&store.x, &store.y, &store.z, &store.vx, &store.vy, &store.vz, &store.wx, &store.wy,
+                                &store.wz, &store.radius, &store.mass})
+            b.push_back((*a)[i]);
+          b.push_back(pack_integer(store.material[i]));
+          b.push_back(pack_integer(store.id[i]));
+        }
+    std::vector<int>          counts;
+    const std::vector<double> in = m.parallel.exchange(send, &counts);
+    const std::size_t         ng = in.size() / record;
+    m.ghost_receive_counts.resize(P);
+    for (int r = 0; r < P; ++r)
+      m.ghost_receive_counts[r] = counts[r] / record * Impl::ghost_state;
+    store.resize_arrays(n + ng);
+    store.n_ghost = ng;
+    for (std::size_t k = 0; k < ng; ++k)
+      {
+        const double *g = &in[record * k];
+        const std::size_t i = n + k;
+        int               f = 0;
+        for (auto *a : {&store.x, &store.y, &store.z, &store.vx, &store.vy, &store.vz, &store.wx, &store.wy, &store.wz,
+                        &store.radius, &store.mass})
+          (*a)[i] = g[f++];
+        store.material[i] = static_cast<int>(unpack_integer(g[f++]));
+        store.id[i]       = unpack_integer(g[f++]);
+      }
+    m.ghost_slot.resize(ng);
+    std::iota(m.ghost_slot.begin(), m.ghost_slot.end(), 0);
+  }
+
+  // Ghosts sorted by cell like the owned particles; ghost_slot remembers where each received
+  // record went, for the updates.
+  void Simulation::sort_ghosts()
+  {
+    Impl             &m  = *impl;
+    const std::size_t n = store.size(), ng = store.n_ghost;
+    const long        n_cells = m.nx * m.ny * m.nz;
+    m.ghost_cell_start.assign(n_cells + 1, 0);
+    std::vector<long> cell_index(ng);
+    for (std::size_t k = 0; k < ng; ++k)
+      {
+        const std::size_t i = n + k;
+        const long a = std::clamp(long((store.x[i] - m.lo[0]) / m.cell), 0L, m.nx - 1);
+        const long b = std::clamp(long((store.y[i] - m.lo[1]) / m.cell), 0L, m.ny - 1);
+        const long c = std::clamp(long((store.z[i] - m.lo[2]) / m.cell), 0L, m.nz - 1);
+        cell_index[k] = (c * m.ny + b) * m.nx + a;
+        ++m.ghost_cell_start[cell_index[k] + 1];
+      }
+    for (long c = 0; c < n_cells; ++c)
+      m.ghost_cell_start[c + 1] += m.ghost_cell_start[c];
+    std::vector<std::size_t> order(ng);
+    {
+      std::vector<int> fill(m.ghost_cell_start.begin(), m.ghost_cell_start.end() - 1);
+      for (std::size_t k = 0; k < ng; ++k)
+        order[fill[cell_index[k]]++] = k;
+    }
+    for (auto &s : m.ghost_cell_start)
+      s += static_cast<int>(n);
+    const std::size_t keep_ng = store.n_ghost;
+    store.permute_range(n, order);
+    store.n_ghost = keep_ng;
+    m.ghost_slot = order;
+  }
+
+  // Every step between two builds: the ghosts' positions and velocities from their owners.
+  void Simulation::update_ghosts()
+  {
+    Impl &m = *impl;
+    if (!m.parallel.distributed())
+      return;
+    const int P = m.parallel.size();
+    m.send_buffer.resize(P);
+    for (int r = 0; r < P; ++r)
+      {
+        auto &b = m.send_buffer[r];
+        b.resize(Impl::ghost_state * m.ghost_send[r].size());
+        double *o = b.data();
+        for (int i : m.ghost_send[r])
+          {
+            o[0] = store.x[i], o[1] = store.y[i], o[2] = store.z[i], o[3] = store.vx[i], o[4] = store.vy[i],
+            o[5] = store.vz[i], o[6] = store.wx[i], o[7] = store.wy[i], o[8] = store.wz[i];
+            o += Impl::ghost_state;
+          }
+      }
+    m.parallel.exchange_known(m.send_buffer, m.ghost_receive_counts, m.receive_buffer);
+    const std::size_t n = store.size(), ng = store.n_ghost;
+    const double     *in = m.receive_buffer.data();
+    for (std::size_t k = 0; k < ng; ++k)
+      {
+        const double     *g = in + Impl::ghost_state * m.ghost_slot[k];
+        const std::size_t i = n + k;
+        store.x[i] = g[0], store.y[i] = g[1], store.z[i] = g[2], store.vx[i] = g[3], store.vy[i] = g[4],
+        store.vz[i] = g[5], store.wx[i] = g[6], store.wy[i] = g[7], store.wz[i] = g[8];
+      }
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Global quantities
+  // ---------------------------------------------------------------------------------------------
+
+  std::size_t Simulation::n_particles() const { return std::size_t(impl->parallel.sum(long(store.size()))); }
+
+  double Simulation::mass_above(double z) const { return impl->parallel.sum(store.mass_above(z)); }
+
+  ParticleStore Simulation::gather_particles() const
+  {
+    std::vector<double> local;
+    local.reserve(ParticleStore::record_size * store.size());
+    for (std::size_t i = 0; i < store.size(); ++i)
+      store.pack(i, local);
+    const std::vector<double> all = impl->parallel.gather(local);
+    ParticleStore             out;
+    for (std::size_t p = 0; p < all.size(); p += ParticleStore::record_size)
+      out.unpack(&all[p]);
+    if (impl->parallel.distributed())
+      {
+        std::vector<std::size_t> order(out.size());
+        std::iota(order.begin(), order.end(), 0);
+        std::sort(order.begin(), order.end(), [&out](std::size_t a, std::size_t b) { return out.id[a] < out.id[b]; });
+        out.permute(order);
+      }
+    out.n_distributed = out.size();
+    return out;
+  }
+} // namespace abrade::dem

@@ -1,0 +1,278 @@
+// Neighbour lists of a Simulation: the cell grid, the particle-particle half list with its
+// tangential histories, and the particle-wall candidates. Built when a particle (or a wall) has
+// moved far enough since the last build to bring a new pair within reach (Verlet skin).
+//
+// Order of a build: carry the pair histories out of the old list (keyed by id); under MPI drop
+// the ghosts, rebalance and migrate; drop lost particles and sort the owned ones by cell; under
+// MPI fetch the new ghost layer and sort it by cell; build the lists, picking up each pair's
+// history by the partner's id; find the wall candidates.
+#include "simulation_impl.h"
+
+#include <abrade/common/closest_point.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace abrade::dem
+{
+  void Simulation::build_neighbour_lists()
+  {
+    Impl &m = *impl;
+    carry_pair_histories();
+    drop_ghosts();
+    if (store.n_distributed != store.size() && m.parallel.distributed())
+      distribute_new_particles();
+    {
+      const std::size_t n = store.size(); // particles added since the last build: no histories yet
+      for (auto *h : {&m.hist_wall, &m.hist_tri})
+        h->resize(Impl::K * n, -1);
+      m.hist_shear.resize(3 * Impl::K * n, 0.0);
+      m.hist_used.resize(Impl::K * n, 0);
+    }
+    rebalance_and_migrate();
+    const bool        distributed = m.parallel.distributed();
+    const std::size_t n_old       = store.size();
+
+    // 1. Grid over the particles that are still inside the domain (under MPI, with a margin of
+    //    one interaction range for the ghosts).
+    std::vector<char> keep(n_old, 1);
+    Vec3              lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    double            r_max = 0;
+    for (std::size_t i = 0; i < n_old; ++i)
+      {
+        const Vec3 p(store.x[i], store.y[i], store.z[i]);
+        if (!(p.array() >= config.domain_min.array()).all() || !(p.array() <= config.domain_max.array()).all())
+          {
+            keep[i] = 0; // lost; reported by step() before we get here
+            continue;
+          }
+        lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+        r_max = std::max(r_max, store.radius[i]);
+      }
+    if (lo[0] > hi[0])
+      lo = hi = Vec3::Zero();
+    r_max = m.parallel.max(r_max);
+    const double cutoff = 2 * r_max + skin;
+    if (distributed)
+      lo -= Vec3::Constant(cutoff), hi += Vec3::Constant(cutoff);
+    m.cell = std::max(cutoff, 1e-12);
+    // keep the number of cells bounded (a few particles far apart must not allocate a huge grid)
+    const double max_cells = 8.0 * std::max<std::size_t>(n_old, 64);
+    while (((hi - lo) / m.cell).array().floor().prod() > max_cells)
+      m.cell *= 1.5;
+    m.lo = lo - Vec3::Constant(1e-9);
+    m.nx = std::max(1L, long((hi[0] - m.lo[0]) / m.cell) + 1);
+    m.ny = std::max(1L, long((hi[1] - m.lo[1]) / m.cell) + 1);
+    m.nz = std::max(1L, long((hi[2] - m.lo[2]) / m.cell) + 1);
+    const long n_cells = m.nx * m.ny * m.nz;
+    auto cell_of = [&m](double x, double y, double z) {
+      const long i = std::clamp(long((x - m.lo[0]) / m.cell), 0L, m.nx - 1);
+      const long j = std::clamp(long((y - m.lo[1]) / m.cell), 0L, m.ny - 1);
+      const long k = std::clamp(long((z - m.lo[2]) / m.cell), 0L, m.nz - 1);
+      return (k * m.ny + j) * m.nx + i;
+    };
+
+    // 2. Sort particles by cell (counting sort), dropping lost ones.
+    std::vector<long> cell_index(n_old);
+    m.cell_start.assign(n_cells + 1, 0);
+    for (std::size_t i = 0; i < n_old; ++i)
+      if (keep[i])
+        {
+          cell_index[i] = cell_of(store.x[i], store.y[i], store.z[i]);
+          ++m.cell_start[cell_index[i] + 1];
+        }
+    for (long c = 0; c < n_cells; ++c)
+      m.cell_start[c + 1] += m.cell_start[c];
+    const std::size_t n = m.cell_start[n_cells];
+    std::vector<std::size_t> order(n);
+    {
+      std::vector<int> fill(m.cell_start.begin(), m.cell_start.end() - 1);
+      for (std::size_t i = 0; i < n_old; ++i)
+        if (keep[i])
+          order[fill[cell_index[i]]++] = i;
+    }
+    store.permute(order, m.n_threads);
+    permute_wall_histories(order);
+    store.n_distributed = store.size();
+
+    // 3. The ghost layer, sorted by cell too.
+    if (distributed)
+      {
+        exchange_ghosts(cutoff);
+        sort_ghosts();
+      }
+    else
+      m.ghost_cell_start.assign(n_cells + 1, static_cast<int>(n));
+    const std::size_t n_local = store.n_local();
+
+    // 4. Half neighbour list: own cell (j > i) and the 13 forward neighbour cells for owned
+    //    partners, all 27 cells for ghosts (each rank computes a pair across its boundary).
+    static const int stencil[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
+                                       {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
+                                       {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
+    m.offsets.assign(n + 1, 0);
+    const double *X = store.x.data(), *Y = store.y.data(), *Z = store.z.data(), *R = store.radius.data();
+    const double  sk = skin;
+    const bool    any_ghosts = store.n_ghost > 0;
+    auto for_each_candidate = [&](std::size_t i, auto &&visit) {
+      const long c  = cell_of(X[i], Y[i], Z[i]);
+      const long ci = c % m.nx, cj = (c / m.nx) % m.ny, ck = c / (m.nx * m.ny);
+      for (int j = m.cell_start[c]; j < m.cell_start[c + 1]; ++j)
+        if (std::size_t(j) > i)
+          visit(j);
+      for (const auto &s : stencil)
+        {
+          const long a = ci + s[0], b = cj + s[1], d = ck + s[2];
+          if (a < 0 || b < 0 || d < 0 || a >= m.nx || b >= m.ny || d >= m.nz)
+            continue;
+          const long cc = (d * m.ny + b) * m.nx + a;
+          for (int j = m.cell_start[cc]; j < m.cell_start[cc + 1]; ++j)
+            visit(j);
+        }
+      if (any_ghosts)
+        for (long d = std::max(0L, ck - 1); d <= std::min(m.nz - 1, ck + 1); ++d)
+          for (long b = std::max(0L, cj - 1); b <= std::min(m.ny - 1, cj + 1); ++b)
+            for (long a = std::max(0L, ci - 1); a <= std::min(m.nx - 1, ci + 1); ++a)
+              {
+                const long cc = (d * m.ny + b) * m.nx + a;
+                for (int j = m.ghost_cell_start[cc]; j < m.ghost_cell_start[cc + 1]; ++j)
+                  visit(j);
+              }
+    };
+    auto close = [&](std::size_t i, int j) {
+      const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
+      const double cut = R[i] + R[j] + sk;
+      return dx * dx + dy * dy + dz * dz < cut * cut;
+    };
+#pragma omp parallel for schedule(static) num_threads(m.n_threads)
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        std::size_t count = 0;
+        for_each_candidate(i, [&](int j) { count += close(i, j); });
+        m.offsets[i + 1] = count;
+      }
+    for (std::size_t i = 0; i < n; ++i)
+      m.offsets[i + 1] += m.offsets[i];
+    m.neighbours.resize(m.offsets[n]);
+    m.shear.assign(3 * m.offsets[n], 0.0);
+    const std::int64_t *ID = store.id.data();
+#pragma omp parallel for schedule(static) num_threads(m.n_threads)
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        std::size_t k = m.offsets[i];
+        for_each_candidate(i, [&](int j) {
+          if (close(i, j))
+            m.neighbours[k++] = j;
+        });
+        // the tangential history of pairs that had one, from the row's carried list
+        const std::size_t row = order[i];
+        if (row >= m.carried_owner.size() || m.carried_owner[row] != ID[i])
+          continue;
+        const std::size_t c0 = m.carried_offsets[row], c1 = m.carried_offsets[row + 1];
+        if (c0 == c1)
+          continue;
+        for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)
+          {
+            const std::int64_t partner = ID[m.neighbours[q]];
+            for (std::size_t c = c0; c < c1; ++c)
+              if (m.carried_partner[c] == partner)
+                {
+                  for (int d = 0; d < 3; ++d)
+                    m.shear[3 * q + d] = m.carried_shear[3 * c + d];
+                  break;
+                }
+          }
+      }
+    m.carried_owner.clear(); // used up
+
+    // balanced ranges for the pair loop: equal shares of (pairs + a constant per particle)
+    m.thread_begin.assign(m.n_threads + 1, n);
+    m.thread_begin[0] = 0;
+    {
+      const double total = double(m.offsets[n]) + 4.0 * n;
+      std::size_t  i     = 0;
+      for (int t = 1; t < m.n_threads; ++t)
+        {
+          const double target = total * t / m.n_threads;
+          while (i < n && double(m.offsets[i]) + 4.0 * i < target)
+            ++i;
+          m.thread_begin[t] = i;
+        }
+    }
+
+    // 5. Wall candidates: owned particles within radius + skin of each triangle.
+    std::vector<std::vector<std::array<int, 3>>> found(m.n_threads);
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      {
+        const Wall  &wall = walls[w];
+        const double *V   = wall.current.data();
+#pragma omp parallel for schedule(dynamic, 16) num_threads(m.n_threads)
+        for (std::size_t t = 0; t < wall.mesh.n_triangles(); ++t)
+          {
+            const auto   &tri = wall.mesh.triangles[t];
+            const double *a = V + 3 * tri[0], *b = V + 3 * tri[1], *c = V + 3 * tri[2];
+            long          lo_c[3], hi_c[3];
+            const long    dims[3] = {m.nx, m.ny, m.nz};
+            bool          empty   = false;
+            for (int d = 0; d < 3; ++d)
+              {
+                const double mn = std::min({a[d], b[d], c[d]}) - r_max - sk;
+                const double mx = std::max({a[d], b[d], c[d]}) + r_max + sk;
+                lo_c[d] = std::max(0L, long(std::floor((mn - m.lo[d]) / m.cell)));
+                hi_c[d] = std::min(dims[d] - 1, long(std::floor((mx - m.lo[d]) / m.cell)));
+                empty |= lo_c[d] > hi_c[d];
+              }
+            if (empty)
+              continue;
+            auto &out = found[omp_get_thread_num()];
+            for (long kk = lo_c[2]; kk <= hi_c[2]; ++kk)
+              for (long jj = lo_c[1]; jj <= hi_c[1]; ++jj)
+                for (long ii = lo_c[0]; ii <= hi_c[0]; ++ii)
+                  {
+                    const long cc = (kk * m.ny + jj) * m.nx + ii;
+                    for (int p = m.cell_start[cc]; p < m.cell_start[cc + 1]; ++p)
+                      {
+                        const double q[3] = {X[p], Y[p], Z[p]};
+                        const auto   cp   = closest_point_on_triangle(q, a, b, c);
+                        const double dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
+                        const double cut = R[p] + sk;
+                        if (dx * dx + dy * dy + dz * dz < cut * cut)
+                          out.push_back({p, int(w), int(t)});
+                      }
+                  }
+          }
+      }
+    m.wall_offsets.assign(n + 1, 0);
+    for (const auto &f : found)
+      for (const auto &e : f)
+        ++m.wall_offsets[e[0] + 1];
+    for (std::size_t i = 0; i < n; ++i)
+      m.wall_offsets[i + 1] += m.wall_offsets[i];
+    m.candidate_wall.resize(m.wall_offsets[n]);
+    m.candidate_triangle.resize(m.wall_offsets[n]);
+    {
+      std::vector<std::size_t> fill(m.wall_offsets.begin(), m.wall_offsets.end() - 1);
+      for (const auto &f : found)
+        for (const auto &e : f)
+          {
+            const std::size_t k   = fill[e[0]]++;
+            m.candidate_wall[k]     = e[1];
+            m.candidate_triangle[k] = e[2];
+          }
+    }
+
+    // 6. Reference positions for the displacement criterion.
+    m.x0.assign(store.x.begin(), store.x.begin() + n);
+    m.y0.assign(store.y.begin(), store.y.begin() + n);
+    m.z0.assign(store.z.begin(), store.z.begin() + n);
+    m.max_displacement = 0;
+    for (auto &w : walls)
+      w.mark_build();
+    for (auto &b : m.buffers)
+      b.assign(6 * n_local, 0.0);
+    m.force_rebuild = false;
+    ++stats.rebuilds;
+  }
+} // namespace abrade::dem

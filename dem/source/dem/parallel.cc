@@ -1,0 +1,154 @@
+#include <abrade/dem/parallel.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace abrade::dem
+{
+  Parallel Parallel::world()
+  {
+    Parallel p;
+    int      initialised = 0, finalised = 0;
+    MPI_Initialized(&initialised);
+    MPI_Finalized(&finalised);
+    if (!initialised || finalised)
+      return p;
+    int size = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    if (size == 1)
+      return p;
+    p.comm    = MPI_COMM_WORLD;
+    p.n_ranks = size;
+    MPI_Comm_rank(MPI_COMM_WORLD, &p.my_rank);
+    return p;
+  }
+
+  double Parallel::sum(double v) const
+  {
+    if (distributed())
+      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_SUM, comm);
+    return v;
+  }
+
+  double Parallel::max(double v) const
+  {
+    if (distributed())
+      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_MAX, comm);
+    return v;
+  }
+
+  double Parallel::min(double v) const
+  {
+    if (distributed())
+      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_MIN, comm);
+    return v;
+  }
+
+  long Parallel::sum(long v) const
+  {
+    if (distributed())
+      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_LONG, MPI_SUM, comm);
+    return v;
+  }
+
+  void Parallel::sum(std::vector<double> &v) const
+  {
+    if (distributed() && !v.empty())
+      MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm);
+  }
+
+  void Parallel::max(std::vector<double> &v) const
+  {
+    if (distributed() && !v.empty())
+      MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX, comm);
+  }
+
+  std::pair<double, int> Parallel::max_location(double v) const
+  {
+    if (!distributed())
+      return {v, 0};
+    struct
+    {
+      double value;
+      int    rank;
+    } in{v, my_rank}, out{};
+    MPI_Allreduce(&in, &out, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
+    return {out.value, out.rank};
+  }
+
+  std::string Parallel::broadcast(const std::string &text, int root) const
+  {
+    if (!distributed())
+      return text;
+    int n = static_cast<int>(text.size());
+    MPI_Bcast(&n, 1, MPI_INT, root, comm);
+    std::string s = my_rank == root ? text : std::string(n, ' ');
+    MPI_Bcast(s.data(), n, MPI_CHAR, root, comm);
+    return s;
+  }
+
+  void Parallel::exchange_known(const std::vector<std::vector<double>> &send, const std::vector<int> &counts,
+                                std::vector<double> &received) const
+  {
+    received.resize(std::accumulate(counts.begin(), counts.end(), std::size_t(0)));
+    if (!distributed())
+      {
+        std::copy(send[0].begin(), send[0].end(), received.begin());
+        return;
+      }
+    std::vector<MPI_Request> requests;
+    requests.reserve(2 * n_ranks);
+    std::size_t offset = 0;
+    for (int r = 0; r < n_ranks; ++r)
+      {
+        if (counts[r] > 0)
+          {
+            if (r == my_rank)
+              std::copy(send[r].begin(), send[r].end(), received.begin() + offset);
+            else
+              {
+                requests.emplace_back();
+                MPI_Irecv(received.data() + offset, counts[r], MPI_DOUBLE, r, 17, comm, &requests.back());
+              }
+          }
+        offset += counts[r];
+      }
+    for (int r = 0; r < n_ranks; ++r)
+      if (r != my_rank && !send[r].empty())
+        {
+          requests.emplace_back();
+          MPI_Isend(send[r].data(), static_cast<int>(send[r].size()), MPI_DOUBLE, r, 17, comm, &requests.back());
+        }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  }
+
+  std::vector<double> Parallel::exchange(const std::vector<std::vector<double>> &send, std::vector<int> *received) const
+  {
+    std::vector<int> out(n_ranks), in(n_ranks);
+    for (int r = 0; r < n_ranks; ++r)
+      out[r] = static_cast<int>(send[r].size());
+    if (distributed())
+      MPI_Alltoall(out.data(), 1, MPI_INT, in.data(), 1, MPI_INT, comm);
+    else
+      in = out;
+    std::vector<double> data;
+    exchange_known(send, in, data);
+    if (received)
+      *received = in;
+    return data;
+  }
+
+  std::vector<double> Parallel::gather(const std::vector<double> &local) const
+  {
+    if (!distributed())
+      return local;
+    int              n = static_cast<int>(local.size());
+    std::vector<int> counts(n_ranks), offsets(n_ranks + 1, 0);
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+    for (int r = 0; r < n_ranks; ++r)
+      offsets[r + 1] = offsets[r] + counts[r];
+    std::vector<double> all(my_rank == 0 ? offsets[n_ranks] : 0);
+    MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm);
+    return all;
+  }
+} // namespace abrade::dem

@@ -1,0 +1,80 @@
+#pragma once
+// The private state of a Simulation (simulation.cc, neighbour_lists.cc, domain_exchange.cc):
+// neighbour lists, contact histories, the cell grid, the domain decomposition and its ghost
+// layer, and per-thread scratch space: everything the time loop needs that is not particle
+// state.
+#include <abrade/dem/decomposition.h>
+#include <abrade/dem/parallel.h>
+#include <abrade/dem/simulation.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace abrade::dem
+{
+  struct Simulation::Impl
+  {
+    int n_threads = 1;
+
+    // the ranks and who owns which part of space
+    Parallel      parallel;
+    Decomposition decomposition;
+    bool          balanced = false; ///< decomposition computed at least once
+
+    // particle-particle half list (CSR, rows: owned particles; columns: owned particles and
+    // ghosts) with the tangential history of each pair
+    std::vector<std::size_t> offsets;
+    std::vector<int>         neighbours;
+    std::vector<double>      shear; // 3 per pair, for the row particle relative to the column
+
+    // Pair histories carried across a rebuild (and a migration), keyed by the partner's id:
+    // particle a's row holds (id of b, shear of a relative to b), for every pair with history.
+    std::vector<std::size_t>  carried_offsets;
+    std::vector<std::int64_t> carried_partner;
+    std::vector<double>       carried_shear;
+    std::vector<std::int64_t> carried_owner; // id of each row's particle (rows of others are ignored)
+
+    // particle-wall candidates (CSR) and up to K contact histories per particle
+    static constexpr int        K = 4;
+    std::vector<std::size_t>    wall_offsets;
+    std::vector<int>            candidate_wall, candidate_triangle;
+    std::vector<int>            hist_wall, hist_tri; // K per particle, -1: free slot
+    std::vector<double>         hist_shear;          // 3 K per particle
+    std::vector<unsigned char>  hist_used;           // K per particle
+
+    // per-thread ranges of the pair loop, balanced by pair count (deterministic, unlike a
+    // dynamic schedule)
+    std::vector<std::size_t> thread_begin;
+
+    // positions at the last build
+    std::vector<double> x0, y0, z0;
+    double              max_displacement = 0;
+
+    // cell grid: owned particles sorted by cell (cell_start), ghosts after them, also sorted
+    // by cell (ghost_cell_start, absolute indices)
+    double              cell = 1;
+    Vec3                lo;
+    long                nx = 1, ny = 1, nz = 1;
+    std::vector<int>    cell_start, ghost_cell_start;
+
+    // ghost layer: owned particles sent to each rank, the values received from each rank per
+    // update, and where each received ghost record went after the cell sort
+    static constexpr int             ghost_state = 9; // x y z vx vy vz wx wy wz
+    std::vector<std::vector<int>>    ghost_send;
+    std::vector<int>                 ghost_receive_counts;
+    std::vector<std::size_t>         ghost_slot; // ghost k (index size() + k) <- received record ghost_slot[k]
+    std::vector<std::vector<double>> send_buffer;
+    std::vector<double>              receive_buffer;
+
+    // per-thread force buffers (thread 0 writes to the particle arrays) and wall loads
+    std::vector<std::vector<double>> buffers;    // 6 n_local per thread >= 1
+    std::vector<std::vector<double>> wall_loads; // 6 per wall per thread
+    ContactLog                       log;
+
+    // problems found during a step
+    long   first_bad_particle = -1;
+    double worst_overlap_ratio = 0;
+    long   worst_overlap_i = -1, worst_overlap_j = -1;
+    bool   force_rebuild = true;
+  };
+} // namespace abrade::dem
