@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Throughput of abrade against LIGGGHTS on the knife-bed case, on this machine, in one run.
 #
-#   bench/knife_bed.sh [--knife-edge H] [--threads "1 2"] [--repeat N] [--output DIR]
+#   bench/knife_bed.sh [--knife-edge H] [--threads "1 2"] [--ranks "2"] [--repeat N] [--output DIR]
 #
 # Shared machines are noisy (we have seen +-30 % between identical runs), so the codes run in
 # turn N times (default 3) and the medians are reported; abrade's runs share one settled bed.
@@ -12,17 +12,22 @@
 # H > 0: refined to edges <= H). Prints particle-steps per second for the knife phases
 # (penetration and travel) of each code, the ratio abrade / LIGGGHTS per core, and the command
 # that reproduces the figures. Writes results.md and results.csv into the output directory.
+#
+# --threads: abrade on one MPI rank with each of these OpenMP thread counts; --ranks: abrade and
+# LIGGGHTS under `mpirun -np N` (one thread per rank) for each N > 1, for the strong scaling.
+# Per core = rate / (ranks x threads); strong-scaling efficiency = rate(N) / (N rate(1)).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 abrade=$root/build/abrade
-edge=0 threads="1 2" out="" repeat=3
+edge=0 threads="1 2" ranks="2" out="" repeat=3
 while (($#)); do
   case $1 in
     --knife-edge) edge=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
+    --ranks) ranks=$2; shift 2 ;;
     --output) out=$2; shift 2 ;;
     --repeat) repeat=$2; shift 2 ;;
-    *) echo "usage: $0 [--knife-edge H] [--threads \"1 2\"] [--repeat N] [--output DIR]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--knife-edge H] [--threads \"1 2\"] [--ranks \"2\"] [--repeat N] [--output DIR]" >&2; exit 2 ;;
   esac
 done
 [[ -x $abrade ]] || { echo "build abrade first: scripts/setup.sh" >&2; exit 2; }
@@ -35,55 +40,80 @@ knife_set="Wall knife/Maximum edge length=$edge"
 "$abrade" export-walls "$case" --set "$knife_set" --output "$out/walls" >/dev/null
 triangles=$(python3 -c "import struct,sys; f=open(sys.argv[1],'rb'); f.read(80); print(struct.unpack('<I', f.read(4))[0])" "$out/walls/knife.stl")
 
-# One round: LIGGGHTS (serial: one core), then abrade on each thread count. Each run appends
-# "code threads particles steps seconds" to runs.txt.
+# One round: LIGGGHTS (one core, then N ranks), then abrade on each thread count and each rank
+# count. Each run appends "code ranks threads particles steps seconds" to runs.txt.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpi=(mpirun --oversubscribe --bind-to none)
 : > "$out/runs.txt"
-for ((rep = 1; rep <= repeat; ++rep)); do
-  mkdir -p "$out/liggghts-$rep"
-  cp "$root/bench/liggghts/knife_bed.in" "$out/liggghts-$rep/"
-  ( cd "$out/liggghts-$rep" && liggghts -in knife_bed.in -var knife "$out/walls/knife.stl" -log log.liggghts -screen screen.log )
-  awk '/^Loop time of/ { n++; if (n > 1) { s += $9; t += $4; a = $12 } } END { print "liggghts 1", a, s, t }' \
-    "$out/liggghts-$rep/log.liggghts" >> "$out/runs.txt"
-  for n in $threads; do
-    "$abrade" run "$case" --quiet --output "$out/abrade-$n-$rep" --set "Simulation/Threads=$n" --set "$knife_set" \
-      --set "Output/Snapshot interval=0" --set "Output/Write particles=false" \
-      --set "Particles/Settling/Bed file=$out/bed.bed" >/dev/null
-    python3 - "$out/abrade-$n-$rep/summary.json" "$n" >> "$out/runs.txt" <<'PY'
+liggghts_run() { # ranks, directory
+  mkdir -p "$2"
+  cp "$root/bench/liggghts/knife_bed.in" "$2/"
+  if (($1 == 1)); then
+    ( cd "$2" && liggghts -in knife_bed.in -var knife "$out/walls/knife.stl" -log log.liggghts -screen screen.log )
+  else
+    ( cd "$2" && "${mpi[@]}" -np "$1" -x OMP_NUM_THREADS=1 liggghts -in knife_bed.in -var knife "$out/walls/knife.stl" \
+        -log log.liggghts -screen screen.log )
+  fi
+  awk -v r="$1" '/^Loop time of/ { n++; if (n > 1) { s += $9; t += $4; a = $12 } } END { print "liggghts", r, 1, a, s, t }' \
+    "$2/log.liggghts" >> "$out/runs.txt"
+}
+abrade_run() { # ranks, threads, directory
+  local launch=()
+  (($1 > 1)) && launch=("${mpi[@]}" -np "$1" -x OMP_NUM_THREADS="$2")
+  OMP_NUM_THREADS=$2 "${launch[@]}" "$abrade" run "$case" --quiet --output "$3" --set "Simulation/Threads=$2" \
+    --set "$knife_set" --set "Output/Snapshot interval=0" --set "Output/Write particles=false" \
+    --set "Particles/Settling/Bed file=$out/bed.bed" >/dev/null
+  python3 - "$3/summary.json" "$1" "$2" >> "$out/runs.txt" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1])); r = s["results"]
 ph = [r["phases"][p] for p in ("penetration", "travel")]
 steps = sum(p["steps"] for p in ph)
 seconds = sum(p["steps"] * r["particles"] / p["particle_steps_per_second"] for p in ph)
-print("abrade", sys.argv[2], r["particles"], steps, f"{seconds:.4f}")
+print("abrade", sys.argv[2], sys.argv[3], r["particles"], steps, f"{seconds:.4f}")
 PY
-  done
+}
+"$abrade" run "$case" --quiet --output "$out/bed" --set "$knife_set" --set "Output/Snapshot interval=0" \
+  --set "Output/Write particles=false" --set "Particles/Settling/Bed file=$out/bed.bed" \
+  --set "Simulation/Phases=penetration: 0.001, travel: 0.001" >/dev/null # the shared settled bed
+for ((rep = 1; rep <= repeat; ++rep)); do
+  liggghts_run 1 "$out/liggghts-1-$rep"
+  for n in $ranks; do (( n > 1 )) && liggghts_run "$n" "$out/liggghts-$n-$rep"; done
+  for t in $threads; do abrade_run 1 "$t" "$out/abrade-1x$t-$rep"; done
+  for n in $ranks; do (( n > 1 )) && abrade_run "$n" 1 "$out/abrade-${n}x1-$rep"; done
 done
 
-# medians per code and thread count
-mapfile -t rows < <(python3 - "$out/runs.txt" "$threads" <<'PY'
+# medians per code, ranks and threads
+mapfile -t rows < <(python3 - "$out/runs.txt" <<'PY'
 import statistics, sys
 runs = [l.split() for l in open(sys.argv[1]) if l.strip()]
-def rate(r): return int(r[2]) * int(r[3]) / float(r[4])
-def med(code, n):
-    sel = [r for r in runs if r[0] == code and r[1] == str(n)]
-    return sel[0], statistics.median(rate(r) for r in sel), statistics.median(float(r[4]) for r in sel), len(sel)
-print("code,threads,particles,steps,median_loop_seconds,median_particle_steps_per_second,per_core_ratio_vs_liggghts,runs")
-l, lr, ls, k = med("liggghts", 1)
-print(f"liggghts,1,{l[2]},{l[3]},{ls:.3f},{lr:.4g},1,{k}")
-for n in sys.argv[2].split():
-    a, ar, as_, k = med("abrade", int(n))
-    print(f"abrade,{n},{a[2]},{a[3]},{as_:.3f},{ar:.4g},{ar / int(n) / lr:.2f},{k}")
+def rate(r): return int(r[3]) * int(r[4]) / float(r[5])
+configs = []
+for r in runs:
+    if (r[0], r[1], r[2]) not in configs: configs.append((r[0], r[1], r[2]))
+med = {}
+for c in configs:
+    sel = [r for r in runs if (r[0], r[1], r[2]) == c]
+    med[c] = (sel[0], statistics.median(rate(r) for r in sel), statistics.median(float(r[5]) for r in sel), len(sel))
+ref = med[("liggghts", "1", "1")][1]
+print("code,ranks,threads,particles,steps,median_loop_seconds,median_particle_steps_per_second,"
+      "per_core_ratio_vs_liggghts_1_core,strong_scaling_efficiency,runs")
+for c in configs:
+    r, rt, sec, k = med[c]
+    cores = int(c[1]) * int(c[2])
+    base = med.get((c[0], "1", "1"))
+    eff = rt / cores / base[1] if base else float("nan")
+    print(f"{c[0]},{c[1]},{c[2]},{r[3]},{r[4]},{sec:.3f},{rt:.4g},{rt / cores / ref:.2f},{eff:.2f},{k}")
 PY
 )
 printf '%s\n' "${rows[@]}" > "$out/results.csv"
-cmd="bench/knife_bed.sh --knife-edge $edge --threads \"$threads\" --repeat $repeat"
+cmd="bench/knife_bed.sh --knife-edge $edge --threads \"$threads\" --ranks \"$ranks\" --repeat $repeat"
 {
   echo "Knife-bed throughput, knife phases (penetration + travel), knife mesh of $triangles triangles"
   echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%Y-%m-%d)"
   echo
-  echo "| code | threads | particles | steps | median loop s | median particle-steps/s | ratio per core vs LIGGGHTS | runs |"
-  echo "|---|---|---|---|---|---|---|---|"
-  for r in "${rows[@]:1}"; do IFS=, read -r c t p s l r q k <<<"$r"; echo "| $c | $t | $p | $s | $l | $r | $q | $k |"; done
+  echo "| code | MPI ranks | threads | particles | steps | median loop s | median particle-steps/s | per core vs LIGGGHTS on 1 core | strong-scaling efficiency | runs |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
+  for r in "${rows[@]:1}"; do IFS=, read -r c n t p s l r q e k <<<"$r"; echo "| $c | $n | $t | $p | $s | $l | $r | $q | $e | $k |"; done
   echo
   echo "command: $cmd"
 } | tee "$out/results.md"

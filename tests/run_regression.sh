@@ -18,13 +18,15 @@ if [[ "${ABRADE_REGENERATE:-0}" == 1 ]]; then
   echo "regenerated $ref"; exit 0
 fi
 [[ -d "$ref" ]] || { echo "missing reference folder $ref"; exit 1; }
+# fields are separated by blanks and commas (CSV), so that the tolerances apply to each number
+sep=$' \t\n,'
 status=0
 for f in $(cd "$ref" && find . -type f | sort); do
   if [[ ! -f "$out/$f" ]]; then echo "missing output $f"; status=1; continue; fi
-  if numdiff -q $tol "$ref/$f" "$out/$f" >/dev/null; then
+  if numdiff -q -s "$sep" $tol "$ref/$f" "$out/$f" >/dev/null; then
     echo "ok: $f ($tol)"
   else
-    echo "DIFFERS: $f ($tol)"; numdiff -S $tol "$ref/$f" "$out/$f" | tail -20; status=1
+    echo "DIFFERS: $f ($tol)"; numdiff -S -s "$sep" $tol "$ref/$f" "$out/$f" | tail -20; status=1
   fi
 done
 exit $status

@@ -287,6 +287,13 @@ namespace abrade::coupling
     r["ranks"]       = static_cast<long>(sim.parallel().size());
     r["rebalances"]  = stats.rebalances;
     r["migrated_particles"] = sim.parallel().sum(stats.migrated); // moves to another rank
+    if (sim.parallel().distributed())
+      {
+        // communication per rank and step, for the scaling estimate (docs/benchmarks.md)
+        const double steps = std::max(1.0, double(stats.steps));
+        r["mean_ghosts_per_rank"]         = sim.parallel().sum(double(stats.ghost_steps)) / steps / sim.parallel().size();
+        r["mean_bytes_sent_per_rank_step"] = sim.parallel().sum(stats.bytes_sent) / steps / sim.parallel().size();
+      }
     r["bed_loaded"]  = loaded;
     r["time_step"]   = sim.dt();
     r["steps"]       = stats.steps - stats0.steps;

@@ -180,6 +180,8 @@ namespace abrade::dem
           }
       }
     const std::vector<double> in = m.parallel.exchange(send);
+    for (const auto &b : send)
+      stats.bytes_sent += 8.0 * b.size();
 
     // the ones that stay, then the arrivals
     std::vector<std::size_t>  offsets{0};
@@ -258,6 +260,8 @@ namespace abrade::dem
         }
     std::vector<int>          counts;
     const std::vector<double> in = m.parallel.exchange(send, &counts);
+    for (const auto &b : send)
+      stats.bytes_sent += 8.0 * b.size();
     const std::size_t         ng = in.size() / record;
     m.ghost_receive_counts.resize(P);
     for (int r = 0; r < P; ++r)
@@ -334,6 +338,8 @@ namespace abrade::dem
           }
       }
     m.parallel.exchange_known(m.send_buffer, m.ghost_receive_counts, m.receive_buffer);
+    for (const auto &b : m.send_buffer)
+      stats.bytes_sent += 8.0 * b.size();
     const std::size_t n = store.size(), ng = store.n_ghost;
     const double     *in = m.receive_buffer.data();
     for (std::size_t k = 0; k < ng; ++k)

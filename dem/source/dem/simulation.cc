@@ -258,124 +258,6 @@ namespace abrade::dem
   // ---------------------------------------------------------------------------------------------
 
   template <bool rotation>
-  void Simulation::pair_forces()
-  {
-    Impl             &m  = *impl;
-    const std::size_t n  = store.n_local(); // owned and ghosts (forces on ghosts are dropped)
-    const std::size_t nm = mats.size();
-    const double      dt = time_step;
-    ParticleStore    &P  = store;
-    const double     *X = P.x.data(), *Y = P.y.data(), *Z = P.z.data(), *R = P.radius.data(),
-                 *M = P.mass.data(), *VX = P.vx.data(), *VY = P.vy.data(), *VZ = P.vz.data(),
-                 *WX = P.wx.data(), *WY = P.wy.data(), *WZ = P.wz.data();
-    const int *MAT = P.material.data();
-
-    double worst = 0;
-    long   wi = -1, wj = -1;
-#pragma omp parallel num_threads(m.n_threads)
-    {
-      const int tid = omp_get_thread_num();
-      double   *fx, *fy, *fz, *tx, *ty, *tz;
-      if (tid == 0)
-        fx = P.fx.data(), fy = P.fy.data(), fz = P.fz.data(), tx = P.tx.data(), ty = P.ty.data(),
-        tz = P.tz.data();
-      else
-        {
-          double *b = m.buffers[tid].data();
-          fx = b, fy = b + n, fz = b + 2 * n, tx = b + 3 * n, ty = b + 4 * n, tz = b + 5 * n;
-        }
-      std::fill(fx, fx + n, 0.0), std::fill(fy, fy + n, 0.0), std::fill(fz, fz + n, 0.0);
-      if (rotation)
-        std::fill(tx, tx + n, 0.0), std::fill(ty, ty + n, 0.0), std::fill(tz, tz + n, 0.0);
-      double my_worst = 0;
-      long   my_i = -1, my_j = -1;
-
-      // every range is done, whatever the size of the team OpenMP gave us
-      const int team = omp_get_num_threads();
-      for (int range = tid; range < m.n_threads; range += team)
-      for (std::size_t i = m.thread_begin[range]; i < m.thread_begin[range + 1]; ++i)
-        {
-          const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i], mi = M[i];
-          double       fxi = 0, fyi = 0, fzi = 0, txi = 0, tyi = 0, tzi = 0;
-          for (std::size_t k = m.offsets[i]; k < m.offsets[i + 1]; ++k)
-            {
-              const int    j  = m.neighbours[k];
-              double      *s  = &m.shear[3 * k];
-              const double dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
-              const double sr = ri + R[j];
-              const double r2 = dx * dx + dy * dy + dz * dz;
-              if (r2 >= sr * sr)
-                {
-                  s[0] = s[1] = s[2] = 0;
-                  continue;
-                }
-              // one division for 1/d, R* = ri rj / sr and m* = mi mj / (mi + mj)
-              const double d       = std::sqrt(r2);
-              const double overlap = sr - d;
-              const double msum    = mi + M[j];
-              const double q       = 1 / (d * sr * msum);
-              const double inv_d   = sr * msum * q;
-              const double nv[3]   = {dx * inv_d, dy * inv_d, dz * inv_d};
-              const double r_eff   = ri * R[j] * (d * msum * q);
-              const double m_eff   = mi * M[j] * (d * sr * q);
-              double       vrel[3] = {VX[i] - VX[j], VY[i] - VY[j], VZ[i] - VZ[j]};
-              if (rotation)
-                {
-                  // - (ri w_i + rj w_j) x n
-                  const double ax = ri * WX[i] + R[j] * WX[j], ay = ri * WY[i] + R[j] * WY[j],
-                               az = ri * WZ[i] + R[j] * WZ[j];
-                  vrel[0] -= ay * nv[2] - az * nv[1];
-                  vrel[1] -= az * nv[0] - ax * nv[2];
-                  vrel[2] -= ax * nv[1] - ay * nv[0];
-                }
-              const PairCoefficients &c = coefficients[MAT[i] * nm + MAT[j]];
-              const ContactForce      f = hertz_mindlin(nv, overlap, r_eff, m_eff, vrel, c, dt, s);
-              const double Fx = f.normal * nv[0] + f.ft[0], Fy = f.normal * nv[1] + f.ft[1],
-                           Fz = f.normal * nv[2] + f.ft[2];
-              fxi += Fx, fyi += Fy, fzi += Fz;
-              fx[j] -= Fx, fy[j] -= Fy, fz[j] -= Fz;
-              if (rotation)
-                {
-                  // torque on i: (-ri n) x ft, on j: (rj n) x (-ft)
-                  const double cx = nv[1] * f.ft[2] - nv[2] * f.ft[1], cy = nv[2] * f.ft[0] - nv[0] * f.ft[2],
-                               cz = nv[0] * f.ft[1] - nv[1] * f.ft[0];
-                  txi -= ri * cx, tyi -= ri * cy, tzi -= ri * cz;
-                  tx[j] -= R[j] * cx, ty[j] -= R[j] * cy, tz[j] -= R[j] * cz;
-                  if (c.rolling_friction > 0)
-                    {
-                      const double fr = c.rolling_friction * std::abs(f.normal);
-                      const double wi2 = WX[i] * WX[i] + WY[i] * WY[i] + WZ[i] * WZ[i];
-                      const double wj2 = WX[j] * WX[j] + WY[j] * WY[j] + WZ[j] * WZ[j];
-                      if (wi2 > 0)
-                        {
-                          const double s_i = fr * ri / std::sqrt(wi2);
-                          txi -= s_i * WX[i], tyi -= s_i * WY[i], tzi -= s_i * WZ[i];
-                        }
-                      if (wj2 > 0)
-                        {
-                          const double s_j = fr * R[j] / std::sqrt(wj2);
-                          tx[j] -= s_j * WX[j], ty[j] -= s_j * WY[j], tz[j] -= s_j * WZ[j];
-                        }
-                    }
-                }
-              const double r_min = std::min(ri, R[j]);
-              if (overlap > my_worst * r_min)
-                my_worst = overlap / r_min, my_i = i, my_j = j;
-            }
-          fx[i] += fxi, fy[i] += fyi, fz[i] += fzi;
-          if (rotation)
-            tx[i] += txi, ty[i] += tyi, tz[i] += tzi;
-        }
-#pragma omp critical
-      if (my_worst > worst || (my_worst == worst && my_i >= 0 && (wi < 0 || my_i < wi)))
-        worst = my_worst, wi = my_i, wj = my_j;
-    }
-    m.worst_overlap_ratio = worst;
-    m.worst_overlap_i     = wi;
-    m.worst_overlap_j     = wj;
-  }
-
-  template <bool rotation>
   void Simulation::wall_forces()
   {
     Impl             &m  = *impl;
@@ -742,6 +624,7 @@ namespace abrade::dem
 
     stats.loop_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.particle_steps += static_cast<long>(n2);
+    stats.ghost_steps += static_cast<long>(P.n_ghost);
   }
 
   void Simulation::check_step()

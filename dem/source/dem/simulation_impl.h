@@ -46,6 +46,9 @@ namespace abrade::dem
     // dynamic schedule)
     std::vector<std::size_t> thread_begin;
 
+    // x y z radius packed per particle (owned and ghosts), refreshed before the pair forces
+    std::vector<double> xyzr;
+
     // positions at the last build
     std::vector<double> x0, y0, z0;
     double              max_displacement = 0;
