@@ -213,7 +213,13 @@ namespace abrade::coupling
                       "calibrated: damping chosen so that a Hertz contact rebounds with exactly the "
                       "input restitution.");
     prm.declare_entry("Threads", "0", Integer(0, 1024),
-                      "Number of threads; 0: all available (OMP_NUM_THREADS). Range: >= 0.");
+                      "Number of threads; 0: all available (OMP_NUM_THREADS). Range: >= 0. Under "
+                      "mpirun: threads per MPI rank.");
+    prm.declare_entry("Rebalance threshold", "1.1", Double(1, huge),
+                      "[-] Under mpirun the particles are spread over the ranks by recursive "
+                      "coordinate bisection; the domains are cut again at a neighbour-list build "
+                      "when the rank with the most particles owns more than this times the mean. "
+                      "Range: >= 1.");
     declare_vector(prm, "Domain min", "-1000, -1000, -1000",
                    "[m] Lower corner of the simulation domain; a particle outside it is lost.");
     declare_vector(prm, "Domain max", "1000, 1000, 1000", "[m] Upper corner of the simulation domain.");
@@ -531,6 +537,7 @@ namespace abrade::coupling
     s.skin                    = prm.get_double("Skin");
     s.damping   = prm.get("Damping model") == "edem" ? dem::DampingModel::edem : dem::DampingModel::calibrated;
     s.threads   = prm.get_integer("Threads");
+    s.rebalance_threshold = prm.get_double("Rebalance threshold");
     s.domain_min = get_vector(prm, "Domain min");
     s.domain_max = get_vector(prm, "Domain max");
     s.max_overlap_fraction = prm.get_double("Maximum overlap fraction");

@@ -105,6 +105,7 @@ namespace abrade::dem
             Box left = p.box, right = p.box;
             left.hi[axis[s]] = right.lo[axis[s]] = cut[s];
             const Part children[2] = {{l, p.first, mid, left}, {l + 1, mid, p.last, right}};
+            nodes[l].box = left, nodes[l + 1].box = right;
             first_child[s] = static_cast<int>(next.size());
             for (const Part &c : children)
               {

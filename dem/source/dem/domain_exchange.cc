@@ -237,14 +237,16 @@ namespace abrade::dem
     m.ghost_send.assign(P, {});
     const Box        &mine = m.decomposition.box(me);
     const std::size_t n    = store.size();
+    std::vector<int>  near;
     for (std::size_t i = 0; i < n; ++i)
       {
         const double x = store.x[i], y = store.y[i], z = store.z[i];
-        if (mine.depth(x, y, z) >= cutoff)
+        if (mine.depth(x, y, z) >= cutoff) // deep inside: no other box is within reach
           continue;
-        for (int r = 0; r < P; ++r)
-          if (r != me && m.decomposition.box(r).distance(x, y, z) < cutoff)
-            m.ghost_send[r].push_back(static_cast<int>(i));
+        near.clear();
+        m.decomposition.ranks_near(x, y, z, cutoff, me, near);
+        for (int r : near)
+          m.ghost_send[r].push_back(static_cast<int>(i));
       }
     constexpr int record = Impl::ghost_state + 4;
     std::vector<std::vector<double>> send(P);

@@ -54,6 +54,26 @@ namespace abrade::dem
       return nodes[k].rank;
     }
     const Box &box(int rank) const { return boxes[rank]; }
+    /// Appends to @p ranks every rank other than @p except whose box is closer than @p cutoff
+    /// to (x, y, z), found by a walk of the bisection tree (log P for a point near few boxes).
+    void ranks_near(double x, double y, double z, double cutoff, int except, std::vector<int> &ranks) const
+    {
+      int stack[64], top = 0;
+      stack[top++] = 0;
+      while (top > 0)
+        {
+          const Node &node = nodes[stack[--top]];
+          if (!(node.box.distance(x, y, z) < cutoff))
+            continue;
+          if (node.axis < 0)
+            {
+              if (node.rank != except)
+                ranks.push_back(node.rank);
+            }
+          else
+            stack[top++] = node.left, stack[top++] = node.left + 1;
+        }
+    }
     int        n_domains() const { return static_cast<int>(boxes.size()); }
 
   private:
@@ -63,6 +83,7 @@ namespace abrade::dem
       double cut  = 0;  ///< below: left child, at or above: right child (left + 1)
       int    left = -1;
       int    rank = 0;  ///< leaves only
+      Box    box;       ///< the part of space under this node
     };
     std::vector<Node> nodes;
     std::vector<Box>  boxes;
