@@ -23,33 +23,21 @@ namespace abrade::dem
     return p;
   }
 
-  double Parallel::sum(double v) const
+  namespace
   {
-    if (distributed())
-      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_SUM, comm);
-    return v;
-  }
+    template <typename T>
+    T all_reduce(T v, MPI_Datatype type, MPI_Op op, MPI_Comm comm, bool distributed)
+    {
+      if (distributed)
+        MPI_Allreduce(MPI_IN_PLACE, &v, 1, type, op, comm);
+      return v;
+    }
+  } // namespace
 
-  double Parallel::max(double v) const
-  {
-    if (distributed())
-      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_MAX, comm);
-    return v;
-  }
-
-  double Parallel::min(double v) const
-  {
-    if (distributed())
-      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_DOUBLE, MPI_MIN, comm);
-    return v;
-  }
-
-  long Parallel::sum(long v) const
-  {
-    if (distributed())
-      MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_LONG, MPI_SUM, comm);
-    return v;
-  }
+  double Parallel::sum(double v) const { return all_reduce(v, MPI_DOUBLE, MPI_SUM, comm, distributed()); }
+  double Parallel::max(double v) const { return all_reduce(v, MPI_DOUBLE, MPI_MAX, comm, distributed()); }
+  double Parallel::min(double v) const { return all_reduce(v, MPI_DOUBLE, MPI_MIN, comm, distributed()); }
+  long   Parallel::sum(long v) const { return all_reduce(v, MPI_LONG, MPI_SUM, comm, distributed()); }
 
   void Parallel::sum(std::vector<double> &v) const
   {
