@@ -263,6 +263,14 @@ namespace abrade::dem
           }
     }
 
+    // the particles the wall pass visits; the others have no wall contact until the next build
+    m.wall_particles.clear();
+    for (std::size_t i = 0; i < n; ++i)
+      if (m.wall_offsets[i + 1] > m.wall_offsets[i])
+        m.wall_particles.push_back(static_cast<int>(i));
+      else
+        std::fill(&m.hist_wall[Impl::K * i], &m.hist_wall[Impl::K * i] + Impl::K, -1);
+
     // 6. Reference positions for the displacement criterion.
     m.x0.assign(store.x.begin(), store.x.begin() + n);
     m.y0.assign(store.y.begin(), store.y.begin() + n);

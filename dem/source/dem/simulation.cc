@@ -292,10 +292,10 @@ namespace abrade::dem
       Hit hits[max_hits];
       int accepted[max_hits];
 
+      // every particle: the per-thread pair forces summed, gravity added
 #pragma omp for schedule(static)
       for (std::size_t i = 0; i < n; ++i)
         {
-          // sum the per-thread pair forces, add gravity
           double fx = P.fx[i], fy = P.fy[i], fz = P.fz[i];
           double tx = 0, ty = 0, tz = 0;
           if (rotation)
@@ -307,9 +307,22 @@ namespace abrade::dem
               if (rotation)
                 tx += buf[3 * nl + i], ty += buf[4 * nl + i], tz += buf[5 * nl + i];
             }
-          fx += P.mass[i] * g[0], fy += P.mass[i] * g[1], fz += P.mass[i] * g[2];
+          P.fx[i] = fx + P.mass[i] * g[0], P.fy[i] = fy + P.mass[i] * g[1], P.fz[i] = fz + P.mass[i] * g[2];
+          if (rotation)
+            P.tx[i] = tx, P.ty[i] = ty, P.tz[i] = tz;
+        }
 
-          // --- particle-wall contacts ---
+      // the particles with wall candidates: particle-wall contacts
+      const std::size_t n_wall = m.wall_particles.size();
+#pragma omp for schedule(static)
+      for (std::size_t w_i = 0; w_i < n_wall; ++w_i)
+        {
+          const std::size_t i  = m.wall_particles[w_i];
+          double            fx = P.fx[i], fy = P.fy[i], fz = P.fz[i];
+          double            tx = 0, ty = 0, tz = 0;
+          if (rotation)
+            tx = P.tx[i], ty = P.ty[i], tz = P.tz[i];
+
           const double q[3] = {P.x[i], P.y[i], P.z[i]};
           const double ri   = P.radius[i];
           int          n_hits = 0;

@@ -38,6 +38,7 @@ namespace abrade::dem
     static constexpr int        K = 4;
     std::vector<std::size_t>    wall_offsets;
     std::vector<int>            candidate_wall, candidate_triangle;
+    std::vector<int>            wall_particles; // owned particles with wall candidates
     std::vector<int>            hist_wall, hist_tri; // K per particle, -1: free slot
     std::vector<double>         hist_shear;          // 3 K per particle
     std::vector<unsigned char>  hist_used;           // K per particle
