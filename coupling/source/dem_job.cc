@@ -181,8 +181,8 @@ namespace abrade::coupling
       {
         io::ScopedTimer   timer(ctx.timers, "phase " + name);
         const auto        before = sim.statistics();
-        std::vector<dem::Vec3> force_sum(sim.n_walls(), dem::Vec3::Zero());
-        std::vector<double>    peak(sim.n_walls(), 0.0);
+        std::vector<dem::Vec3> force_sum(sim.n_walls(), dem::Vec3::Zero()), torque_sum = force_sum;
+        std::vector<double>    peak(sim.n_walls(), 0.0), peak_torque = peak;
         long                   steps = 0;
         sim.run_phase(name, duration, [&](const dem::Simulation &s) {
           ++steps;
@@ -190,6 +190,8 @@ namespace abrade::coupling
             {
               force_sum[w] += s.wall(w).force;
               peak[w] = std::max(peak[w], s.wall(w).force.norm());
+              torque_sum[w] += s.wall(w).torque; // about the wall's rotation centre (a hinge)
+              peak_torque[w] = std::max(peak_torque[w], s.wall(w).torque.norm());
             }
           if (s.step_number() % force_every == 0)
             output.write_forces(s);
@@ -222,6 +224,9 @@ namespace abrade::coupling
             io::Json       &wj   = ph["walls"][sim.wall(w).name];
             wj["mean_force"]     = std::vector<double>{mean[0], mean[1], mean[2]};
             wj["peak_force"]     = peak[w];
+            const dem::Vec3 torque = steps ? dem::Vec3(torque_sum[w] / steps) : dem::Vec3::Zero();
+            wj["mean_torque"]    = std::vector<double>{torque[0], torque[1], torque[2]};
+            wj["peak_torque"]    = peak_torque[w];
           }
         ctx.log.line("Phase " + name + ": " + std::to_string(steps) + " steps, " + fmt(rate, 3) +
                      " particle-steps/s");

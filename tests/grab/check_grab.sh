@@ -4,7 +4,8 @@
 # it as the material resists (the shells move as one body), the payload after hoisting is a
 # plausible fraction of the closed shells' capacity times the pile's bulk density (20 ... 110 %
 # of 0.151 m^3 x ~2200 kg/m^3: a coarse sanity bound, the measured value is in docs/grab.md),
-# and the knives' wear is reported per phase.
+# the knives' wear is reported per phase, and the hinge torques while closing (each shell with its
+# knife, about the hinge axis y) are of opposite sign and similar size (mirror-image shells).
 #   check_grab.sh ABRADE PRM OUTDIR
 set -euo pipefail
 abrade=$1 prm=$2 out=$3
@@ -31,7 +32,13 @@ assert z["sinking"][-1] < z["sinking"][0], "the grab did not sink into the pile"
 wear = {r["phase"]: float(r["archard_volume"]) for r in csv.DictReader(open(os.path.join(out, "walls", "right_knife_wear.csv")))}
 assert wear["closing"] > 0 and wear["total"] > 0
 share = {p: wear[p] / wear["total"] for p in ("descent", "sinking", "closing", "hoisting", "opening")}
+w = phases["closing"]["walls"]
+hinge = {side: w[side]["mean_torque"][1] + w[side + "_knife"]["mean_torque"][1] for side in ("right", "left")}
+assert hinge["right"] * hinge["left"] < 0, f"closing hinge torques of the same sign: {hinge}"
+assert min(abs(v) for v in hinge.values()) > 100, f"no closing resistance: {hinge}"
+assert max(abs(v) for v in hinge.values()) < 2 * min(abs(v) for v in hinge.values()), f"asymmetric: {hinge}"
 print(f"ok: payload {payload:.1f} kg ({100 * payload / capacity:.0f} % of {capacity:.0f} kg); hinge "
       f"{z['sinking'][0]:.3f} -> {z['sinking'][-1]:.3f} m sinking, -> {z['closing'][-1]:.3f} m closing; "
+      f"closing hinge torque {hinge['right']:.0f} / {hinge['left']:.0f} N m; "
       "wear share " + ", ".join(f"{p} {100 * v:.1f} %" for p, v in share.items()))
 PY
