@@ -66,7 +66,9 @@ namespace abrade::coupling
     {
       if (!bed.empty() && std::filesystem::path(bed).is_relative())
         bed = ctx.output.shared_file(bed);
-      if (!bed.empty() && std::filesystem::exists(bed))
+      // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes)
+      const bool here = !bed.empty() && std::filesystem::exists(bed);
+      if (sim.parallel().max(sim.parallel().rank() == 0 && here ? 1.0 : 0.0) > 0)
         {
           io::ScopedTimer t(ctx.timers, "load bed");
           dem::load_bed(sim, bed);

@@ -29,6 +29,7 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/dem/parallel.h>
 #include <abrade/dem/wear.h>
 #include <abrade/fem/knife_model.h>
 
@@ -420,25 +421,38 @@ namespace abrade::coupling
         const double volume_before = knife.volume();
         fem::KnifeModel::UpdateResult r;
         bool                          moved = false;
+        // Under MPI every rank moves its own copy of the knife: the ranks agree on the outcome
+        // (a failure on one is a failure on all), so that their knives stay the same.
+        const dem::Parallel ranks = dem::Parallel::world();
         for (int attempt = 0; !moved; ++attempt)
-          try
-            {
-              io::ScopedTimer t(ctx.timers, "fem update");
-              if (attempt > 0)
-                knife.load(ckpt_dir + "/knife.ckpt");
-              r     = knife.apply_wear(depth);
-              moved = true;
-            }
-          catch (const std::exception &e)
-            {
-              if (attempt == 3 || n == 1)
+          {
+            std::string error;
+            try
+              {
+                io::ScopedTimer t(ctx.timers, "fem update");
+                if (attempt > 0)
+                  knife.load(ckpt_dir + "/knife.ckpt");
+                r = knife.apply_wear(depth);
+              }
+            catch (const std::exception &e)
+              {
+                error = e.what();
+              }
+            if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
+              {
+                moved = true;
                 break;
-              n = std::max(1L, n / 2);
-              for (std::size_t v = 0; v < nv; ++v)
-                depth[v] = n * depth_per_cycle[v];
-              ctx.log.warning("update " + std::to_string(update) + ": " + e.what() + "; retried with " +
-                              std::to_string(n) + " cycles");
-            }
+              }
+            if (error.empty())
+              error = "the knife could not be moved on another MPI rank";
+            if (attempt == 3 || n == 1)
+              break;
+            n = std::max(1L, n / 2);
+            for (std::size_t v = 0; v < nv; ++v)
+              depth[v] = n * depth_per_cycle[v];
+            ctx.log.warning("update " + std::to_string(update) + ": " + error + "; retried with " + std::to_string(n) +
+                            " cycles");
+          }
         if (!moved)
           {
             end = "the worn surface could not be remeshed at update " + std::to_string(update) +

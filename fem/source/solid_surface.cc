@@ -14,6 +14,8 @@
 #include <limits>
 #include <map>
 
+#include <unistd.h>
+
 namespace abrade::fem
 {
   using namespace dealii;
@@ -273,8 +275,11 @@ namespace abrade::fem
       }
     if (!(h > 0))
       throw InputError(path, "meshing a CAD or STL solid needs a positive mesh size");
-    const std::string msh = (std::filesystem::temp_directory_path() /
-                             (std::filesystem::path(path).stem().string() + "-abrade-volume.msh"))
+    // a name of this process's own: MPI ranks and the parallel runs of a study remesh at once
+    static int        meshed = 0;
+    const std::string msh    = (std::filesystem::temp_directory_path() /
+                             (std::filesystem::path(path).stem().string() + "-abrade-volume-" +
+                              std::to_string(::getpid()) + "-" + std::to_string(meshed++) + ".msh"))
                               .string();
     if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs")
       with_gmsh(path, [&] {
