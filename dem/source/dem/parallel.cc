@@ -5,6 +5,22 @@
 
 namespace abrade::dem
 {
+  /// Adds the time of its scope to a Parallel's seconds_in_mpi().
+  class MpiTimer
+  {
+  public:
+    explicit MpiTimer(const Parallel &p) : p(p), start(p.distributed() ? MPI_Wtime() : 0) {}
+    ~MpiTimer()
+    {
+      if (p.distributed())
+        p.mpi_seconds += MPI_Wtime() - start;
+    }
+
+  private:
+    const Parallel &p;
+    double          start;
+  };
+
   Parallel Parallel::world()
   {
     Parallel p;
@@ -34,25 +50,44 @@ namespace abrade::dem
     }
   } // namespace
 
-  double Parallel::sum(double v) const { return all_reduce(v, MPI_DOUBLE, MPI_SUM, comm, distributed()); }
-  double Parallel::max(double v) const { return all_reduce(v, MPI_DOUBLE, MPI_MAX, comm, distributed()); }
-  double Parallel::min(double v) const { return all_reduce(v, MPI_DOUBLE, MPI_MIN, comm, distributed()); }
-  long   Parallel::sum(long v) const { return all_reduce(v, MPI_LONG, MPI_SUM, comm, distributed()); }
+  double Parallel::sum(double v) const 
+  {
+    const MpiTimer t(*this);
+    return all_reduce(v, MPI_DOUBLE, MPI_SUM, comm, distributed());
+  }
+  double Parallel::max(double v) const 
+  {
+    const MpiTimer t(*this);
+    return all_reduce(v, MPI_DOUBLE, MPI_MAX, comm, distributed());
+  }
+  double Parallel::min(double v) const 
+  {
+    const MpiTimer t(*this);
+    return all_reduce(v, MPI_DOUBLE, MPI_MIN, comm, distributed());
+  }
+  long   Parallel::sum(long v) const 
+  {
+    const MpiTimer t(*this);
+    return all_reduce(v, MPI_LONG, MPI_SUM, comm, distributed());
+  }
 
   void Parallel::sum(std::vector<double> &v) const
   {
+    const MpiTimer t(*this);
     if (distributed() && !v.empty())
       MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm);
   }
 
   void Parallel::max(std::vector<double> &v) const
   {
+    const MpiTimer t(*this);
     if (distributed() && !v.empty())
       MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX, comm);
   }
 
   std::pair<double, int> Parallel::max_location(double v) const
   {
+    const MpiTimer t(*this);
     if (!distributed())
       return {v, 0};
     struct
@@ -66,6 +101,7 @@ namespace abrade::dem
 
   std::string Parallel::broadcast(const std::string &text, int root) const
   {
+    const MpiTimer t(*this);
     if (!distributed())
       return text;
     int n = static_cast<int>(text.size());
@@ -78,6 +114,7 @@ namespace abrade::dem
   void Parallel::exchange_known(const std::vector<std::vector<double>> &send, const std::vector<int> &counts,
                                 std::vector<double> &received) const
   {
+    const MpiTimer t(*this);
     received.resize(std::accumulate(counts.begin(), counts.end(), std::size_t(0)));
     if (!distributed())
       {
@@ -116,7 +153,10 @@ namespace abrade::dem
     for (int r = 0; r < n_ranks; ++r)
       out[r] = static_cast<int>(send[r].size());
     if (distributed())
-      MPI_Alltoall(out.data(), 1, MPI_INT, in.data(), 1, MPI_INT, comm);
+      {
+        const MpiTimer t(*this);
+        MPI_Alltoall(out.data(), 1, MPI_INT, in.data(), 1, MPI_INT, comm);
+      }
     else
       in = out;
     std::vector<double> data;
@@ -128,6 +168,7 @@ namespace abrade::dem
 
   std::vector<double> Parallel::gather(const std::vector<double> &local) const
   {
+    const MpiTimer t(*this);
     if (!distributed())
       return local;
     int              n = static_cast<int>(local.size());

@@ -53,9 +53,14 @@ namespace abrade::dem
     /// Concatenation of every rank's @p local on rank 0 (empty elsewhere).
     std::vector<double> gather(const std::vector<double> &local) const;
 
+    /// Seconds this object has spent in MPI calls (waiting for the other ranks included).
+    double seconds_in_mpi() const { return mpi_seconds; }
+
   private:
-    MPI_Comm comm    = MPI_COMM_NULL;
-    int      my_rank = 0, n_ranks = 1;
+    MPI_Comm       comm    = MPI_COMM_NULL;
+    int            my_rank = 0, n_ranks = 1;
+    mutable double mpi_seconds = 0;
+    friend class MpiTimer;
   };
 
   /// Packs an integer into a double's bits (and back) for the exchange buffers.
