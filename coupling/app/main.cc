@@ -228,6 +228,17 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  /// The final error line. Under mpirun the ranks fail together with the same message (the
+  /// DEM's errors are agreed on), so only rank 0 prints it; every rank's log.txt has it.
+  void report(const char *what, const std::string &message)
+  {
+    if (dem::Parallel::world().rank() == 0)
+      std::cerr << what << message << std::endl;
+  }
+} // namespace
+
 int main(int argc, char **argv)
 {
   try
@@ -310,17 +321,17 @@ int main(int argc, char **argv)
     }
   catch (const InputError &e)
     {
-      std::cerr << "abrade: error: " << e.what() << std::endl;
+      report("abrade: error: ", e.what());
       return 2;
     }
   catch (const RunError &e)
     {
-      std::cerr << "abrade: run failed: " << e.what() << std::endl;
+      report("abrade: run failed: ", e.what());
       return 3;
     }
   catch (const std::exception &e)
     {
-      std::cerr << "abrade: internal error: " << e.what() << std::endl;
+      report("abrade: internal error: ", e.what());
       return 1;
     }
 }

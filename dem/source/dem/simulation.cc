@@ -506,23 +506,30 @@ namespace abrade::dem
       if (my_worst > worst)
         worst = my_worst, worst_i = my_i;
     }
-    // the walls' loads from all threads and ranks
-    std::vector<double> &total = m.wall_loads[0];
-    for (std::size_t b = 1; b < m.wall_loads.size(); ++b)
-      for (std::size_t k = 0; k < total.size(); ++k)
-        total[k] += m.wall_loads[b][k];
-    m.parallel.sum(total);
-    for (std::size_t w = 0; w < nw; ++w)
-      {
-        walls[w].force  = Vec3(total[6 * w], total[6 * w + 1], total[6 * w + 2]);
-        walls[w].torque = Vec3(total[6 * w + 3], total[6 * w + 4], total[6 * w + 5]);
-      }
     if (worst > m.worst_overlap_ratio)
       {
         m.worst_overlap_ratio = worst;
         m.worst_overlap_i     = worst_i;
         m.worst_overlap_j     = -1;
       }
+    // One sum over the ranks for the walls' loads (from all threads) and every rank's worst
+    // overlap (in its own slot, so the largest and its rank are known everywhere).
+    std::vector<double> &total = m.wall_loads[0];
+    total.resize(6 * nw + m.parallel.size());
+    for (std::size_t b = 1; b < m.wall_loads.size(); ++b)
+      for (std::size_t k = 0; k < 6 * nw; ++k)
+        total[k] += m.wall_loads[b][k];
+    std::fill(total.begin() + 6 * nw, total.end(), 0.0);
+    total[6 * nw + m.parallel.rank()] = m.worst_overlap_ratio;
+    m.parallel.sum(total);
+    for (std::size_t w = 0; w < nw; ++w)
+      {
+        walls[w].force  = Vec3(total[6 * w], total[6 * w + 1], total[6 * w + 2]);
+        walls[w].torque = Vec3(total[6 * w + 3], total[6 * w + 4], total[6 * w + 5]);
+      }
+    m.worst_overlap_rank = static_cast<int>(std::max_element(total.begin() + 6 * nw, total.end()) - total.begin() - 6 * nw);
+    m.worst_overlap_all  = total[6 * nw + m.worst_overlap_rank];
+    total.resize(6 * nw);
   }
 
   void Simulation::compute_forces()
@@ -643,7 +650,8 @@ namespace abrade::dem
   void Simulation::check_step()
   {
     const Impl &m = *impl;
-    const auto [worst, holder] = m.parallel.max_location(m.worst_overlap_ratio);
+    const double worst = m.worst_overlap_all; // over all ranks (wall_forces)
+    const int    holder = m.worst_overlap_rank;
     if (worst > config.max_overlap_fraction)
       {
         std::ostringstream s;

@@ -79,6 +79,8 @@ namespace abrade::dem
     long   first_bad_particle = -1;
     double worst_overlap_ratio = 0;
     long   worst_overlap_i = -1, worst_overlap_j = -1;
+    double worst_overlap_all  = 0; ///< the largest over all ranks
+    int    worst_overlap_rank = 0; ///< and the rank that has it
     bool   force_rebuild = true;
   };
 } // namespace abrade::dem
