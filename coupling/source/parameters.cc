@@ -322,11 +322,22 @@ namespace abrade::coupling
         prm.declare_entry("Shell side", "+x", Selection("+x|-x"),
                           "Clamshell shell: which way it opens (the other shell of the grab: the other side).");
         prm.declare_entry("Knife mount", "", Anything(),
-                          "Solid model: the name of a clamshell shell wall whose lip carries this "
-                          "knife. The knife (subsection Knife) lies along the shell's width, its edge "
+                          "Solid model: the name of a shell wall whose lip carries this knife (a "
+                          "clamshell shell, or a file with 'Lip centre' set). The knife (subsection Knife) lies along the shell's width, its edge "
                           "'Knife protrusion' beyond the lip, its height along the shell's bottom, and "
                           "it moves with the shell (the shell's Motion is used; this wall's own Motion "
                           "and Offset are ignored). Empty: placed by Offset.");
+        prm.declare_entry("Lip centre", "", Anything(),
+                          "[m] A shell read from a file (Geometry = file) that carries a knife: the "
+                          "centre of its lip, in the file's coordinates (before Offset): 'x, y, z'. "
+                          "Empty: the wall has no lip.");
+        prm.declare_entry("Lip direction", "0, 1, 0", Anything(),
+                          "Shell from a file: the direction along its lip, 'x, y, z'. Its sign decides which "
+                          "face of a mounted knife faces the material: the knife's inner face looks along "
+                          "'Lip inward' x 'Lip direction', which should point into the shell.");
+        prm.declare_entry("Lip inward", "0, 0, 1", Anything(),
+                          "Shell from a file: the direction from the lip into the shell along its bottom "
+                          "(the mounted knife's height runs this way), 'x, y, z'.");
         prm.declare_entry("Knife protrusion", "0.02", Double(0, huge),
                           "[m] Mounted knife: how far its edge stands beyond the shell's lip. Range: >= 0.");
         declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
@@ -494,14 +505,11 @@ namespace abrade::coupling
             continue;
           const std::vector<std::string> wp = {"Wall " + wc.wall.name};
           auto shell = std::find_if(c.walls.begin(), c.walls.end(), [&](const auto &o) { return o.wall.name == wc.mount; });
-          if (shell == c.walls.end() || !shell->shell)
-            f.fail(wp, "Knife mount", "'" + wc.mount + "' is not a wall with Geometry = clamshell shell (in Walls)");
-          const auto  &sh = *shell->shell;
-          const double th = sh.opening;
-          // along the hinge, mirrored with the shell, so that the knife's +y face is inside both shells
-          const Vec3   along(0, sh.side, 0), up(sh.side * std::cos(th), 0, std::sin(th)); // into the shell
-          const Vec3   across = up.cross(along);
-          const Vec3   lip    = shell->offset + Vec3(sh.side * sh.radius * std::sin(th), 0, -sh.radius * std::cos(th));
+          if (shell == c.walls.end() || !shell->lip)
+            f.fail(wp, "Knife mount",
+                   "'" + wc.mount + "' is not a wall with a lip (in Walls; Geometry = clamshell shell, or a file with 'Lip centre')");
+          const Vec3 along = shell->lip->along, up = shell->lip->inward, lip = shell->lip->centre;
+          const Vec3 across = up.cross(along);
           wc.rotation.col(0)  = along, wc.rotation.col(1) = across, wc.rotation.col(2) = up;
           wc.offset           = lip - wc.protrusion * up - 0.5 * length * along;
           wc.wall.motion      = shell->wall.motion;
@@ -649,8 +657,44 @@ namespace abrade::coupling
         wc.offset         = offset;
         wc.solid_model    = geometry == "solid model";
         if (geometry == "clamshell shell")
-          wc.shell = DemCase::WallCase::Shell{prm.get_double("Shell radius"), prm.get_double("Shell opening") * M_PI / 180,
-                                              prm.get("Shell side") == "+x" ? 1 : -1};
+          {
+            const auto &sh = wc.shell = DemCase::WallCase::Shell{
+              prm.get_double("Shell radius"), prm.get_double("Shell opening") * M_PI / 180, prm.get("Shell side") == "+x" ? 1 : -1};
+            // along the hinge, mirrored with the shell, so that a knife's +y face is inside both shells
+            const double th = sh->opening;
+            wc.lip          = DemCase::WallCase::Lip{
+              offset + Vec3(sh->side * sh->radius * std::sin(th), 0, -sh->radius * std::cos(th)), Vec3(0, sh->side, 0),
+              Vec3(sh->side * std::cos(th), 0, std::sin(th))};
+          }
+        if (const std::string centre = trim(prm.get("Lip centre")); !centre.empty())
+          {
+            if (geometry != "file")
+              f.fail(wp, "Lip centre", "only a wall with Geometry = file takes a lip (a clamshell shell has its own)");
+            auto vector = [&](const std::string &key, const std::string &text) {
+              const auto parts = split_string_list(text);
+              Vec3       v;
+              try
+                {
+                  if (parts.size() != 3)
+                    throw std::invalid_argument("three numbers");
+                  for (int d = 0; d < 3; ++d)
+                    v[d] = std::stod(parts[d]);
+                }
+              catch (const std::exception &)
+                {
+                  f.fail(wp, key, "needs three numbers 'x, y, z', not '" + text + "'");
+                }
+              return v;
+            };
+            const Vec3 along = vector("Lip direction", prm.get("Lip direction"));
+            Vec3       in    = vector("Lip inward", prm.get("Lip inward"));
+            if (!(along.norm() > 0))
+              f.fail(wp, "Lip direction", "must not be zero");
+            in -= in.dot(along.normalized()) * along.normalized(); // square to the lip
+            if (!(in.norm() > 1e-9 * along.norm()))
+              f.fail(wp, "Lip inward", "must not be parallel to 'Lip direction'");
+            wc.lip = DemCase::WallCase::Lip{vector("Lip centre", centre) + offset, along.normalized(), in.normalized()};
+          }
         wc.mount = trim(prm.get("Knife mount"));
         if (!wc.mount.empty() && !wc.solid_model)
           f.fail(wp, "Knife mount", "only a wall with Geometry = solid model (a knife) can be mounted on a shell");

@@ -65,6 +65,15 @@ namespace abrade::coupling
         int    side   = 1;
       };
       std::optional<Shell> shell;
+      /// Where a knife sits on this wall (a shell's lip): the lip's centre at t = 0, a unit
+      /// vector along it, and a unit vector from the lip into the shell along its bottom (the
+      /// mounted knife's inner face looks along inward x along). Parametric shells have one;
+      /// a shell read from a file gets one from 'Lip centre', 'Lip direction', 'Lip inward'.
+      struct Lip
+      {
+        dem::Vec3 centre, along, inward;
+      };
+      std::optional<Lip> lip;
       std::string          mount; ///< the shell whose lip carries this knife ("": none)
       double               protrusion = 0.02; ///< of a mounted knife's edge beyond the lip [m]
     };
