@@ -234,7 +234,8 @@ namespace
   /// DEM's errors are agreed on), so only rank 0 prints it; every rank's log.txt has it.
   void report(const char *what, const std::string &message)
   {
-    if (dem::Parallel::world().rank() == 0)
+    const char *launched_rank = std::getenv("OMPI_COMM_WORLD_RANK"); // also before MPI is initialised
+    if (dem::Parallel::world().rank() == 0 && (!launched_rank || std::string(launched_rank) == "0"))
       std::cerr << what << message << std::endl;
   }
 } // namespace
@@ -272,6 +273,10 @@ int main(int argc, char **argv)
             throw InputError("command line", "--format must be text or prm");
           return 0;
         }
+      if (cl.command == "sweep" || cl.command == "concepts")
+        if (const char *n = std::getenv("OMPI_COMM_WORLD_SIZE"); n && std::atoi(n) > 1)
+          throw InputError("command line", "abrade " + cl.command +
+                                             " runs its runs side by side itself (--jobs); start it without mpirun");
       if (cl.command == "sweep")
         {
           if (cl.file.empty())
