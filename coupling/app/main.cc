@@ -179,7 +179,7 @@ namespace
     std::ofstream(out.file("parameters.prm")) << canonical;
 
     prm.enter_subsection("Simulation");
-    const long threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : dem::default_thread_count();
+    const long threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : dem::default_thread_count(ranks);
     prm.leave_subsection();
     log.line("abrade " + std::string(version_string) + ": job '" + job_name + "' from " + params.file_name() +
              ", output in " + dir + ", " + std::to_string(threads) + " threads" +

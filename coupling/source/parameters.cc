@@ -214,7 +214,7 @@ namespace abrade::coupling
                       "input restitution.");
     prm.declare_entry("Threads", "0", Integer(0, 1024),
                       "Number of threads; 0: all available (OMP_NUM_THREADS). Range: >= 0. Under "
-                      "mpirun: threads per MPI rank.");
+                      "mpirun: threads per MPI rank (0: the machine's share of each rank).");
     prm.declare_entry("Rebalance threshold", "1.1", Double(1, huge),
                       "[-] Under mpirun the particles are spread over the ranks by recursive "
                       "coordinate bisection; the domains are cut again at a neighbour-list build "

@@ -50,6 +50,18 @@ namespace abrade::dem
     }
   } // namespace
 
+  int Parallel::ranks_on_this_machine() const
+  {
+    if (!distributed())
+      return 1;
+    MPI_Comm local;
+    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, my_rank, MPI_INFO_NULL, &local);
+    int n = 1;
+    MPI_Comm_size(local, &n);
+    MPI_Comm_free(&local);
+    return n;
+  }
+
   double Parallel::sum(double v) const 
   {
     const MpiTimer t(*this);

@@ -36,10 +36,16 @@ namespace abrade::dem
 
   int default_thread_count() { return threads_at_start; }
 
+  int default_thread_count(const Parallel &ranks)
+  {
+    // the ranks on one machine share its cores
+    return std::max(1, threads_at_start / ranks.ranks_on_this_machine());
+  }
+
   Simulation::Simulation(const Settings &s) : config(s), impl(std::make_unique<Impl>())
   {
-    impl->n_threads = config.threads > 0 ? config.threads : threads_at_start;
     impl->parallel  = config.distribute ? Parallel::world() : Parallel();
+    impl->n_threads = config.threads > 0 ? config.threads : default_thread_count(impl->parallel);
   }
 
   Simulation::Simulation(Simulation &&) noexcept = default;

@@ -25,6 +25,8 @@ namespace abrade::dem
     static Parallel world();
 
     int  rank() const { return my_rank; }
+    /// Ranks that share this machine (1 when serial).
+    int  ranks_on_this_machine() const;
     int  size() const { return n_ranks; }
     bool distributed() const { return n_ranks > 1; }
 

@@ -71,6 +71,9 @@ namespace abrade::dem
 
   /// Threads used when Settings::threads is 0: what OpenMP offered when the program started.
   int default_thread_count();
+  /// The same shared by the ranks of @p ranks that run on this machine (under mpirun -np 2 on
+  /// 16 cores: 8 each). Collective.
+  int default_thread_count(const Parallel &ranks);
 
   class Simulation
   {
