@@ -299,7 +299,7 @@ namespace abrade::coupling
         // communication per rank and step, for the scaling estimate (docs/benchmarks.md)
         const double steps = std::max(1.0, double(stats.steps));
         r["mean_ghosts_per_rank"]         = sim.parallel().sum(double(stats.ghost_steps)) / steps / sim.parallel().size();
-        r["mean_bytes_sent_per_rank_step"] = sim.parallel().sum(stats.bytes_sent) / steps / sim.parallel().size();
+        r["mean_bytes_sent_per_rank_step"] = sim.parallel().sum(sim.parallel().bytes_sent()) / steps / sim.parallel().size();
         // time in MPI calls (the waits for slower ranks included) over the time in the loop
         const double mpi = sim.parallel().seconds_in_mpi(), loop = stats.loop_seconds;
         r["mpi_share_of_loop_max"]  = sim.parallel().max(mpi / std::max(1e-12, loop));

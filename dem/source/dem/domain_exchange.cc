@@ -9,10 +9,22 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <numeric>
+#include <tuple>
 
 namespace abrade::dem
 {
+  namespace
+  {
+    /// What a ghost carries besides material and id: its state (x y z vx vy vz wx wy wz, the
+    /// first Impl::ghost_state, updated every step), then radius and mass.
+    std::array<std::vector<double> *, 11> ghost_arrays(ParticleStore &P)
+    {
+      return {&P.x, &P.y, &P.z, &P.vx, &P.vy, &P.vz, &P.wx, &P.wy, &P.wz, &P.radius, &P.mass};
+    }
+  } // namespace
+
   ParticleStore &Simulation::particles()
   {
     drop_ghosts();
@@ -120,10 +132,7 @@ namespace abrade::dem
     for (std::size_t k = first; k < n; ++k)
       if (long(k - first) % m.parallel.size() == m.parallel.rank())
         order.push_back(k);
-    for (auto *h : {&m.hist_wall, &m.hist_tri})
-      h->resize(Impl::K * n, -1);
-    m.hist_shear.resize(3 * Impl::K * n, 0.0);
-    m.hist_used.resize(Impl::K * n, 0);
+    m.resize_wall_histories(n);
     store.permute(order, m.n_threads);
     permute_wall_histories(order);
     store.n_distributed = store.size();
@@ -169,7 +178,7 @@ namespace abrade::dem
             for (int d = 0; d < 3; ++d)
               b.push_back(m.hist_shear[3 * (K * i + s) + d]);
           }
-        const bool        carried = i < m.carried_owner.size() && m.carried_owner[i] == store.id[i];
+        const bool        carried = m.carries(i, store.id[i]);
         const std::size_t c0 = carried ? m.carried_offsets[i] : 0, c1 = carried ? m.carried_offsets[i + 1] : 0;
         b.push_back(double(c1 - c0));
         for (std::size_t c = c0; c < c1; ++c)
@@ -180,8 +189,6 @@ namespace abrade::dem
           }
       }
     const std::vector<double> in = m.parallel.exchange(send);
-    for (const auto &b : send)
-      stats.bytes_sent += 8.0 * b.size();
 
     // the ones that stay, then the arrivals
     std::vector<std::size_t>  offsets{0};
@@ -190,7 +197,7 @@ namespace abrade::dem
     for (std::size_t i : stay)
       {
         owner.push_back(store.id[i]);
-        if (i < m.carried_owner.size() && m.carried_owner[i] == store.id[i])
+        if (m.carries(i, store.id[i]))
           for (std::size_t c = m.carried_offsets[i]; c < m.carried_offsets[i + 1]; ++c)
             {
               partner.push_back(m.carried_partner[c]);
@@ -248,22 +255,20 @@ namespace abrade::dem
         for (int r : near)
           m.ghost_send[r].push_back(static_cast<int>(i));
       }
-    constexpr int record = Impl::ghost_state + 4;
+    const auto                       arrays = ghost_arrays(store);
+    constexpr int                    record = std::tuple_size_v<decltype(arrays)> + 2; // + material, id
     std::vector<std::vector<double>> send(P);
     for (int r = 0; r < P; ++r)
       for (int i : m.ghost_send[r])
         {
           auto &b = send[r];
-          for (const auto *a : {&store.x, &store.y, &store.z, &store.vx, &store.vy, &store.vz, &store.wx, &store.wy,
-                                &store.wz, &store.radius, &store.mass})
+          for (const auto *a : arrays)
             b.push_back((*a)[i]);
           b.push_back(pack_integer(store.material[i]));
           b.push_back(pack_integer(store.id[i]));
         }
     std::vector<int>          counts;
     const std::vector<double> in = m.parallel.exchange(send, &counts);
-    for (const auto &b : send)
-      stats.bytes_sent += 8.0 * b.size();
     const std::size_t         ng = in.size() / record;
     m.ghost_receive_counts.resize(P);
     for (int r = 0; r < P; ++r)
@@ -275,8 +280,7 @@ namespace abrade::dem
         const double *g = &in[record * k];
         const std::size_t i = n + k;
         int               f = 0;
-        for (auto *a : {&store.x, &store.y, &store.z, &store.vx, &store.vy, &store.vz, &store.wx, &store.wy, &store.wz,
-                        &store.radius, &store.mass})
+        for (auto *a : arrays)
           (*a)[i] = g[f++];
         store.material[i] = static_cast<int>(unpack_integer(g[f++]));
         store.id[i]       = unpack_integer(g[f++]);
@@ -289,34 +293,15 @@ namespace abrade::dem
   // record went, for the updates.
   void Simulation::sort_ghosts()
   {
-    Impl             &m  = *impl;
+    Impl             &m = *impl;
     const std::size_t n = store.size(), ng = store.n_ghost;
-    const long        n_cells = m.nx * m.ny * m.nz;
-    m.ghost_cell_start.assign(n_cells + 1, 0);
-    std::vector<long> cell_index(ng);
-    for (std::size_t k = 0; k < ng; ++k)
-      {
-        const std::size_t i = n + k;
-        const long a = std::clamp(long((store.x[i] - m.lo[0]) / m.cell), 0L, m.nx - 1);
-        const long b = std::clamp(long((store.y[i] - m.lo[1]) / m.cell), 0L, m.ny - 1);
-        const long c = std::clamp(long((store.z[i] - m.lo[2]) / m.cell), 0L, m.nz - 1);
-        cell_index[k] = (c * m.ny + b) * m.nx + a;
-        ++m.ghost_cell_start[cell_index[k] + 1];
-      }
-    for (long c = 0; c < n_cells; ++c)
-      m.ghost_cell_start[c + 1] += m.ghost_cell_start[c];
-    std::vector<std::size_t> order(ng);
-    {
-      std::vector<int> fill(m.ghost_cell_start.begin(), m.ghost_cell_start.end() - 1);
-      for (std::size_t k = 0; k < ng; ++k)
-        order[fill[cell_index[k]]++] = k;
-    }
+    std::vector<std::size_t> order = m.sort_by_cell(store, n, ng, nullptr, m.ghost_cell_start);
     for (auto &s : m.ghost_cell_start)
       s += static_cast<int>(n);
     const std::size_t keep_ng = store.n_ghost;
     store.permute_range(n, order);
     store.n_ghost = keep_ng;
-    m.ghost_slot = order;
+    m.ghost_slot = std::move(order);
   }
 
   // Every step between two builds: the ghosts' positions and velocities from their owners.
@@ -325,31 +310,29 @@ namespace abrade::dem
     Impl &m = *impl;
     if (!m.parallel.distributed())
       return;
-    const int P = m.parallel.size();
+    constexpr int S = Impl::ghost_state;
+    const auto    arrays = ghost_arrays(store);
+    const int     P = m.parallel.size();
     m.send_buffer.resize(P);
     for (int r = 0; r < P; ++r)
       {
         auto &b = m.send_buffer[r];
-        b.resize(Impl::ghost_state * m.ghost_send[r].size());
-        double *o = b.data();
-        for (int i : m.ghost_send[r])
+        b.resize(S * m.ghost_send[r].size());
+        for (int a = 0; a < S; ++a)
           {
-            o[0] = store.x[i], o[1] = store.y[i], o[2] = store.z[i], o[3] = store.vx[i], o[4] = store.vy[i],
-            o[5] = store.vz[i], o[6] = store.wx[i], o[7] = store.wy[i], o[8] = store.wz[i];
-            o += Impl::ghost_state;
+            const double *v = arrays[a]->data();
+            for (std::size_t k = 0; k < m.ghost_send[r].size(); ++k)
+              b[S * k + a] = v[m.ghost_send[r][k]];
           }
       }
     m.parallel.exchange_known(m.send_buffer, m.ghost_receive_counts, m.receive_buffer);
-    for (const auto &b : m.send_buffer)
-      stats.bytes_sent += 8.0 * b.size();
     const std::size_t n = store.size(), ng = store.n_ghost;
     const double     *in = m.receive_buffer.data();
-    for (std::size_t k = 0; k < ng; ++k)
+    for (int a = 0; a < S; ++a)
       {
-        const double     *g = in + Impl::ghost_state * m.ghost_slot[k];
-        const std::size_t i = n + k;
-        store.x[i] = g[0], store.y[i] = g[1], store.z[i] = g[2], store.vx[i] = g[3], store.vy[i] = g[4],
-        store.vz[i] = g[5], store.wx[i] = g[6], store.wy[i] = g[7], store.wz[i] = g[8];
+        double *v = arrays[a]->data() + n;
+        for (std::size_t k = 0; k < ng; ++k)
+          v[k] = in[S * m.ghost_slot[k] + a];
       }
   }
 

@@ -17,6 +17,30 @@
 
 namespace abrade::dem
 {
+  std::vector<std::size_t> Simulation::Impl::sort_by_cell(const ParticleStore &P, std::size_t first,
+                                                         std::size_t count, const std::vector<char> *keep,
+                                                         std::vector<int> &start) const
+  {
+    const long        n_cells = nx * ny * nz;
+    std::vector<long> cell_index(count);
+    start.assign(n_cells + 1, 0);
+    for (std::size_t k = 0; k < count; ++k)
+      if (!keep || (*keep)[k])
+        {
+          const std::size_t i = first + k;
+          cell_index[k]       = cell_of(P.x[i], P.y[i], P.z[i]);
+          ++start[cell_index[k] + 1];
+        }
+    for (long c = 0; c < n_cells; ++c)
+      start[c + 1] += start[c];
+    std::vector<std::size_t> order(start[n_cells]);
+    std::vector<int>         fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < count; ++k)
+      if (!keep || (*keep)[k])
+        order[fill[cell_index[k]]++] = k;
+    return order;
+  }
+
   void Simulation::build_neighbour_lists()
   {
     Impl &m = *impl;
@@ -24,13 +48,7 @@ namespace abrade::dem
     drop_ghosts();
     if (store.n_distributed != store.size() && m.parallel.distributed())
       distribute_new_particles();
-    {
-      const std::size_t n = store.size(); // particles added since the last build: no histories yet
-      for (auto *h : {&m.hist_wall, &m.hist_tri})
-        h->resize(Impl::K * n, -1);
-      m.hist_shear.resize(3 * Impl::K * n, 0.0);
-      m.hist_used.resize(Impl::K * n, 0);
-    }
+    m.resize_wall_histories(store.size()); // particles added since the last build: no histories yet
     rebalance_and_migrate();
     const bool        distributed = m.parallel.distributed();
     const std::size_t n_old       = store.size();
@@ -67,32 +85,10 @@ namespace abrade::dem
     m.ny = std::max(1L, long((hi[1] - m.lo[1]) / m.cell) + 1);
     m.nz = std::max(1L, long((hi[2] - m.lo[2]) / m.cell) + 1);
     const long n_cells = m.nx * m.ny * m.nz;
-    auto cell_of = [&m](double x, double y, double z) {
-      const long i = std::clamp(long((x - m.lo[0]) / m.cell), 0L, m.nx - 1);
-      const long j = std::clamp(long((y - m.lo[1]) / m.cell), 0L, m.ny - 1);
-      const long k = std::clamp(long((z - m.lo[2]) / m.cell), 0L, m.nz - 1);
-      return (k * m.ny + j) * m.nx + i;
-    };
 
     // 2. Sort particles by cell (counting sort), dropping lost ones.
-    std::vector<long> cell_index(n_old);
-    m.cell_start.assign(n_cells + 1, 0);
-    for (std::size_t i = 0; i < n_old; ++i)
-      if (keep[i])
-        {
-          cell_index[i] = cell_of(store.x[i], store.y[i], store.z[i]);
-          ++m.cell_start[cell_index[i] + 1];
-        }
-    for (long c = 0; c < n_cells; ++c)
-      m.cell_start[c + 1] += m.cell_start[c];
-    const std::size_t n = m.cell_start[n_cells];
-    std::vector<std::size_t> order(n);
-    {
-      std::vector<int> fill(m.cell_start.begin(), m.cell_start.end() - 1);
-      for (std::size_t i = 0; i < n_old; ++i)
-        if (keep[i])
-          order[fill[cell_index[i]]++] = i;
-    }
+    const std::vector<std::size_t> order = m.sort_by_cell(store, 0, n_old, &keep, m.cell_start);
+    const std::size_t              n     = order.size();
     store.permute(order, m.n_threads);
     permute_wall_histories(order);
     store.n_distributed = store.size();
@@ -117,7 +113,7 @@ namespace abrade::dem
     const double  sk = skin;
     const bool    any_ghosts = store.n_ghost > 0;
     auto for_each_candidate = [&](std::size_t i, auto &&visit) {
-      const long c  = cell_of(X[i], Y[i], Z[i]);
+      const long c  = m.cell_of(X[i], Y[i], Z[i]);
       const long ci = c % m.nx, cj = (c / m.nx) % m.ny, ck = c / (m.nx * m.ny);
       for (int j = m.cell_start[c]; j < m.cell_start[c + 1]; ++j)
         if (std::size_t(j) > i)
@@ -168,7 +164,7 @@ namespace abrade::dem
         });
         // the tangential history of pairs that had one, from the row's carried list
         const std::size_t row = order[i];
-        if (row >= m.carried_owner.size() || m.carried_owner[row] != ID[i])
+        if (!m.carries(row, ID[i]))
           continue;
         const std::size_t c0 = m.carried_offsets[row], c1 = m.carried_offsets[row + 1];
         if (c0 == c1)

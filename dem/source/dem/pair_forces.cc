@@ -148,14 +148,6 @@ namespace abrade::dem
     const PairCoefficients *COEF  = coefficients.data();
     double                 *SHEAR = m.shear.data();
 
-    // positions and radii packed per particle for the list scan: one cache line per neighbour
-    // instead of four
-    m.xyzr.resize(4 * n);
-    double *XYZR = m.xyzr.data();
-#pragma omp parallel for schedule(static) num_threads(m.n_threads)
-    for (std::size_t i = 0; i < n; ++i)
-      XYZR[4 * i] = X[i], XYZR[4 * i + 1] = Y[i], XYZR[4 * i + 2] = Z[i], XYZR[4 * i + 3] = R[i];
-
     double worst = 0;
     long   wi = -1, wj = -1;
 #pragma omp parallel num_threads(m.n_threads)
@@ -176,13 +168,11 @@ namespace abrade::dem
       double my_worst = 0;
       long   my_i = -1, my_j = -1;
 
-      PairBatch  batch_storage;
-      PairBatch &B = batch_storage;
+      PairBatch B;
 
-      auto forces = [&]() { batch_forces<rotation>(B, in, COEF, nm, dt); };
-
-      // 3. onto both particles
-      auto add = [&]() {
+      // 2. the batch's forces, 3. onto both particles
+      auto flush = [&]() {
+        batch_forces<rotation>(B, in, COEF, nm, dt);
         for (int b = 0; b < B.n; ++b)
           {
             const int i = B.i[b], j = B.j[b];
@@ -211,7 +201,7 @@ namespace abrade::dem
         for (std::size_t i = m.thread_begin[range]; i < m.thread_begin[range + 1]; ++i)
           {
             // 1. the row's pairs in contact
-            const double xi = XYZR[4 * i], yi = XYZR[4 * i + 1], zi = XYZR[4 * i + 2], ri = XYZR[4 * i + 3];
+            const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
             const std::size_t k1 = m.offsets[i + 1];
             for (std::size_t k = m.offsets[i]; k < k1; ++k)
               {
@@ -220,24 +210,23 @@ namespace abrade::dem
                 // the time in a dense bed); the history of a pair that is apart is forgotten
                 // (written only when there is one, to spare the stores)
                 if (B.n == PairBatch::capacity)
-                  forces(), add();
+                  flush();
                 const int     j  = m.neighbours[k];
-                const double *pj = XYZR + 4 * j;
-                const double  dx = xi - pj[0], dy = yi - pj[1], dz = zi - pj[2];
-                const double  sr = ri + pj[3];
+                const double  dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
+                const double  sr = ri + R[j];
                 const double  r2 = dx * dx + dy * dy + dz * dz;
-                const bool    in = r2 < sr * sr;
+                const bool    touching = r2 < sr * sr;
                 double       *s  = SHEAR + 3 * k;
                 const int     b  = B.n;
                 B.i[b] = static_cast<int>(i), B.j[b] = j, B.slot[b] = k;
                 B.dx[b] = dx, B.dy[b] = dy, B.dz[b] = dz, B.r2[b] = r2;
                 B.s0[b] = s[0], B.s1[b] = s[1], B.s2[b] = s[2];
-                B.n += in;
-                if (!in && (s[0] != 0 || s[1] != 0 || s[2] != 0)) // rare: a contact just ended
+                B.n += touching;
+                if (!touching && (s[0] != 0 || s[1] != 0 || s[2] != 0)) // rare: a contact just ended
                   s[0] = s[1] = s[2] = 0;
               }
           }
-      forces(), add();
+      flush();
 #pragma omp critical
       if (my_worst > worst || (my_worst == worst && my_i >= 0 && (wi < 0 || my_i < wi)))
         worst = my_worst, wi = my_i, wj = my_j;

@@ -39,17 +39,6 @@ namespace abrade::dem
     return p;
   }
 
-  namespace
-  {
-    template <typename T>
-    T all_reduce(T v, MPI_Datatype type, MPI_Op op, MPI_Comm comm, bool distributed)
-    {
-      if (distributed)
-        MPI_Allreduce(MPI_IN_PLACE, &v, 1, type, op, comm);
-      return v;
-    }
-  } // namespace
-
   int Parallel::ranks_on_this_machine() const
   {
     if (!distributed())
@@ -62,40 +51,19 @@ namespace abrade::dem
     return n;
   }
 
-  double Parallel::sum(double v) const 
+  void Parallel::all_reduce(void *data, int count, MPI_Datatype type, MPI_Op op) const
   {
     const MpiTimer t(*this);
-    return all_reduce(v, MPI_DOUBLE, MPI_SUM, comm, distributed());
-  }
-  double Parallel::max(double v) const 
-  {
-    const MpiTimer t(*this);
-    return all_reduce(v, MPI_DOUBLE, MPI_MAX, comm, distributed());
-  }
-  double Parallel::min(double v) const 
-  {
-    const MpiTimer t(*this);
-    return all_reduce(v, MPI_DOUBLE, MPI_MIN, comm, distributed());
-  }
-  long   Parallel::sum(long v) const 
-  {
-    const MpiTimer t(*this);
-    return all_reduce(v, MPI_LONG, MPI_SUM, comm, distributed());
+    if (distributed() && count > 0)
+      MPI_Allreduce(MPI_IN_PLACE, data, count, type, op, comm);
   }
 
-  void Parallel::sum(std::vector<double> &v) const
-  {
-    const MpiTimer t(*this);
-    if (distributed() && !v.empty())
-      MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm);
-  }
-
-  void Parallel::max(std::vector<double> &v) const
-  {
-    const MpiTimer t(*this);
-    if (distributed() && !v.empty())
-      MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX, comm);
-  }
+  double Parallel::sum(double v) const { all_reduce(&v, 1, MPI_DOUBLE, MPI_SUM); return v; }
+  double Parallel::max(double v) const { all_reduce(&v, 1, MPI_DOUBLE, MPI_MAX); return v; }
+  double Parallel::min(double v) const { all_reduce(&v, 1, MPI_DOUBLE, MPI_MIN); return v; }
+  long   Parallel::sum(long v) const { all_reduce(&v, 1, MPI_LONG, MPI_SUM); return v; }
+  void   Parallel::sum(std::vector<double> &v) const { all_reduce(v.data(), int(v.size()), MPI_DOUBLE, MPI_SUM); }
+  void   Parallel::max(std::vector<double> &v) const { all_reduce(v.data(), int(v.size()), MPI_DOUBLE, MPI_MAX); }
 
   std::pair<double, int> Parallel::max_location(double v) const
   {
@@ -153,6 +121,7 @@ namespace abrade::dem
     for (int r = 0; r < n_ranks; ++r)
       if (r != my_rank && !send[r].empty())
         {
+          sent_bytes += sizeof(double) * send[r].size();
           requests.emplace_back();
           MPI_Isend(send[r].data(), static_cast<int>(send[r].size()), MPI_DOUBLE, r, 17, comm, &requests.back());
         }

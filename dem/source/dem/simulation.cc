@@ -189,12 +189,12 @@ namespace abrade::dem
       }
 
     // Time step: explicit, or a fraction of the Rayleigh time step of the smallest particle.
-    double r_min = std::numeric_limits<double>::infinity(), r_max = 0;
+    double r_min = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < store.size(); ++i)
-      r_min = std::min(r_min, store.radius[i]), r_max = std::max(r_max, store.radius[i]);
-    r_min = impl->parallel.min(r_min), r_max = impl->parallel.max(r_max);
-    if (n_particles() == 0)
-      r_min = r_max = 1;
+      r_min = std::min(r_min, store.radius[i]);
+    r_min = impl->parallel.min(r_min);
+    if (!std::isfinite(r_min)) // no particles
+      r_min = 1;
     time_step = config.time_step > 0 ? config.time_step : config.rayleigh_fraction * rayleigh_time_step();
     if (!(time_step > 0) || !std::isfinite(time_step))
       throw InputError("", "cannot choose a time step: set one explicitly, or add particles");
@@ -231,13 +231,8 @@ namespace abrade::dem
     impl->log.per_thread.assign(impl->n_threads, {});
     for (auto &l : impl->log.per_thread)
       l.reserve(1024);
-    const std::size_t n = store.size();
-    impl->hist_wall.resize(Impl::K * n, -1);
-    impl->hist_tri.resize(Impl::K * n, -1);
-    impl->hist_shear.resize(3 * Impl::K * n, 0.0);
-    impl->hist_used.resize(Impl::K * n, 0);
     impl->force_rebuild = true;
-    build_neighbour_lists();
+    build_neighbour_lists(); // sizes the wall histories too
     compute_forces();
     is_set_up = true;
   }

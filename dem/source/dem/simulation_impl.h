@@ -7,6 +7,7 @@
 #include <abrade/dem/parallel.h>
 #include <abrade/dem/simulation.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +34,11 @@ namespace abrade::dem
     std::vector<std::int64_t> carried_partner;
     std::vector<double>       carried_shear;
     std::vector<std::int64_t> carried_owner; // id of each row's particle (rows of others are ignored)
+    /// Whether carried row @p row holds the histories of the particle with id @p id.
+    bool carries(std::size_t row, std::int64_t id) const
+    {
+      return row < carried_owner.size() && carried_owner[row] == id;
+    }
 
     // particle-wall candidates (CSR) and up to K contact histories per particle
     static constexpr int        K = 4;
@@ -42,13 +48,17 @@ namespace abrade::dem
     std::vector<int>            hist_wall, hist_tri; // K per particle, -1: free slot
     std::vector<double>         hist_shear;          // 3 K per particle
     std::vector<unsigned char>  hist_used;           // K per particle
+    /// Wall histories for @p n particles (new ones free).
+    void resize_wall_histories(std::size_t n)
+    {
+      hist_wall.resize(K * n, -1), hist_tri.resize(K * n, -1);
+      hist_shear.resize(3 * K * n, 0.0);
+      hist_used.resize(K * n, 0);
+    }
 
     // per-thread ranges of the pair loop, balanced by pair count (deterministic, unlike a
     // dynamic schedule)
     std::vector<std::size_t> thread_begin;
-
-    // x y z radius packed per particle (owned and ghosts), refreshed before the pair forces
-    std::vector<double> xyzr;
 
     // positions at the last build
     std::vector<double> x0, y0, z0;
@@ -60,6 +70,19 @@ namespace abrade::dem
     Vec3                lo;
     long                nx = 1, ny = 1, nz = 1;
     std::vector<int>    cell_start, ghost_cell_start;
+    /// The cell of a position (outside the grid: the nearest cell).
+    long cell_of(double x, double y, double z) const
+    {
+      const long i = std::clamp(long((x - lo[0]) / cell), 0L, nx - 1);
+      const long j = std::clamp(long((y - lo[1]) / cell), 0L, ny - 1);
+      const long k = std::clamp(long((z - lo[2]) / cell), 0L, nz - 1);
+      return (k * ny + j) * nx + i;
+    }
+    /// Counting sort by cell of particles first .. first + count - 1 of @p P (those with
+    /// keep[k] set, if @p keep is given): @p start gets each cell's first position in the
+    /// sorted order; returns the order (indices relative to @p first).
+    std::vector<std::size_t> sort_by_cell(const ParticleStore &P, std::size_t first, std::size_t count,
+                                          const std::vector<char> *keep, std::vector<int> &start) const;
 
     // ghost layer: owned particles sent to each rank, the values received from each rank per
     // update, and where each received ghost record went after the cell sort
@@ -76,7 +99,6 @@ namespace abrade::dem
     ContactLog                       log;
 
     // problems found during a step
-    long   first_bad_particle = -1;
     double worst_overlap_ratio = 0;
     long   worst_overlap_i = -1, worst_overlap_j = -1;
     double worst_overlap_all  = 0; ///< the largest over all ranks

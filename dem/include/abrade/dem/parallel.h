@@ -57,11 +57,16 @@ namespace abrade::dem
 
     /// Seconds this object has spent in MPI calls (waiting for the other ranks included).
     double seconds_in_mpi() const { return mpi_seconds; }
+    /// Bytes this object has sent to other ranks in exchanges.
+    double bytes_sent() const { return sent_bytes; }
 
   private:
+    /// MPI_Allreduce in place, timed; nothing when serial.
+    void all_reduce(void *data, int count, MPI_Datatype type, MPI_Op op) const;
+
     MPI_Comm       comm    = MPI_COMM_NULL;
     int            my_rank = 0, n_ranks = 1;
-    mutable double mpi_seconds = 0;
+    mutable double mpi_seconds = 0, sent_bytes = 0;
     friend class MpiTimer;
   };
 

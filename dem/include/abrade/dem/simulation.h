@@ -63,7 +63,6 @@ namespace abrade::dem
   {
     long   steps = 0, rebuilds = 0;
     long   rebalances = 0, migrated = 0; ///< domain cuts; particles that changed rank (this rank)
-    double bytes_sent = 0;               ///< ghost updates, ghost layers and migrations (this rank)
     long   ghost_steps = 0;              ///< sum over steps of this rank's ghost count
     double loop_seconds = 0;
     long   particle_steps = 0;
