@@ -26,7 +26,6 @@
 #include <limits>
 #include <map>
 #include <sstream>
-#include <utility>
 
 namespace abrade::coupling
 {
@@ -138,10 +137,7 @@ namespace abrade::coupling
     auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
     sim.add_hook(wear);
     std::vector<std::shared_ptr<dem::LayerProbe>> probes;
-    double r_max = 0;
-    for (std::size_t i = 0; i < std::as_const(sim).particles().size(); ++i)
-      r_max = std::max(r_max, std::as_const(sim).particles().radius[i]);
-    r_max = sim.parallel().max(r_max);
+    const double r_max = sim.largest_radius();
     for (std::size_t w = 0; w < c.walls.size(); ++w)
       if (c.walls[w].probe)
         {
@@ -205,9 +201,7 @@ namespace abrade::coupling
           output.write_snapshot(sim);
         flush_warnings(sim, ctx.log);
         const auto   after = sim.statistics();
-        // all ranks' particle-steps over the slowest rank's time
-        const double rate = sim.parallel().sum(double(after.particle_steps - before.particle_steps)) /
-                            std::max(1e-12, sim.parallel().max(after.loop_seconds - before.loop_seconds));
+        const double rate  = sim.throughput(before, after);
         io::Json &ph          = phases[name];
         ph["duration"]        = duration;
         ph["steps"]           = steps;
@@ -309,8 +303,6 @@ namespace abrade::coupling
     r["time_step"]   = sim.dt();
     r["steps"]       = stats.steps - stats0.steps;
     r["neighbour_rebuilds"] = stats.rebuilds;
-    r["particle_steps_per_second"] =
-      sim.parallel().sum(double(stats.particle_steps - stats0.particle_steps)) /
-      std::max(1e-12, sim.parallel().max(stats.loop_seconds - stats0.loop_seconds));
+    r["particle_steps_per_second"] = sim.throughput(stats0, stats);
   }
 } // namespace abrade::coupling

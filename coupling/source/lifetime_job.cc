@@ -43,7 +43,6 @@
 #include <filesystem>
 #include <numeric>
 #include <sstream>
-#include <utility>
 
 namespace abrade::coupling
 {
@@ -89,10 +88,7 @@ namespace abrade::coupling
           if (c.payload_height)
             r.payload = std::max(r.payload, sim.mass_above(*c.payload_height));
         }
-      const auto &P = std::as_const(sim).particles();
-      for (std::size_t i = 0; i < P.size(); ++i)
-        r.r_max = std::max(r.r_max, P.radius[i]);
-      r.r_max = sim.parallel().max(r.r_max);
+      r.r_max = sim.largest_radius();
       r.per_triangle.assign(surface.triangles.size(), 0.0);
       r.per_phase.assign(c.phases.size(), 0.0);
       for (std::size_t k : knives)

@@ -344,6 +344,20 @@ namespace abrade::dem
 
   double Simulation::mass_above(double z) const { return impl->parallel.sum(store.mass_above(z)); }
 
+  double Simulation::largest_radius() const
+  {
+    double r = 0;
+    for (std::size_t i = 0; i < store.size(); ++i)
+      r = std::max(r, store.radius[i]);
+    return impl->parallel.max(r);
+  }
+
+  double Simulation::throughput(const StepStatistics &before, const StepStatistics &after) const
+  {
+    return impl->parallel.sum(double(after.particle_steps - before.particle_steps)) /
+           std::max(1e-12, impl->parallel.max(after.loop_seconds - before.loop_seconds));
+  }
+
   ParticleStore Simulation::gather_particles() const
   {
     std::vector<double> local;

@@ -120,6 +120,11 @@ namespace abrade::dem
     std::size_t n_particles() const;
     /// Mass of all particles whose centre lies above @p z [kg] (a grab's payload).
     double mass_above(double z) const;
+    /// Radius of the largest particle on any rank [m] (0 without particles).
+    double largest_radius() const;
+    /// Particle-steps per second between two statistics: all ranks' particle-steps over the
+    /// slowest rank's time in the loop.
+    double throughput(const StepStatistics &before, const StepStatistics &after) const;
     /// Every particle of every rank, sorted by id, on rank 0 (empty elsewhere).
     ParticleStore gather_particles() const;
     std::size_t n_walls() const { return walls.size(); }
