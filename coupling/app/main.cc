@@ -28,6 +28,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -71,6 +72,24 @@ namespace
     std::string              knives = "right_knife,left_knife";
     int                      lifetime_updates = 0;
   };
+
+  /// What mpirun (Open MPI, or a PMI launcher) told this process, known before MPI_Init.
+  struct Launch
+  {
+    bool by_mpirun = false;
+    int  rank = 0, size = 1;
+  };
+  Launch launch()
+  {
+    Launch l;
+    for (const auto &[rank, size] : {std::pair{"OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_SIZE"}, {"PMI_RANK", "PMI_SIZE"}})
+      if (const char *n = std::getenv(size))
+        {
+          const char *r = std::getenv(rank);
+          return {true, r ? std::atoi(r) : 0, std::atoi(n)};
+        }
+    return l;
+  }
 
   int integer(const std::string &flag, const std::string &v)
   {
@@ -165,7 +184,7 @@ namespace
 
     // Under mpirun every rank runs the job (the DEM spread over the ranks, the rest on
     // globally reduced data); rank 0 writes the results, the others into DIR/.rank-N.
-    if (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"))
+    if (launch().by_mpirun)
       coupling::init_mpi_once();
     const dem::Parallel ranks = dem::Parallel::world();
     const bool          root  = ranks.rank() == 0;
@@ -234,8 +253,7 @@ namespace
   /// DEM's errors are agreed on), so only rank 0 prints it; every rank's log.txt has it.
   void report(const char *what, const std::string &message)
   {
-    const char *launched_rank = std::getenv("OMPI_COMM_WORLD_RANK"); // also before MPI is initialised
-    if (dem::Parallel::world().rank() == 0 && (!launched_rank || std::string(launched_rank) == "0"))
+    if (dem::Parallel::world().rank() == 0 && launch().rank == 0) // the latter also before MPI_Init
       std::cerr << what << message << std::endl;
   }
 } // namespace
@@ -274,7 +292,7 @@ int main(int argc, char **argv)
           return 0;
         }
       if (cl.command == "sweep" || cl.command == "concepts")
-        if (const char *n = std::getenv("OMPI_COMM_WORLD_SIZE"); n && std::atoi(n) > 1)
+        if (launch().size > 1)
           throw InputError("command line", "abrade " + cl.command +
                                              " runs its runs side by side itself (--jobs); start it without mpirun");
       if (cl.command == "sweep")
