@@ -327,17 +327,17 @@ namespace abrade::coupling
                           "'Knife protrusion' beyond the lip, its height along the shell's bottom, and "
                           "it moves with the shell (the shell's Motion is used; this wall's own Motion "
                           "and Offset are ignored). Empty: placed by Offset.");
-        prm.declare_entry("Lip centre", "", Anything(),
+        prm.declare_entry("Lip centre", "", List(Double(-huge, huge), 0, 3),
                           "[m] A shell read from a file (Geometry = file) that carries a knife: the "
                           "centre of its lip, in the file's coordinates (before Offset): 'x, y, z'. "
                           "Empty: the wall has no lip.");
-        prm.declare_entry("Lip direction", "0, 1, 0", Anything(),
-                          "Shell from a file: the direction along its lip, 'x, y, z'. Its sign decides which "
-                          "face of a mounted knife faces the material: the knife's inner face looks along "
-                          "'Lip inward' x 'Lip direction', which should point into the shell.");
-        prm.declare_entry("Lip inward", "0, 0, 1", Anything(),
-                          "Shell from a file: the direction from the lip into the shell along its bottom "
-                          "(the mounted knife's height runs this way), 'x, y, z'.");
+        declare_vector(prm, "Lip direction", "0, 1, 0",
+                       "Shell from a file: the direction along its lip. Its sign decides which face of "
+                       "a mounted knife faces the material: the knife's inner face looks along "
+                       "'Lip inward' x 'Lip direction', which should point into the shell.");
+        declare_vector(prm, "Lip inward", "0, 0, 1",
+                       "Shell from a file: the direction from the lip into the shell along its bottom "
+                       "(the mounted knife's height runs this way).");
         prm.declare_entry("Knife protrusion", "0.02", Double(0, huge),
                           "[m] Mounted knife: how far its edge stands beyond the shell's lip. Range: >= 0.");
         declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
@@ -666,34 +666,20 @@ namespace abrade::coupling
               offset + Vec3(sh->side * sh->radius * std::sin(th), 0, -sh->radius * std::cos(th)), Vec3(0, sh->side, 0),
               Vec3(sh->side * std::cos(th), 0, std::sin(th))};
           }
-        if (const std::string centre = trim(prm.get("Lip centre")); !centre.empty())
+        if (const auto centre = get_list(prm, "Lip centre"); !centre.empty())
           {
             if (geometry != "file")
               f.fail(wp, "Lip centre", "only a wall with Geometry = file takes a lip (a clamshell shell has its own)");
-            auto vector = [&](const std::string &key, const std::string &text) {
-              const auto parts = split_string_list(text);
-              Vec3       v;
-              try
-                {
-                  if (parts.size() != 3)
-                    throw std::invalid_argument("three numbers");
-                  for (int d = 0; d < 3; ++d)
-                    v[d] = std::stod(parts[d]);
-                }
-              catch (const std::exception &)
-                {
-                  f.fail(wp, key, "needs three numbers 'x, y, z', not '" + text + "'");
-                }
-              return v;
-            };
-            const Vec3 along = vector("Lip direction", prm.get("Lip direction"));
-            Vec3       in    = vector("Lip inward", prm.get("Lip inward"));
+            if (centre.size() != 3)
+              f.fail(wp, "Lip centre", "needs three numbers 'x, y, z' (or nothing)");
+            const Vec3 along = get_vector(prm, "Lip direction");
+            Vec3       in    = get_vector(prm, "Lip inward");
             if (!(along.norm() > 0))
               f.fail(wp, "Lip direction", "must not be zero");
             in -= in.dot(along.normalized()) * along.normalized(); // square to the lip
             if (!(in.norm() > 1e-9 * along.norm()))
               f.fail(wp, "Lip inward", "must not be parallel to 'Lip direction'");
-            wc.lip = DemCase::WallCase::Lip{vector("Lip centre", centre) + offset, along.normalized(), in.normalized()};
+            wc.lip = DemCase::WallCase::Lip{get_vector(prm, "Lip centre") + offset, along.normalized(), in.normalized()};
           }
         wc.mount = trim(prm.get("Knife mount"));
         if (!wc.mount.empty() && !wc.solid_model)
