@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The whole lifetime loop (DEM cycle, wear mapping, mesh motion, remeshing) under mpirun -np 2:
 # it completes, rank 0 writes the results (rank 1 into DIR/.rank-1), and the first update's
-# worn volume agrees with the serial run within the DEM's run-to-run noise (20 %: the two
-# decompositions sum forces in a different order, and a wear cycle is a chaotic flow).
+# worn volume agrees with the serial run within the DEM's run-to-run noise (35 %: the two
+# decompositions sum forces in a different order, and a wear cycle is a chaotic flow; the
+# first update's worn volume of builds and thread counts that differ only in round-off spread
+# over 6.9 ... 9.0e-6 m^3, standard deviation about 8 %).
 #   check_lifetime_mpi.sh ABRADE PRM OUTDIR
 set -euo pipefail
 abrade=$1 prm=$2 out=$3
@@ -22,6 +24,6 @@ assert len(a) == len(b) == 2, (len(a), len(b))
 va, vb = float(a[0]["worn_volume"]), float(b[0]["worn_volume"])
 d = abs(vb - va) / va
 print(f"worn volume after update 1: {va:.4g} m^3 (1 rank), {vb:.4g} m^3 (2 ranks), {100 * d:.1f} % apart")
-sys.exit(0 if d < 0.2 else 1)
+sys.exit(0 if d < 0.35 else 1)
 PY
 echo "ok: the lifetime loop runs on 2 ranks"

@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 namespace abrade::dem
 {
@@ -105,80 +107,116 @@ namespace abrade::dem
 
     // 4. Half neighbour list: own cell (j > i) and the 13 forward neighbour cells for owned
     //    partners, all 27 cells for ghosts (each rank computes a pair across its boundary).
-    static const int stencil[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
-                                       {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
-                                       {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
-    m.offsets.assign(n + 1, 0);
+    //    The particles are sorted by cell and cells are numbered x fastest, so a row of three
+    //    cells along x is one contiguous range of particles: the forward half is five ranges
+    //    (the rest of the own cell with the cell after it, three cells of the next row, and
+    //    three rows of three cells in the layer above), the ghosts nine. Each thread lists a
+    //    contiguous block of rows into its own buffer (one pass, branch-free appends), and the
+    //    blocks are then copied into place.
     const double *X = store.x.data(), *Y = store.y.data(), *Z = store.z.data(), *R = store.radius.data();
     const double  sk = skin;
     const bool    any_ghosts = store.n_ghost > 0;
-    auto for_each_candidate = [&](std::size_t i, auto &&visit) {
+    // the ranges of row i's candidates: begin/end pairs, returns their number
+    auto candidate_ranges = [&](std::size_t i, int (&range)[2 * 14]) {
+      const int *start = m.cell_start.data(), *ghost_start = m.ghost_cell_start.data();
       const long c  = m.cell_of(X[i], Y[i], Z[i]);
       const long ci = c % m.nx, cj = (c / m.nx) % m.ny, ck = c / (m.nx * m.ny);
-      for (int j = m.cell_start[c]; j < m.cell_start[c + 1]; ++j)
-        if (std::size_t(j) > i)
-          visit(j);
-      for (const auto &s : stencil)
-        {
-          const long a = ci + s[0], b = cj + s[1], d = ck + s[2];
-          if (a < 0 || b < 0 || d < 0 || a >= m.nx || b >= m.ny || d >= m.nz)
-            continue;
-          const long cc = (d * m.ny + b) * m.nx + a;
-          for (int j = m.cell_start[cc]; j < m.cell_start[cc + 1]; ++j)
-            visit(j);
-        }
+      const long a0 = std::max(0L, ci - 1), a1 = std::min(m.nx - 1, ci + 1);
+      int        n_ranges = 0;
+      auto       add = [&](const int *first, long c0, long c1) { // cells c0 .. c1 (one row)
+        range[2 * n_ranges] = first[c0], range[2 * n_ranges + 1] = first[c1 + 1], ++n_ranges;
+      };
+      range[0] = int(i) + 1, range[1] = start[(ci + 1 < m.nx ? c + 1 : c) + 1], n_ranges = 1;
+      if (cj + 1 < m.ny)
+        add(start, c + m.nx - ci + a0, c + m.nx - ci + a1);
+      if (ck + 1 < m.nz)
+        for (long b = std::max(0L, cj - 1); b <= std::min(m.ny - 1, cj + 1); ++b)
+          {
+            const long row = ((ck + 1) * m.ny + b) * m.nx;
+            add(start, row + a0, row + a1);
+          }
       if (any_ghosts)
         for (long d = std::max(0L, ck - 1); d <= std::min(m.nz - 1, ck + 1); ++d)
           for (long b = std::max(0L, cj - 1); b <= std::min(m.ny - 1, cj + 1); ++b)
-            for (long a = std::max(0L, ci - 1); a <= std::min(m.nx - 1, ci + 1); ++a)
-              {
-                const long cc = (d * m.ny + b) * m.nx + a;
-                for (int j = m.ghost_cell_start[cc]; j < m.ghost_cell_start[cc + 1]; ++j)
-                  visit(j);
-              }
+            {
+              const long row = (d * m.ny + b) * m.nx;
+              add(ghost_start, row + a0, row + a1);
+            }
+      return n_ranges;
     };
-    auto close = [&](std::size_t i, int j) {
-      const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
-      const double cut = R[i] + R[j] + sk;
-      return dx * dx + dy * dy + dz * dz < cut * cut;
-    };
-#pragma omp parallel for schedule(static) num_threads(m.n_threads)
-    for (std::size_t i = 0; i < n; ++i)
+    m.offsets.assign(n + 1, 0);
+    std::vector<std::size_t> block(m.n_threads + 1, n);
+    for (int t = 0; t < m.n_threads; ++t)
+      block[t] = n * t / m.n_threads;
+    std::vector<std::size_t> length(m.n_threads, 0);
+    if (m.thread_lists.size() < std::size_t(m.n_threads))
+      m.thread_lists.resize(m.n_threads);
+#pragma omp parallel num_threads(m.n_threads)
+    for (int t = omp_get_thread_num(); t < m.n_threads; t += omp_get_num_threads())
       {
-        std::size_t count = 0;
-        for_each_candidate(i, [&](int j) { count += close(i, j); });
-        m.offsets[i + 1] = count;
+        std::vector<int> &list = m.thread_lists[t]; // its size is its capacity; used: its length
+        std::size_t       used = 0;
+        for (std::size_t i = block[t]; i < block[t + 1]; ++i)
+          {
+            int       range[2 * 14];
+            const int n_ranges = candidate_ranges(i, range);
+            std::size_t bound    = 0;
+            for (int r = 0; r < n_ranges; ++r)
+              bound += std::max(0, range[2 * r + 1] - range[2 * r]);
+            if (list.size() < used + bound)
+              list.resize(std::max(2 * list.size(), used + bound));
+            int *__restrict out = list.data();
+            std::size_t k = used;
+            const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i] + sk;
+            for (int r = 0; r < n_ranges; ++r)
+              for (int j = range[2 * r]; j < range[2 * r + 1]; ++j)
+                {
+                  const double dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
+                  const double cut = ri + R[j];
+                  out[k] = j;
+                  k += dx * dx + dy * dy + dz * dz < cut * cut;
+                }
+            used = k;
+            m.offsets[i + 1] = k;
+          }
+        length[t] = used;
       }
+    // offsets so far: each row's end within its thread's list
+    for (int t = 0; t < m.n_threads; ++t)
+      for (std::size_t i = block[t + 1]; i-- > block[t] + 1;)
+        m.offsets[i + 1] -= m.offsets[i];
     for (std::size_t i = 0; i < n; ++i)
       m.offsets[i + 1] += m.offsets[i];
+    if (m.offsets[n] > std::numeric_limits<unsigned>::max())
+      throw std::runtime_error("the neighbour list of one process has more than 2^32 pairs: run on more "
+                               "MPI ranks");
     m.neighbours.resize(m.offsets[n]);
     m.shear.assign(3 * m.offsets[n], 0.0);
+    m.touching.assign(m.offsets[n], 0);
     const std::int64_t *ID = store.id.data();
-#pragma omp parallel for schedule(static) num_threads(m.n_threads)
-    for (std::size_t i = 0; i < n; ++i)
+#pragma omp parallel num_threads(m.n_threads)
+    for (int t = omp_get_thread_num(); t < m.n_threads; t += omp_get_num_threads())
       {
-        std::size_t k = m.offsets[i];
-        for_each_candidate(i, [&](int j) {
-          if (close(i, j))
-            m.neighbours[k++] = j;
-        });
+        std::copy_n(m.thread_lists[t].begin(), length[t], m.neighbours.begin() + m.offsets[block[t]]);
         // the tangential history of pairs that had one, from the row's carried list
-        const std::size_t row = order[i];
-        if (!m.carries(row, ID[i]))
-          continue;
-        const std::size_t c0 = m.carried_offsets[row], c1 = m.carried_offsets[row + 1];
-        if (c0 == c1)
-          continue;
-        for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)
+        for (std::size_t i = block[t]; i < block[t + 1]; ++i)
           {
-            const std::int64_t partner = ID[m.neighbours[q]];
-            for (std::size_t c = c0; c < c1; ++c)
-              if (m.carried_partner[c] == partner)
-                {
-                  for (int d = 0; d < 3; ++d)
-                    m.shear[3 * q + d] = m.carried_shear[3 * c + d];
-                  break;
-                }
+            const std::size_t row = order[i];
+            if (!m.carries(row, ID[i]))
+              continue;
+            const std::size_t c0 = m.carried_offsets[row], c1 = m.carried_offsets[row + 1];
+            for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1] && c0 < c1; ++q)
+              {
+                const std::int64_t partner = ID[m.neighbours[q]];
+                for (std::size_t c = c0; c < c1; ++c)
+                  if (m.carried_partner[c] == partner)
+                    {
+                      for (int d = 0; d < 3; ++d)
+                        m.shear[3 * q + d] = m.carried_shear[3 * c + d];
+                      m.touching[q] = 1;
+                      break;
+                    }
+              }
           }
       }
     m.carried_owner.clear(); // used up

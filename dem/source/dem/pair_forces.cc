@@ -23,15 +23,15 @@ namespace abrade::dem
 {
   namespace
   {
-    /// Pairs in contact, queued for the vectorised force pass.
+    /// Pairs in contact, queued for the vectorised force pass: only their indices (the scan
+    /// stores three integers per listed pair; the force pass gathers the rest).
     struct PairBatch
     {
       static constexpr int capacity = 256;
       int                  n = 0;
       int                  i[capacity], j[capacity];
-      std::size_t          slot[capacity];
-      double               dx[capacity], dy[capacity], dz[capacity], r2[capacity];
-      double               s0[capacity], s1[capacity], s2[capacity]; // the pair's history, in and out
+      unsigned             slot[capacity];
+      double               s0[capacity], s1[capacity], s2[capacity]; // the pair's history, out
       // results: force on i (j gets the opposite), n x ft for the torques, rolling-resistance
       // factors of i and j, overlap / smaller radius
       double fx[capacity], fy[capacity], fz[capacity];
@@ -43,8 +43,9 @@ namespace abrade::dem
     /// The particles' arrays the force pass reads.
     struct ParticleArrays
     {
-      const double *R, *M, *VX, *VY, *VZ, *WX, *WY, *WZ;
+      const double *X, *Y, *Z, *R, *M, *VX, *VY, *VZ, *WX, *WY, *WZ;
       const int    *MAT;
+      const double *SHEAR; // 3 per list slot
     };
 
     // 2. the batch's contact forces
@@ -52,6 +53,7 @@ namespace abrade::dem
     void batch_forces(PairBatch &B, const ParticleArrays &in, const PairCoefficients *__restrict COEF,
                       std::size_t nm, double dt)
     {
+      const double *__restrict X = in.X, *__restrict Y = in.Y, *__restrict Z = in.Z, *__restrict S = in.SHEAR;
       const double *__restrict R = in.R, *__restrict M = in.M, *__restrict VX = in.VX, *__restrict VY = in.VY,
                                *__restrict VZ = in.VZ, *__restrict WX = in.WX, *__restrict WY = in.WY,
                                *__restrict WZ = in.WZ;
@@ -63,13 +65,16 @@ namespace abrade::dem
           const int    i = B.i[b], j = B.j[b];
           const double ri = R[i], rj = R[j], mi = M[i], mj = M[j];
           // one division for 1/d, R* = ri rj / sr and m* = mi mj / (mi + mj)
-          const double d       = std::sqrt(B.r2[b]);
+          const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
+          const double d       = std::sqrt(dx * dx + dy * dy + dz * dz);
           const double sr      = ri + rj;
-          const double overlap = sr - d;
+          // (the scan's contact test summed r2 in scalar code: a pair at the edge of contact may
+          // come out a rounding error apart here)
+          const double overlap = std::max(sr - d, 0.0);
           const double msum    = mi + mj;
           const double q       = 1 / (d * sr * msum);
           const double inv_d   = sr * msum * q;
-          const double nx = B.dx[b] * inv_d, ny = B.dy[b] * inv_d, nz = B.dz[b] * inv_d;
+          const double nx = dx * inv_d, ny = dy * inv_d, nz = dz * inv_d;
           const double r_eff = ri * rj * (d * msum * q);
           const double m_eff = mi * mj * (d * sr * q);
           double       vx = VX[i] - VX[j], vy = VY[i] - VY[j], vz = VZ[i] - VZ[j];
@@ -92,7 +97,8 @@ namespace abrade::dem
           const double w       = c.damping > 0 ? c.damping * std::sqrt(sqrt_rd * m_eff) : 0.0;
           const double normal  = f_el - w * c.sqrt_2e * vn;
 
-          double       s0 = B.s0[b], s1 = B.s1[b], s2 = B.s2[b];
+          const unsigned k  = B.slot[b];
+          double         s0 = S[3 * k], s1 = S[3 * k + 1], s2 = S[3 * k + 2];
           const double sn = s0 * nx + s1 * ny + s2 * nz;
           const double m0 = s0 * s0 + s1 * s1 + s2 * s2;
           const double m1 = m0 - sn * sn;
@@ -140,13 +146,16 @@ namespace abrade::dem
     const std::size_t nm = mats.size();
     const double      dt = time_step;
     ParticleStore    &P  = store;
-    const double *X = P.x.data(), *Y = P.y.data(), *Z = P.z.data(), *R = P.radius.data(), *M = P.mass.data(),
-                 *VX = P.vx.data(), *VY = P.vy.data(), *VZ = P.vz.data(), *WX = P.wx.data(), *WY = P.wy.data(),
-                 *WZ = P.wz.data();
-    const int              *MAT   = P.material.data();
-    const ParticleArrays    in{R, M, VX, VY, VZ, WX, WY, WZ, MAT};
-    const PairCoefficients *COEF  = coefficients.data();
-    double                 *SHEAR = m.shear.data();
+    const double *__restrict X = P.x.data(), *__restrict Y = P.y.data(), *__restrict Z = P.z.data(),
+                             *__restrict R = P.radius.data(), *__restrict WX = P.wx.data(),
+                             *__restrict WY = P.wy.data(), *__restrict WZ = P.wz.data();
+    double *__restrict SHEAR = m.shear.data();
+    unsigned char *__restrict TOUCHING = m.touching.data();
+    const std::size_t *__restrict OFFSETS    = m.offsets.data();
+    const int *__restrict NEIGHBOURS         = m.neighbours.data();
+    const ParticleArrays    in{X, Y, Z, R, P.mass.data(), P.vx.data(), P.vy.data(), P.vz.data(), WX, WY, WZ,
+                            P.material.data(), SHEAR};
+    const PairCoefficients *COEF = coefficients.data();
 
     double worst = 0;
     long   wi = -1, wj = -1;
@@ -170,13 +179,13 @@ namespace abrade::dem
 
       PairBatch B;
 
-      // 2. the batch's forces, 3. onto both particles
+      // 2. the batch's forces, 3. onto both particles and the histories back to their slots
       auto flush = [&]() {
         batch_forces<rotation>(B, in, COEF, nm, dt);
         for (int b = 0; b < B.n; ++b)
           {
             const int i = B.i[b], j = B.j[b];
-            double   *s = SHEAR + 3 * B.slot[b];
+            double   *s = SHEAR + 3 * std::size_t(B.slot[b]);
             s[0] = B.s0[b], s[1] = B.s1[b], s[2] = B.s2[b];
             fx[i] += B.fx[b], fy[i] += B.fy[b], fz[i] += B.fz[b];
             fx[j] -= B.fx[b], fy[j] -= B.fy[b], fz[j] -= B.fz[b];
@@ -200,30 +209,33 @@ namespace abrade::dem
       for (int range = tid; range < m.n_threads; range += team)
         for (std::size_t i = m.thread_begin[range]; i < m.thread_begin[range + 1]; ++i)
           {
-            // 1. the row's pairs in contact
-            const double xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
-            const std::size_t k1 = m.offsets[i + 1];
-            for (std::size_t k = m.offsets[i]; k < k1; ++k)
+            // 1. the row's pairs in contact. Branch-free: every pair is written to the next
+            //    free batch entry, which is kept only if the pair is in contact (a branch here
+            //    would be mispredicted about half the time in a dense bed). A pair's history is
+            //    read only in the force pass; when a contact ends (rare), its history is
+            //    forgotten, which the one-byte 'touching' flag of each slot tells without
+            //    reading the history.
+            const double      xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
+            const std::size_t k0 = OFFSETS[i], k1 = OFFSETS[i + 1];
+            if (B.n + (k1 - k0) > std::size_t(PairBatch::capacity))
+              flush();
+            for (std::size_t k = k0; k < k1; ++k)
               {
-                // branch-free: every pair is written to the next free batch entry, which is
-                // kept only if the pair is in contact (a branch here is mispredicted about half
-                // the time in a dense bed); the history of a pair that is apart is forgotten
-                // (written only when there is one, to spare the stores)
-                if (B.n == PairBatch::capacity)
+                if (B.n == PairBatch::capacity) // only for rows longer than a batch
                   flush();
-                const int     j  = m.neighbours[k];
+                const int     j  = NEIGHBOURS[k];
                 const double  dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
                 const double  sr = ri + R[j];
-                const double  r2 = dx * dx + dy * dy + dz * dz;
-                const bool    touching = r2 < sr * sr;
-                double       *s  = SHEAR + 3 * k;
-                const int     b  = B.n;
-                B.i[b] = static_cast<int>(i), B.j[b] = j, B.slot[b] = k;
-                B.dx[b] = dx, B.dy[b] = dy, B.dz[b] = dz, B.r2[b] = r2;
-                B.s0[b] = s[0], B.s1[b] = s[1], B.s2[b] = s[2];
+                const bool    touching = dx * dx + dy * dy + dz * dz < sr * sr;
+                const int     b        = B.n;
+                B.i[b] = static_cast<int>(i), B.j[b] = j, B.slot[b] = static_cast<unsigned>(k);
                 B.n += touching;
-                if (!touching && (s[0] != 0 || s[1] != 0 || s[2] != 0)) // rare: a contact just ended
-                  s[0] = s[1] = s[2] = 0;
+                if (touching != bool(TOUCHING[k])) // a contact began or ended
+                  {
+                    TOUCHING[k] = touching;
+                    if (!touching)
+                      SHEAR[3 * k] = SHEAR[3 * k + 1] = SHEAR[3 * k + 2] = 0;
+                  }
               }
           }
       flush();

@@ -27,6 +27,9 @@ namespace abrade::dem
     std::vector<std::size_t> offsets;
     std::vector<int>         neighbours;
     std::vector<double>      shear; // 3 per pair, for the row particle relative to the column
+    /// per pair: in contact at the last step (0: its shear history is zero)
+    std::vector<unsigned char> touching;
+    std::vector<std::vector<int>> thread_lists; // scratch of the list build, one per thread
 
     // Pair histories carried across a rebuild (and a migration), keyed by the partner's id:
     // particle a's row holds (id of b, shear of a relative to b), for every pair with history.
