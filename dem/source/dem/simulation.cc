@@ -565,21 +565,33 @@ namespace abrade::dem
     const std::size_t n = P.size();
     double max_d2 = 0;
     long   bad    = std::numeric_limits<long>::max();
-#pragma omp parallel for schedule(static) num_threads(m.n_threads) reduction(max : max_d2) reduction(min : bad)
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        const double im = P.inv_mass[i];
-        P.vx[i] += h * P.fx[i] * im, P.vy[i] += h * P.fy[i] * im, P.vz[i] += h * P.fz[i] * im;
-        P.x[i] += dt * P.vx[i], P.y[i] += dt * P.vy[i], P.z[i] += dt * P.vz[i];
-        const double ii = P.inv_inertia[i];
-        if (ii > 0)
-          P.wx[i] += h * P.tx[i] * ii, P.wy[i] += h * P.ty[i] * ii, P.wz[i] += h * P.tz[i] * ii;
-        const double dx = P.x[i] - m.x0[i], dy = P.y[i] - m.y0[i], dz = P.z[i] - m.z0[i];
-        max_d2 = std::max(max_d2, dx * dx + dy * dy + dz * dz);
-        if (!(P.x[i] >= dmin[0] && P.x[i] <= dmax[0] && P.y[i] >= dmin[1] && P.y[i] <= dmax[1] &&
-              P.z[i] >= dmin[2] && P.z[i] <= dmax[2]))
-          bad = std::min(bad, long(i));
-      }
+    {
+      double *__restrict X = P.x.data(), *__restrict Y = P.y.data(), *__restrict Z = P.z.data();
+      double *__restrict VX = P.vx.data(), *__restrict VY = P.vy.data(), *__restrict VZ = P.vz.data();
+      double *__restrict WX = P.wx.data(), *__restrict WY = P.wy.data(), *__restrict WZ = P.wz.data();
+      const double *__restrict FX = P.fx.data(), *__restrict FY = P.fy.data(), *__restrict FZ = P.fz.data();
+      const double *__restrict TX = P.tx.data(), *__restrict TY = P.ty.data(), *__restrict TZ = P.tz.data();
+      const double *__restrict IM = P.inv_mass.data(), *__restrict II = P.inv_inertia.data();
+      const double *__restrict X0 = m.x0.data(), *__restrict Y0 = m.y0.data(), *__restrict Z0 = m.z0.data();
+      const bool rotation = any_rotation;
+#pragma omp parallel for simd schedule(static) num_threads(m.n_threads) reduction(max : max_d2) reduction(min : bad)
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const double im = IM[i];
+          VX[i] += h * FX[i] * im, VY[i] += h * FY[i] * im, VZ[i] += h * FZ[i] * im;
+          X[i] += dt * VX[i], Y[i] += dt * VY[i], Z[i] += dt * VZ[i];
+          if (rotation) // (inverse inertia 0: rotation off for the particle's material)
+            {
+              const double ii = II[i];
+              WX[i] += h * TX[i] * ii, WY[i] += h * TY[i] * ii, WZ[i] += h * TZ[i] * ii;
+            }
+          const double dx = X[i] - X0[i], dy = Y[i] - Y0[i], dz = Z[i] - Z0[i];
+          max_d2 = std::max(max_d2, dx * dx + dy * dy + dz * dz);
+          const bool inside = X[i] >= dmin[0] && X[i] <= dmax[0] && Y[i] >= dmin[1] && Y[i] <= dmax[1] &&
+                              Z[i] >= dmin[2] && Z[i] <= dmax[2];
+          bad = std::min(bad, inside ? std::numeric_limits<long>::max() : long(i));
+        }
+    }
     for (auto &w : walls)
       w.advance(dt);
     t += dt;
@@ -620,15 +632,25 @@ namespace abrade::dem
 
     // second half kick
     const std::size_t n2 = P.size();
-#pragma omp parallel for schedule(static) num_threads(m.n_threads)
-    for (std::size_t i = 0; i < n2; ++i)
-      {
-        const double im = P.inv_mass[i];
-        P.vx[i] += h * P.fx[i] * im, P.vy[i] += h * P.fy[i] * im, P.vz[i] += h * P.fz[i] * im;
-        const double ii = P.inv_inertia[i];
-        if (ii > 0)
-          P.wx[i] += h * P.tx[i] * ii, P.wy[i] += h * P.ty[i] * ii, P.wz[i] += h * P.tz[i] * ii;
-      }
+    {
+      double *__restrict VX = P.vx.data(), *__restrict VY = P.vy.data(), *__restrict VZ = P.vz.data();
+      double *__restrict WX = P.wx.data(), *__restrict WY = P.wy.data(), *__restrict WZ = P.wz.data();
+      const double *__restrict FX = P.fx.data(), *__restrict FY = P.fy.data(), *__restrict FZ = P.fz.data();
+      const double *__restrict TX = P.tx.data(), *__restrict TY = P.ty.data(), *__restrict TZ = P.tz.data();
+      const double *__restrict IM = P.inv_mass.data(), *__restrict II = P.inv_inertia.data();
+      const bool rotation = any_rotation;
+#pragma omp parallel for simd schedule(static) num_threads(m.n_threads)
+      for (std::size_t i = 0; i < n2; ++i)
+        {
+          const double im = IM[i];
+          VX[i] += h * FX[i] * im, VY[i] += h * FY[i] * im, VZ[i] += h * FZ[i] * im;
+          if (rotation)
+            {
+              const double ii = II[i];
+              WX[i] += h * TX[i] * ii, WY[i] += h * TY[i] * ii, WZ[i] += h * TZ[i] * ii;
+            }
+        }
+    }
     accelerate_walls(dt);
 
     // built-in per-triangle impulses, then the plug-ins
