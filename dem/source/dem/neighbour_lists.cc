@@ -104,6 +104,10 @@ namespace abrade::dem
     else
       m.ghost_cell_start.assign(n_cells + 1, static_cast<int>(n));
     const std::size_t n_local = store.n_local();
+    m.one_material = n_local > 0 ? store.material[0] : -1;
+    for (std::size_t i = 1; i < n_local && m.one_material >= 0; ++i)
+      if (store.material[i] != m.one_material)
+        m.one_material = -1;
 
     // 4. Half neighbour list: own cell (j > i) and the 13 forward neighbour cells for owned
     //    partners, all 27 cells for ghosts (each rank computes a pair across its boundary).

@@ -48,11 +48,12 @@ namespace abrade::dem
       const double *SHEAR; // 3 per list slot
     };
 
-    // 2. the batch's contact forces
-    template <bool rotation>
+    // 2. the batch's contact forces (uniform: all pairs have the coefficients *COEF)
+    template <bool rotation, bool uniform>
     void batch_forces(PairBatch &B, const ParticleArrays &in, const PairCoefficients *__restrict COEF,
                       std::size_t nm, double dt)
     {
+      const PairCoefficients c0 = COEF[0];
       const double *__restrict X = in.X, *__restrict Y = in.Y, *__restrict Z = in.Z, *__restrict S = in.SHEAR;
       const double *__restrict R = in.R, *__restrict M = in.M, *__restrict VX = in.VX, *__restrict VY = in.VY,
                                *__restrict VZ = in.VZ, *__restrict WX = in.WX, *__restrict WY = in.WY,
@@ -86,7 +87,7 @@ namespace abrade::dem
               vy -= az * nx - ax * nz;
               vz -= ax * ny - ay * nx;
             }
-          const PairCoefficients &c = COEF[MAT[i] * nm + MAT[j]];
+          const PairCoefficients &c = uniform ? c0 : COEF[MAT[i] * nm + MAT[j]];
 
           // hertz_mindlin(), branch-free
           const double vn  = vx * nx + vy * ny + vz * nz;
@@ -181,7 +182,10 @@ namespace abrade::dem
 
       // 2. the batch's forces, 3. onto both particles and the histories back to their slots
       auto flush = [&]() {
-        batch_forces<rotation>(B, in, COEF, nm, dt);
+        if (m.one_material >= 0)
+          batch_forces<rotation, true>(B, in, COEF + m.one_material * (nm + 1), nm, dt);
+        else
+          batch_forces<rotation, false>(B, in, COEF, nm, dt);
         for (int b = 0; b < B.n; ++b)
           {
             const int i = B.i[b], j = B.j[b];

@@ -29,6 +29,7 @@ namespace abrade::dem
     std::vector<double>      shear; // 3 per pair, for the row particle relative to the column
     /// per pair: in contact at the last step (0: its shear history is zero)
     std::vector<unsigned char> touching;
+    int one_material = -1; ///< the material of all owned particles and ghosts, if they share one
     std::vector<std::vector<int>> thread_lists; // scratch of the list build, one per thread
 
     // Pair histories carried across a rebuild (and a migration), keyed by the partner's id:
