@@ -223,17 +223,17 @@ namespace abrade::dem
             const std::size_t k0 = OFFSETS[i], k1 = OFFSETS[i + 1];
             if (B.n + (k1 - k0) > std::size_t(PairBatch::capacity))
               flush();
+            int nb = B.n; // (a local: B is seen by flush(), so B.n would live in memory)
             for (std::size_t k = k0; k < k1; ++k)
               {
-                if (B.n == PairBatch::capacity) // only for rows longer than a batch
-                  flush();
+                if (nb == PairBatch::capacity) // only for rows longer than a batch
+                  B.n = nb, flush(), nb = 0;
                 const int     j  = NEIGHBOURS[k];
                 const double  dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
                 const double  sr = ri + R[j];
                 const bool    touching = dx * dx + dy * dy + dz * dz < sr * sr;
-                const int     b        = B.n;
-                B.i[b] = static_cast<int>(i), B.j[b] = j, B.slot[b] = static_cast<unsigned>(k);
-                B.n += touching;
+                B.i[nb] = static_cast<int>(i), B.j[nb] = j, B.slot[nb] = static_cast<unsigned>(k);
+                nb += touching;
                 if (touching != bool(TOUCHING[k])) // a contact began or ended
                   {
                     TOUCHING[k] = touching;
@@ -241,6 +241,7 @@ namespace abrade::dem
                       SHEAR[3 * k] = SHEAR[3 * k + 1] = SHEAR[3 * k + 2] = 0;
                   }
               }
+            B.n = nb;
           }
       flush();
 #pragma omp critical

@@ -294,24 +294,26 @@ namespace abrade::dem
       int accepted[max_hits];
 
       // every particle: the per-thread pair forces summed, gravity added
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i)
-        {
-          double fx = P.fx[i], fy = P.fy[i], fz = P.fz[i];
-          double tx = 0, ty = 0, tz = 0;
-          if (rotation)
-            tx = P.tx[i], ty = P.ty[i], tz = P.tz[i];
-          for (int b = 1; b < m.n_threads; ++b)
-            {
-              const double *buf = m.buffers[b].data();
-              fx += buf[i], fy += buf[nl + i], fz += buf[2 * nl + i];
-              if (rotation)
-                tx += buf[3 * nl + i], ty += buf[4 * nl + i], tz += buf[5 * nl + i];
-            }
-          P.fx[i] = fx + P.mass[i] * g[0], P.fy[i] = fy + P.mass[i] * g[1], P.fz[i] = fz + P.mass[i] * g[2];
-          if (rotation)
-            P.tx[i] = tx, P.ty[i] = ty, P.tz[i] = tz;
-        }
+      {
+        double *__restrict FX = P.fx.data(), *__restrict FY = P.fy.data(), *__restrict FZ = P.fz.data();
+        double *__restrict TX = P.tx.data(), *__restrict TY = P.ty.data(), *__restrict TZ = P.tz.data();
+        const double *__restrict MASS = P.mass.data();
+        for (int b = 1; b < m.n_threads; ++b)
+          {
+            const double *__restrict buf = m.buffers[b].data();
+#pragma omp for simd schedule(static) nowait
+            for (std::size_t i = 0; i < n; ++i)
+              {
+                FX[i] += buf[i], FY[i] += buf[nl + i], FZ[i] += buf[2 * nl + i];
+                if (rotation)
+                  TX[i] += buf[3 * nl + i], TY[i] += buf[4 * nl + i], TZ[i] += buf[5 * nl + i];
+              }
+          }
+        const double gx = g[0], gy = g[1], gz = g[2];
+#pragma omp for simd schedule(static)
+        for (std::size_t i = 0; i < n; ++i)
+          FX[i] += MASS[i] * gx, FY[i] += MASS[i] * gy, FZ[i] += MASS[i] * gz;
+      }
 
       // the particles with wall candidates: particle-wall contacts
       const std::size_t n_wall = m.wall_particles.size();
