@@ -52,8 +52,8 @@ namespace abrade::dem
       return;
     const std::size_t n = m.offsets.size() - 1, n_own = std::min(n, store.size());
     std::vector<std::size_t> count(n_own + 1, 0);
-    auto has_history = [&m](std::size_t q) {
-      return m.shear[3 * q] != 0 || m.shear[3 * q + 1] != 0 || m.shear[3 * q + 2] != 0;
+    auto has_history = [&m](std::size_t q) { // (the flag first: a slot not touching has no history)
+      return m.touching[q] && (m.shear[3 * q] != 0 || m.shear[3 * q + 1] != 0 || m.shear[3 * q + 2] != 0);
     };
     for (std::size_t i = 0; i < n_own; ++i)
       for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)

@@ -480,7 +480,7 @@ namespace abrade::dem
                   L[4] -= arm[2] * F[0] - arm[0] * F[2];
                   L[5] -= arm[0] * F[1] - arm[1] * F[0];
 
-                  WallContactRecord r;
+                  WallContactRecord &r = log.emplace_back(); // filled in place
                   r.wall = h.wall, r.triangle = h.tri, r.feature = h.feature;
                   r.particle = static_cast<int>(i), r.particle_id = P.id[i];
                   for (int dd = 0; dd < 3; ++dd)
@@ -491,7 +491,6 @@ namespace abrade::dem
                   r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
                   r.centre_velocity[0] = P.vx[i] - vw[0], r.centre_velocity[1] = P.vy[i] - vw[1],
                   r.centre_velocity[2] = P.vz[i] - vw[2];
-                  log.push_back(r);
                   if (overlap / ri > my_worst)
                     my_worst = overlap / ri, my_i = i;
                 }
