@@ -317,7 +317,7 @@ namespace abrade::dem
     for (auto &w : walls)
       w.mark_build();
     for (auto &b : m.buffers)
-      b.assign(6 * n_local, 0.0);
+      b.assign(7 * n_local, 0.0);
     m.force_rebuild = false;
     ++stats.rebuilds;
   }

@@ -33,7 +33,7 @@ namespace abrade::dem
       unsigned             slot[capacity];
       double               s0[capacity], s1[capacity], s2[capacity]; // the pair's history, out
       // results: force on i (j gets the opposite), n x ft for the torques, rolling-resistance
-      // factors of i and j, overlap / smaller radius
+      // torques mu_r |F_n| r of i and j, overlap / smaller radius
       double fx[capacity], fy[capacity], fz[capacity];
       double cx[capacity], cy[capacity], cz[capacity];
       double roll_i[capacity], roll_j[capacity];
@@ -128,11 +128,8 @@ namespace abrade::dem
           if (rotation)
             {
               B.cx[b] = ny * ftz - nz * fty, B.cy[b] = nz * ftx - nx * ftz, B.cz[b] = nx * fty - ny * ftx;
-              const double fr  = c.rolling_friction * std::abs(normal);
-              const double wi2 = WX[i] * WX[i] + WY[i] * WY[i] + WZ[i] * WZ[i];
-              const double wj2 = WX[j] * WX[j] + WY[j] * WY[j] + WZ[j] * WZ[j];
-              B.roll_i[b] = fr > 0 && wi2 > 0 ? fr * ri / std::sqrt(wi2) : 0.0;
-              B.roll_j[b] = fr > 0 && wj2 > 0 ? fr * rj / std::sqrt(wj2) : 0.0;
+              const double fr = c.rolling_friction * std::abs(normal);
+              B.roll_i[b] = fr * ri, B.roll_j[b] = fr * rj;
             }
           B.ratio[b] = overlap / (ri < rj ? ri : rj);
         }
@@ -163,18 +160,19 @@ namespace abrade::dem
 #pragma omp parallel num_threads(m.n_threads)
     {
       const int tid = omp_get_thread_num();
-      double   *fx, *fy, *fz, *tx, *ty, *tz;
+      double   *fx, *fy, *fz, *tx, *ty, *tz, *rl;
       if (tid == 0)
         fx = P.fx.data(), fy = P.fy.data(), fz = P.fz.data(), tx = P.tx.data(), ty = P.ty.data(),
-        tz = P.tz.data();
+        tz = P.tz.data(), rl = P.rolling.data();
       else
         {
           double *b = m.buffers[tid].data();
-          fx = b, fy = b + n, fz = b + 2 * n, tx = b + 3 * n, ty = b + 4 * n, tz = b + 5 * n;
+          fx = b, fy = b + n, fz = b + 2 * n, tx = b + 3 * n, ty = b + 4 * n, tz = b + 5 * n, rl = b + 6 * n;
         }
       std::fill(fx, fx + n, 0.0), std::fill(fy, fy + n, 0.0), std::fill(fz, fz + n, 0.0);
       if (rotation)
-        std::fill(tx, tx + n, 0.0), std::fill(ty, ty + n, 0.0), std::fill(tz, tz + n, 0.0);
+        std::fill(tx, tx + n, 0.0), std::fill(ty, ty + n, 0.0), std::fill(tz, tz + n, 0.0),
+          std::fill(rl, rl + n, 0.0);
       double my_worst = 0;
       long   my_i = -1, my_j = -1;
 
@@ -195,12 +193,11 @@ namespace abrade::dem
             fx[j] -= B.fx[b], fy[j] -= B.fy[b], fz[j] -= B.fz[b];
             if (rotation)
               {
-                // torque on i: (-ri n) x ft, on j: (rj n) x (-ft), and rolling resistance
+                // torque on i: (-ri n) x ft, on j: (rj n) x (-ft); rolling resistance
                 const double ri = R[i], rj = R[j];
-                tx[i] -= ri * B.cx[b] + B.roll_i[b] * WX[i], ty[i] -= ri * B.cy[b] + B.roll_i[b] * WY[i],
-                  tz[i] -= ri * B.cz[b] + B.roll_i[b] * WZ[i];
-                tx[j] -= rj * B.cx[b] + B.roll_j[b] * WX[j], ty[j] -= rj * B.cy[b] + B.roll_j[b] * WY[j],
-                  tz[j] -= rj * B.cz[b] + B.roll_j[b] * WZ[j];
+                tx[i] -= ri * B.cx[b], ty[i] -= ri * B.cy[b], tz[i] -= ri * B.cz[b];
+                tx[j] -= rj * B.cx[b], ty[j] -= rj * B.cy[b], tz[j] -= rj * B.cz[b];
+                rl[i] += B.roll_i[b], rl[j] += B.roll_j[b];
               }
             if (B.ratio[b] > my_worst)
               my_worst = B.ratio[b], my_i = i, my_j = j;

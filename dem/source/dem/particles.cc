@@ -9,7 +9,7 @@ namespace abrade::dem
   template <typename F>
   void ParticleStore::for_each_array(F &&f)
   {
-    for (auto *a : {&x, &y, &z, &vx, &vy, &vz, &wx, &wy, &wz, &fx, &fy, &fz, &tx, &ty, &tz,
+    for (auto *a : {&x, &y, &z, &vx, &vy, &vz, &wx, &wy, &wz, &fx, &fy, &fz, &tx, &ty, &tz, &rolling,
                     &radius, &mass, &inv_mass, &inv_inertia})
       f(*a);
     f(material);

@@ -98,7 +98,7 @@ namespace abrade::dem
     std::vector<double>              receive_buffer;
 
     // per-thread force buffers (thread 0 writes to the particle arrays) and wall loads
-    std::vector<std::vector<double>> buffers;    // 6 n_local per thread >= 1
+    std::vector<std::vector<double>> buffers;    // 7 n_local per thread >= 1 (force, torque, rolling)
     std::vector<std::vector<double>> wall_loads; // 6 per wall per thread
     ContactLog                       log;
 

@@ -14,6 +14,9 @@ namespace abrade::dem
     std::vector<double>       wx, wy, wz;       ///< angular velocity [rad/s]
     std::vector<double>       fx, fy, fz;       ///< force [N]
     std::vector<double>       tx, ty, tz;       ///< torque [N m]
+    /// rolling-resistance torque of the step's contacts, sum of mu_r |F_n| R [N m]: it slows the
+    /// particle's spin and never reverses it (applied in the kicks, not as a torque vector)
+    std::vector<double>       rolling;
     std::vector<double>       radius, mass;     ///< [m], [kg]
     std::vector<double>       inv_mass, inv_inertia;
     std::vector<int>          material;         ///< index into the simulation's materials
@@ -50,7 +53,7 @@ namespace abrade::dem
     void permute_range(std::size_t first, const std::vector<std::size_t> &order);
 
     /// Values per particle in pack() / unpack() records.
-    static constexpr int record_size = 21;
+    static constexpr int record_size = 22;
     /// Appends particle @p i (every array) to @p out.
     void pack(std::size_t i, std::vector<double> &out) const;
     /// Appends the particle packed at @p in; returns its index.
