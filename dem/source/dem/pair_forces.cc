@@ -1,11 +1,14 @@
 // Particle-particle Hertz-Mindlin forces over the half neighbour list, in three passes per batch
 // of pairs so that the arithmetic vectorises:
 //
-//  1. scan the list rows (scalar, streaming): distance test, forget the history of pairs that
-//     are apart, queue the pairs in contact (i, j, list slot, centre offset);
-//  2. contact forces of the whole batch in one SIMD loop (gathers of the particles' radius,
-//     mass, velocities and the pair's history; no branches: selects);
-//  3. add the forces (and torques) to both particles (scalar: two pairs may share a particle).
+//  1. scan the list rows (scalar, streaming): distance test, queue the pairs in contact (i, j,
+//     list slot: three integers), and forget the history of a pair whose contact ended (told
+//     by the slot's one-byte 'touching' flag, so a history is read only for pairs in contact);
+//  2. contact forces of the whole batch in one SIMD loop (gathers of the particles' position,
+//     radius, mass, velocities and the pair's history; no branches: selects; the pair
+//     coefficients are loop constants when all particles share one material);
+//  3. add the forces, torques and rolling resistances to both particles and the histories to
+//     their slots (scalar: two pairs may share a particle).
 //
 // The arithmetic is that of hertz_mindlin() (hertz_mindlin.h, used for the wall contacts),
 // written out for the batch with its branches as selects; the particle-particle verification
