@@ -32,6 +32,28 @@ namespace abrade::dem
       wx *= keep, wy *= keep, wz *= keep;
     }
 
+    /// The arrays a half kick reads and writes (fetched again after each list build, which
+    /// reorders them).
+    struct KickArrays
+    {
+      double       *vx, *vy, *vz, *wx, *wy, *wz;
+      const double *fx, *fy, *fz, *tx, *ty, *tz, *rolling, *inv_mass, *inv_inertia;
+      explicit KickArrays(ParticleStore &P)
+        : vx(P.vx.data()), vy(P.vy.data()), vz(P.vz.data()), wx(P.wx.data()), wy(P.wy.data()),
+          wz(P.wz.data()), fx(P.fx.data()), fy(P.fy.data()), fz(P.fz.data()), tx(P.tx.data()),
+          ty(P.ty.data()), tz(P.tz.data()), rolling(P.rolling.data()), inv_mass(P.inv_mass.data()),
+          inv_inertia(P.inv_inertia.data())
+      {}
+      /// v += h F / m and, with rotation, the spin's half kick of particle @p i.
+      void kick(std::size_t i, double h, bool rotation) const
+      {
+        const double im = inv_mass[i];
+        vx[i] += h * fx[i] * im, vy[i] += h * fy[i] * im, vz[i] += h * fz[i] * im;
+        if (rotation) // (inverse inertia 0: rotation off for the particle's material)
+          spin_kick(wx[i], wy[i], wz[i], tx[i], ty[i], tz[i], rolling[i], h * inv_inertia[i]);
+      }
+    };
+
     inline bool triangles_share_vertex(const std::array<int, 3> &a, const std::array<int, 3> &b)
     {
       for (int p : a)
@@ -581,25 +603,15 @@ namespace abrade::dem
     double max_d2 = 0;
     long   bad    = std::numeric_limits<long>::max();
     {
+      const KickArrays k(P);
       double *__restrict X = P.x.data(), *__restrict Y = P.y.data(), *__restrict Z = P.z.data();
-      double *__restrict VX = P.vx.data(), *__restrict VY = P.vy.data(), *__restrict VZ = P.vz.data();
-      double *__restrict WX = P.wx.data(), *__restrict WY = P.wy.data(), *__restrict WZ = P.wz.data();
-      const double *__restrict FX = P.fx.data(), *__restrict FY = P.fy.data(), *__restrict FZ = P.fz.data();
-      const double *__restrict TX = P.tx.data(), *__restrict TY = P.ty.data(), *__restrict TZ = P.tz.data();
-      const double *__restrict ROLL = P.rolling.data();
-      const double *__restrict IM = P.inv_mass.data(), *__restrict II = P.inv_inertia.data();
       const double *__restrict X0 = m.x0.data(), *__restrict Y0 = m.y0.data(), *__restrict Z0 = m.z0.data();
       const bool rotation = any_rotation;
 #pragma omp parallel for simd schedule(static) num_threads(m.n_threads) reduction(max : max_d2) reduction(min : bad)
       for (std::size_t i = 0; i < n; ++i)
         {
-          const double im = IM[i];
-          VX[i] += h * FX[i] * im, VY[i] += h * FY[i] * im, VZ[i] += h * FZ[i] * im;
-          X[i] += dt * VX[i], Y[i] += dt * VY[i], Z[i] += dt * VZ[i];
-          if (rotation) // (inverse inertia 0: rotation off for the particle's material)
-            {
-              spin_kick(WX[i], WY[i], WZ[i], TX[i], TY[i], TZ[i], ROLL[i], h * II[i]);
-            }
+          k.kick(i, h, rotation);
+          X[i] += dt * k.vx[i], Y[i] += dt * k.vy[i], Z[i] += dt * k.vz[i];
           const double dx = X[i] - X0[i], dy = Y[i] - Y0[i], dz = Z[i] - Z0[i];
           max_d2 = std::max(max_d2, dx * dx + dy * dy + dz * dz);
           const bool inside = X[i] >= dmin[0] && X[i] <= dmax[0] && Y[i] >= dmin[1] && Y[i] <= dmax[1] &&
@@ -648,23 +660,11 @@ namespace abrade::dem
     // second half kick
     const std::size_t n2 = P.size();
     {
-      double *__restrict VX = P.vx.data(), *__restrict VY = P.vy.data(), *__restrict VZ = P.vz.data();
-      double *__restrict WX = P.wx.data(), *__restrict WY = P.wy.data(), *__restrict WZ = P.wz.data();
-      const double *__restrict FX = P.fx.data(), *__restrict FY = P.fy.data(), *__restrict FZ = P.fz.data();
-      const double *__restrict TX = P.tx.data(), *__restrict TY = P.ty.data(), *__restrict TZ = P.tz.data();
-      const double *__restrict ROLL = P.rolling.data();
-      const double *__restrict IM = P.inv_mass.data(), *__restrict II = P.inv_inertia.data();
-      const bool rotation = any_rotation;
+      const KickArrays k(P);
+      const bool       rotation = any_rotation;
 #pragma omp parallel for simd schedule(static) num_threads(m.n_threads)
       for (std::size_t i = 0; i < n2; ++i)
-        {
-          const double im = IM[i];
-          VX[i] += h * FX[i] * im, VY[i] += h * FY[i] * im, VZ[i] += h * FZ[i] * im;
-          if (rotation)
-            {
-              spin_kick(WX[i], WY[i], WZ[i], TX[i], TY[i], TZ[i], ROLL[i], h * II[i]);
-            }
-        }
+        k.kick(i, h, rotation);
     }
     accelerate_walls(dt);
 
