@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace abrade::dem
 {
@@ -79,9 +80,11 @@ namespace abrade::dem
             sum += axis.dot(Vec3(P.vx[i], P.vy[i], P.vz[i]));
           }
       }
-    // every rank sees its own particles
-    count = sim.parallel().sum(count);
-    sum   = sim.parallel().sum(sum);
+    // every rank sees its own particles: one reduction for both (a count below 2^53 is exact)
+    std::vector<double> totals{double(count), sum};
+    sim.parallel().sum(totals);
+    count = static_cast<long>(totals[0]);
+    sum   = totals[1];
     taken.push_back({sim.time(), current, count, count ? sum / count : 0.0, axis.dot(w.velocity)});
   }
 } // namespace abrade::dem
