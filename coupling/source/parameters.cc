@@ -1,6 +1,7 @@
 #include <abrade/common/error.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/dem/mesh_io.h>
+#include <abrade/fem/solid_surface.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -294,8 +295,9 @@ namespace abrade::coupling
                           "file (a surface mesh), or solid model (the surface of the FEM knife of "
                           "subsection Knife; lifetime runs move it with its wear).");
         prm.declare_entry("File", "", Anything(),
-                          "Surface mesh file (STL ASCII/binary, OBJ, PLY, VTK, VTP) when Geometry = "
-                          "file; relative to the parameter file's directory.");
+                          "Surface mesh file (STL ASCII/binary, OBJ, PLY, VTK, VTP) or CAD file "
+                          "(STEP/IGES: its surfaces meshed by Gmsh to 'Maximum edge length') when "
+                          "Geometry = file; relative to the parameter file's directory.");
         prm.declare_entry("File scale", "1", Double(1e-12, huge),
                           "[m per file unit] 0.001 for a mesh in millimetres. Range: > 0.");
         declare_vector(prm, "Box min", "-1, -1, 0", "[m] Box: lower corner.");
@@ -646,7 +648,23 @@ namespace abrade::coupling
               f.fail(wp, "File", "Geometry = file needs a mesh file");
             try
               {
-                w.mesh = dem::read_surface_mesh(file, prm.get_double("File scale"));
+                if (fem::is_cad_file(file))
+                  {
+                    // CAD (a shell from a design tool): Gmsh meshes its surfaces to triangles of
+                    // the wall's 'Maximum edge length'
+                    const double h = prm.get_double("Maximum edge length");
+                    if (!(h > 0))
+                      f.fail(wp, "Maximum edge length",
+                             "a CAD file (" + file + ") is meshed to this size: give a positive length");
+                    const double              scale = prm.get_double("File scale");
+                    const fem::SolidSurface   cad   = fem::read_cad_surface(file, h / scale);
+                    for (const auto &p : cad.vertices)
+                      w.mesh.vertices.emplace_back(scale * p[0], scale * p[1], scale * p[2]);
+                    for (const auto &t : cad.triangles)
+                      w.mesh.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
+                  }
+                else
+                  w.mesh = dem::read_surface_mesh(file, prm.get_double("File scale"));
               }
             catch (const InputError &e)
               {

@@ -310,6 +310,66 @@ namespace abrade::fem
     std::filesystem::remove(msh);
   }
 
+  bool is_cad_file(const std::string &path)
+  {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs";
+  }
+
+  SolidSurface read_cad_surface(const std::string &path, double h)
+  {
+    if (!std::filesystem::exists(path))
+      throw InputError(path, "CAD file not found");
+    if (!is_cad_file(path))
+      throw InputError(path, "not a CAD file (.step/.stp or .iges/.igs)");
+    if (!(h > 0))
+      throw InputError(path, "meshing a CAD surface needs a positive mesh size");
+    SolidSurface s;
+    with_gmsh(path, [&] {
+      gmsh::vectorpair shapes;
+      gmsh::model::occ::importShapes(path, shapes);
+      gmsh::model::occ::synchronize();
+      gmsh::vectorpair surfaces;
+      gmsh::model::getEntities(surfaces, 2);
+      if (surfaces.empty())
+        throw InputError(path, "the file holds no surface");
+      gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+      gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * h);
+      gmsh::model::mesh::generate(2);
+      // the nodes of the model (on surfaces, curves and points); those of triangles are kept
+      std::vector<std::size_t> tags;
+      std::vector<double>      xyz, parametric;
+      gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+      std::map<std::size_t, std::size_t> position;
+      for (std::size_t k = 0; k < tags.size(); ++k)
+        position[tags[k]] = k;
+      std::map<std::size_t, unsigned> index;
+      auto vertex = [&](std::size_t tag) {
+        const auto [it, added] = index.try_emplace(tag, static_cast<unsigned>(s.vertices.size()));
+        if (added)
+          {
+            const std::size_t k = position.at(tag);
+            s.vertices.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+          }
+        return it->second;
+      };
+      std::vector<int>                      types;
+      std::vector<std::vector<std::size_t>> elements, nodes;
+      gmsh::model::mesh::getElements(types, elements, nodes, 2, -1);
+      for (std::size_t b = 0; b < types.size(); ++b)
+        {
+          if (types[b] != 2) // 3-node triangles only (no quadrangles are asked for)
+            throw InputError(path, "Gmsh made surface elements other than triangles");
+          for (std::size_t k = 0; k + 2 < nodes[b].size(); k += 3)
+            s.triangles.push_back({vertex(nodes[b][k]), vertex(nodes[b][k + 1]), vertex(nodes[b][k + 2])});
+        }
+    });
+    if (s.triangles.empty())
+      throw InputError(path, "Gmsh made no triangles of its surfaces");
+    return s;
+  }
+
   void remesh(const Triangulation<3> &tria, double h, Triangulation<3> &new_tria, const std::string &dir)
   {
     const SolidSurface old = extract_surface(tria);

@@ -77,6 +77,41 @@ TEST(SolidSurface, StepRoundTrip)
   EXPECT_NEAR(boundary_area(tria, 1), extract_surface(tria).area(), 1e-12); // every face wearable
 }
 
+// A CAD file's surfaces as triangles (a grab shell from a design tool is read this way): the
+// knife's STEP file meshed at 30 mm has the area of the knife's solid surface (planar faces:
+// exact), every triangle edge near the requested size; bad input names the file.
+TEST(SolidSurface, CadSurfaceOfTheKnife)
+{
+  KnifeGeometry k;
+  k.write_step(tmp("abrade_cad_knife.step"));
+  const SolidSurface cad = read_cad_surface(tmp("abrade_cad_knife.step"), 0.03);
+  Triangulation<3>   tria;
+  read_solid(tmp("abrade_cad_knife.step"), 0.03, tria);
+  EXPECT_GT(cad.triangles.size(), 50u);
+  EXPECT_NEAR(cad.area() / extract_surface(tria).area(), 1, 1e-9);
+  double longest = 0;
+  for (const auto &t : cad.triangles)
+    for (int e = 0; e < 3; ++e)
+      longest = std::max(longest, cad.vertices[t[e]].distance(cad.vertices[t[(e + 1) % 3]]));
+  EXPECT_LT(longest, 0.03 * 1.5);
+  for (const auto &t : cad.triangles) // every vertex is used
+    for (unsigned v : t)
+      EXPECT_LT(v, cad.vertices.size());
+  EXPECT_TRUE(is_cad_file("a/b/Shell.STP") && is_cad_file("x.igs") && !is_cad_file("x.stl"));
+  for (const std::string &bad : {tmp("no_such_shell.step"), tmp("abrade_knife_surface.stl")})
+    try
+      {
+        read_cad_surface(bad, 0.03);
+        FAIL() << bad << " was read as CAD";
+      }
+    catch (const std::exception &e)
+      {
+        EXPECT_NE(std::string(e.what()).find(std::filesystem::path(bad).filename().string()), std::string::npos)
+          << e.what();
+      }
+  EXPECT_THROW(read_cad_surface(tmp("abrade_cad_knife.step"), 0), std::exception);
+}
+
 TEST(SolidSurface, BadSolidFilesAreClearErrors)
 {
   Triangulation<3> t;

@@ -65,6 +65,13 @@ namespace abrade::fem
   void read_solid(const std::string &path, double mesh_size, dealii::Triangulation<3> &tria,
                   dealii::types::boundary_id boundary_id = 1);
 
+  /// The surfaces of a STEP/IGES CAD file (a grab shell, say: open or closed) as triangles of
+  /// size @p mesh_size, meshed with Gmsh; only vertices and triangles are set. Throws
+  /// InputError naming the file when it cannot be read or holds no surface.
+  SolidSurface read_cad_surface(const std::string &path, double mesh_size);
+  /// Whether @p path names a CAD file by its extension (.step/.stp/.iges/.igs, any case).
+  bool is_cad_file(const std::string &path);
+
   /// Remeshing: a new tetrahedral mesh of size @p mesh_size that fills the current boundary of
   /// @p tria (through an STL of the surface and Gmsh); boundary ids of the new faces are taken
   /// from the nearest old boundary face.
