@@ -646,16 +646,17 @@ namespace abrade::coupling
             const std::string file = resolve(f, prm.get("File"));
             if (file.empty())
               f.fail(wp, "File", "Geometry = file needs a mesh file");
+            // CAD (a shell from a design tool): Gmsh meshes its surfaces to triangles of the
+            // wall's 'Maximum edge length'
+            const bool cad = fem::is_cad_file(file);
+            if (cad && !(prm.get_double("Maximum edge length") > 0))
+              f.fail(wp, "Maximum edge length",
+                     "a CAD file (" + file + ") is meshed to this size: give a positive length");
             try
               {
-                if (fem::is_cad_file(file))
+                if (cad)
                   {
-                    // CAD (a shell from a design tool): Gmsh meshes its surfaces to triangles of
-                    // the wall's 'Maximum edge length'
-                    const double h = prm.get_double("Maximum edge length");
-                    if (!(h > 0))
-                      f.fail(wp, "Maximum edge length",
-                             "a CAD file (" + file + ") is meshed to this size: give a positive length");
+                    const double              h     = prm.get_double("Maximum edge length");
                     const double              scale = prm.get_double("File scale");
                     const fem::SolidSurface   cad   = fem::read_cad_surface(file, h / scale);
                     for (const auto &p : cad.vertices)

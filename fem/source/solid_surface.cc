@@ -281,7 +281,7 @@ namespace abrade::fem
                              (std::filesystem::path(path).stem().string() + "-abrade-volume-" +
                               std::to_string(::getpid()) + "-" + std::to_string(meshed++) + ".msh"))
                               .string();
-    if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs")
+    if (is_cad_file(path))
       with_gmsh(path, [&] {
         gmsh::vectorpair shapes;
         gmsh::model::occ::importShapes(path, shapes);

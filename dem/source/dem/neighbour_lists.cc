@@ -9,13 +9,13 @@
 #include "simulation_impl.h"
 
 #include <abrade/common/closest_point.h>
+#include <abrade/common/error.h>
 
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 namespace abrade::dem
 {
@@ -192,8 +192,7 @@ namespace abrade::dem
     for (std::size_t i = 0; i < n; ++i)
       m.offsets[i + 1] += m.offsets[i];
     if (m.offsets[n] > std::numeric_limits<unsigned>::max())
-      throw std::runtime_error("the neighbour list of one process has more than 2^32 pairs: run on more "
-                               "MPI ranks");
+      throw RunError("the neighbour list of one process has more than 2^32 pairs: run on more MPI ranks");
     m.neighbours.resize(m.offsets[n]);
     m.shear.assign(3 * m.offsets[n], 0.0);
     m.touching.assign(m.offsets[n], 0);
