@@ -19,8 +19,9 @@
 //  5. Record the trajectory; stop at the maximum depth, a worn-through knife, the target tonnes
 //     or the maximum number of updates.
 //  6. Checkpoint (the knife's exact mesh and fields, the loop's state) after every update;
-//     `abrade run ... --resume` continues from the last one, and, since every cycle restarts from
-//     a saved bed, produces the same trajectory as an uninterrupted run.
+//     `abrade run ... --resume` continues from the last one (under mpirun: the newest that all
+//     ranks completed, lifetime_checkpoints.h), and, since every cycle restarts from a saved
+//     bed, produces the same trajectory as an uninterrupted run.
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
@@ -28,6 +29,7 @@
 #include <abrade/common/progress.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/lifetime_checkpoints.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/dem/wear.h>
@@ -232,9 +234,9 @@ namespace abrade::coupling
     fem::SolidOutput knife_output(ctx.output.subdirectory("knife"), "knife");
 
     // --- resume: the last checkpoint, and the outputs cut back to it ---
-    const std::string ckpt_dir  = ctx.output.subdirectory("checkpoint");
-    const std::string state_file = ckpt_dir + "/loop.txt";
-    const std::string hash      = io::fnv1a_hex(ctx.parameters.canonical_text());
+    const LifetimeCheckpoints checkpoints(ctx.output.subdirectory("checkpoint"));
+    const dem::Parallel       ranks = dem::Parallel::world();
+    const std::string         hash  = io::fnv1a_hex(ctx.parameters.canonical_text());
     long              first_update = 1;
     long        cycles = 0;
     double      tonnes = 0; // handled so far
@@ -247,19 +249,20 @@ namespace abrade::coupling
     double              volume0 = knife.volume();
     std::vector<std::string> kept_rows;
     std::vector<double>      output_times; // of the knife series already written (resume)
-    if (ctx.resume && std::filesystem::exists(state_file))
+    if (const long done = ctx.resume ? checkpoints.resume_point(ranks) : 0; done > 0)
       {
-        std::ifstream in(state_file);
-        std::string   saved_hash;
-        long          done = 0;
-        in >> saved_hash >> done >> cycles >> tonnes >> archard_total >> relative_spread >> spread_samples >>
+        const std::string state_file = checkpoints.state_file(done);
+        std::ifstream     in(state_file);
+        std::string       saved_hash;
+        long              saved_update = 0;
+        in >> saved_hash >> saved_update >> cycles >> tonnes >> archard_total >> relative_spread >> spread_samples >>
           smoothing >> volume0;
-        if (!in)
+        if (!in || saved_update != done)
           throw InputError(state_file, "corrupt lifetime checkpoint");
         if (saved_hash != hash)
           throw InputError(state_file, "the checkpoint was made with other parameters (hash " + saved_hash +
                                          ", now " + hash + "); resume with the same parameter file and --set options");
-        knife.load(ckpt_dir + "/knife.ckpt");
+        knife.load(checkpoints.knife_file(done));
         first_update = done + 1;
         std::ifstream old(ctx.output.file("trajectory.csv"));
         std::string   line;
@@ -275,9 +278,14 @@ namespace abrade::coupling
             std::snprintf(name, sizeof name, "/knife/profile_%.2f.csv", f);
             std::ifstream      pin(ctx.output.root() + name);
             std::ostringstream keep;
+            bool               kept = true; // the block the line is in (blank lines end blocks)
             for (std::string l; std::getline(pin, l);)
-              if (l.empty() || l[0] == '#' || std::stol(l.substr(0, l.find(' '))) <= done)
-                keep << l << '\n';
+              {
+                if (!l.empty() && l[0] != '#')
+                  kept = std::stol(l.substr(0, l.find(' '))) <= done;
+                if (kept || (!l.empty() && l[0] == '#'))
+                  keep << l << '\n';
+              }
             pin.close();
             std::ofstream(ctx.output.root() + name) << keep.str();
           }
@@ -288,7 +296,7 @@ namespace abrade::coupling
       {
         knife.write(knife_output, 0);
         io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife.surface().as_polydata()); // the design
-        knife.save(ckpt_dir + "/knife.ckpt"); // the state a rejected first update returns to
+        knife.save(checkpoints.knife_file(0)); // the state a rejected first update returns to
       }
 
     std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth", "worn_volume", "worn_mass",
@@ -419,7 +427,6 @@ namespace abrade::coupling
         bool                          moved = false;
         // Under MPI every rank moves its own copy of the knife: the ranks agree on the outcome
         // (a failure on one is a failure on all), so that their knives stay the same.
-        const dem::Parallel ranks = dem::Parallel::world();
         for (int attempt = 0; !moved; ++attempt)
           {
             std::string error;
@@ -427,7 +434,7 @@ namespace abrade::coupling
               {
                 io::ScopedTimer t(ctx.timers, "fem update");
                 if (attempt > 0)
-                  knife.load(ckpt_dir + "/knife.ckpt");
+                  knife.load(checkpoints.knife_file(update - 1));
                 r = knife.apply_wear(depth);
               }
             catch (const std::exception &e)
@@ -507,16 +514,16 @@ namespace abrade::coupling
         progress.update(double(update), "update " + std::to_string(update) + "/" + std::to_string(max_updates) + ", " +
                                           std::to_string(long(tonnes)) + " t");
 
-        // 6. checkpoint: written aside, then renamed, so a kill never leaves half of one
-        knife.save(ckpt_dir + "/knife.ckpt.tmp");
+        // 6. checkpoint: written aside, then renamed, so a kill never leaves half of one (the
+        //    knife and the state of one update, lifetime_checkpoints.h)
+        knife.save(checkpoints.knife_file_aside(update));
         {
-          std::ofstream state(state_file + ".tmp");
+          std::ofstream state(checkpoints.state_file_aside(update));
           state.precision(17);
           state << hash << ' ' << update << ' ' << cycles << ' ' << tonnes << ' ' << archard_total << ' '
                 << relative_spread << ' ' << spread_samples << ' ' << smoothing << ' ' << volume0 << '\n';
         }
-        std::filesystem::rename(ckpt_dir + "/knife.ckpt.tmp", ckpt_dir + "/knife.ckpt");
-        std::filesystem::rename(state_file + ".tmp", state_file);
+        checkpoints.commit(update);
         if (dmax >= max_depth)
           {
             end = "maximum depth reached";

@@ -2,7 +2,10 @@
 # Checkpoint and resume: a lifetime run killed with SIGKILL mid-cycle and resumed with --resume
 # produces the same trajectory (byte for byte) and the same prediction as an uninterrupted run.
 # With ABRADE_LAUNCH="mpirun -np 2 --oversubscribe" the runs are MPI runs (every rank
-# checkpoints its own copy; all are killed and resumed together).
+# checkpoints its own copy; all are killed and resumed together). There the kill is also made to
+# fall between two ranks' checkpoints of one update (rank 1's newest is removed when both have
+# it): the ranks must resume together from the newest update all of them completed (they once
+# resumed from different updates and hung).
 #   check_resume.sh ABRADE PRM OUTDIR
 set -euo pipefail
 abrade=$1 prm=$2 out=$3
@@ -14,15 +17,27 @@ run "$prm" --output "$out/whole" --quiet "${sets[@]}" > /dev/null
 
 run "$prm" --output "$out/killed" --quiet "${sets[@]}" > /dev/null 2>&1 &
 pid=$!
-state="$out/killed/checkpoint/loop.txt"
+newest() { # newest complete checkpoint in directory $1 (0: none)
+  local u=0 f
+  for f in "$1"/loop-*.txt; do [[ -f $f ]] && f=${f##*/loop-} && (( ${f%.txt} > u )) && u=${f%.txt}; done
+  echo "$u"
+}
 for _ in $(seq 1 600); do   # at most 60 s
-  if [[ -f $state ]] && (( $(cut -d' ' -f2 "$state") >= 2 )); then break; fi
+  (( $(newest "$out/killed/checkpoint") >= 2 )) && break
   sleep 0.1
 done
 kill -9 "$pid" 2>/dev/null || { echo "the run finished before it could be killed"; exit 1; }
 pkill -9 -f -- "--output $out/killed" 2>/dev/null || true # the MPI ranks, if any
 wait "$pid" 2>/dev/null || true
-killed_at=$(cut -d' ' -f2 "$state")
+killed_at=$(newest "$out/killed/checkpoint")
+if [[ -d $out/killed/.rank-1/checkpoint ]]; then
+  u1=$(newest "$out/killed/.rank-1/checkpoint")
+  if (( u1 == killed_at )); then # as if killed after rank 0's checkpoint, before rank 1's
+    rm "$out/killed/.rank-1/checkpoint/loop-$u1.txt"
+    u1=$((u1 - 1))
+  fi
+  killed_at=$(( u1 < killed_at ? u1 : killed_at ))
+fi
 run "$prm" --output "$out/killed" --quiet --resume "${sets[@]}" > /dev/null
 grep -q "Resuming after update $killed_at" "$out/killed/log.txt" || { echo "did not resume"; exit 1; }
 cmp "$out/whole/trajectory.csv" "$out/killed/trajectory.csv" || { diff "$out/whole/trajectory.csv" "$out/killed/trajectory.csv"; exit 1; }
