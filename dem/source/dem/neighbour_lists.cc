@@ -194,6 +194,7 @@ namespace abrade::dem
     if (m.offsets[n] > std::numeric_limits<unsigned>::max())
       throw RunError("the neighbour list of one process has more than 2^32 pairs: run on more MPI ranks");
     m.neighbours.resize(m.offsets[n]);
+    m.row_of.resize(m.offsets[n]);
     m.shear.assign(3 * m.offsets[n], 0.0);
     m.touching.assign(m.offsets[n], 0);
     const std::int64_t *ID = store.id.data();
@@ -201,6 +202,8 @@ namespace abrade::dem
     for (int t = omp_get_thread_num(); t < m.n_threads; t += omp_get_num_threads())
       {
         std::copy_n(m.thread_lists[t].begin(), length[t], m.neighbours.begin() + m.offsets[block[t]]);
+        for (std::size_t i = block[t]; i < block[t + 1]; ++i)
+          std::fill(m.row_of.begin() + m.offsets[i], m.row_of.begin() + m.offsets[i + 1], int(i));
         // the tangential history of pairs that had one, from the row's carried list
         for (std::size_t i = block[t]; i < block[t + 1]; ++i)
           {

@@ -1,9 +1,10 @@
 // Particle-particle Hertz-Mindlin forces over the half neighbour list, in three passes per batch
 // of pairs so that the arithmetic vectorises:
 //
-//  1. scan the list rows (scalar, streaming): distance test, queue the pairs in contact (i, j,
-//     list slot: three integers), and forget the history of a pair whose contact ended (told
-//     by the slot's one-byte 'touching' flag, so a history is read only for pairs in contact);
+//  1. scan the list (scalar, one stream over its pairs): distance test, queue the pairs in
+//     contact (i, j, list slot: three integers), and forget the history of a pair whose contact
+//     ended (told by the slot's one-byte 'touching' flag, so a history is read only for pairs in
+//     contact);
 //  2. contact forces of the whole batch in one SIMD loop (gathers of the particles' position,
 //     radius, mass, velocities and the pair's history; no branches: selects; the pair
 //     coefficients are loop constants when all particles share one material);
@@ -50,6 +51,51 @@ namespace abrade::dem
       const int    *MAT;
       const double *SHEAR; // 3 per list slot
     };
+
+    /// The neighbour list as the scan reads it: per pair (list slot) its row and column
+    /// particle, and the contact flags and histories it updates.
+    struct ListArrays
+    {
+      const int *__restrict ROW, *__restrict NEIGHBOURS;
+      unsigned char *__restrict TOUCHING;
+      double *__restrict SHEAR;
+
+      /// Slot @p k's contact began or ended: flag it; an ended contact forgets its history.
+      void contact_changed(std::size_t k, bool touching) const
+      {
+        TOUCHING[k] = touching;
+        if (!touching)
+          SHEAR[3 * k] = SHEAR[3 * k + 1] = SHEAR[3 * k + 2] = 0;
+      }
+    };
+
+    // 1. Queue the pairs in contact among list slots k .. k_end - 1 until the batch is full;
+    //    returns the first slot not scanned. One stream over the list (each slot's row is
+    //    stored with it), not row by row: rows are short (about five pairs) and a loop per row
+    //    costs more than its pairs. Branch-free: every pair goes to the next free batch entry,
+    //    which is kept only if the pair is in contact (a branch would be mispredicted about
+    //    half the time in a dense bed). (An AVX-512 version with gathers and compression was
+    //    slower than this loop on the AMD EPYC of docs/benchmarks.md.)
+    inline std::size_t scan_pairs(PairBatch &B, const ParticleArrays &in, const ListArrays &L, std::size_t k,
+                                  std::size_t k_end)
+    {
+      const double *__restrict X = in.X, *__restrict Y = in.Y, *__restrict Z = in.Z, *__restrict R = in.R;
+      const int *__restrict ROW = L.ROW, *__restrict NEIGHBOURS = L.NEIGHBOURS;
+      int nb = B.n;
+      for (; k < k_end && nb < PairBatch::capacity; ++k)
+        {
+          const int    i = ROW[k], j = NEIGHBOURS[k];
+          const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
+          const double sr = R[i] + R[j];
+          const bool   touching = dx * dx + dy * dy + dz * dz < sr * sr;
+          B.i[nb] = i, B.j[nb] = j, B.slot[nb] = static_cast<unsigned>(k);
+          nb += touching;
+          if (touching != bool(L.TOUCHING[k]))
+            L.contact_changed(k, touching);
+        }
+      B.n = nb;
+      return k;
+    }
 
     // 2. the batch's contact forces (uniform: all pairs have the coefficients *COEF)
     template <bool rotation, bool uniform>
@@ -157,6 +203,7 @@ namespace abrade::dem
     const ParticleArrays    in{X, Y, Z, R, P.mass.data(), P.vx.data(), P.vy.data(), P.vz.data(), WX, WY, WZ,
                             P.material.data(), SHEAR};
     const PairCoefficients *COEF = coefficients.data();
+    const ListArrays        list{m.row_of.data(), NEIGHBOURS, TOUCHING, SHEAR};
 
     double worst = 0;
     long   wi = -1, wj = -1;
@@ -211,38 +258,12 @@ namespace abrade::dem
       // every range is done, whatever the size of the team OpenMP gave us
       const int team = omp_get_num_threads();
       for (int range = tid; range < m.n_threads; range += team)
-        for (std::size_t i = m.thread_begin[range]; i < m.thread_begin[range + 1]; ++i)
-          {
-            // 1. the row's pairs in contact. Branch-free: every pair is written to the next
-            //    free batch entry, which is kept only if the pair is in contact (a branch here
-            //    would be mispredicted about half the time in a dense bed). A pair's history is
-            //    read only in the force pass; when a contact ends (rare), its history is
-            //    forgotten, which the one-byte 'touching' flag of each slot tells without
-            //    reading the history.
-            const double      xi = X[i], yi = Y[i], zi = Z[i], ri = R[i];
-            const std::size_t k0 = OFFSETS[i], k1 = OFFSETS[i + 1];
-            if (B.n + (k1 - k0) > std::size_t(PairBatch::capacity))
-              flush();
-            int nb = B.n; // (a local: B is seen by flush(), so B.n would live in memory)
-            for (std::size_t k = k0; k < k1; ++k)
-              {
-                if (nb == PairBatch::capacity) // only for rows longer than a batch
-                  B.n = nb, flush(), nb = 0;
-                const int     j  = NEIGHBOURS[k];
-                const double  dx = xi - X[j], dy = yi - Y[j], dz = zi - Z[j];
-                const double  sr = ri + R[j];
-                const bool    touching = dx * dx + dy * dy + dz * dz < sr * sr;
-                B.i[nb] = static_cast<int>(i), B.j[nb] = j, B.slot[nb] = static_cast<unsigned>(k);
-                nb += touching;
-                if (touching != bool(TOUCHING[k])) // a contact began or ended
-                  {
-                    TOUCHING[k] = touching;
-                    if (!touching)
-                      SHEAR[3 * k] = SHEAR[3 * k + 1] = SHEAR[3 * k + 2] = 0;
-                  }
-              }
-            B.n = nb;
-          }
+        {
+          std::size_t       k     = OFFSETS[m.thread_begin[range]];
+          const std::size_t k_end = OFFSETS[m.thread_begin[range + 1]];
+          while ((k = scan_pairs(B, in, list, k, k_end)) < k_end)
+            flush();
+        }
       flush();
 #pragma omp critical
       if (my_worst > worst || (my_worst == worst && my_i >= 0 && (wi < 0 || my_i < wi)))

@@ -26,6 +26,7 @@ namespace abrade::dem
     // ghosts) with the tangential history of each pair
     std::vector<std::size_t> offsets;
     std::vector<int>         neighbours;
+    std::vector<int>         row_of; // per pair: its row (the pair scan streams over pairs)
     std::vector<double>      shear; // 3 per pair, for the row particle relative to the column
     /// per pair: in contact at the last step (0: its shear history is zero)
     std::vector<unsigned char> touching;
