@@ -1,6 +1,7 @@
-// The DEM's domain decomposition under MPI (run with mpirun -np 3): recursive coordinate
-// bisection balances the particles and tiles space, and a distributed simulation (ghosts,
-// migration, contact histories moving between ranks, wall loads summed over ranks) follows the
+// The DEM's domain decomposition under MPI (run with mpirun -np 3 and -np 6): recursive
+// coordinate bisection balances the particles, tiles space and tells each box its neighbours,
+// and a distributed simulation (ghosts and migrating particles exchanged among neighbouring
+// boxes only, contact histories moving between ranks, wall loads summed over ranks) follows the
 // same trajectory as the same simulation run serially on each rank.
 #include "dem_test_helpers.h"
 
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <random>
 
@@ -86,6 +88,32 @@ TEST(Decomposition, BalancesAndTilesSpace)
   const double total = ranks.sum(double(n));
   for (int r = 0; r < ranks.size(); ++r)
     EXPECT_NEAR(owned[r], total / ranks.size(), 1.0) << "rank " << r;
+
+  // Neighbours (who exchanges ghosts and migrants): symmetric, and they include every rank whose
+  // box is within the reach of a point of this rank's box (checked at this rank's particles).
+  const double reach = 0.05;
+  for (int r = 0; r < ranks.size(); ++r)
+    for (int q : d.neighbours(r, reach))
+      {
+        const auto back = d.neighbours(q, reach);
+        EXPECT_TRUE(std::find(back.begin(), back.end(), r) != back.end()) << r << " lists " << q;
+      }
+  const std::vector<int> mine = d.neighbours(ranks.rank(), reach);
+  for (std::size_t i = 0; i < n; ++i)
+    if (d.owner(x[i], y[i], z[i]) == ranks.rank())
+      {
+        std::vector<int> near;
+        d.ranks_near(x[i], y[i], z[i], reach, ranks.rank(), near);
+        for (int q : near)
+          EXPECT_TRUE(std::find(mine.begin(), mine.end(), q) != mine.end()) << "rank " << q << " not a neighbour";
+      }
+  if (ranks.size() >= 6) // then some boxes are far apart: the exchanges skip them
+    {
+      std::size_t fewest = std::size_t(ranks.size());
+      for (int r = 0; r < ranks.size(); ++r)
+        fewest = std::min(fewest, d.neighbours(r, reach).size());
+      EXPECT_LT(fewest, std::size_t(ranks.size() - 1));
+    }
 }
 
 TEST(Decomposition, DistributedRunFollowsTheSerialTrajectory)
@@ -108,6 +136,10 @@ TEST(Decomposition, DistributedRunFollowsTheSerialTrajectory)
     {
       long migrated = distributed.parallel().sum(distributed.statistics().migrated);
       EXPECT_GT(migrated, 400 / 2); // the initial spread, then particles crossing boundaries
+      // after the first cuts, particles cross to neighbouring boxes only (no all-to-all)
+      const auto &st = distributed.statistics();
+      EXPECT_GT(st.nearby_migrations, 0);
+      EXPECT_GE(st.nearby_migrations + st.rebalances, st.rebuilds - 1);
     }
   const std::size_t   contacts = distributed.n_particle_contacts(); // collective
   const ParticleStore all      = distributed.gather_particles();

@@ -149,7 +149,8 @@ namespace abrade::dem
       return;
     const std::size_t n = store.size();
     const double      largest = m.parallel.max(double(n)), mean = m.parallel.sum(double(n)) / m.parallel.size();
-    if (!m.balanced || largest > config.rebalance_threshold * mean)
+    const bool  cut = !m.balanced || largest > config.rebalance_threshold * mean; // (the same on all ranks)
+    if (cut)
       {
         m.decomposition.balance(m.parallel, store.x.data(), store.y.data(), store.z.data(), n);
         m.balanced = true;
@@ -188,7 +189,17 @@ namespace abrade::dem
               b.push_back(m.carried_shear[3 * c + d]);
           }
       }
-    const std::vector<double> in = m.parallel.exchange(send);
+    // Between two cuts a particle moves less than a skin from one list build to the next (the
+    // rebuild criterion), so it can only go to a neighbour of this box: then only the
+    // neighbours exchange counts. Anything else (new cuts, particles placed by hand) is told
+    // by one maximum over the ranks and falls back to the all-to-all.
+    const std::vector<int> partners = m.decomposition.neighbours(me, skin);
+    bool                   far      = false;
+    for (int r = 0; r < m.parallel.size() && !far; ++r)
+      far = !send[r].empty() && std::find(partners.begin(), partners.end(), r) == partners.end();
+    const bool                nearby = !cut && !(m.parallel.max(far ? 1.0 : 0.0) > 0);
+    const std::vector<double> in = nearby ? m.parallel.exchange(send, nullptr, partners) : m.parallel.exchange(send);
+    stats.nearby_migrations += nearby;
 
     // the ones that stay, then the arrivals
     std::vector<std::size_t>  offsets{0};
@@ -267,8 +278,9 @@ namespace abrade::dem
           b.push_back(pack_integer(store.material[i]));
           b.push_back(pack_integer(store.id[i]));
         }
+    // only ranks whose box is within the cutoff of this one can send ghosts here or get them
     std::vector<int>          counts;
-    const std::vector<double> in = m.parallel.exchange(send, &counts);
+    const std::vector<double> in = m.parallel.exchange(send, &counts, m.decomposition.neighbours(me, cutoff));
     const std::size_t         ng = in.size() / record;
     m.ghost_receive_counts.resize(P);
     for (int r = 0; r < P; ++r)

@@ -26,6 +26,18 @@ namespace abrade::dem
                    dz = std::max({lo[2] - z, 0.0, z - hi[2]});
       return std::sqrt(dx * dx + dy * dy + dz * dz);
     }
+    /// Distance between this box and @p o (0 if they touch or overlap); symmetric, and never
+    /// more than the distance from @p o to a point inside this box.
+    double distance(const Box &o) const
+    {
+      double d2 = 0;
+      for (int d = 0; d < 3; ++d)
+        {
+          const double gap = std::max({o.lo[d] - hi[d], 0.0, lo[d] - o.hi[d]});
+          d2 += gap * gap;
+        }
+      return std::sqrt(d2);
+    }
     /// Distance from @p p (inside) to the nearest face.
     double depth(double x, double y, double z) const
     {
@@ -73,6 +85,17 @@ namespace abrade::dem
           else
             stack[top++] = node.left, stack[top++] = node.left + 1;
         }
+    }
+    /// The ranks other than @p rank whose box is closer than @p reach to @p rank's box: the
+    /// only ranks that can send @p rank (or receive from it) a ghost within @p reach, or a
+    /// particle that moved less than @p reach since the boxes were cut. Symmetric.
+    std::vector<int> neighbours(int rank, double reach) const
+    {
+      std::vector<int> near;
+      for (int r = 0; r < n_domains(); ++r)
+        if (r != rank && boxes[r].distance(boxes[rank]) < reach)
+          near.push_back(r);
+      return near;
     }
     int        n_domains() const { return static_cast<int>(boxes.size()); }
 

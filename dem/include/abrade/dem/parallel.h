@@ -45,7 +45,12 @@ namespace abrade::dem
 
     /// Sends send[r] to rank r and returns what every rank sent here, concatenated in rank
     /// order; the counts received from each rank go to @p received (if given). Collective
-    /// (all-to-all of the counts, then point-to-point messages to the ranks with data).
+    /// (all-to-all of the counts, then point-to-point messages to the ranks with data). With
+    /// @p partners (a symmetric relation: r lists this rank if this rank lists r), the counts
+    /// go only to and from the partners, and only they may have data to send (no all-to-all:
+    /// the cost does not grow with the number of ranks).
+    std::vector<double> exchange(const std::vector<std::vector<double>> &send, std::vector<int> *received,
+                                 const std::vector<int> &partners) const;
     std::vector<double> exchange(const std::vector<std::vector<double>> &send,
                                  std::vector<int>                       *received = nullptr) const;
     /// As exchange(), with the receive counts already known (a ghost update between two

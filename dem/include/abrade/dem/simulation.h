@@ -63,6 +63,7 @@ namespace abrade::dem
   {
     long   steps = 0, rebuilds = 0;
     long   rebalances = 0, migrated = 0; ///< domain cuts; particles that changed rank (this rank)
+    long   nearby_migrations = 0;        ///< migrations among neighbouring boxes only (no all-to-all)
     long   ghost_steps = 0;              ///< sum over steps of this rank's ghost count
     double loop_seconds = 0;
     long   particle_steps = 0;
