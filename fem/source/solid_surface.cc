@@ -237,6 +237,14 @@ namespace abrade::fem
       gmsh::write(msh);
     }
 
+    /// Loads the shapes of a STEP or IGES file into the current Gmsh model (OpenCASCADE).
+    void import_cad(const std::string &path)
+    {
+      gmsh::vectorpair shapes;
+      gmsh::model::occ::importShapes(path, shapes);
+      gmsh::model::occ::synchronize();
+    }
+
     template <typename F>
     void with_gmsh(const std::string &label, F &&f)
     {
@@ -283,9 +291,7 @@ namespace abrade::fem
                               .string();
     if (is_cad_file(path))
       with_gmsh(path, [&] {
-        gmsh::vectorpair shapes;
-        gmsh::model::occ::importShapes(path, shapes);
-        gmsh::model::occ::synchronize();
+        import_cad(path);
         mesh_volume_with_gmsh(path, h, id, msh);
       });
     else if (ext == ".stl")
@@ -327,9 +333,7 @@ namespace abrade::fem
       throw InputError(path, "meshing a CAD surface needs a positive mesh size");
     SolidSurface s;
     with_gmsh(path, [&] {
-      gmsh::vectorpair shapes;
-      gmsh::model::occ::importShapes(path, shapes);
-      gmsh::model::occ::synchronize();
+      import_cad(path);
       gmsh::vectorpair surfaces;
       gmsh::model::getEntities(surfaces, 2);
       if (surfaces.empty())
