@@ -28,8 +28,7 @@ for s in $seeds; do
   bed=(--set "Particles/Generation/Seed=$s" --set "Particles/Settling/Bed file=$out/bed-$s.bed")
   # settle the bed first, so that both runs start from the file (a bed file holds no contact
   # histories: a run that settles and goes on would start differently from one that loads it)
-  "$abrade" run "$case" --output "$out/seed$s-settle" "${common[@]}" "${bed[@]}" \
-    --set "Simulation/Phases=penetration: 0.001, travel: 0.001" >/dev/null
+  "$abrade" run "$case" --output "$out/seed$s-settle" "${common[@]}" "${bed[@]}" --set Job=bed >/dev/null
   "$abrade" run "$case" --output "$out/seed$s-np1" "${common[@]}" "${bed[@]}" >/dev/null
   mpirun --oversubscribe -np "$ranks" "$abrade" run "$case" --output "$out/seed$s-np$ranks" "${common[@]}" "${bed[@]}" >/dev/null
   OMP_NUM_THREADS=2 "$abrade" run "$case" --output "$out/seed$s-t2" "${common[@]}" "${bed[@]}" --set "Simulation/Threads=2" >/dev/null

@@ -72,9 +72,8 @@ seconds = sum(p["steps"] * r["particles"] / p["particle_steps_per_second"] for p
 print("abrade", sys.argv[2], sys.argv[3], r["particles"], steps, f"{seconds:.4f}")
 PY
 }
-"$abrade" run "$case" --quiet --output "$out/bed" --set "$knife_set" --set "Output/Snapshot interval=0" \
-  --set "Output/Write particles=false" --set "Particles/Settling/Bed file=$out/bed.bed" \
-  --set "Simulation/Phases=penetration: 0.001, travel: 0.001" >/dev/null # the shared settled bed
+"$abrade" run "$case" --quiet --output "$out/bed" --set Job=bed --set "$knife_set" \
+  --set "Particles/Settling/Bed file=$out/bed.bed" >/dev/null # the shared settled bed
 for ((rep = 1; rep <= repeat; ++rep)); do
   liggghts_run 1 "$out/liggghts-1-$rep"
   for n in $ranks; do (( n > 1 )) && liggghts_run "$n" "$out/liggghts-$n-$rep"; done

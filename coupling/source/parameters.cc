@@ -98,9 +98,11 @@ namespace abrade::coupling
 
   void declare_parameters(ParameterHandler &prm, const DeclarationLists &lists)
   {
-    prm.declare_entry("Job", "dem", Selection("dem|knife|lifetime"),
+    prm.declare_entry("Job", "dem", Selection("dem|bed|knife|lifetime"),
                       "What `abrade run` does. dem: one DEM simulation of the phases in "
-                      "Simulation/Phases (generate or load the bed, run, write output); knife: "
+                      "Simulation/Phases (generate or load the bed, run, write output); bed: only "
+                      "generate and settle the bed and save it to Particles/Settling/Bed file (for "
+                      "studies whose runs start from one bed); knife: "
                       "build the knife's solid model (subsection Knife), check its mesh and write "
                       "it (VTU, STL) with its volume and mass; lifetime: alternate DEM cycles "
                       "(on the knife's solid model) and geometry updates until end of life "

@@ -19,7 +19,7 @@ rm -rf "$out" && mkdir -p "$out"
 sets=(--quiet --set "Simulation/Phases=penetration: 0.2, travel: 0.001" --set "Simulation/Threads=1"
       --set "Output/Snapshot interval=0" --set "Output/Write particles=false" --set "Output/Force interval=0.002"
       --set "Particles/Settling/Bed file=$out/bed.bed")
-"$abrade" run "$prm" --output "$out/settle" "${sets[@]}" --set "Simulation/Phases=penetration: 0.001, travel: 0.001" > /dev/null
+"$abrade" run "$prm" --output "$out/settle" "${sets[@]}" --set Job=bed > /dev/null
 "$abrade" run "$prm" --output "$out/np1" "${sets[@]}" > /dev/null
 for run in np2 np2-again; do mpirun -np 2 --oversubscribe "$abrade" run "$prm" --output "$out/$run" "${sets[@]}" > /dev/null; done
 mpirun -np 3 --oversubscribe "$abrade" run "$prm" --output "$out/np3" "${sets[@]}" > /dev/null

@@ -44,4 +44,6 @@ namespace abrade::coupling
   void run_dem_job(JobContext &ctx);
   void run_lifetime_job(JobContext &ctx);
   void run_knife_job(JobContext &ctx);
+  /// Job 'bed': generate and settle the particles and save the bed, nothing else.
+  void run_bed_job(JobContext &ctx);
 } // namespace abrade::coupling

@@ -1,0 +1,27 @@
+// Job 'bed': the settled bed alone. Generates, pours and settles the particles as the dem job
+// does and saves them to Particles/Settling/Bed file, without running the phases (an existing
+// bed file is loaded and reported instead). Studies whose runs must start from one bed (the
+// benchmarks, the decomposition checks) make it first:
+//
+//   abrade run cases/knife_bed/knife_bed.prm --set Job=bed --set "Particles/Settling/Bed file=$PWD/bed.bed"
+#include <abrade/common/error.h>
+#include <abrade/coupling/jobs.h>
+#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/parameters.h>
+
+namespace abrade::coupling
+{
+  void run_bed_job(JobContext &ctx)
+  {
+    DemCase c = read_dem_case(ctx.parameters);
+    if (c.bed_file.empty())
+      throw InputError(ctx.parameters.file_name(), "Job = bed needs Particles/Settling/Bed file (where the bed goes)");
+    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife")); // the particles avoid them
+    dem::Simulation sim(c.settings);
+    build_simulation(c, sim);
+    const bool loaded = prepare_bed(c, sim, ctx, c.bed_file);
+    ctx.results["particles"]  = static_cast<long>(sim.n_particles());
+    ctx.results["bed_loaded"] = loaded;
+    ctx.results["bed_file"]   = c.bed_file;
+  }
+} // namespace abrade::coupling
