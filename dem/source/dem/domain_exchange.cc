@@ -198,7 +198,7 @@ namespace abrade::dem
     for (int r = 0; r < m.parallel.size() && !far; ++r)
       far = !send[r].empty() && std::find(partners.begin(), partners.end(), r) == partners.end();
     const bool                nearby = !cut && !(m.parallel.max(far ? 1.0 : 0.0) > 0);
-    const std::vector<double> in = nearby ? m.parallel.exchange(send, nullptr, partners) : m.parallel.exchange(send);
+    const std::vector<double> in = m.parallel.exchange(send, nullptr, nearby ? &partners : nullptr);
     stats.nearby_migrations += nearby;
 
     // the ones that stay, then the arrivals
@@ -280,7 +280,8 @@ namespace abrade::dem
         }
     // only ranks whose box is within the cutoff of this one can send ghosts here or get them
     std::vector<int>          counts;
-    const std::vector<double> in = m.parallel.exchange(send, &counts, m.decomposition.neighbours(me, cutoff));
+    const std::vector<int>    near_boxes = m.decomposition.neighbours(me, cutoff);
+    const std::vector<double> in         = m.parallel.exchange(send, &counts, &near_boxes);
     const std::size_t         ng = in.size() / record;
     m.ghost_receive_counts.resize(P);
     for (int r = 0; r < P; ++r)

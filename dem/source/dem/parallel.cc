@@ -128,27 +128,8 @@ namespace abrade::dem
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
   }
 
-  std::vector<double> Parallel::exchange(const std::vector<std::vector<double>> &send, std::vector<int> *received) const
-  {
-    std::vector<int> out(n_ranks), in(n_ranks);
-    for (int r = 0; r < n_ranks; ++r)
-      out[r] = static_cast<int>(send[r].size());
-    if (distributed())
-      {
-        const MpiTimer t(*this);
-        MPI_Alltoall(out.data(), 1, MPI_INT, in.data(), 1, MPI_INT, comm);
-      }
-    else
-      in = out;
-    std::vector<double> data;
-    exchange_known(send, in, data);
-    if (received)
-      *received = in;
-    return data;
-  }
-
   std::vector<double> Parallel::exchange(const std::vector<std::vector<double>> &send, std::vector<int> *received,
-                                        const std::vector<int> &partners) const
+                                        const std::vector<int> *partners) const
   {
     std::vector<int> out(n_ranks), in(n_ranks, 0);
     for (int r = 0; r < n_ranks; ++r)
@@ -156,15 +137,20 @@ namespace abrade::dem
     in[my_rank] = out[my_rank];
     if (distributed())
       {
-        const MpiTimer           t(*this);
-        std::vector<MPI_Request> requests(2 * partners.size());
-        for (std::size_t k = 0; k < partners.size(); ++k)
+        const MpiTimer t(*this);
+        if (!partners)
+          MPI_Alltoall(out.data(), 1, MPI_INT, in.data(), 1, MPI_INT, comm);
+        else
           {
-            const int r = partners[k];
-            MPI_Irecv(&in[r], 1, MPI_INT, r, 18, comm, &requests[2 * k]);
-            MPI_Isend(&out[r], 1, MPI_INT, r, 18, comm, &requests[2 * k + 1]);
+            std::vector<MPI_Request> requests(2 * partners->size());
+            for (std::size_t k = 0; k < partners->size(); ++k)
+              {
+                const int r = (*partners)[k];
+                MPI_Irecv(&in[r], 1, MPI_INT, r, 18, comm, &requests[2 * k]);
+                MPI_Isend(&out[r], 1, MPI_INT, r, 18, comm, &requests[2 * k + 1]);
+              }
+            MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
           }
-        MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
       }
     std::vector<double> data;
     exchange_known(send, in, data);

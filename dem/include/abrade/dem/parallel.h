@@ -49,10 +49,8 @@ namespace abrade::dem
     /// @p partners (a symmetric relation: r lists this rank if this rank lists r), the counts
     /// go only to and from the partners, and only they may have data to send (no all-to-all:
     /// the cost does not grow with the number of ranks).
-    std::vector<double> exchange(const std::vector<std::vector<double>> &send, std::vector<int> *received,
-                                 const std::vector<int> &partners) const;
-    std::vector<double> exchange(const std::vector<std::vector<double>> &send,
-                                 std::vector<int>                       *received = nullptr) const;
+    std::vector<double> exchange(const std::vector<std::vector<double>> &send, std::vector<int> *received = nullptr,
+                                 const std::vector<int> *partners = nullptr) const;
     /// As exchange(), with the receive counts already known (a ghost update between two
     /// neighbour-list builds): only the ranks with non-zero counts talk to each other.
     void exchange_known(const std::vector<std::vector<double>> &send, const std::vector<int> &receive_counts,
