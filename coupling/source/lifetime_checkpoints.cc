@@ -54,6 +54,16 @@ namespace abrade::coupling
     return common;
   }
 
+  void LifetimeCheckpoints::clear() const
+  {
+    for (long u = newest(); u >= 0; --u)
+      {
+        std::error_code ec;
+        std::filesystem::remove(state_file(u), ec);
+        std::filesystem::remove(knife_file(u), ec);
+      }
+  }
+
   void LifetimeCheckpoints::commit(long update) const
   {
     std::filesystem::rename(knife_file_aside(update), knife_file(update));

@@ -294,6 +294,7 @@ namespace abrade::coupling
     knife_output.adopt(output_times);
     if (first_update == 1)
       {
+        checkpoints.clear();
         knife.write(knife_output, 0);
         io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife.surface().as_polydata()); // the design
         knife.save(checkpoints.knife_file(0)); // the state a rejected first update returns to

@@ -26,6 +26,10 @@ namespace abrade::coupling
     /// redone). Throws InputError naming the file if one is missing (checkpoints edited).
     long resume_point(const dem::Parallel &ranks) const;
 
+    /// Removes every checkpoint (a run that starts afresh: stale ones of an earlier run in the
+    /// same directory must not be resumed from later).
+    void clear() const;
+
     /// Where the knife of update @p update is (0: the fresh knife, which has no state file).
     std::string knife_file(long update) const;
     /// Where the loop's state after update @p update is.
