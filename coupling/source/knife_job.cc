@@ -60,14 +60,20 @@ namespace abrade::coupling
     return kp;
   }
 
-  dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc)
+  dem::TriangleMesh wall_mesh(const fem::SolidSurface &surface, const Eigen::Matrix3d &linear,
+                              const dem::Vec3 &offset)
   {
     dem::TriangleMesh m;
     for (const auto &p : surface.vertices)
-      m.vertices.push_back(wc.rotation * dem::Vec3(p[0], p[1], p[2]) + wc.offset);
+      m.vertices.push_back(linear * dem::Vec3(p[0], p[1], p[2]) + offset);
     for (const auto &t : surface.triangles)
       m.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
     return m;
+  }
+
+  dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc)
+  {
+    return wall_mesh(surface, wc.rotation, wc.offset);
   }
 
   void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory)

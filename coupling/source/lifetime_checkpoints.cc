@@ -41,11 +41,7 @@ namespace abrade::coupling
     const long mine   = newest();
     const long common = std::max(0L, long(ranks.min(double(mine))));
     for (long u = mine; u > common; --u)
-      {
-        std::error_code ec;
-        std::filesystem::remove(state_file(u), ec);
-        std::filesystem::remove(knife_file(u), ec);
-      }
+      remove(u);
     if (common > 0 && !std::filesystem::exists(state_file(common)))
       throw InputError(state_file(common), "missing: another MPI rank resumes from this update, this rank kept "
                                            "only update " + std::to_string(mine) + " (checkpoints edited?)");
@@ -57,19 +53,20 @@ namespace abrade::coupling
   void LifetimeCheckpoints::clear() const
   {
     for (long u = newest(); u >= 0; --u)
-      {
-        std::error_code ec;
-        std::filesystem::remove(state_file(u), ec);
-        std::filesystem::remove(knife_file(u), ec);
-      }
+      remove(u);
   }
 
   void LifetimeCheckpoints::commit(long update) const
   {
     std::filesystem::rename(knife_file_aside(update), knife_file(update));
     std::filesystem::rename(state_file_aside(update), state_file(update));
-    std::error_code ec; // (update - 2 may never have existed)
-    std::filesystem::remove(state_file(update - 2), ec);
-    std::filesystem::remove(knife_file(update - 2), ec);
+    remove(update - 2);
+  }
+
+  void LifetimeCheckpoints::remove(long update) const
+  {
+    std::error_code ec; // (either may never have been written)
+    std::filesystem::remove(state_file(update), ec);
+    std::filesystem::remove(knife_file(update), ec);
   }
 } // namespace abrade::coupling

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/fem/solid_surface.h>
@@ -658,13 +659,9 @@ namespace abrade::coupling
               {
                 if (cad)
                   {
-                    const double              h     = prm.get_double("Maximum edge length");
-                    const double              scale = prm.get_double("File scale");
-                    const fem::SolidSurface   cad   = fem::read_cad_surface(file, h / scale);
-                    for (const auto &p : cad.vertices)
-                      w.mesh.vertices.emplace_back(scale * p[0], scale * p[1], scale * p[2]);
-                    for (const auto &t : cad.triangles)
-                      w.mesh.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
+                    const double scale = prm.get_double("File scale");
+                    w.mesh = wall_mesh(fem::read_cad_surface(file, prm.get_double("Maximum edge length") / scale),
+                                       scale * Eigen::Matrix3d::Identity(), dem::Vec3::Zero());
                   }
                 else
                   w.mesh = dem::read_surface_mesh(file, prm.get_double("File scale"));

@@ -202,11 +202,11 @@ namespace abrade::dem
     for (int t = omp_get_thread_num(); t < m.n_threads; t += omp_get_num_threads())
       {
         std::copy_n(m.thread_lists[t].begin(), length[t], m.neighbours.begin() + m.offsets[block[t]]);
-        for (std::size_t i = block[t]; i < block[t + 1]; ++i)
-          std::fill(m.row_of.begin() + m.offsets[i], m.row_of.begin() + m.offsets[i + 1], int(i));
-        // the tangential history of pairs that had one, from the row's carried list
+        // each slot's row, and the tangential history of pairs that had one, from the row's
+        // carried list
         for (std::size_t i = block[t]; i < block[t + 1]; ++i)
           {
+            std::fill(m.row_of.begin() + m.offsets[i], m.row_of.begin() + m.offsets[i + 1], int(i));
             const std::size_t row = order[i];
             if (!m.carries(row, ID[i]))
               continue;

@@ -97,20 +97,22 @@ namespace abrade::dem
         double *__restrict X = P.x.data(), *__restrict Y = P.y.data(), *__restrict Z = P.z.data();
         const double *__restrict VX = k.vx, *__restrict VY = k.vy, *__restrict VZ = k.vz;
         const double x_lo = lo[0], y_lo = lo[1], z_lo = lo[2], x_hi = hi[0], y_hi = hi[1], z_hi = hi[2];
-        double       d2 = 0;
-        int          outside = 0;
+        auto         inside = [=](double x, double y, double z) { // (false for NaN)
+          return x >= x_lo && x <= x_hi && y >= y_lo && y <= y_hi && z >= z_lo && z <= z_hi;
+        };
+        double d2 = 0;
+        int    outside = 0;
 #pragma omp simd reduction(max : d2) reduction(+ : outside)
         for (std::size_t i = begin; i < end; ++i)
           {
             X[i] += dt * VX[i], Y[i] += dt * VY[i], Z[i] += dt * VZ[i];
             const double dx = X[i] - X0[i], dy = Y[i] - Y0[i], dz = Z[i] - Z0[i];
             d2 = std::max(d2, dx * dx + dy * dy + dz * dz);
-            outside += !(X[i] >= x_lo && X[i] <= x_hi && Y[i] >= y_lo && Y[i] <= y_hi && Z[i] >= z_lo &&
-                         Z[i] <= z_hi);
+            outside += !inside(X[i], Y[i], Z[i]);
           }
         d2_max = d2;
         for (std::size_t i = begin; outside > 0 && i < end; ++i) // (rare) the first one outside
-          if (!(X[i] >= x_lo && X[i] <= x_hi && Y[i] >= y_lo && Y[i] <= y_hi && Z[i] >= z_lo && Z[i] <= z_hi))
+          if (!inside(X[i], Y[i], Z[i]))
             {
               first_bad = long(i);
               break;

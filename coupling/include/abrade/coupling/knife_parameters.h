@@ -22,6 +22,9 @@ namespace abrade::coupling
   /// Reads and checks subsection Knife; errors name the file.
   KnifeParameters read_knife_parameters(ParameterFile &file);
 
+  /// @p surface as a wall mesh, every vertex p moved to @p linear p + @p offset.
+  dem::TriangleMesh wall_mesh(const fem::SolidSurface &surface, const Eigen::Matrix3d &linear,
+                              const dem::Vec3 &offset);
   /// The knife's surface placed as wall @p wc's geometry (its rotation, then its offset).
   dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc);
 

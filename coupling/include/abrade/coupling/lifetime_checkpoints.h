@@ -46,5 +46,7 @@ namespace abrade::coupling
     std::string directory;
     /// The newest complete checkpoint on this process (-1: none).
     long newest() const;
+    /// Removes the checkpoint of @p update (what there is of it).
+    void remove(long update) const;
   };
 } // namespace abrade::coupling
