@@ -2,19 +2,21 @@
 #include <abrade/common/external.h>
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
+#include <abrade/common/surface_distance.h>
 #include <abrade/field/compare.h>
 
 #include <vtkCellArray.h>
 #include <vtkCutter.h>
 #include <vtkDoubleArray.h>
-#include <vtkImplicitPolyDataDistance.h>
 #include <vtkKdTreePointLocator.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTriangle.h>
+#include <vtkTriangleFilter.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
@@ -22,19 +24,63 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <optional>
+#include <stdexcept>
 
 namespace abrade::field
 {
   namespace
   {
-    /// Signed distance of every point of @p points to the closed surface @p surface (> 0 outside).
-    std::vector<double> signed_distances(vtkPolyData *points, vtkPolyData *surface)
+    /// x,y,z of every point of @p g.
+    std::vector<double> coordinates(const Geometry &g)
     {
-      vtkNew<vtkImplicitPolyDataDistance> d;
-      d->SetInput(surface);
-      std::vector<double> out(points->GetNumberOfPoints());
-      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-        out[i] = d->EvaluateFunction(points->GetPoint(i));
+      std::vector<double> x(3 * g.data->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < g.data->GetNumberOfPoints(); ++i)
+        g.data->GetPoint(i, x.data() + 3 * i);
+      return x;
+    }
+
+    /// The distance to the surface @p g (its triangles; other polygons and strips are
+    /// triangulated first): the same signed distance, and so the same wear depth, as the
+    /// lifetime loop's (surface_distance.h).
+    geometry::SurfaceDistance surface_distance(const Geometry &g)
+    {
+      vtkPolyData *surface = g.data;
+      vtkNew<vtkTriangleFilter> triangulate;
+      if (surface->GetNumberOfStrips() > 0 || surface->GetPolys()->IsHomogeneous() != 3)
+        {
+          triangulate->SetInputData(surface);
+          triangulate->PassVertsOff();
+          triangulate->PassLinesOff();
+          triangulate->Update();
+          surface = triangulate->GetOutput();
+        }
+      std::vector<std::array<long, 3>> triangles;
+      vtkCellArray                    *polys = surface->GetPolys();
+      vtkIdType                        n;
+      const vtkIdType                 *ids;
+      for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+        if (n == 3)
+          triangles.push_back({long(ids[0]), long(ids[1]), long(ids[2])});
+      std::vector<double> points(3 * surface->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+        surface->GetPoint(i, points.data() + 3 * i);
+      try
+        {
+          return geometry::SurfaceDistance(points, triangles);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError(g.path, e.what());
+        }
+    }
+
+    /// Signed distance of every point (x,y,z flat) to @p surface (> 0 outside).
+    std::vector<double> signed_distances(const std::vector<double> &points, const geometry::SurfaceDistance &surface)
+    {
+      std::vector<double> out(points.size() / 3);
+      for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = surface.signed_distance(points.data() + 3 * i);
       return out;
     }
 
@@ -44,12 +90,12 @@ namespace abrade::field
       double b[6];
       scan.data->GetBounds(b);
       const double margin = 0.02 * scan.size();
-      vtkNew<vtkImplicitPolyDataDistance> surface;
-      vtkNew<vtkKdTreePointLocator>       cloud;
+      vtkNew<vtkKdTreePointLocator>              cloud;
+      std::optional<geometry::SurfaceDistance> surface;
       if (scan.point_cloud)
         cloud->SetDataSet(scan.data), cloud->BuildLocator();
       else
-        surface->SetInput(scan.data);
+        surface.emplace(surface_distance(scan));
       double worst = 0;
       for (vtkIdType i = 0; i < model.data->GetNumberOfPoints(); ++i)
         {
@@ -67,7 +113,7 @@ namespace abrade::field
               d = std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
             }
           else
-            d = std::abs(surface->EvaluateFunction(const_cast<double *>(p)));
+            d = std::abs(surface->signed_distance(p));
           worst = std::max(worst, d);
         }
       return worst;
@@ -237,20 +283,23 @@ namespace abrade::field
                                  std::to_string(r.registration.rms) + " m (RMS) from the model's surface, " +
                                  std::to_string(100 * r.registration.rms / frame.size()) + " % of its size");
 
-    const std::vector<double> deviation = signed_distances(scan.data, predicted.data);
+    const std::vector<double> scan_points = coordinates(scan);
+    const std::vector<double> deviation   = signed_distances(scan_points, surface_distance(predicted));
     r.to_predicted                      = statistics(deviation);
     r.to_predicted.hausdorff            = std::max(r.to_predicted.max_abs, model_to_scan(predicted, scan));
     std::vector<double> measured, predicted_depth;
     if (r.has_reference)
       {
-        const std::vector<double> to_design = signed_distances(scan.data, reference.data);
-        r.to_reference                      = statistics(to_design);
-        r.to_reference.hausdorff            = std::max(r.to_reference.max_abs, model_to_scan(reference, scan));
-        for (std::size_t i = 0; i < to_design.size(); ++i)
+        // the measured depth: the one definition of wear depth, the lifetime loop's too
+        measured = geometry::wear_depth(surface_distance(reference), scan_points);
+        std::vector<double> to_design;
+        for (std::size_t i = 0; i < measured.size(); ++i)
           {
-            measured.push_back(-to_design[i]);
-            predicted_depth.push_back(-to_design[i] + deviation[i]); // the prediction's depth below this point
+            to_design.push_back(-measured[i]);                     // signed distance to the design
+            predicted_depth.push_back(measured[i] + deviation[i]); // the prediction's depth below this point
           }
+        r.to_reference           = statistics(to_design);
+        r.to_reference.hausdorff = std::max(r.to_reference.max_abs, model_to_scan(reference, scan));
         if (scan.closed && predicted.closed && reference.closed)
           {
             r.measured_volume  = reference.volume() - scan.volume();
