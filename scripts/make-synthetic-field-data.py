@@ -81,7 +81,7 @@ with open(os.path.join(out, "measurements.csv"), "w") as f:
     f.write("location,tonnes,depth_mm\n")
     for r in rows:
         for k, n in enumerate(names):
-            col = "point_recession" if k == 0 else f"point_recession_{k + 1}"
+            col = "point_depth" if k == 0 else f"point_depth_{k + 1}"
             d = 1000 * float(r[col]) * (1 + random.gauss(0, 0.05))  # 5 % gauge scatter
             f.write(f"{n},{round(float(r['tonnes']))},{d:.3f}\n")
 print(f"wrote {out}/scan_mm.ply ({len(points)} points, update {update}: {rows[update - 1]['tonnes']} t), "

@@ -152,15 +152,19 @@ namespace abrade::coupling
     prm.declare_entry("Depth increment fraction", "0.05", Double(1e-6, 1),
                       "[-] Adaptive updates: largest depth increment per update over the mesh size. Range: (0, 1].");
     prm.declare_entry("Smoothing radius", "0", Double(0, huge),
-                      "[m] Volume-conserving smoothing of the per-cycle wear over the knife surface; "
+                      "[m] Length of the wear filter: the per-cycle wear is smoothed over the knife's "
+                      "surface with a Gaussian of this length in the distance along the surface (it never "
+                      "crosses the plate), conserving the volume. It stands for the particle's footprint; "
                       "0: the largest particle radius (DEM wear), none (analytic wear). Range: >= 0.");
     prm.declare_entry("Maximum depth", "0.02", Double(0, huge),
-                      "[m] End of life: the largest accumulated wear depth. Range: >= 0.");
+                      "[m] End of life: the largest wear depth, the distance of the worn surface below the "
+                      "design surface (as abrade compare measures a scan; not the vertex displacement, which "
+                      "is 2.9-3x larger at a chisel's tip and corners); 0: no limit. Range: >= 0.");
     prm.declare_entry("Recession points", "0.2, 0, 0", List(List(Double(-huge, huge), 3, 3), 1, 100, ";"),
                       "[m] Points of the knife (in its own coordinates: x along the length from 0, y "
                       "across the thickness from its middle, z up from the edge), separated by ';', whose "
-                      "recession (the accumulated depth of the surface point that was there on the fresh "
-                      "knife, interpolated) the trajectory "
+                      "recession (how far the surface point that was there on the fresh knife has moved, "
+                      "interpolated: at a chisel's tip, the tip's recession along its bisector) the trajectory "
                       "follows: column point_recession for the first, point_recession_2, ... for the "
                       "others. Default: the middle of the edge of the default knife.");
     prm.declare_entry("Maximum recession", "0", Double(0, huge),
@@ -177,7 +181,12 @@ namespace abrade::coupling
     prm.declare_entry("Analytic wear rate", "1e-6", Anything(),
                       "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
                       "inward normal, as a function of the knife's current coordinates x, y, z (the "
-                      "knife's own frame, see Recession points), e.g. '1e-6*exp(-z/0.01)'. muparser syntax.");
+                      "knife's own frame, see Recession points) and of t, the tonnes handled so far, e.g. "
+                      "'1e-6*exp(-z/0.01)' or '1e-6*(1+t/5000)'; evaluated at the surface's vertices. muparser syntax.");
+    prm.declare_entry("Analytic seed scatter", "0", Double(0, 1),
+                      "[-] Wear source = analytic: each seed's rate is multiplied by 1 + this x z, z a "
+                      "standard normal number drawn from the seed: a known bed-to-bed scatter (verification "
+                      "of the interval over the seeds). Range: [0, 1].");
     prm.declare_entry("Profile planes", "0.5", List(Double(0, 1)),
                       "Cross-sections of the knife written per update (knife/profile_N.csv and .png), "
                       "at these fractions of the knife's length (planes normal to its length).");

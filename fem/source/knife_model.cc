@@ -24,6 +24,14 @@ namespace abrade::fem
     geometry.mesh(*tria, settings.mesh_size, settings.work_directory + "/knife.msh");
     plate_thickness = geometry.thickness;
     current_surface   = extract_surface(*tria);
+    design            = current_surface;
+    std::vector<double>                 points;
+    std::vector<std::array<long, 3>>    triangles;
+    for (const auto &p : design.vertices)
+      points.insert(points.end(), {p[0], p[1], p[2]});
+    for (const auto &t : design.triangles)
+      triangles.push_back({long(t[0]), long(t[1]), long(t[2])});
+    design_distance = std::make_shared<const geometry::SurfaceDistance>(points, triangles);
     accumulated.assign(current_surface.vertices.size(), 0.0);
     displacement.assign(3 * current_surface.vertices.size(), 0.0);
     since_remesh.assign(current_surface.vertices.size(), 0.0);
@@ -105,15 +113,27 @@ namespace abrade::fem
     return r;
   }
 
-  std::vector<double> KnifeModel::recession_at(const std::vector<Point<3>> &points) const
+  std::vector<double> KnifeModel::wear_depth() const
   {
+    std::vector<double> points;
+    points.reserve(3 * current_surface.vertices.size());
+    for (const auto &p : current_surface.vertices)
+      points.insert(points.end(), {p[0], p[1], p[2]});
+    return geometry::wear_depth(*design_distance, points);
+  }
+
+  std::vector<double> KnifeModel::at_followed_points(const std::vector<double> &field,
+                                                     const std::vector<Point<3>> &points) const
+  {
+    if (field.size() != current_surface.vertices.size())
+      throw std::logic_error("at_followed_points: one value per surface vertex expected");
     SolidSurface fresh = current_surface;
     for (std::size_t v = 0; v < fresh.vertices.size(); ++v)
       for (unsigned c = 0; c < 3; ++c)
         fresh.vertices[v][c] -= displacement[3 * v + c];
     SolidSurface at;
     at.vertices = points;
-    return transfer_surface_field(fresh, accumulated, at);
+    return transfer_surface_field(fresh, field, at);
   }
 
   namespace
@@ -212,14 +232,17 @@ namespace abrade::fem
 
   void KnifeModel::write(SolidOutput &output, double time) const
   {
-    std::vector<double> depth(tria->n_vertices(), 0.0), moved(3 * tria->n_vertices(), 0.0);
+    std::vector<double> depth(tria->n_vertices(), 0.0), travel(tria->n_vertices(), 0.0),
+      moved(3 * tria->n_vertices(), 0.0);
+    const std::vector<double> gauge = wear_depth();
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
       {
-        depth[current_surface.tria_vertex[v]] = accumulated[v];
+        depth[current_surface.tria_vertex[v]]  = gauge[v];
+        travel[current_surface.tria_vertex[v]] = accumulated[v];
         for (unsigned c = 0; c < 3; ++c)
           moved[3 * current_surface.tria_vertex[v] + c] = displacement[3 * v + c];
       }
     output.write(*tria, {{"scaled_jacobian", cell_scaled_jacobians(*tria)}}, time,
-                 {{"wear_depth", 1, depth}, {"wear_displacement", 3, moved}});
+                 {{"wear_depth", 1, depth}, {"vertex_displacement", 1, travel}, {"wear_displacement", 3, moved}});
   }
 } // namespace abrade::fem

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # abrade calibrate against synthetic measurements made with a known W (or rate):
-#  1. W: the small DEM lifetime case run with W = 3e-14 gives the recession of four followed
-#     points per update (trajectory.csv, computed inside the run); calibrating the same case run
+#  1. W: the small DEM lifetime case run with W = 3e-14 gives the wear depth (below the design)
+#     at four followed points per update (trajectory.csv, computed inside the run); calibrating the same case run
 #     with W = 2e-14 on them must recover 3e-14 to 3 % (the two runs' DEM cycles agree while
 #     their geometries do; the roundings of the update sizes part them after two updates, and
 #     one bed's wear then differs by about 1 %: DEM noise, not in the fit's interval).
@@ -33,7 +33,7 @@ def table(run, name, pts):
         f.write("x,y,z,tonnes,depth\n")
         for r in rows:
             for k, p in enumerate(pts):
-                col = "point_recession" if k == 0 else f"point_recession_{k + 1}"
+                col = "point_depth" if k == 0 else f"point_depth_{k + 1}"
                 f.write(f"{p[0]},{p[1]},{p[2]},{r['tonnes']},{r[col]}\n")
 table("truth_w", "w.csv", points)
 table("truth_pattern", "pattern.csv", [[0.075, 0.015, 0.06], [0.075, 0.015, 0.1], [0.075, -0.015, 0.15]])

@@ -215,7 +215,8 @@ TEST(KnifeModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
     if (depth[v] > 0)
       {
         EXPECT_NEAR(knife.surface().vertices[v][1] - before.vertices[v][1], 0.001, 1e-12); // inward = +y
-        EXPECT_NEAR(knife.accumulated_depth()[v], 0.001, 1e-15);
+        EXPECT_NEAR(knife.vertex_displacement()[v], 0.001, 1e-15);
+        EXPECT_NEAR(knife.wear_depth()[v], 0.001, 1e-12);
         ++moved;
       }
   EXPECT_GT(moved, 3);
@@ -234,11 +235,42 @@ TEST(KnifeModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
   EXPECT_TRUE(rr.remeshed);
   EXPECT_EQ(remeshing.n_remeshes(), 1u);
   double total = 0;
-  for (double d : remeshing.accumulated_depth())
+  for (double d : remeshing.vertex_displacement())
     total += d;
   EXPECT_GT(total, 0);
   SolidOutput out(tmp("abrade_knife_model_out"), "knife");
   remeshing.write(out, 1.0);
+}
+
+// The wear depth is the distance below the design, not the vertex displacement: a uniform depth
+// d on the whole wearable surface moves the chisel tip's vertices by d / sin(half edge angle)
+// (2.85 d on the 40 mm bevel of a 30 mm plate) and the corners where the end faces meet the
+// faces by up to 3 d, but the worn surface lies d below the design everywhere on it, and the
+// largest wear depth is d (to the mesh's round-off), also after a remesh.
+TEST(KnifeModel, WearDepthIsTheDistanceBelowTheDesign)
+{
+  KnifeModel::Settings settings;
+  settings.mesh_size      = 0.03;
+  settings.work_directory = tmp("abrade_knife_gauge");
+  KnifeModel   knife(KnifeGeometry(), settings);
+  const double d = 0.002;
+  for (int update = 0; update < 2; ++update)
+    {
+      const SolidSurface &s = knife.surface();
+      std::vector<double> depth(s.vertices.size(), d);
+      knife.apply_wear(depth);
+      const auto   gauge    = knife.wear_depth();
+      const auto  &travel   = knife.vertex_displacement();
+      const double deepest  = *std::max_element(gauge.begin(), gauge.end());
+      const double furthest = *std::max_element(travel.begin(), travel.end());
+      // (1e-4: after the first update the ring of triangles at the clamped top is tilted, and the
+      // least-squares offset of the vertices next to it is no longer exact to round-off)
+      EXPECT_NEAR(deepest, (update + 1) * d, 1e-4 * d) << "update " << update + 1;
+      EXPECT_GT(furthest, 2.8 * (update + 1) * d) << "the tip moves further than the surface recedes";
+    }
+  // the followed point at the middle of the edge: its recession is the tip's, d / sin(half angle)
+  const double sin_half = 0.015 / std::hypot(0.015, 0.04);
+  EXPECT_NEAR(knife.recession_at({Point<3>(0.2, 0, 0)})[0], 2 * d / sin_half, 1e-6 * d);
 }
 
 TEST(KnifeModel, CheckpointContinuesBitForBit)
@@ -266,7 +298,8 @@ TEST(KnifeModel, CheckpointContinuesBitForBit)
   for (std::size_t v = 0; v < a.surface().vertices.size(); ++v)
     for (unsigned c = 0; c < 3; ++c)
       ASSERT_EQ(a.surface().vertices[v][c], b.surface().vertices[v][c]);
-  EXPECT_EQ(a.accumulated_depth(), b.accumulated_depth());
+  EXPECT_EQ(a.vertex_displacement(), b.vertex_displacement());
+  EXPECT_EQ(a.wear_depth(), b.wear_depth());
   EXPECT_EQ(a.volume(), b.volume());
 }
 

@@ -5,6 +5,10 @@
 //  - a non-rotating sphere launched at v0 on a plane with friction mu: Q = W m v0^2 / (2 mu),
 //    and the tangential (friction) energy of the relative wear law equals the initial kinetic
 //    energy;
+//  - per vertex, the wear lands where it happened: sliding along a straight path on one
+//    triangle, each vertex receives Q times its barycentric weight at the path's midpoint (the
+//    weights are linear along the path), exactly; over many triangles the vertex values sum to
+//    the per-triangle total;
 //  - per-phase fields add up to the total; Finnie wear vanishes at normal incidence and for
 //    receding particles and scales with k_finnie.
 #include "dem_test_helpers.h"
@@ -88,6 +92,36 @@ TEST(Archard, ConstantSpeedSlidingOverManyTrianglesConservesVolume)
         touched += q > 0;
       EXPECT_GT(touched, 20);
     }
+}
+
+TEST(Archard, VertexValuesAreTheBarycentricWeightsOfTheContactPoints)
+{
+  auto         s = sliding(one_triangle(10), 0.0, 1.0, Vec3(-2, -1, 0));
+  s->sim.run_phase("slide", 1.0); // from x = -2 to x = -1 at y = -1
+  const double Q = W * s->sim.particles().mass[0] * g;
+  // barycentric weights of the path's midpoint (-1.5, -1) in (-10,-10), (10,-10), (0,10)
+  const double l2 = (-1.0 + 10) / 20;            // weight of (0, 10): y from -10 to 10
+  const double l1 = (-1.5 + 10 - 10 * l2) / 20;  // x = -10 + 20 l1 + 10 l2
+  const double l0 = 1 - l1 - l2;
+  const auto   q  = s->wear->vertex_values(0, WearRecorder::archard_volume);
+  ASSERT_EQ(q.size(), 3u);
+  // (the contact point is sampled once per step: the samples' mean lies up to half a step's
+  // travel, 5e-5 m, from the midpoint, 1.3e-5 of l1)
+  EXPECT_NEAR(q[0] / (l0 * Q), 1, 1e-4);
+  EXPECT_NEAR(q[1] / (l1 * Q), 1, 1e-4);
+  EXPECT_NEAR(q[2] / (l2 * Q), 1, 1e-4);
+  // a third each, as the volume once went to the vertices, is far from it
+  EXPECT_GT(std::abs(l1 - 1.0 / 3), 0.1);
+}
+
+TEST(Archard, VertexValuesConserveTheVolumeOverManyTriangles)
+{
+  auto s = sliding(primitives::plate(Vec3::Zero(), 2, 4, 4, 0.05), 0.0, 1.0, Vec3(-1, 0.0123, 0));
+  s->sim.run_phase("slide", 1.0);
+  double sum = 0;
+  for (double q : s->wear->vertex_values(0, WearRecorder::archard_volume))
+    sum += q;
+  EXPECT_NEAR(sum / s->wear->total(0, WearRecorder::archard_volume), 1, 1e-12);
 }
 
 TEST(Archard, EdgeContactIsSplitEqually)

@@ -25,6 +25,7 @@ namespace abrade::dem
         else
           d.laws.archard = false;
         d.area.resize(mesh.n_triangles());
+        d.n_vertices = mesh.vertices.size();
         for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
           d.area[t] = mesh.area(t);
         d.vertex_offsets.assign(mesh.vertices.size() + 1, 0);
@@ -106,6 +107,18 @@ namespace abrade::dem
     const double part = amount / share.size();
     for (int o : share)
       per[f][o] += per_area ? part / d.area[o] : part;
+
+    // on the vertices, where it happened: barycentric weights of the point (clamped to the
+    // triangle, against round-off), normalised so that the whole increment is deposited
+    auto &at_vertices = d.vertex_data[current];
+    if (at_vertices.empty())
+      at_vertices.assign(n_fields, std::vector<double>(d.n_vertices, 0.0));
+    double w[3], sum = 0;
+    for (int k = 0; k < 3; ++k)
+      sum += (w[k] = std::max(0.0, bary[k]));
+    const double scale = per_area ? 1 / d.area[r.triangle] : 1.0;
+    for (int k = 0; k < 3; ++k)
+      at_vertices[f][t[k]] += (sum > 0 ? w[k] / sum : 1.0 / 3) * amount * scale;
   }
 
   void WearRecorder::after_step(const Simulation &sim, const ContactLog &log)
@@ -160,6 +173,18 @@ namespace abrade::dem
       if (phase.empty() || name == phase)
         for (std::size_t t = 0; t < out.size(); ++t)
           out[t] += per[f][t];
+    ranks.sum(out);
+    return out;
+  }
+
+  std::vector<double> WearRecorder::vertex_values(std::size_t wall, Field f, const std::string &phase) const
+  {
+    const WallData     &d = walls[wall];
+    std::vector<double> out(d.n_vertices, 0.0);
+    for (const auto &[name, per] : d.vertex_data)
+      if (phase.empty() || name == phase)
+        for (std::size_t v = 0; v < out.size(); ++v)
+          out[v] += per[f][v];
     ranks.sum(out);
     return out;
   }

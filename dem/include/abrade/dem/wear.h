@@ -61,6 +61,10 @@ namespace abrade::dem
     bool tracks(std::size_t wall, Field f) const;
     /// Per-triangle values of a field, summed over all phases ("") or for one phase.
     std::vector<double> values(std::size_t wall, Field f, const std::string &phase = "") const;
+    /// Per-vertex values of a field: each contact's increment split over the vertices of the
+    /// triangle that carries it with the barycentric weights of the contact point. Sums to the
+    /// per-triangle values' sum. Summed over all phases ("") or for one phase.
+    std::vector<double> vertex_values(std::size_t wall, Field f, const std::string &phase = "") const;
     /// archard_volume / area per triangle [m].
     std::vector<double> archard_depth(std::size_t wall, const std::string &phase = "") const;
     /// Sum over triangles.
@@ -75,8 +79,9 @@ namespace abrade::dem
       std::vector<double> area;
       // triangles around each vertex (CSR), to split edge and vertex contacts
       std::vector<int>    vertex_offsets, vertex_triangles;
-      // phase -> field -> per-triangle values
-      std::map<std::string, std::vector<std::vector<double>>> data;
+      std::size_t         n_vertices = 0;
+      // phase -> field -> per-triangle values, and per-vertex values
+      std::map<std::string, std::vector<std::vector<double>>> data, vertex_data;
     };
     Parallel                 ranks;
     std::vector<WallData>    walls;

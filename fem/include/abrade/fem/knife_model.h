@@ -12,9 +12,15 @@
 // remeshes when it falls below a threshold (relative to the fresh mesh), or when the surface has
 // moved more than half a mesh size since the last remesh (the mesh then no longer resolves the
 // receding, rounding edge), carrying the accumulated depth and displacement over.
+// The wear depth (wear_depth) is not that displacement: it is the distance of the worn surface
+// below the design (the fresh knife's surface), measured as `abrade compare` measures a scan
+// (geometry::wear_depth, one definition for both). Where the offset faces meet at a chisel tip
+// or a corner the vertex moves 2.9-3x as far as the surface lies below the design; the
+// displacement stays available as vertex_displacement(), a diagnostic.
 // A depth that reaches the local wall thickness is reported as worn through and not applied
 // (only where the knife is at least half its plate thickness thick: near a sharp edge the local
 // thickness vanishes and the receding edge is the mesh motion's and the remeshing's business).
+#include <abrade/common/surface_distance.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -54,11 +60,26 @@ namespace abrade::fem
     UpdateResult apply_wear(const std::vector<double> &depth);
 
     const SolidSurface           &surface() const { return current_surface; }
-    const std::vector<double>    &accumulated_depth() const { return accumulated; }
+    /// The wear depth of every vertex of surface(): its distance inside the design surface [m].
+    std::vector<double> wear_depth() const;
+    /// How far each vertex of surface() has moved inward since the fresh knife, summed over the
+    /// updates [m] (a diagnostic: at edges and corners 2.9-3x the wear depth).
+    const std::vector<double>    &vertex_displacement() const { return accumulated; }
     const dealii::Triangulation<3> &triangulation() const { return *tria; }
-    /// The accumulated wear depth of the surface points that were at @p points on the fresh
-    /// knife (the surface moved back by its accumulated displacement, interpolated linearly).
-    std::vector<double> recession_at(const std::vector<dealii::Point<3>> &points) const;
+    /// The design (fresh) surface.
+    const SolidSurface &design_surface() const { return design; }
+    /// A per-vertex @p field of surface() at the surface points that were at @p points on the
+    /// fresh knife (the surface moved back by its accumulated displacement, interpolated
+    /// linearly): what happened to points followed through the knife's life.
+    std::vector<double> at_followed_points(const std::vector<double>                &field,
+                                           const std::vector<dealii::Point<3>> &points) const;
+    /// The recession of followed points: how far the surface point that was at each of
+    /// @p points on the fresh knife has moved (vertex displacement interpolated); at a chisel
+    /// tip that is the tip's recession along its bisector.
+    std::vector<double> recession_at(const std::vector<dealii::Point<3>> &points) const
+    {
+      return at_followed_points(accumulated, points);
+    }
     double volume() const;
     double mass() const { return volume() * settings.density; }
     unsigned n_remeshes() const { return remeshes; }
@@ -68,14 +89,16 @@ namespace abrade::fem
     void save(const std::string &path) const;
     void load(const std::string &path);
 
-    /// Appends the current state to a VTU series (fields: scaled Jacobian per cell, accumulated
-    /// wear depth per vertex).
+    /// Appends the current state to a VTU series (fields: scaled Jacobian per cell; per vertex
+    /// the wear depth below the design, the vertex displacement's length and its vector).
     void write(SolidOutput &output, double time) const;
 
   private:
     Settings                                  settings;
     std::unique_ptr<dealii::Triangulation<3>> tria;
     SolidSurface                              current_surface;
+    SolidSurface                              design;
+    std::shared_ptr<const geometry::SurfaceDistance> design_distance;
     std::vector<double>                       accumulated;
     std::vector<double>                       displacement;   ///< accumulated, 3 per surface vertex
     std::vector<double>                       since_remesh;   ///< |displacement| since the last remesh

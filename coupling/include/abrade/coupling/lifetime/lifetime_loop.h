@@ -1,0 +1,134 @@
+#pragma once
+// The `lifetime` job: a knife's wear over its working life, by alternating operating cycles
+// (DEM, or a known rate) and geometry updates of the knife's solid model (FEM). run() reads as
+// the algorithm; each step is a member function, and the arithmetic of each step is a function of
+// its own with a unit test (tests/unit/test_lifetime_steps.cc):
+//
+//   set_up()                     knife, wear source, outputs; resume from the last checkpoint
+//   for every update:
+//     run_cycles()               one cycle's wear per bed seed, per surface vertex (wear_source.h)
+//     filter()                   smoothed over the surface, volume conserving (surface_filter.h),
+//                                divided by the vertex areas: wear depth per cycle, per seed and
+//                                their mean
+//     choose_cycles()            how many cycles this update stands for (update_size.h)
+//     move_knife()               the mean depth moves the knife's surface (offset surface), the
+//                                mesh follows, is checked and remeshed (fem/knife_model.h); a
+//                                step that cannot be remeshed is rejected: back to the checkpoint
+//     record()                   wear depth below the design (the definition `abrade compare`
+//                                uses), volumes, followed points: trajectory.csv, knife series
+//     checkpoint()               the knife and the loop's state (key = value, state_file.h)
+//   finish()                     end of life interpolated or extrapolated (end_of_life.h), its
+//                                interval over the beds (life_interval.h): summary.json
+#include <abrade/coupling/jobs.h>
+#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/lifetime/end_of_life.h>
+#include <abrade/coupling/lifetime/life_interval.h>
+#include <abrade/coupling/lifetime/wear_source.h>
+#include <abrade/coupling/lifetime_checkpoints.h>
+#include <abrade/common/csv_writer.h>
+#include <abrade/fem/knife_model.h>
+#include <abrade/fem/solid_output.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace abrade::coupling::lifetime
+{
+  class LifetimeLoop
+  {
+  public:
+    explicit LifetimeLoop(JobContext &ctx);
+    ~LifetimeLoop();
+    void run();
+
+  private:
+    /// The Lifetime subsection.
+    struct Settings
+    {
+      double                        tonnes_per_cycle = 0;
+      std::vector<int>              seeds;
+      long                          fixed_cycles = 0;
+      double                        fraction     = 0.05;
+      double                        smoothing    = 0;
+      double                        max_depth = 0, max_recession = 0, max_worn_mass = 0, target_tonnes = 0;
+      std::vector<double>           planes;
+      std::vector<dealii::Point<3>> recession_points;
+      long                          max_updates = 1;
+      bool                          analytic    = false;
+      std::string                   rate_expression;
+      double                        seed_scatter = 0;
+    };
+
+    /// The wear depth per cycle of one update, per seed and its mean [m per surface vertex].
+    struct Rates
+    {
+      std::vector<std::vector<double>> seed;
+      std::vector<double>              mean;
+      double                           largest = 0;
+      double                           archard_volume = 0; ///< per cycle, the seeds' mean [m^3]
+      std::vector<double>              seed_volume;        ///< per cycle and seed [m^3]
+    };
+
+    /// The outcome of moving the knife by one update.
+    struct Step
+    {
+      bool                         moved = false;
+      long                         cycles = 0;
+      fem::KnifeModel::UpdateResult result;
+      double                       volume_before = 0;
+      std::string                  error;
+      // before the move: the wear depth and the followed points' recession, and the rates at the
+      // followed points (mean and per seed)
+      std::vector<double>              depth_before, recession_before, followed_mean;
+      std::vector<std::vector<double>> followed_seed;
+    };
+
+    // the steps of run()
+    void      set_up();
+    CycleWear run_cycles();
+    Rates     filter(const CycleWear &wear);
+    long      choose_cycles(const Rates &rates) const;
+    Step      move_knife(const Rates &rates, long cycles);
+    void      record(const CycleWear &wear, const Rates &rates, const Step &step);
+    void      checkpoint();
+    bool      stop_here();
+    void      finish();
+
+    void read_settings();
+    bool resume();
+    void start_afresh();
+    /// Adds this update's seed rates of every criterion's quantity to seed_factors; returns the
+    /// update's relative bed-to-bed spread of the deepest point's rate.
+    double add_seed_rates(const Rates &rates, const Step &step);
+
+    JobContext                           &ctx;
+    Settings                              s;
+    DemCase                               dem_case;
+    KnifeParameters                       knife_parameters;
+    std::unique_ptr<fem::KnifeModel>      knife;
+    std::unique_ptr<fem::SolidOutput>     knife_output;
+    std::unique_ptr<WearSource>           source;
+    std::unique_ptr<LifetimeCheckpoints>  checkpoints;
+    io::CsvWriter                         trajectory;
+    std::string                           hash;
+
+    // the loop's state (all of it is in the checkpoint)
+    long                         update = 0; ///< the update being made (the last one done, after it)
+    long                         cycles = 0;
+    double                       tonnes = 0;
+    double                       archard_total = 0;
+    double                       volume0 = 0;
+    std::vector<Criterion>       criteria;
+    std::vector<TrajectoryPoint> history;      ///< per update (and the fresh knife) the criteria's values
+    std::vector<SeedFactors>     seed_factors; ///< per criterion
+    std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest
+    double                       tonnes_per_cycle_now = 0; ///< of the update being made
+
+    // the end of the run
+    std::string end = "maximum updates reached";
+    bool        worn_through = false;
+    double      worn_through_tonnes = 0;
+    std::vector<std::string> warnings;
+  };
+} // namespace abrade::coupling::lifetime

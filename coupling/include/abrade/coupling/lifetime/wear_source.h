@@ -1,0 +1,58 @@
+#pragma once
+// Where a lifetime update's wear comes from (Lifetime/Wear source): the DEM's operating cycle on
+// the knife's current surface, or a known analytic rate (verification). The loop asks for one
+// cycle's wear per bed seed, as a wear volume at every vertex of the knife's surface: deposited
+// where the contacts happened (barycentric weights of each contact point, dem/wear.h), so that
+// wear at the chisel's tip stays on the tip's vertices.
+#include <abrade/coupling/jobs.h>
+#include <abrade/coupling/parameters.h>
+#include <abrade/fem/solid_surface.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace abrade::coupling::lifetime
+{
+  /// One operating cycle's wear on the knife.
+  struct CycleWear
+  {
+    std::vector<std::vector<double>> seed_volume;   ///< per seed: wear volume per cycle at each surface vertex [m^3]
+    std::vector<double>              phase_volume;  ///< the seeds' mean, per phase of the cycle [m^3]
+    double                           tonnes_per_cycle = 0;
+    double                           particle_radius  = 0; ///< the largest particle's [m] (0: no particles)
+    std::string                      stop; ///< not empty: why the loop cannot go on (no payload, ...)
+  };
+
+  class WearSource
+  {
+  public:
+    virtual ~WearSource() = default;
+    /// The wear of one cycle on the knife's current @p surface (its vertex order), after
+    /// @p tonnes handled so far.
+    virtual CycleWear cycle(const fem::SolidSurface &surface, double tonnes) = 0;
+    /// The phases of the cycle (trajectory columns archard_volume_<phase>).
+    virtual std::vector<std::string> phases() const = 0;
+    /// The Archard coefficient W the wear scales with (0: not the DEM's).
+    virtual double archard_coefficient() const { return 0; }
+  };
+
+  /// A known wear rate: @p expression, depth per tonne [m/t] as a function of x, y, z [m] (the
+  /// current surface) and t (the tonnes handled so far), at every vertex of the wearable
+  /// surface; times the tonnes per cycle and the vertex's area (a third of its wearable
+  /// triangles'). With @p seed_scatter > 0 each seed's rate is multiplied by 1 + scatter z,
+  /// z a standard normal number drawn from the seed (a known bed-to-bed scatter, to test the
+  /// interval). Throws std::invalid_argument when the expression cannot be evaluated.
+  std::unique_ptr<WearSource> make_analytic_wear_source(const std::string &expression, double tonnes_per_cycle,
+                                                        const std::vector<int> &seeds, double seed_scatter);
+
+  /// The DEM: one cycle per seed from that seed's saved bed (beds/bed-seedN.bed in the output
+  /// directory, made on first use), on every knife wall (a grab's two knives are averaged vertex
+  /// by vertex). @p tonnes_per_cycle 0: the DEM's payload (Simulation/Payload height).
+  std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &seeds,
+                                                   double tonnes_per_cycle, JobContext &ctx);
+
+  /// The standard normal number that seed @p seed draws (Box-Muller on a 64-bit Mersenne
+  /// twister: the same on every platform).
+  double standard_normal_of_seed(int seed);
+} // namespace abrade::coupling::lifetime

@@ -1,0 +1,78 @@
+// The analytic wear source (Lifetime/Wear source = analytic): a known rate instead of the DEM,
+// for verification of the loop (tests/lifetime/).
+#include <abrade/coupling/lifetime/wear_source.h>
+#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/surface_filter.h>
+
+#include <deal.II/base/function_parser.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace abrade::coupling::lifetime
+{
+  double standard_normal_of_seed(int seed)
+  {
+    std::mt19937_64 random(static_cast<std::uint64_t>(seed) * 0x9E3779B97F4A7C15ULL + 12345);
+    const double    u1 = (double(random() >> 11) + 1) * 0x1.0p-53; // (0, 1]
+    const double    u2 = double(random() >> 11) * 0x1.0p-53;       // [0, 1)
+    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
+  }
+
+  namespace
+  {
+    class AnalyticWearSource : public WearSource
+    {
+    public:
+      AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, const std::vector<int> &seeds,
+                         double scatter)
+        : tonnes_per_cycle(tonnes_per_cycle)
+      {
+        try
+          {
+            rate.initialize("x,y,z,t", expression, {}, true);
+            rate.value(dealii::Point<3>());
+          }
+        catch (const std::exception &)
+          {
+            throw std::invalid_argument("cannot evaluate '" + expression + "' as a function of x, y, z and t");
+          }
+        for (int s : seeds)
+          factor.push_back(1 + scatter * standard_normal_of_seed(s));
+      }
+
+      CycleWear cycle(const fem::SolidSurface &surface, double tonnes) override
+      {
+        CycleWear w;
+        w.tonnes_per_cycle = tonnes_per_cycle;
+        rate.set_time(tonnes);
+        const auto          area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
+        std::vector<double> volume(surface.vertices.size(), 0.0);
+        for (std::size_t v = 0; v < volume.size(); ++v)
+          if (area[v] > 0)
+            volume[v] = rate.value(surface.vertices[v]) * tonnes_per_cycle * area[v];
+        for (double f : factor)
+          {
+            w.seed_volume.push_back(volume);
+            for (double &x : w.seed_volume.back())
+              x *= f;
+          }
+        return w;
+      }
+
+      std::vector<std::string> phases() const override { return {}; }
+
+    private:
+      dealii::FunctionParser<3> rate;
+      double                    tonnes_per_cycle;
+      std::vector<double>       factor; // per seed
+    };
+  } // namespace
+
+  std::unique_ptr<WearSource> make_analytic_wear_source(const std::string &expression, double tonnes_per_cycle,
+                                                        const std::vector<int> &seeds, double seed_scatter)
+  {
+    return std::make_unique<AnalyticWearSource>(expression, tonnes_per_cycle, seeds, seed_scatter);
+  }
+} // namespace abrade::coupling::lifetime

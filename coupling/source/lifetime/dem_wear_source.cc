@@ -1,0 +1,113 @@
+// The DEM wear source: one operating cycle per bed seed on the knife's current surface.
+#include <abrade/common/timer.h>
+#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/lifetime/wear_source.h>
+#include <abrade/dem/wear.h>
+
+#include <algorithm>
+
+namespace abrade::coupling::lifetime
+{
+  namespace
+  {
+    class DemWearSource : public WearSource
+    {
+    public:
+      DemWearSource(const DemCase &c, const std::vector<int> &seeds, double tonnes_per_cycle, JobContext &ctx)
+        : c(c), seeds(seeds), tonnes_per_cycle(tonnes_per_cycle), ctx(ctx)
+      {}
+
+      CycleWear cycle(const fem::SolidSurface &surface, double) override
+      {
+        io::ScopedTimer t(ctx.timers, "dem cycles");
+        CycleWear       w;
+        w.phase_volume.assign(c.phases.size(), 0.0);
+        double payload = 0;
+        for (int seed : seeds)
+          payload += run_one(surface, seed, w) / seeds.size();
+        w.tonnes_per_cycle = tonnes_per_cycle;
+        if (tonnes_per_cycle == 0) // a grab: the tonnes are the DEM's payload
+          {
+            w.tonnes_per_cycle = payload / 1000;
+            if (!(w.tonnes_per_cycle > 0))
+              w.stop = "no payload: nothing above Simulation/Payload height at the end of any phase";
+          }
+        return w;
+      }
+
+      std::vector<std::string> phases() const override
+      {
+        std::vector<std::string> names;
+        for (const auto &p : c.phases)
+          names.push_back(p.first);
+        return names;
+      }
+
+      double archard_coefficient() const override
+      {
+        for (const auto &wc : c.walls)
+          if (wc.solid_model)
+            return wc.wear.archard_coefficient;
+        return 0;
+      }
+
+    private:
+      DemCase          c;
+      std::vector<int> seeds;
+      double           tonnes_per_cycle;
+      JobContext      &ctx;
+
+      /// One cycle of bed @p seed, its knife wear appended to @p w; returns the payload [kg].
+      double run_one(const fem::SolidSurface &surface, int seed, CycleWear &w)
+      {
+        DemCase run = c;
+        run.fill.seed = static_cast<std::uint64_t>(seed);
+        std::vector<std::size_t> knives; // a grab carries two: averaged as two more replicates
+        for (std::size_t k = 0; k < run.walls.size(); ++k)
+          if (run.walls[k].solid_model)
+            {
+              run.walls[k].wall.mesh = place_surface(surface, run.walls[k]);
+              knives.push_back(k);
+            }
+        run.settings.stop_on_error = false; // a cycle reports overlaps and lost particles, and goes on
+        dem::Simulation sim(run.settings);
+        build_simulation(run, sim);
+        io::Log    quiet;
+        JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
+        prepare_bed(run, sim, cycle_ctx, "beds/bed-seed" + std::to_string(seed) + ".bed");
+        sim.set_time(0);
+        std::vector<dem::WearLaws> laws;
+        for (const auto &wc : run.walls)
+          laws.push_back(wc.wear);
+        auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
+        sim.add_hook(wear);
+        double payload = 0;
+        for (const auto &[name, duration] : run.phases)
+          {
+            sim.run_phase(name, duration);
+            if (run.payload_height)
+              payload = std::max(payload, sim.mass_above(*run.payload_height));
+          }
+        w.particle_radius = sim.largest_radius();
+        std::vector<double> volume(surface.vertices.size(), 0.0);
+        for (std::size_t k : knives)
+          {
+            const auto v = wear->vertex_values(k, dem::WearRecorder::archard_volume);
+            for (std::size_t i = 0; i < v.size(); ++i)
+              volume[i] += v[i] / knives.size();
+            for (std::size_t p = 0; p < run.phases.size(); ++p)
+              w.phase_volume[p] += wear->total(k, dem::WearRecorder::archard_volume, run.phases[p].first) /
+                                   (knives.size() * seeds.size());
+          }
+        w.seed_volume.push_back(std::move(volume));
+        return payload;
+      }
+    };
+  } // namespace
+
+  std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &seeds,
+                                                   double tonnes_per_cycle, JobContext &ctx)
+  {
+    return std::make_unique<DemWearSource>(c, seeds, tonnes_per_cycle, ctx);
+  }
+} // namespace abrade::coupling::lifetime

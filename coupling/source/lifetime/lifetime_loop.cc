@@ -1,0 +1,591 @@
+// The lifetime loop (lifetime_loop.h): the knife's wear over its working life. This file holds
+// the loop's bookkeeping; the arithmetic of every step is in its own file (end_of_life.cc,
+// life_interval.cc, update_size.cc, fem/surface_filter.cc, fem/knife_model.cc).
+#include <abrade/common/error.h>
+#include <abrade/common/hash.h>
+#include <abrade/common/progress.h>
+#include <abrade/common/timer.h>
+#include <abrade/coupling/lifetime/lifetime_loop.h>
+#include <abrade/coupling/lifetime/lifetime_outputs.h>
+#include <abrade/coupling/lifetime/state_file.h>
+#include <abrade/coupling/lifetime/update_size.h>
+#include <abrade/dem/parallel.h>
+#include <abrade/fem/surface_filter.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+
+namespace abrade::coupling::lifetime
+{
+  namespace
+  {
+    enum CriterionIndex
+    {
+      depth_criterion,
+      recession_criterion,
+      mass_criterion,
+      n_criteria
+    };
+
+    std::string number(double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+  LifetimeLoop::LifetimeLoop(JobContext &ctx) : ctx(ctx) {}
+  LifetimeLoop::~LifetimeLoop() = default;
+
+  // ---------------------------------------------------------------------------------------------
+  // The algorithm.
+  void LifetimeLoop::run()
+  {
+    set_up();
+    io::ProgressLine progress("lifetime", double(s.max_updates));
+    for (++update; update <= s.max_updates; ++update)
+      {
+        const CycleWear wear = run_cycles();
+        if (!wear.stop.empty())
+          {
+            end = wear.stop;
+            break;
+          }
+        const Rates rates = filter(wear);
+        if (!(rates.largest > 0))
+          {
+            end = "no wear on the knife (does the cycle touch it?)";
+            break;
+          }
+        const Step step = move_knife(rates, choose_cycles(rates));
+        if (!step.moved)
+          {
+            end = step.error;
+            ctx.log.warning(end);
+            warnings.push_back(end);
+            break;
+          }
+        if (worn_through)
+          break;
+        record(wear, rates, step);
+        checkpoint();
+        progress.update(double(update), "update " + std::to_string(update) + "/" + std::to_string(s.max_updates) +
+                                          ", " + std::to_string(long(tonnes)) + " t");
+        if (stop_here())
+          break;
+      }
+    progress.finish();
+    finish();
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Set-up: parameters, knife, wear source, outputs, and the resume.
+  void LifetimeLoop::read_settings()
+  {
+    auto &prm = ctx.parameters.handler();
+    prm.enter_subsection("Lifetime");
+    s.tonnes_per_cycle = prm.get_double("Tonnes per cycle");
+    for (const auto &x : dealii::Utilities::split_string_list(prm.get("Seeds")))
+      s.seeds.push_back(std::stoi(x));
+    s.fixed_cycles  = prm.get_integer("Cycles per update");
+    s.fraction      = prm.get_double("Depth increment fraction");
+    s.smoothing     = prm.get_double("Smoothing radius");
+    s.max_depth     = prm.get_double("Maximum depth");
+    s.max_recession = prm.get_double("Maximum recession");
+    s.max_worn_mass = prm.get_double("Maximum worn mass");
+    s.target_tonnes = prm.get_double("Target tonnes");
+    for (const auto &p : dealii::Utilities::split_string_list(prm.get("Profile planes")))
+      s.planes.push_back(std::stod(p));
+    for (const auto &point : dealii::Utilities::split_string_list(prm.get("Recession points"), ';'))
+      {
+        const auto xyz = dealii::Utilities::split_string_list(point);
+        s.recession_points.emplace_back(std::stod(xyz[0]), std::stod(xyz[1]), std::stod(xyz[2]));
+      }
+    s.max_updates     = prm.get_integer("Maximum updates");
+    s.analytic        = prm.get("Wear source") == "analytic";
+    s.rate_expression = prm.get("Analytic wear rate");
+    s.seed_scatter    = prm.get_double("Analytic seed scatter");
+    prm.leave_subsection();
+
+    if (knife_parameters.from_file)
+      ctx.parameters.fail({"Knife"}, "Geometry", "lifetime runs use the parametric knife for now");
+    if (s.seeds.empty())
+      ctx.parameters.fail({"Lifetime"}, "Seeds", "at least one seed is needed");
+    if (!s.analytic && s.tonnes_per_cycle == 0 && !dem_case.payload_height)
+      ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
+                          "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");
+    if (!s.analytic &&
+        std::none_of(dem_case.walls.begin(), dem_case.walls.end(), [](const auto &w) { return w.solid_model; }))
+      ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
+    if (s.analytic && s.tonnes_per_cycle <= 0)
+      ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle", "the analytic wear rate is per tonne: set Tonnes per cycle > 0");
+    if (s.max_depth <= 0 && s.max_recession <= 0 && s.max_worn_mass <= 0)
+      ctx.parameters.fail({"Lifetime"}, "Maximum depth",
+                          "no end-of-life criterion: set Maximum depth, Maximum recession or Maximum worn mass > 0");
+  }
+
+  void LifetimeLoop::set_up()
+  {
+    init_mpi_once();
+    dem_case         = read_dem_case(ctx.parameters);
+    knife_parameters = read_knife_parameters(ctx.parameters);
+    read_settings();
+    if (s.analytic)
+      try
+        {
+          source = make_analytic_wear_source(s.rate_expression, s.tonnes_per_cycle, s.seeds, s.seed_scatter);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
+        }
+    else
+      source = make_dem_wear_source(dem_case, s.seeds, s.tonnes_per_cycle, ctx);
+
+    ctx.output.subdirectory("beds");
+    fem::KnifeModel::Settings ks;
+    ks.mesh_size      = knife_parameters.mesh_size;
+    ks.density        = knife_parameters.density;
+    ks.work_directory = ctx.output.subdirectory("knife/work");
+    knife             = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
+    knife_output      = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory("knife"), "knife");
+    checkpoints       = std::make_unique<LifetimeCheckpoints>(ctx.output.subdirectory("checkpoint"));
+    hash              = io::fnv1a_hex(ctx.parameters.canonical_text());
+    volume0           = knife->volume();
+    criteria          = {{"maximum depth", s.max_depth},
+                         {"maximum recession", s.max_recession},
+                         {"maximum worn mass", s.max_worn_mass}};
+    history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
+    seed_factors.assign(n_criteria, SeedFactors(s.seeds.size()));
+
+    std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth",
+                                        "max_vertex_displacement", "worn_volume", "worn_mass", "archard_volume",
+                                        "swept_over_archard", "min_scaled_jacobian", "remeshed", "point_recession",
+                                        "wear_rate_spread"};
+    for (const auto &phase : source->phases())
+      columns.push_back("archard_volume_" + phase); // this update's wear per phase of the cycle
+    for (std::size_t p = 1; p < s.recession_points.size(); ++p)
+      columns.push_back("point_recession_" + std::to_string(p + 1));
+    columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z"});
+    // the wear depth (below the design) at the followed points: what a gauge there measures
+    for (std::size_t p = 0; p < s.recession_points.size(); ++p)
+      columns.push_back(p == 0 ? std::string("point_depth") : "point_depth_" + std::to_string(p + 1));
+
+    std::vector<std::string> kept_rows;
+    if (ctx.resume && resume())
+      {
+        std::ifstream old(ctx.output.file("trajectory.csv"));
+        std::string   line;
+        std::getline(old, line); // header
+        while (std::getline(old, line) && long(kept_rows.size()) < update)
+          kept_rows.push_back(line);
+        if (long(kept_rows.size()) < update)
+          throw InputError(ctx.output.file("trajectory.csv"), "has " + std::to_string(kept_rows.size()) +
+                                                                 " rows, the checkpoint " + std::to_string(update) +
+                                                                 " (edited or cut? start afresh without --resume)");
+      }
+    else
+      start_afresh();
+    trajectory.open(ctx.output.file("trajectory.csv"), columns);
+    for (const auto &row : kept_rows)
+      trajectory.raw_row(row);
+    ctx.log.line("Lifetime: knife of " + std::to_string(knife->triangulation().n_active_cells()) + " cells, " +
+                 std::to_string(s.seeds.size()) + " bed seed(s) per update, wear from " +
+                 (s.analytic ? "the analytic rate " + s.rate_expression : std::string("the DEM")));
+  }
+
+  void LifetimeLoop::start_afresh()
+  {
+    update = 0;
+    checkpoints->clear();
+    knife_output->adopt({});
+    knife->write(*knife_output, 0);
+    io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife->surface().as_polydata()); // the design
+    knife->save(checkpoints->knife_file(0)); // the state a rejected first update returns to
+  }
+
+  bool LifetimeLoop::resume()
+  {
+    const long done = checkpoints->resume_point(dem::Parallel::world());
+    if (done <= 0)
+      return false;
+    const std::string file  = checkpoints->state_file(done);
+    const StateFile   state = StateFile::read(file);
+    if (state.text("parameter_hash") != hash)
+      throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
+                               ", now " + hash + "); resume with the same parameter file and --set options");
+    if (state.number("update") != double(done))
+      throw InputError(file, "corrupt lifetime checkpoint (it says update " + state.text("update") + ")");
+    update        = done;
+    cycles        = long(state.number("cycles"));
+    tonnes        = state.number("tonnes");
+    archard_total = state.number("archard_total");
+    s.smoothing   = state.number("smoothing_radius");
+    volume0       = state.number("design_volume");
+    deepest       = state.numbers("deepest_point");
+    const auto t  = state.numbers("history_tonnes");
+    if (long(t.size()) != done + 1 || deepest.size() != 3)
+      throw InputError(file, "corrupt lifetime checkpoint (history of " + std::to_string(t.size()) + " points)");
+    history.assign(t.size(), {0.0, std::vector<double>(n_criteria, 0.0)});
+    for (std::size_t k = 0; k < t.size(); ++k)
+      history[k].tonnes = t[k];
+    for (std::size_t c = 0; c < n_criteria; ++c)
+      {
+        const auto v = state.numbers("history_criterion_" + std::to_string(c));
+        if (v.size() != t.size())
+          throw InputError(file, "corrupt lifetime checkpoint (criterion history " + std::to_string(c) + ")");
+        for (std::size_t k = 0; k < v.size(); ++k)
+          history[k].values[c] = v[k];
+        try
+          {
+            seed_factors[c].set_sums(state.numbers("seed_factor_sums_" + std::to_string(c)));
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw InputError(file, e.what());
+          }
+      }
+    knife->load(checkpoints->knife_file(done));
+    std::vector<double> output_times;
+    for (const auto &p : history)
+      output_times.push_back(p.tonnes);
+    knife_output->adopt(output_times);
+    truncate_profiles(s.planes, done, ctx.output.root() + "/knife");
+    ctx.log.line("Resuming after update " + std::to_string(done) + " (" + std::to_string(cycles) + " cycles)");
+    return true;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // 1. One cycle's wear, per seed.
+  CycleWear LifetimeLoop::run_cycles()
+  {
+    CycleWear wear = source->cycle(knife->surface(), tonnes);
+    if (s.smoothing <= 0 && !s.analytic)
+      s.smoothing = wear.particle_radius; // the particle's footprint (analytic rates: no filter unless asked)
+    return wear;
+  }
+
+  // 2. Filtered on the surface (volume conserving), divided by the vertex areas: depth per cycle.
+  LifetimeLoop::Rates LifetimeLoop::filter(const CycleWear &wear)
+  {
+    io::ScopedTimer          t(ctx.timers, "filter");
+    const fem::SolidSurface &surface = knife->surface();
+    const auto               area    = fem::vertex_areas(surface);
+    Rates                    r;
+    r.mean.assign(surface.vertices.size(), 0.0);
+    for (const auto &volume : wear.seed_volume)
+      {
+        std::vector<double> depth = fem::filter_on_surface(surface, volume, s.smoothing);
+        for (std::size_t v = 0; v < depth.size(); ++v)
+          {
+            depth[v] = area[v] > 0 ? depth[v] / area[v] : 0.0;
+            r.mean[v] += depth[v] / wear.seed_volume.size();
+          }
+        r.seed.push_back(std::move(depth));
+        r.seed_volume.push_back(std::accumulate(volume.begin(), volume.end(), 0.0));
+        r.archard_volume += r.seed_volume.back() / wear.seed_volume.size();
+      }
+    r.largest = *std::max_element(r.mean.begin(), r.mean.end());
+    tonnes_per_cycle_now = wear.tonnes_per_cycle;
+    return r;
+  }
+
+  // 3. How many cycles this update stands for.
+  long LifetimeLoop::choose_cycles(const Rates &rates) const
+  {
+    return cycles_for_update(s.fixed_cycles, s.fraction, knife_parameters.mesh_size, rates.largest);
+  }
+
+  // 4. Move the knife. A surface that cannot be remeshed (it folds where the wear is deepest)
+  //    rejects the step: the knife goes back to its last checkpoint (the state before this
+  //    update) and the update is retried with half the cycles, up to three times; if that fails
+  //    too, the knife stays at the checkpoint and the run ends there. Under MPI every rank moves
+  //    its own copy of the knife: the ranks agree on the outcome (a failure on one is a failure
+  //    on all), so that their knives stay the same.
+  LifetimeLoop::Step LifetimeLoop::move_knife(const Rates &rates, long n)
+  {
+    Step st;
+    st.volume_before = knife->volume();
+    st.depth_before  = knife->wear_depth();
+    st.recession_before = knife->recession_at(s.recession_points);
+    st.followed_mean    = knife->at_followed_points(rates.mean, s.recession_points);
+    for (const auto &seed : rates.seed)
+      st.followed_seed.push_back(knife->at_followed_points(seed, s.recession_points));
+    const fem::SolidSurface before = knife->surface();
+    const dem::Parallel     ranks  = dem::Parallel::world();
+    auto depth = [&](long cycles) {
+      std::vector<double> d(rates.mean.size());
+      for (std::size_t v = 0; v < d.size(); ++v)
+        d[v] = cycles * rates.mean[v];
+      return d;
+    };
+    for (int attempt = 0;; ++attempt)
+      {
+        std::string error;
+        try
+          {
+            io::ScopedTimer t(ctx.timers, "fem update");
+            if (attempt > 0)
+              knife->load(checkpoints->knife_file(update - 1));
+            st.result = knife->apply_wear(depth(n));
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+        if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
+          {
+            st.moved = true;
+            break;
+          }
+        if (error.empty())
+          error = "the knife could not be moved on another MPI rank";
+        if (attempt == 3 || n == 1)
+          {
+            knife->load(checkpoints->knife_file(update - 1)); // the rejected step leaves no trace
+            st.error = "the worn surface could not be remeshed at update " + std::to_string(update) +
+                       ", also with an eighth of the cycles (" + error +
+                       "; it folds where the wear is deepest; a larger Lifetime/Smoothing radius or a finer "
+                       "Knife/Mesh size helps)";
+            return st;
+          }
+        n = std::max(1L, n / 2);
+        ctx.log.warning("update " + std::to_string(update) + ": " + error + "; retried with " + std::to_string(n) +
+                        " cycles");
+      }
+    st.cycles = n;
+    if (!st.result.worn_through.empty())
+      {
+        // end of life within this update: where the depth increment first reaches the local
+        // thickness, as a fraction of the update
+        const auto thickness = fem::local_thickness(before);
+        double     fraction  = 1;
+        for (unsigned v : st.result.worn_through)
+          if (rates.mean[v] > 0)
+            fraction = std::min(fraction, thickness[v] / (n * rates.mean[v]));
+        worn_through        = true;
+        worn_through_tonnes = tonnes + fraction * n * tonnes_per_cycle_now;
+        end = "worn through within update " + std::to_string(update);
+        const auto &p = before.vertices[st.result.worn_through.front()];
+        deepest = {p[0], p[1], p[2]};
+      }
+    return st;
+  }
+
+  // 5. Record: the wear depth below the design, volumes, followed points; the seeds' rates of
+  //    every criterion's quantity (for the interval).
+  double LifetimeLoop::add_seed_rates(const Rates &rates, const Step &st)
+  {
+    const long n = st.cycles;
+    // depth: at the vertex that is deepest after this update
+    std::size_t deepest_vertex = 0;
+    double      most           = -1;
+    for (std::size_t v = 0; v < rates.mean.size(); ++v)
+      if (st.depth_before[v] + n * rates.mean[v] > most)
+        most = st.depth_before[v] + n * rates.mean[v], deepest_vertex = v;
+    std::vector<double> seed(rates.seed.size());
+    for (std::size_t k = 0; k < seed.size(); ++k)
+      seed[k] = rates.seed[k][deepest_vertex];
+    seed_factors[depth_criterion].add(double(n), rates.mean[deepest_vertex], seed);
+    std::vector<double> relative(seed.size());
+    for (std::size_t k = 0; k < seed.size(); ++k)
+      relative[k] = rates.mean[deepest_vertex] > 0 ? seed[k] / rates.mean[deepest_vertex] : 1.0;
+    const double spread = life_interval(1.0, relative).relative_sd;
+    // recession: at the followed point that has receded most after this update (its depth rate)
+    std::size_t followed = 0;
+    for (std::size_t p = 1; p < st.followed_mean.size(); ++p)
+      if (st.recession_before[p] + n * st.followed_mean[p] >
+          st.recession_before[followed] + n * st.followed_mean[followed])
+        followed = p;
+    for (std::size_t k = 0; k < seed.size(); ++k)
+      seed[k] = st.followed_seed[k][followed];
+    seed_factors[recession_criterion].add(double(n), st.followed_mean[followed], seed);
+    // worn mass: the whole knife's volume
+    seed_factors[mass_criterion].add(double(n), rates.archard_volume, rates.seed_volume);
+    return spread;
+  }
+
+  void LifetimeLoop::record(const CycleWear &wear, const Rates &rates, const Step &st)
+  {
+    const long n = st.cycles;
+    cycles += n;
+    tonnes += n * wear.tonnes_per_cycle;
+    archard_total += n * rates.archard_volume;
+    const double spread = add_seed_rates(rates, st);
+
+    const fem::SolidSurface &surface = knife->surface();
+    const auto               depth   = knife->wear_depth();
+    const auto               area    = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
+    std::size_t              at      = 0;
+    double                   area_sum = 0, depth_area = 0;
+    for (std::size_t v = 0; v < depth.size(); ++v)
+      {
+        if (depth[v] > depth[at])
+          at = v;
+        area_sum += area[v], depth_area += area[v] * depth[v];
+      }
+    deepest = {surface.vertices[at][0], surface.vertices[at][1], surface.vertices[at][2]};
+    const auto  &travel    = knife->vertex_displacement();
+    const double dmax      = depth[at];
+    const auto   recession = knife->recession_at(s.recession_points);
+    const double worn      = volume0 - knife->volume();
+    const double swept     = st.volume_before - knife->volume();
+    history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),
+                                worn * knife_parameters.density}});
+
+    std::vector<double> row = {double(update), double(cycles), tonnes, dmax, area_sum > 0 ? depth_area / area_sum : 0.0,
+                               *std::max_element(travel.begin(), travel.end()), worn, worn * knife_parameters.density,
+                               n * rates.archard_volume, swept / (n * rates.archard_volume),
+                               st.result.quality.min_scaled_jacobian, st.result.remeshed ? 1.0 : 0.0, recession[0],
+                               spread};
+    for (double pv : wear.phase_volume)
+      row.push_back(n * pv);
+    row.insert(row.end(), recession.begin() + 1, recession.end());
+    row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2]});
+    const auto point_depth = knife->at_followed_points(depth, s.recession_points);
+    row.insert(row.end(), point_depth.begin(), point_depth.end());
+    trajectory.row(row);
+    trajectory.flush();
+
+    write_profiles(surface, knife_parameters.geometry.length, s.planes, update, ctx.output.root() + "/knife");
+    knife->write(*knife_output, tonnes);
+    char stl[64];
+    std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
+    io::write_stl(ctx.output.file(stl), surface.as_polydata());
+    std::ostringstream line;
+    line << "update " << update << ": " << n << " cycles (" << tonnes << " t), wear depth " << dmax
+         << " m (largest vertex displacement " << *std::max_element(travel.begin(), travel.end())
+         << " m), swept/Archard volume " << swept / (n * rates.archard_volume) << (st.result.remeshed ? ", remeshed" : "");
+    ctx.log.line(line.str());
+  }
+
+  // 6. Checkpoint: the knife and the loop's state, written aside and then renamed, so that a
+  //    kill never leaves half of one (lifetime_checkpoints.h).
+  void LifetimeLoop::checkpoint()
+  {
+    knife->save(checkpoints->knife_file_aside(update));
+    StateFile state;
+    state.set("parameter_hash", hash);
+    state.set("update", double(update));
+    state.set("cycles", double(cycles));
+    state.set("tonnes", tonnes);
+    state.set("archard_total", archard_total);
+    state.set("smoothing_radius", s.smoothing);
+    state.set("design_volume", volume0);
+    state.set("deepest_point", deepest);
+    std::vector<double> t;
+    for (const auto &p : history)
+      t.push_back(p.tonnes);
+    state.set("history_tonnes", t);
+    for (std::size_t c = 0; c < n_criteria; ++c)
+      {
+        std::vector<double> v;
+        for (const auto &p : history)
+          v.push_back(p.values[c]);
+        state.set("history_criterion_" + std::to_string(c), v);
+        state.set("seed_factor_sums_" + std::to_string(c), seed_factors[c].sums());
+      }
+    state.write(checkpoints->state_file_aside(update));
+    checkpoints->commit(update);
+  }
+
+  bool LifetimeLoop::stop_here()
+  {
+    const EndOfLife e = end_of_life(criteria, history);
+    if (e.reached)
+      {
+        end = criteria[e.criterion].name + " reached";
+        return true;
+      }
+    if (s.target_tonnes > 0 && tonnes >= s.target_tonnes)
+      {
+        end = "target tonnes reached";
+        return true;
+      }
+    return false;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // The end: tonnes to end of life, interpolated or extrapolated, with the beds' interval.
+  void LifetimeLoop::finish()
+  {
+    EndOfLife   e = end_of_life(criteria, history);
+    std::string criterion = e.criterion == EndOfLife::none ? "none" : criteria[e.criterion].name;
+    std::string method    = e.reached ? "interpolated within update " + std::to_string(e.update)
+                                      : (e.extrapolated ? "extrapolated from the last update's rate" : "none");
+    std::vector<double> where = deepest;
+    std::size_t         factors_of = e.criterion == EndOfLife::none ? depth_criterion : e.criterion;
+    if (worn_through && (!e.reached || worn_through_tonnes < e.tonnes))
+      {
+        e.tonnes = worn_through_tonnes, e.reached = true, e.extrapolated = false;
+        criterion = "worn through", method = "interpolated within update " + std::to_string(update);
+        factors_of = depth_criterion;
+      }
+    if (e.criterion == recession_criterion && !worn_through)
+      {
+        const auto r = knife->recession_at(s.recession_points);
+        const auto p = s.recession_points[std::max_element(r.begin(), r.end()) - r.begin()];
+        where        = {p[0], p[1], p[2]};
+      }
+    const LifeInterval li = life_interval(e.tonnes, seed_factors[factors_of].factors());
+
+    const auto  &depth = knife->wear_depth();
+    const auto  &travel = knife->vertex_displacement();
+    io::Json    &r     = ctx.results["lifetime"];
+    r["end"]           = end;
+    r["cycles"]        = cycles;
+    r["tonnes"]        = tonnes;
+    r["max_depth"]     = depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
+    r["max_vertex_displacement"] = travel.empty() ? 0.0 : *std::max_element(travel.begin(), travel.end());
+    r["worn_volume"]   = volume0 - knife->volume();
+    r["worn_mass"]     = (volume0 - knife->volume()) * knife_parameters.density;
+    r["archard_volume"] = archard_total;
+    r["remeshes"]      = static_cast<long>(knife->n_remeshes());
+    r["smoothing_radius"] = s.smoothing;
+    if (source->archard_coefficient() > 0) // the W the depths scale with (abrade calibrate rescales it)
+      r["archard_coefficient"] = source->archard_coefficient();
+    r["predicted_tonnes_to_end_of_life"] = e.tonnes;
+    r["end_of_life_criterion"]           = criterion;
+    r["end_of_life_method"]              = method;
+    r["end_of_life_where"]               = where;
+    r["extrapolated"]                    = e.extrapolated;
+    r["seeds"]                           = static_cast<long>(li.seeds);
+    r["seed_factors"]                    = seed_factors[factors_of].factors();
+    r["wear_rate_relative_spread"]       = li.relative_sd;
+    r["confidence"]                      = li.confidence;
+    r["predicted_tonnes_low"]            = li.low;
+    r["predicted_tonnes_high"]           = li.high;
+    r["predicted_tonnes_spread_low"]     = li.spread_low;
+    r["predicted_tonnes_spread_high"]    = li.spread_high;
+    r["interval"] = "t-interval of the beds' mean wear rate of the quantity that ends life, carried to the life "
+                    "(n - 1 degrees of freedom; docs/lifetime.md)";
+    if (li.seeds < 2)
+      warnings.push_back("one bed seed: the predicted life has no interval; set Lifetime/Seeds = 1, 2, 3 (three or "
+                         "more beds) for a 95 % t-interval over the beds");
+    else if (li.high == 0 && e.tonnes > 0)
+      warnings.push_back("the beds scatter so much that the life's interval has no upper bound (high = 0): more "
+                         "seeds narrow it");
+    r["warnings"] = std::vector<double>{};
+    for (const auto &w : warnings)
+      {
+        r["warnings"].push_back(w);
+        if (w.rfind("one bed seed", 0) == 0 || w.rfind("the beds scatter", 0) == 0)
+          ctx.log.warning(w);
+      }
+    plot_lifetime(ctx.output.root(), s.planes, knife_parameters.geometry);
+    std::ostringstream line;
+    line << "Lifetime: " << end << " after " << cycles << " cycles; predicted life " << e.tonnes << " t ("
+         << describe(e, criteria) << ")";
+    if (li.seeds > 1 && e.tonnes > 0)
+      line << ", " << 100 * li.confidence << " % interval " << li.low << " ... "
+           << (li.high > 0 ? number(li.high) : std::string("unbounded")) << " t over " << li.seeds << " beds";
+    ctx.log.line(line.str());
+  }
+} // namespace abrade::coupling::lifetime

@@ -1,0 +1,95 @@
+#include <abrade/common/external.h>
+#include <abrade/coupling/lifetime/lifetime_outputs.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace abrade::coupling::lifetime
+{
+  namespace
+  {
+    std::string profile_name(double f)
+    {
+      char name[64];
+      std::snprintf(name, sizeof name, "profile_%.2f", f);
+      return name;
+    }
+  } // namespace
+
+  void write_profiles(const fem::SolidSurface &s, double length, const std::vector<double> &planes, long update,
+                      const std::string &dir)
+  {
+    for (double f : planes)
+      {
+        const double  x0    = f * length;
+        const bool    first = update == 1;
+        std::ofstream out(dir + "/" + profile_name(f) + ".csv", first ? std::ios::trunc : std::ios::app);
+        if (first)
+          out << "# update y0 z0 y1 z1 (one segment per line; a block per update)\n";
+        out.precision(10);
+        for (const auto &t : s.triangles)
+          {
+            std::vector<dealii::Point<3>> cut;
+            for (int e = 0; e < 3; ++e)
+              {
+                const auto &a = s.vertices[t[e]], &b = s.vertices[t[(e + 1) % 3]];
+                if ((a[0] - x0) * (b[0] - x0) < 0)
+                  cut.push_back(a + (x0 - a[0]) / (b[0] - a[0]) * (b - a));
+              }
+            if (cut.size() == 2)
+              out << update << ' ' << cut[0][1] << ' ' << cut[0][2] << ' ' << cut[1][1] << ' ' << cut[1][2] << '\n';
+          }
+        out << "\n\n";
+      }
+  }
+
+  void truncate_profiles(const std::vector<double> &planes, long update, const std::string &dir)
+  {
+    for (double f : planes)
+      {
+        const std::string  path = dir + "/" + profile_name(f) + ".csv";
+        std::ifstream      in(path);
+        std::ostringstream keep;
+        bool               kept = true; // the block the line is in; its blank separators go with it
+        for (std::string l; std::getline(in, l);)
+          {
+            if (!l.empty() && l[0] != '#')
+              kept = std::stol(l.substr(0, l.find(' '))) <= update;
+            if (kept || (!l.empty() && l[0] == '#'))
+              keep << l << '\n';
+          }
+        in.close();
+        std::ofstream(path) << keep.str();
+      }
+  }
+
+  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const fem::KnifeGeometry &k)
+  {
+    std::ofstream gp(dir + "/lifetime.gp");
+    gp << "set terminal pngcairo size 900,600\nset grid\nset datafile separator ','\n"
+          "set output 'trajectory.png'\nset xlabel 'handled material [t]'\n"
+          "set ylabel 'wear depth, recession [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset key left top\n"
+          "plot 'trajectory.csv' using (column('tonnes')):(column('max_depth')*1000*(1-column('wear_rate_spread'))):"
+          "(column('max_depth')*1000*(1+column('wear_rate_spread'))) with filledcurves "
+          "fs transparent solid 0.25 noborder title 'largest depth +- spread of the beds', "
+          "'' using (column('tonnes')):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
+          "'' using (column('tonnes')):(column('point_recession')*1000) with linespoints title 'recession of the followed point', "
+          "'' using (column('tonnes')):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'\n"
+          "set datafile separator whitespace\nunset y2tics\nunset y2label\nset size ratio -1\n";
+    for (double f : planes)
+      {
+        const std::string name = "knife/" + profile_name(f);
+        // the worn end of the knife: three bevel heights, at its true shape
+        gp << "set output '" << name << ".png'\nset xlabel 'y [mm]'\nset ylabel 'z [mm]'\nset key outside\n"
+           << "set xrange [" << -1000 * k.thickness << ":" << 1000 * k.thickness << "]\nset yrange [-2:"
+           << 3000 * k.bevel << "]\n"
+           << "stats '" << name << ".csv' nooutput\n"
+           << "plot for [i=0:STATS_blocks-1] '" << name
+           << ".csv' index i using ($2*1000):($3*1000):(($4-$2)*1000):(($5-$3)*1000) with vectors nohead "
+              "title sprintf('update %d', i+1)\n";
+      }
+    gp.close();
+    io::run_gnuplot(dir, "lifetime.gp");
+  }
+} // namespace abrade::coupling::lifetime

@@ -1,0 +1,117 @@
+#include <abrade/common/error.h>
+#include <abrade/coupling/lifetime/state_file.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace abrade::coupling
+{
+  namespace
+  {
+    std::string format(double x)
+    {
+      char buffer[40];
+      std::snprintf(buffer, sizeof buffer, "%.17g", x);
+      return buffer;
+    }
+
+    std::string trim(const std::string &s)
+    {
+      const auto a = s.find_first_not_of(" \t\r");
+      if (a == std::string::npos)
+        return "";
+      return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+    }
+  } // namespace
+
+  StateFile StateFile::read(const std::string &path)
+  {
+    std::ifstream in(path);
+    if (!in)
+      throw InputError(path, "cannot read the state file");
+    StateFile s;
+    s.path = path;
+    int n  = 0;
+    for (std::string line; std::getline(in, line);)
+      {
+        ++n;
+        if (trim(line).empty() || trim(line)[0] == '#')
+          continue;
+        const auto eq = line.find('=');
+        if (eq == std::string::npos)
+          throw InputError(path + ":" + std::to_string(n), "expected 'key = value', found '" + line.substr(0, 80) + "'");
+        const std::string key = trim(line.substr(0, eq));
+        s.set(key, trim(line.substr(eq + 1)));
+        s.line_of[key] = n;
+      }
+    return s;
+  }
+
+  void StateFile::write(const std::string &file) const
+  {
+    std::ofstream out(file);
+    for (const auto &key : order)
+      out << key << " = " << values.at(key) << '\n';
+    out.close();
+    if (!out)
+      throw RunError("cannot write " + file);
+  }
+
+  void StateFile::set(const std::string &key, const std::string &value)
+  {
+    if (!values.count(key))
+      order.push_back(key);
+    values[key] = value;
+  }
+
+  void StateFile::set(const std::string &key, double value) { set(key, format(value)); }
+
+  void StateFile::set(const std::string &key, const std::vector<double> &v)
+  {
+    std::string s;
+    for (std::size_t k = 0; k < v.size(); ++k)
+      s += (k ? " " : "") + format(v[k]);
+    set(key, s);
+  }
+
+  std::string StateFile::where(const std::string &key) const
+  {
+    const auto it = line_of.find(key);
+    return it == line_of.end() ? path : path + ":" + std::to_string(it->second);
+  }
+
+  const std::string &StateFile::text(const std::string &key) const
+  {
+    const auto it = values.find(key);
+    if (it == values.end())
+      throw InputError(path, "no '" + key + "' in the state file (corrupt, or written by another version)");
+    return it->second;
+  }
+
+  double StateFile::number(const std::string &key) const
+  {
+    const std::vector<double> v = numbers(key);
+    if (v.size() != 1)
+      throw InputError(where(key), "'" + key + "' must be one number");
+    return v[0];
+  }
+
+  std::vector<double> StateFile::numbers(const std::string &key) const
+  {
+    std::vector<double> out;
+    std::istringstream  in(text(key));
+    for (std::string word; in >> word;)
+      {
+        char *end = nullptr;
+        errno     = 0;
+        const double x = std::strtod(word.c_str(), &end);
+        if (end == word.c_str() || *end != '\0' || errno == ERANGE)
+          throw InputError(where(key), "'" + key + "': '" + word.substr(0, 40) + "' is not a number");
+        out.push_back(x);
+      }
+    return out;
+  }
+} // namespace abrade::coupling

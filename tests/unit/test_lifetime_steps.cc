@@ -1,0 +1,287 @@
+// The lifetime loop's steps, each alone (coupling/include/abrade/coupling/lifetime/):
+//  - end of life: the crossing of linear wear is exact for any update size; accelerating wear
+//    sampled at the updates is crossed within 1 %; past the last update the recent rate is used;
+//  - the interval over the beds: Student t quantiles; with a known normal scatter between the
+//    seeds of the analytic wear source, the 95 % interval contains the true life in 90-99 % of
+//    400 runs (coverage), and one seed gives no interval;
+//  - the update size, the key = value state file (bit-exact numbers, errors that name the line);
+//  - the wear filter on the knife's surface: volume conserved, nothing crosses the 30 mm plate
+//    (wear on one face leaves the other face below 1 %, where a straight-distance filter moved it
+//    by 57 %), and it is a Gaussian of the length asked for.
+#include <abrade/common/error.h>
+#include <abrade/coupling/lifetime/end_of_life.h>
+#include <abrade/coupling/lifetime/life_interval.h>
+#include <abrade/coupling/lifetime/state_file.h>
+#include <abrade/coupling/lifetime/update_size.h>
+#include <abrade/coupling/lifetime/wear_source.h>
+#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/surface_filter.h>
+
+#include "fem_test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <numeric>
+
+using namespace abrade;
+using namespace abrade::coupling::lifetime;
+
+namespace
+{
+  std::vector<TrajectoryPoint> sampled(const std::vector<double> &tonnes, double (*depth)(double))
+  {
+    std::vector<TrajectoryPoint> t;
+    for (double x : tonnes)
+      t.push_back({x, {depth(x)}});
+    return t;
+  }
+  double linear(double t) { return 1e-6 * t; }
+  double accelerating(double t) { return 1e-6 * t + 2e-10 * t * t; } // twice the rate at 2,500 t
+} // namespace
+
+TEST(EndOfLife, LinearWearIsCrossedExactlyWithAnyUpdateSize)
+{
+  const std::vector<Criterion> depth = {{"maximum depth", 0.012}};
+  for (const auto &updates : {std::vector<double>{0, 1500, 3000, 4500, 6000, 7500, 9000, 10500, 12000, 13500},
+                              std::vector<double>{0, 1100, 2900, 5000, 9000, 13000},
+                              std::vector<double>{0, 11999.5, 20000}})
+    {
+      const EndOfLife e = end_of_life(depth, sampled(updates, linear));
+      EXPECT_TRUE(e.reached);
+      EXPECT_NEAR(e.tonnes, 12000, 1e-8);
+    }
+}
+
+TEST(EndOfLife, AcceleratingWearIsCrossedWithinOnePercent)
+{
+  // exact crossing of 1e-6 t + 2e-10 t^2 = 0.012
+  const double exact = (-1e-6 + std::sqrt(1e-12 + 4 * 2e-10 * 0.012)) / (2 * 2e-10);
+  std::vector<double> updates;
+  for (double t = 0; t < 1.3 * exact; t += exact / 7.7) // ten updates, the crossing inside the eighth
+    updates.push_back(t);
+  const EndOfLife e = end_of_life({{"maximum depth", 0.012}}, sampled(updates, accelerating));
+  EXPECT_TRUE(e.reached);
+  EXPECT_EQ(e.update, 8);
+  EXPECT_NEAR(e.tonnes / exact, 1, 0.01);
+  EXPECT_GT(std::abs(e.tonnes / exact - 1), 1e-6) << "a chord of a curve is not exact: is the test sampling it?";
+}
+
+TEST(EndOfLife, PastTheRunTheRecentRateExtrapolates)
+{
+  // linear: exact from any last update
+  EndOfLife e = end_of_life({{"maximum depth", 0.012}}, sampled({0, 1000, 2500}, linear));
+  EXPECT_TRUE(e.extrapolated);
+  EXPECT_FALSE(e.reached);
+  EXPECT_NEAR(e.tonnes, 12000, 1e-8);
+  // accelerating: the last update's rate is closer to the truth than the mean rate since the start
+  const double exact = (-1e-6 + std::sqrt(1e-12 + 4 * 2e-10 * 0.012)) / (2 * 2e-10);
+  const auto   run   = sampled({0, 1000, 2000, 3000, 4000}, accelerating);
+  e                  = end_of_life({{"maximum depth", 0.012}}, run);
+  const double mean_rate_life = 4000 * 0.012 / accelerating(4000);
+  EXPECT_LT(std::abs(e.tonnes - exact), 0.5 * std::abs(mean_rate_life - exact));
+  EXPECT_LT(e.tonnes, mean_rate_life);
+}
+
+TEST(EndOfLife, TheFirstCriterionToCrossEndsLife)
+{
+  const std::vector<Criterion> c = {{"maximum depth", 0.012}, {"maximum recession", 0.01}, {"maximum worn mass", 0}};
+  std::vector<TrajectoryPoint> t = {{0, {0, 0, 0}}, {1000, {0.002, 0.004, 5}}, {2000, {0.004, 0.012, 10}}};
+  EndOfLife                    e = end_of_life(c, t);
+  EXPECT_TRUE(e.reached);
+  EXPECT_EQ(e.criterion, 1u);
+  EXPECT_NEAR(e.tonnes, 1750, 1e-9);
+  EXPECT_NE(describe(e, c).find("maximum recession"), std::string::npos);
+  // nothing grows: no prediction
+  e = end_of_life(c, {{0, {0, 0, 0}}, {1000, {0, 0, 0}}});
+  EXPECT_EQ(e.criterion, EndOfLife::none);
+  EXPECT_EQ(e.tonnes, 0);
+}
+
+TEST(LifeInterval, StudentQuantilesAndOneSeed)
+{
+  EXPECT_NEAR(student_t_quantile(0.975, 2), 4.302652730, 1e-8);
+  EXPECT_NEAR(student_t_quantile(0.975, 9), 2.262157163, 1e-8);
+  const LifeInterval one = life_interval(12000, {1.0});
+  EXPECT_EQ(one.low, 0);
+  EXPECT_EQ(one.high, 0);
+  // three seeds 0.9, 1.0, 1.1: s = 0.1, h = 4.303 x 0.1 / sqrt(3)
+  const LifeInterval three = life_interval(12000, {0.9, 1.0, 1.1});
+  const double       h     = 4.302652730 * 0.1 / std::sqrt(3.0);
+  EXPECT_NEAR(three.low, 12000 / (1 + h), 1e-6);
+  EXPECT_NEAR(three.high, 12000 / (1 - h), 1e-6);
+  EXPECT_NEAR(three.spread_low, 12000 / 1.1, 1e-6);
+}
+
+TEST(LifeInterval, SeedFactorsAreCycleWeightedAndMeanOne)
+{
+  SeedFactors f(2);
+  f.add(100, 1.0, {0.8, 1.2});
+  f.add(300, 2.0, {2.2, 1.8});
+  const auto q = f.factors(); // (80 + 660) / 700, (120 + 540) / 700
+  EXPECT_NEAR(q[0], 740.0 / 700, 1e-15);
+  EXPECT_NEAR(q[1], 660.0 / 700, 1e-15);
+  EXPECT_NEAR(0.5 * (q[0] + q[1]), 1, 1e-15);
+  SeedFactors g(2);
+  g.set_sums(f.sums());
+  EXPECT_EQ(g.factors(), q);
+  EXPECT_THROW(g.set_sums({1, 2}), std::invalid_argument);
+}
+
+// The interval's coverage, through the analytic wear source: each run has three seeds whose rate
+// scatters by 10 % (normal) around a known 1 um/t; the loop's arithmetic (seed volumes -> depth
+// rates -> seed factors -> life and interval) predicts the life to 12 mm; the truth is 12,000 t.
+TEST(LifeInterval, NinetyFivePercentIntervalCoversTheTrueLife)
+{
+  fem::SolidSurface square; // 1 m^2, two triangles
+  square.vertices    = {dealii::Point<3>(0, 0, 0), dealii::Point<3>(1, 0, 0), dealii::Point<3>(1, 1, 0),
+                        dealii::Point<3>(0, 1, 0)};
+  square.triangles   = {{0, 1, 2}, {0, 2, 3}};
+  square.boundary_id = {fem::KnifeGeometry::wearable_boundary, fem::KnifeGeometry::wearable_boundary};
+  const int trials = 400;
+  int       covered = 0, low_side = 0;
+  for (int trial = 0; trial < trials; ++trial)
+    {
+      const std::vector<int> seeds = {3 * trial + 1, 3 * trial + 2, 3 * trial + 3};
+      auto                   source = make_analytic_wear_source("1e-6", 10, seeds, 0.1);
+      const CycleWear        w      = source->cycle(square, 0);
+      const auto             area   = fem::vertex_areas(square);
+      SeedFactors            f(seeds.size());
+      std::vector<double>    rate(seeds.size());
+      for (std::size_t s = 0; s < seeds.size(); ++s)
+        rate[s] = w.seed_volume[s][0] / area[0];
+      const double mean = std::accumulate(rate.begin(), rate.end(), 0.0) / rate.size();
+      const long   n    = cycles_for_update(0, 0.1, 0.015, mean);
+      f.add(double(n), mean, rate);
+      const double       life = 0.012 / mean * 10; // tonnes to 12 mm at the seeds' mean rate
+      const LifeInterval li   = life_interval(life, f.factors());
+      covered += li.low <= 12000 && (li.high == 0 || 12000 <= li.high);
+      low_side += 12000 < li.low;
+    }
+  const double coverage = double(covered) / trials;
+  std::cout << "coverage of the 95 % interval: " << covered << " of " << trials << " runs (" << 100 * coverage
+            << " %), true life below the interval in " << low_side << "\n";
+  EXPECT_GE(coverage, 0.90);
+  EXPECT_LE(coverage, 0.99);
+  EXPECT_GT(low_side, 0); // misses on both sides
+  EXPECT_LT(low_side, trials - covered);
+}
+
+TEST(LifeInterval, SeedScatterIsStandardNormal)
+{
+  double sum = 0, sum2 = 0;
+  const int n = 20000;
+  for (int s = 0; s < n; ++s)
+    {
+      const double z = standard_normal_of_seed(s);
+      sum += z, sum2 += z * z;
+    }
+  EXPECT_NEAR(sum / n, 0, 0.03);
+  EXPECT_NEAR(sum2 / n, 1, 0.03);
+}
+
+TEST(UpdateSize, FixedOrAFractionOfTheMeshSize)
+{
+  EXPECT_EQ(cycles_for_update(7, 0.1, 0.015, 1e-6), 7);
+  EXPECT_EQ(cycles_for_update(0, 0.1, 0.015, 1e-6), 1500);
+  EXPECT_EQ(cycles_for_update(0, 0.1, 0.015, 1.0), 1); // at least one
+  EXPECT_EQ(cycles_for_update(0, 0.05, 0.02, 3e-7), 3333);
+}
+
+TEST(StateFile, NumbersComeBackBitForBitAndErrorsNameTheLine)
+{
+  const std::string path = fem::testing::tmp("abrade_state_file.txt");
+  coupling::StateFile out;
+  const double        x = 0.1 + 0.2, y = 1.0 / 3;
+  out.set("hash", "abc123");
+  out.set("x", x);
+  out.set("list", std::vector<double>{y, -2.5e-300, 12000});
+  out.write(path);
+  const auto in = coupling::StateFile::read(path);
+  EXPECT_EQ(in.text("hash"), "abc123");
+  EXPECT_EQ(in.number("x"), x);
+  EXPECT_EQ(in.numbers("list"), (std::vector<double>{y, -2.5e-300, 12000}));
+  EXPECT_THROW(in.number("missing"), InputError);
+  std::ofstream(path) << "hash = abc\nx = 1.5e\n";
+  try
+    {
+      coupling::StateFile::read(path).number("x");
+      FAIL() << "a bad number was read";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find(path + ":2"), std::string::npos) << e.what();
+    }
+  std::ofstream(path) << "no equals sign\n";
+  EXPECT_THROW(coupling::StateFile::read(path), InputError);
+}
+
+namespace
+{
+  fem::SolidSurface knife_surface(double mesh_size)
+  {
+    dealii::Triangulation<3> tria;
+    fem::KnifeGeometry().mesh(tria, mesh_size, fem::testing::tmp("abrade_filter_knife.msh"));
+    return fem::extract_surface(tria);
+  }
+} // namespace
+
+TEST(SurfaceFilter, StaysOnItsFaceAndConservesTheVolume)
+{
+  // the default knife: 0.4 x 0.5 m, 30 mm plate; wear only on the +y side (face and bevel),
+  // filtered over 27.5 mm (the thesis' pellet radius)
+  const fem::SolidSurface s      = knife_surface(0.01);
+  const auto              area   = fem::vertex_areas(s);
+  const auto              normal = s.vertex_normals();
+  std::vector<double>     volume(s.vertices.size(), 0.0);
+  for (std::size_t v = 0; v < volume.size(); ++v)
+    if (s.vertices[v][1] > 0.001)
+      volume[v] = 1e-6 * area[v];
+  const auto filtered = fem::filter_on_surface(s, volume, 0.0275);
+  EXPECT_NEAR(std::accumulate(filtered.begin(), filtered.end(), 0.0) /
+                std::accumulate(volume.begin(), volume.end(), 0.0),
+              1, 1e-12);
+  // depth on the two flat faces at mid-height, away from the ends
+  double worn = 0, opposite = 0;
+  int    n_worn = 0, n_opposite = 0;
+  for (std::size_t v = 0; v < volume.size(); ++v)
+    {
+      const auto &p = s.vertices[v];
+      if (p[2] < 0.15 || p[2] > 0.35 || p[0] < 0.1 || p[0] > 0.3)
+        continue;
+      if (normal[v][1] > 0.99)
+        worn += filtered[v] / area[v], ++n_worn;
+      if (normal[v][1] < -0.99)
+        opposite += filtered[v] / area[v], ++n_opposite;
+    }
+  ASSERT_GT(n_worn, 10);
+  ASSERT_GT(n_opposite, 10);
+  EXPECT_NEAR(worn / n_worn, 1e-6, 1e-9);
+  EXPECT_LT(opposite / n_opposite, 0.01 * worn / n_worn);
+}
+
+TEST(SurfaceFilter, IsAGaussianOfTheRadiusOnAFlatFace)
+{
+  // all the volume at one vertex in the middle of the -y face: its spread's second moment in the
+  // face is 2 r^2 (an isotropic 2-D Gaussian), up to the mesh's paths along edges
+  const fem::SolidSurface s = knife_surface(0.007);
+  std::size_t             centre = 0;
+  double                  best   = 1e9;
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    {
+      const double d = s.vertices[v].distance(dealii::Point<3>(0.2, -0.015, 0.25));
+      if (d < best)
+        best = d, centre = v;
+    }
+  std::vector<double> volume(s.vertices.size(), 0.0);
+  volume[centre]       = 1;
+  const double r       = 0.02;
+  const auto   spread  = fem::filter_on_surface(s, volume, r);
+  double       moment2 = 0;
+  for (std::size_t v = 0; v < s.vertices.size(); ++v)
+    moment2 += spread[v] * s.vertices[v].distance_square(s.vertices[centre]);
+  EXPECT_NEAR(std::sqrt(moment2 / 2) / r, 1, 0.12);
+  EXPECT_LT(spread[centre], 0.05); // spread out, not kept
+}
