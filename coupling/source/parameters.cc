@@ -156,10 +156,11 @@ namespace abrade::coupling
                       "surface with a Gaussian of this length in the distance along the surface (it never "
                       "crosses the plate), conserving the volume. It stands for the particle's footprint; "
                       "0: the largest particle radius (DEM wear), none (analytic wear). Range: >= 0.");
-    prm.declare_entry("Maximum depth", "0.02", Double(0, huge),
+    prm.declare_entry("Maximum depth", "0.012", Double(0, huge),
                       "[m] End of life: the largest wear depth, the distance of the worn surface below the "
                       "design surface (as abrade compare measures a scan; not the vertex displacement, which "
-                      "is 2.9-3x larger at a chisel's tip and corners); 0: no limit. Range: >= 0.");
+                      "is 2.9-3x larger at a chisel's tip and corners); 0: no limit. It cannot exceed half the "
+                      "local plate thickness (a worn-back edge is measured by Maximum recession). Range: >= 0.");
     prm.declare_entry("Recession points", "0.2, 0, 0", List(List(Double(-huge, huge), 3, 3), 1, 100, ";"),
                       "[m] Points of the knife (in its own coordinates: x along the length from 0, y "
                       "across the thickness from its middle, z up from the edge), separated by ';', whose "

@@ -26,12 +26,16 @@ namespace abrade::fem
       std::vector<unsigned> offset, neighbour;
       std::vector<double>   length;
 
-      explicit EdgeGraph(const SolidSurface &s)
+      EdgeGraph(const SolidSurface &s, int only)
       {
         std::vector<std::vector<unsigned>> adj(s.vertices.size());
-        for (const auto &t : s.triangles)
-          for (int e = 0; e < 3; ++e)
-            adj[t[e]].push_back(t[(e + 1) % 3]), adj[t[(e + 1) % 3]].push_back(t[e]);
+        for (std::size_t k = 0; k < s.triangles.size(); ++k)
+          if (only < 0 || s.boundary_id[k] == dealii::types::boundary_id(only))
+            for (int e = 0; e < 3; ++e)
+              {
+                const auto &t = s.triangles[k];
+                adj[t[e]].push_back(t[(e + 1) % 3]), adj[t[(e + 1) % 3]].push_back(t[e]);
+              }
         offset.push_back(0);
         for (std::size_t v = 0; v < adj.size(); ++v)
           {
@@ -75,43 +79,48 @@ namespace abrade::fem
     }
   } // namespace
 
-  std::vector<std::pair<unsigned, double>> geodesic_neighbourhood(const SolidSurface &s, unsigned source, double cutoff)
+  std::vector<std::pair<unsigned, double>> geodesic_neighbourhood(const SolidSurface &s, unsigned source, double cutoff,
+                                                                  int only)
   {
-    const EdgeGraph     g(s);
+    const EdgeGraph     g(s, only);
     std::vector<double> distance(s.vertices.size(), std::numeric_limits<double>::infinity());
     return dijkstra(g, s.vertices.size(), source, cutoff, distance);
   }
 
-  std::vector<double> filter_on_surface(const SolidSurface &s, const std::vector<double> &volume, double radius)
+  std::vector<double> filter_on_surface(const SolidSurface &s, const std::vector<double> &volume, double radius,
+                                        int only)
   {
-    if (radius <= 0)
-      return volume;
-    const std::size_t   n = s.vertices.size();
-    const EdgeGraph     g(s);
-    const auto          area = vertex_areas(s);
-    std::vector<double> distance(n, std::numeric_limits<double>::infinity());
+    const std::size_t   n    = s.vertices.size();
+    const auto          area = vertex_areas(s, only);
     std::vector<double> out(n, 0.0);
-    for (unsigned u = 0; u < n; ++u)
+    double              total_in = 0;
+    for (std::size_t v = 0; v < n; ++v)
+      if (area[v] > 0)
+        total_in += volume[v], out[v] = volume[v];
+    if (radius <= 0)
+      return out;
+    // depth_v = sum_u G_uv V_u / sum_u G_uv A_u (G symmetric: one search from the receiver)
+    const EdgeGraph     g(s, only);
+    std::vector<double> distance(n, std::numeric_limits<double>::infinity());
+    double              total_out = 0;
+    for (unsigned v = 0; v < n; ++v)
       {
-        if (volume[u] == 0)
+        out[v] = 0;
+        if (!(area[v] > 0))
           continue;
-        const auto reached = dijkstra(g, n, u, 3 * radius, distance);
-        double     sum     = 0;
-        std::vector<double> w(reached.size());
-        for (std::size_t k = 0; k < reached.size(); ++k)
+        double num = 0, den = 0;
+        for (const auto &[u, d] : dijkstra(g, n, v, 3 * radius, distance))
           {
-            const double d = reached[k].second;
-            w[k] = std::exp(-0.5 * d * d / (radius * radius)) * area[reached[k].first];
-            sum += w[k];
+            const double w = std::exp(-0.5 * d * d / (radius * radius));
+            num += w * volume[u], den += w * area[u];
           }
-        if (!(sum > 0)) // an isolated vertex keeps its volume
-          {
-            out[u] += volume[u];
-            continue;
-          }
-        for (std::size_t k = 0; k < reached.size(); ++k)
-          out[reached[k].first] += volume[u] * w[k] / sum;
+        out[v] = den > 0 ? area[v] * num / den : 0.0;
+        total_out += out[v];
       }
+    // conserve the volume: one factor for the whole surface
+    if (total_out > 0)
+      for (double &x : out)
+        x *= total_in / total_out;
     return out;
   }
 } // namespace abrade::fem

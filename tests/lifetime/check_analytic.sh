@@ -8,8 +8,12 @@
 #            9.4 mm of uniform wear, an open problem of the remeshing: the run stops there and
 #            extrapolates with its last update's rate); the flat faces recede by rate x
 #            tonnes (1e-6), the chisel tip by rate x tonnes / sin(half edge angle) (1e-4).
-#            With three seeds scattered by 10 %: the summary's interval is the t-interval of its
-#            seed factors (checked here with t(0.975, 2) = 4.3027).
+#            With three seeds scattered by 10 %: the life and the seed factors equal those of the
+#            three seeds run alone (1e-3), the interval is their t-interval (t(0.975, 2) =
+#            4.3027); resumed from update 1 the run gives the same interval; a finished run
+#            resumed does not go on.
+#  through:  one update of 40 mm on one side of the plate: the 12 mm depth limit, crossed in
+#            the same update before the plate wears through, ends life at 12,000 t (1 %).
 #  edge:     2 um/t x exp(-z / 50 mm): points of the flat faces at three heights recede by the
 #            rate at their height times the tonnes (to 2 %).
 #  tip:      1 um/t on the edge line only: the tip's vertices carry it (the followed tip point
@@ -26,10 +30,25 @@ for c in uniform edge tip one_face; do
 done
 "$abrade" run "$dir/analytic_uniform.prm" --output "$out/uniform_crossed" --quiet \
   --set "Lifetime/Maximum depth=0.006" > /dev/null
+cp "$out/uniform_crossed/trajectory.csv" "$out/uniform_crossed.csv"
+"$abrade" run "$dir/analytic_uniform.prm" --output "$out/uniform_crossed" --quiet \
+  --set "Lifetime/Maximum depth=0.006" --resume > /dev/null
+cmp "$out/uniform_crossed.csv" "$out/uniform_crossed/trajectory.csv" || { echo "a finished run resumed went on"; exit 1; }
 "$abrade" run "$dir/analytic_uniform.prm" --output "$out/uniform_coarse" --quiet \
   --set "Lifetime/Depth increment fraction=0.17" --set "Lifetime/Maximum depth=0.007" > /dev/null
-"$abrade" run "$dir/analytic_uniform.prm" --output "$out/uniform_seeds" --quiet \
-  --set "Lifetime/Seeds=4,5,6" --set "Lifetime/Analytic seed scatter=0.1" --set "Lifetime/Maximum updates=2" > /dev/null
+seeds() { "$abrade" run "$dir/analytic_uniform.prm" --output "$out/$1" --quiet --set "Lifetime/Seeds=$2" \
+            --set "Lifetime/Analytic seed scatter=0.1" --set "Lifetime/Maximum updates=2" "${@:3}" > /dev/null; }
+seeds uniform_seeds 4,5,6
+for s in 4 5 6; do seeds "seed_$s" "$s" --set "Lifetime/Cycles per update=1500"; done
+# resume: the three-seed run with its last checkpoint removed redoes update 2 from the state of
+# update 1 (seed factors included); a finished run resumed stays finished
+seeds uniform_seeds_resumed 4,5,6
+rm "$out/uniform_seeds_resumed/checkpoint/loop-2.txt" "$out/uniform_seeds_resumed/checkpoint/knife-2.ckpt"
+seeds uniform_seeds_resumed 4,5,6 --resume
+# the plate wears through (one update of 40 mm on one side) after the depth limit is crossed
+# in the same update: the depth limit ends life, at 12,000 t
+"$abrade" run "$dir/analytic_one_face.prm" --output "$out/one_face_through" --quiet \
+  --set "Lifetime/Cycles per update=40000" --set "Lifetime/Smoothing radius=0" > /dev/null
 python3 - "$out" <<'PY'
 import csv, json, math, sys, os
 out = sys.argv[1]
@@ -73,15 +92,33 @@ for r in rows("one_face"):
     assert worn > 0.9e-6 * float(r["tonnes"]), f"one face: the worn face receded {worn}"
     assert abs(opposite) < 0.01 * worn, f"one face: the opposite face moved {opposite} (worn face {worn})"
     worst[("one_face", "opposite / worn")] = abs(opposite) / worn
+# the interval over three seeds, against the three seeds run alone: seed s alone lives L_s =
+# 12 mm / its rate; the three-seed run's factors are the seeds' rates over their mean, its life
+# 12 mm / the mean rate, its interval the t-interval (t(0.975, 2) = 4.3027) of those factors
 s = summary("uniform_seeds")
+alone = [summary(f"seed_{k}")["predicted_tonnes_to_end_of_life"] for k in (4, 5, 6)]
+rates = [1 / L for L in alone]
+mean_rate = sum(rates) / 3
+f_alone = [r / mean_rate for r in rates]
+# (to 1e-3: each run's depths carry the remeshing's 1e-4)
+for a, b in zip(f_alone, s["seed_factors"]):
+    check("seeds", "factor", a, b, 1e-3)
+check("seeds", "life", 1 / mean_rate, s["predicted_tonnes_to_end_of_life"], 1e-3)
 f = s["seed_factors"]
-n = len(f); mean = sum(f) / n
-sd = math.sqrt(sum((x - mean) ** 2 for x in f) / (n - 1))
-h = 4.302652730 * sd / math.sqrt(n)
-assert abs(mean - 1) < 1e-9 and sd > 0.01, f
+sd = math.sqrt(sum((x - 1) ** 2 for x in f) / 2)
+h = 4.302652730 * sd / math.sqrt(3)
+assert sd > 0.01, f
 life = s["predicted_tonnes_to_end_of_life"]
 check("seeds", "interval low", life / (1 + h), s["predicted_tonnes_low"], 1e-9)
 check("seeds", "interval high", life / (1 - h), s["predicted_tonnes_high"], 1e-9)
 assert s["extrapolated"], s
+r = summary("uniform_seeds_resumed")
+for k in ("predicted_tonnes_to_end_of_life", "predicted_tonnes_low", "predicted_tonnes_high", "seed_factors"):
+    assert r[k] == s[k], f"resumed {k}: {r[k]} vs {s[k]}"
+assert open(os.path.join(out, "uniform_seeds", "trajectory.csv")).read() == \
+       open(os.path.join(out, "uniform_seeds_resumed", "trajectory.csv")).read(), "resumed trajectory differs"
+t = summary("one_face_through")
+assert t["end_of_life_criterion"] == "maximum depth", t
+check("one_face_through", "life", 12000, t["predicted_tonnes_to_end_of_life"], 0.01)
 print("ok, largest relative errors:", ", ".join(f"{k[0]} {k[1]} {v:.1e}" for k, v in worst.items()))
 PY

@@ -13,6 +13,7 @@
 #include <abrade/coupling/lifetime/life_interval.h>
 #include <abrade/coupling/lifetime/state_file.h>
 #include <abrade/coupling/lifetime/update_size.h>
+#include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/surface_filter.h>
@@ -130,9 +131,13 @@ TEST(LifeInterval, SeedFactorsAreCycleWeightedAndMeanOne)
   EXPECT_THROW(g.set_sums({1, 2}), std::invalid_argument);
 }
 
-// The interval's coverage, through the analytic wear source: each run has three seeds whose rate
-// scatters by 10 % (normal) around a known 1 um/t; the loop's arithmetic (seed volumes -> depth
-// rates -> seed factors -> life and interval) predicts the life to 12 mm; the truth is 12,000 t.
+// The interval's coverage, through the loop's own steps (analytic source -> depth_rates ->
+// cycles_for_update -> SeedFactors -> life_interval): each run has three seeds whose rate
+// scatters by 10 % (normal) around a known 1 um/t; the life to 12 mm at the seeds' mean rate is
+// predicted; the truth is 12,000 t. 2000 runs: the binomial standard deviation of a 95 %
+// coverage is 0.5 %, so the band 93.5-96.5 % (3 sigma) fails a 90 % interval (92 %) and the
+// t quantile of n instead of n - 1 degrees of freedom (93.4 %). (The issue asks for 90-99 % in
+// at least 200 runs.)
 TEST(LifeInterval, NinetyFivePercentIntervalCoversTheTrueLife)
 {
   fem::SolidSurface square; // 1 m^2, two triangles
@@ -140,22 +145,20 @@ TEST(LifeInterval, NinetyFivePercentIntervalCoversTheTrueLife)
                         dealii::Point<3>(0, 1, 0)};
   square.triangles   = {{0, 1, 2}, {0, 2, 3}};
   square.boundary_id = {fem::KnifeGeometry::wearable_boundary, fem::KnifeGeometry::wearable_boundary};
-  const int trials = 400;
+  const int trials = 2000;
   int       covered = 0, low_side = 0;
   for (int trial = 0; trial < trials; ++trial)
     {
       const std::vector<int> seeds = {3 * trial + 1, 3 * trial + 2, 3 * trial + 3};
       auto                   source = make_analytic_wear_source("1e-6", 10, seeds, 0.1);
-      const CycleWear        w      = source->cycle(square, 0);
-      const auto             area   = fem::vertex_areas(square);
+      const Rates            r      = depth_rates(square, source->cycle(square, 0), 0.0);
+      const long             n      = cycles_for_update(0, 0.1, 0.015, r.largest);
       SeedFactors            f(seeds.size());
-      std::vector<double>    rate(seeds.size());
-      for (std::size_t s = 0; s < seeds.size(); ++s)
-        rate[s] = w.seed_volume[s][0] / area[0];
-      const double mean = std::accumulate(rate.begin(), rate.end(), 0.0) / rate.size();
-      const long   n    = cycles_for_update(0, 0.1, 0.015, mean);
-      f.add(double(n), mean, rate);
-      const double       life = 0.012 / mean * 10; // tonnes to 12 mm at the seeds' mean rate
+      std::vector<double>    at_deepest;
+      for (const auto &seed : r.seed)
+        at_deepest.push_back(seed[0]);
+      f.add(double(n), r.mean[0], at_deepest);
+      const double       life = end_of_life({{"maximum depth", 0.012}}, {{0, {0}}, {n * 10.0, {n * r.mean[0]}}}).tonnes;
       const LifeInterval li   = life_interval(life, f.factors());
       covered += li.low <= 12000 && (li.high == 0 || 12000 <= li.high);
       low_side += 12000 < li.low;
@@ -163,8 +166,8 @@ TEST(LifeInterval, NinetyFivePercentIntervalCoversTheTrueLife)
   const double coverage = double(covered) / trials;
   std::cout << "coverage of the 95 % interval: " << covered << " of " << trials << " runs (" << 100 * coverage
             << " %), true life below the interval in " << low_side << "\n";
-  EXPECT_GE(coverage, 0.90);
-  EXPECT_LE(coverage, 0.99);
+  EXPECT_GE(coverage, 0.935);
+  EXPECT_LE(coverage, 0.965);
   EXPECT_GT(low_side, 0); // misses on both sides
   EXPECT_LT(low_side, trials - covered);
 }
@@ -233,13 +236,14 @@ TEST(SurfaceFilter, StaysOnItsFaceAndConservesTheVolume)
   // the default knife: 0.4 x 0.5 m, 30 mm plate; wear only on the +y side (face and bevel),
   // filtered over 27.5 mm (the thesis' pellet radius)
   const fem::SolidSurface s      = knife_surface(0.01);
-  const auto              area   = fem::vertex_areas(s);
+  const auto              area   = fem::vertex_areas(s, fem::KnifeGeometry::wearable_boundary);
   const auto              normal = s.vertex_normals();
   std::vector<double>     volume(s.vertices.size(), 0.0);
   for (std::size_t v = 0; v < volume.size(); ++v)
     if (s.vertices[v][1] > 0.001)
       volume[v] = 1e-6 * area[v];
-  const auto filtered = fem::filter_on_surface(s, volume, 0.0275);
+  const int  wearable = fem::KnifeGeometry::wearable_boundary;
+  const auto filtered = fem::filter_on_surface(s, volume, 0.0275, wearable);
   EXPECT_NEAR(std::accumulate(filtered.begin(), filtered.end(), 0.0) /
                 std::accumulate(volume.begin(), volume.end(), 0.0),
               1, 1e-12);
@@ -258,8 +262,34 @@ TEST(SurfaceFilter, StaysOnItsFaceAndConservesTheVolume)
     }
   ASSERT_GT(n_worn, 10);
   ASSERT_GT(n_opposite, 10);
-  EXPECT_NEAR(worn / n_worn, 1e-6, 1e-9);
+  // (0.3 %: where the worn side ends, at the tip, the weighted mean is not locally conservative,
+  // and the one factor that restores the total raises the face slightly)
+  EXPECT_NEAR(worn / n_worn, 1e-6, 5e-9);
   EXPECT_LT(opposite / n_opposite, 0.01 * worn / n_worn);
+}
+
+TEST(SurfaceFilter, KeepsAUniformDepthUniformAtCornersAndTheTip)
+{
+  // 1 um everywhere on the wearable surface: after the filter 1 um at every wearable vertex,
+  // the chisel's tip and the corners with the end faces included (a filter normalised at the
+  // sending vertex gave 4.5 % more at the corners), nothing on the bolted face
+  const fem::SolidSurface s        = knife_surface(0.01);
+  const int               wearable = fem::KnifeGeometry::wearable_boundary;
+  const auto              area     = fem::vertex_areas(s, wearable);
+  std::vector<double>     volume(s.vertices.size());
+  for (std::size_t v = 0; v < volume.size(); ++v)
+    volume[v] = 1e-6 * area[v];
+  const auto filtered = fem::filter_on_surface(s, volume, 0.0275, wearable);
+  int        tip = 0;
+  for (std::size_t v = 0; v < volume.size(); ++v)
+    if (area[v] > 0)
+      {
+        EXPECT_NEAR(filtered[v] / area[v], 1e-6, 1e-18) << "at " << s.vertices[v];
+        tip += s.vertices[v][2] < 1e-9;
+      }
+    else
+      EXPECT_EQ(filtered[v], 0);
+  EXPECT_GT(tip, 10);
 }
 
 TEST(SurfaceFilter, IsAGaussianOfTheRadiusOnAFlatFace)
@@ -278,7 +308,7 @@ TEST(SurfaceFilter, IsAGaussianOfTheRadiusOnAFlatFace)
   std::vector<double> volume(s.vertices.size(), 0.0);
   volume[centre]       = 1;
   const double r       = 0.02;
-  const auto   spread  = fem::filter_on_surface(s, volume, r);
+  const auto   spread  = fem::filter_on_surface(s, volume, r, fem::KnifeGeometry::wearable_boundary);
   double       moment2 = 0;
   for (std::size_t v = 0; v < s.vertices.size(); ++v)
     moment2 += spread[v] * s.vertices[v].distance_square(s.vertices[centre]);

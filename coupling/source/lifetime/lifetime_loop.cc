@@ -9,6 +9,7 @@
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/state_file.h>
 #include <abrade/coupling/lifetime/update_size.h>
+#include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/surface_filter.h>
 
@@ -50,7 +51,8 @@ namespace abrade::coupling::lifetime
   {
     set_up();
     io::ProgressLine progress("lifetime", double(s.max_updates));
-    for (++update; update <= s.max_updates; ++update)
+    const bool finished = update > 0 && stop_here(); // a resumed run that had ended
+    for (++update; !finished && update <= s.max_updates; ++update)
       {
         const CycleWear wear = run_cycles();
         if (!wear.stop.empty())
@@ -118,6 +120,17 @@ namespace abrade::coupling::lifetime
       ctx.parameters.fail({"Knife"}, "Geometry", "lifetime runs use the parametric knife for now");
     if (s.seeds.empty())
       ctx.parameters.fail({"Lifetime"}, "Seeds", "at least one seed is needed");
+    for (std::size_t a = 0; a < s.seeds.size(); ++a)
+      for (std::size_t b = a + 1; b < s.seeds.size(); ++b)
+        if (s.seeds[a] == s.seeds[b])
+          ctx.parameters.fail({"Lifetime"}, "Seeds",
+                              "seed " + std::to_string(s.seeds[a]) +
+                                " is given twice: the same bed twice is no replicate (its interval would be zero)");
+    if (!knife_parameters.from_file && s.max_depth >= 0.5 * knife_parameters.geometry.thickness)
+      warnings.push_back("Maximum depth " + number(s.max_depth) + " m is at least half the plate thickness (" +
+                         number(knife_parameters.geometry.thickness) +
+                         " m): the wear depth below the design is the distance to the nearest design surface and "
+                         "cannot exceed that; the edge's recession is Maximum recession (of the Recession points)");
     if (!s.analytic && s.tonnes_per_cycle == 0 && !dem_case.payload_height)
       ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
                           "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");
@@ -196,6 +209,7 @@ namespace abrade::coupling::lifetime
     trajectory.open(ctx.output.file("trajectory.csv"), columns);
     for (const auto &row : kept_rows)
       trajectory.raw_row(row);
+    trajectory.flush();
     ctx.log.line("Lifetime: knife of " + std::to_string(knife->triangulation().n_active_cells()) + " cells, " +
                  std::to_string(s.seeds.size()) + " bed seed(s) per update, wear from " +
                  (s.analytic ? "the analytic rate " + s.rate_expression : std::string("the DEM")));
@@ -273,34 +287,20 @@ namespace abrade::coupling::lifetime
   }
 
   // 2. Filtered on the surface (volume conserving), divided by the vertex areas: depth per cycle.
-  LifetimeLoop::Rates LifetimeLoop::filter(const CycleWear &wear)
+  Rates LifetimeLoop::filter(const CycleWear &wear)
   {
-    io::ScopedTimer          t(ctx.timers, "filter");
-    const fem::SolidSurface &surface = knife->surface();
-    const auto               area    = fem::vertex_areas(surface);
-    Rates                    r;
-    r.mean.assign(surface.vertices.size(), 0.0);
-    for (const auto &volume : wear.seed_volume)
-      {
-        std::vector<double> depth = fem::filter_on_surface(surface, volume, s.smoothing);
-        for (std::size_t v = 0; v < depth.size(); ++v)
-          {
-            depth[v] = area[v] > 0 ? depth[v] / area[v] : 0.0;
-            r.mean[v] += depth[v] / wear.seed_volume.size();
-          }
-        r.seed.push_back(std::move(depth));
-        r.seed_volume.push_back(std::accumulate(volume.begin(), volume.end(), 0.0));
-        r.archard_volume += r.seed_volume.back() / wear.seed_volume.size();
-      }
-    r.largest = *std::max_element(r.mean.begin(), r.mean.end());
+    io::ScopedTimer t(ctx.timers, "filter");
     tonnes_per_cycle_now = wear.tonnes_per_cycle;
-    return r;
+    return depth_rates(knife->surface(), wear, s.smoothing);
   }
 
   // 3. How many cycles this update stands for.
   long LifetimeLoop::choose_cycles(const Rates &rates) const
   {
-    return cycles_for_update(s.fixed_cycles, s.fraction, knife_parameters.mesh_size, rates.largest);
+    long n = cycles_for_update(s.fixed_cycles, s.fraction, knife_parameters.mesh_size, rates.largest);
+    if (s.target_tonnes > 0 && tonnes_per_cycle_now > 0) // the last update ends at the target
+      n = std::max(1L, std::min(n, long(std::ceil((s.target_tonnes - tonnes) / tonnes_per_cycle_now))));
+    return n;
   }
 
   // 4. Move the knife. A surface that cannot be remeshed (it folds where the wear is deepest)
@@ -314,7 +314,6 @@ namespace abrade::coupling::lifetime
     Step st;
     st.volume_before = knife->volume();
     st.depth_before  = knife->wear_depth();
-    st.recession_before = knife->recession_at(s.recession_points);
     st.followed_mean    = knife->at_followed_points(rates.mean, s.recession_points);
     for (const auto &seed : rates.seed)
       st.followed_seed.push_back(knife->at_followed_points(seed, s.recession_points));
@@ -326,6 +325,7 @@ namespace abrade::coupling::lifetime
         d[v] = cycles * rates.mean[v];
       return d;
     };
+    int halvings = 0;
     for (int attempt = 0;; ++attempt)
       {
         std::string error;
@@ -351,12 +351,16 @@ namespace abrade::coupling::lifetime
           {
             knife->load(checkpoints->knife_file(update - 1)); // the rejected step leaves no trace
             st.error = "the worn surface could not be remeshed at update " + std::to_string(update) +
-                       ", also with an eighth of the cycles (" + error +
+                       (halvings ? ", also with " + std::to_string(n) + " cycles after " + std::to_string(halvings) +
+                                     " halving(s)"
+                                 : std::string()) +
+                       " (" + error +
                        "; it folds where the wear is deepest; a larger Lifetime/Smoothing radius or a finer "
                        "Knife/Mesh size helps)";
             return st;
           }
         n = std::max(1L, n / 2);
+        ++halvings;
         ctx.log.warning("update " + std::to_string(update) + ": " + error + "; retried with " + std::to_string(n) +
                         " cycles");
       }
@@ -367,14 +371,26 @@ namespace abrade::coupling::lifetime
         // thickness, as a fraction of the update
         const auto thickness = fem::local_thickness(before);
         double     fraction  = 1;
+        unsigned   first     = st.result.worn_through.front();
         for (unsigned v : st.result.worn_through)
-          if (rates.mean[v] > 0)
-            fraction = std::min(fraction, thickness[v] / (n * rates.mean[v]));
+          if (rates.mean[v] > 0 && thickness[v] / (n * rates.mean[v]) < fraction)
+            fraction = thickness[v] / (n * rates.mean[v]), first = v;
         worn_through        = true;
         worn_through_tonnes = tonnes + fraction * n * tonnes_per_cycle_now;
         end = "worn through within update " + std::to_string(update);
-        const auto &p = before.vertices[st.result.worn_through.front()];
+        const auto &p = before.vertices[first];
         deepest = {p[0], p[1], p[2]};
+        // the other criteria within the same update, from the depths this update would give
+        // (the depth criterion and the worn mass; whichever is reached first ends life)
+        double depth_end = 0;
+        for (std::size_t v = 0; v < rates.mean.size(); ++v)
+          depth_end = std::max(depth_end, st.depth_before[v] + n * rates.mean[v]);
+        TrajectoryPoint next = history.back();
+        next.tonnes          = tonnes + n * tonnes_per_cycle_now;
+        next.values[depth_criterion] = depth_end;
+        next.values[mass_criterion] += n * rates.archard_volume * knife_parameters.density;
+        worn_through_rival = history;
+        worn_through_rival.push_back(next);
       }
     return st;
   }
@@ -398,12 +414,10 @@ namespace abrade::coupling::lifetime
     for (std::size_t k = 0; k < seed.size(); ++k)
       relative[k] = rates.mean[deepest_vertex] > 0 ? seed[k] / rates.mean[deepest_vertex] : 1.0;
     const double spread = life_interval(1.0, relative).relative_sd;
-    // recession: at the followed point that has receded most after this update (its depth rate)
-    std::size_t followed = 0;
-    for (std::size_t p = 1; p < st.followed_mean.size(); ++p)
-      if (st.recession_before[p] + n * st.followed_mean[p] >
-          st.recession_before[followed] + n * st.followed_mean[followed])
-        followed = p;
+    // recession: at the followed point that has receded most after this update (the seeds'
+    // relative rates there; the tip recedes faster than its depth, by a factor the same for all)
+    const auto  recession = knife->recession_at(s.recession_points);
+    std::size_t followed  = std::max_element(recession.begin(), recession.end()) - recession.begin();
     for (std::size_t k = 0; k < seed.size(); ++k)
       seed[k] = st.followed_seed[k][followed];
     seed_factors[recession_criterion].add(double(n), st.followed_mean[followed], seed);
@@ -522,12 +536,26 @@ namespace abrade::coupling::lifetime
                                       : (e.extrapolated ? "extrapolated from the last update's rate" : "none");
     std::vector<double> where = deepest;
     std::size_t         factors_of = e.criterion == EndOfLife::none ? depth_criterion : e.criterion;
+    if (worn_through)
+      if (const EndOfLife rival = end_of_life(criteria, worn_through_rival);
+          rival.reached && rival.tonnes < worn_through_tonnes)
+        {
+          e = rival, criterion = criteria[e.criterion].name;
+          method = "interpolated within update " + std::to_string(e.update) + " (before the plate wears through)";
+          end    = criterion + " reached";
+          if (e.criterion != depth_criterion)
+            where = {};
+          factors_of = e.criterion;
+          worn_through = false;
+        }
     if (worn_through && (!e.reached || worn_through_tonnes < e.tonnes))
       {
         e.tonnes = worn_through_tonnes, e.reached = true, e.extrapolated = false;
         criterion = "worn through", method = "interpolated within update " + std::to_string(update);
         factors_of = depth_criterion;
       }
+    if (e.criterion == mass_criterion && !worn_through)
+      where = {}; // the whole knife
     if (e.criterion == recession_criterion && !worn_through)
       {
         const auto r = knife->recession_at(s.recession_points);
@@ -579,7 +607,8 @@ namespace abrade::coupling::lifetime
         if (w.rfind("one bed seed", 0) == 0 || w.rfind("the beds scatter", 0) == 0)
           ctx.log.warning(w);
       }
-    plot_lifetime(ctx.output.root(), s.planes, knife_parameters.geometry);
+    if (history.size() > 1) // nothing to plot before the first update
+      plot_lifetime(ctx.output.root(), s.planes, knife_parameters.geometry);
     std::ostringstream line;
     line << "Lifetime: " << end << " after " << cycles << " cycles; predicted life " << e.tonnes << " t ("
          << describe(e, criteria) << ")";

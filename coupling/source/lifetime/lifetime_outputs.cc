@@ -67,7 +67,7 @@ namespace abrade::coupling::lifetime
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const fem::KnifeGeometry &k)
   {
     std::ofstream gp(dir + "/lifetime.gp");
-    gp << "set terminal pngcairo size 900,600\nset grid\nset datafile separator ','\n"
+    gp << "set terminal pngcairo size 900,600\nset grid\nset datafile separator ','\nset datafile columnheaders\n"
           "set output 'trajectory.png'\nset xlabel 'handled material [t]'\n"
           "set ylabel 'wear depth, recession [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset key left top\n"
           "plot 'trajectory.csv' using (column('tonnes')):(column('max_depth')*1000*(1-column('wear_rate_spread'))):"
@@ -76,7 +76,7 @@ namespace abrade::coupling::lifetime
           "'' using (column('tonnes')):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
           "'' using (column('tonnes')):(column('point_recession')*1000) with linespoints title 'recession of the followed point', "
           "'' using (column('tonnes')):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'\n"
-          "set datafile separator whitespace\nunset y2tics\nunset y2label\nset size ratio -1\n";
+          "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
     for (double f : planes)
       {
         const std::string name = "knife/" + profile_name(f);

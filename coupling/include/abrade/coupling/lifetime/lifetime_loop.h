@@ -23,6 +23,7 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
 #include <abrade/coupling/lifetime/life_interval.h>
+#include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/coupling/lifetime_checkpoints.h>
 #include <abrade/common/csv_writer.h>
@@ -60,16 +61,6 @@ namespace abrade::coupling::lifetime
       double                        seed_scatter = 0;
     };
 
-    /// The wear depth per cycle of one update, per seed and its mean [m per surface vertex].
-    struct Rates
-    {
-      std::vector<std::vector<double>> seed;
-      std::vector<double>              mean;
-      double                           largest = 0;
-      double                           archard_volume = 0; ///< per cycle, the seeds' mean [m^3]
-      std::vector<double>              seed_volume;        ///< per cycle and seed [m^3]
-    };
-
     /// The outcome of moving the knife by one update.
     struct Step
     {
@@ -78,9 +69,9 @@ namespace abrade::coupling::lifetime
       fem::KnifeModel::UpdateResult result;
       double                       volume_before = 0;
       std::string                  error;
-      // before the move: the wear depth and the followed points' recession, and the rates at the
-      // followed points (mean and per seed)
-      std::vector<double>              depth_before, recession_before, followed_mean;
+      // before the move: the wear depth, and the depth rates at the followed points (mean and
+      // per seed)
+      std::vector<double>              depth_before, followed_mean;
       std::vector<std::vector<double>> followed_seed;
     };
 
@@ -122,13 +113,14 @@ namespace abrade::coupling::lifetime
     std::vector<Criterion>       criteria;
     std::vector<TrajectoryPoint> history;      ///< per update (and the fresh knife) the criteria's values
     std::vector<SeedFactors>     seed_factors; ///< per criterion
-    std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest
+    std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
 
     // the end of the run
     std::string end = "maximum updates reached";
     bool        worn_through = false;
     double      worn_through_tonnes = 0;
+    std::vector<TrajectoryPoint> worn_through_rival; ///< the history with the worn-through update's end
     std::vector<std::string> warnings;
   };
 } // namespace abrade::coupling::lifetime
