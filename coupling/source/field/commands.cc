@@ -16,7 +16,8 @@ namespace abrade::field
 {
   const char *compare_usage = R"(  abrade compare --predicted WORN --scan SCAN [--reference DESIGN] --output DIR
                  [--scan-units auto|m|mm] [--register-on XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX]
-                 [--no-coarse] [--profile-axis x|y|z] [--profile-planes A,B,...] [--tonnes T]
+                 [--no-coarse | --no-registration] [--profile-axis x|y|z] [--profile-planes A,B,...]
+                 [--tonnes T]
       register a field scan (surface: .stl .ply .obj .vtp; point cloud: .ply .xyz .csv) to the
       predicted worn knife (.stl/.vtu of a run) or the design, and write the deviations
       (comparison.json, deviation.vtp, profile_*.csv/.png, measured_depths.csv)
@@ -93,6 +94,8 @@ namespace abrade::field
         }
       else if (flag == "--no-coarse")
         s.registration.coarse = false;
+      else if (flag == "--no-registration")
+        s.registration.enabled = false;
       else if (flag == "--profile-axis")
         {
           const std::string a = value();

@@ -287,11 +287,12 @@ namespace abrade::field
     const std::vector<double> deviation   = signed_distances(scan_points, surface_distance(predicted));
     r.to_predicted                      = statistics(deviation);
     r.to_predicted.hausdorff            = std::max(r.to_predicted.max_abs, model_to_scan(predicted, scan));
-    std::vector<double> measured, predicted_depth;
+    std::vector<double> measured, predicted_depth, feet;
     if (r.has_reference)
       {
-        // the measured depth: the one definition of wear depth, the lifetime loop's too
-        measured = geometry::wear_depth(surface_distance(reference), scan_points);
+        // the measured depth: the one definition of wear depth, the lifetime loop's too; and the
+        // design point each scan point lies below (where calibrate looks the prediction up)
+        measured = geometry::wear_depth(surface_distance(reference), scan_points, &feet);
         std::vector<double> to_design;
         for (std::size_t i = 0; i < measured.size(); ++i)
           {
@@ -341,10 +342,12 @@ namespace abrade::field
           r.warnings.push_back("measured_depths.csv has no tonnage (pass --tonnes T to use it for calibration)");
         std::ofstream m(out.file("measured_depths.csv"));
         m.precision(10);
+        // the locations are the design points the scan points lie below: material points of the
+        // fresh knife, as `abrade calibrate` reads them
         m << "x,y,z,tonnes,depth\n";
         for (vtkIdType i = 0; i < scan.data->GetNumberOfPoints(); ++i)
           {
-            const double *p = scan.data->GetPoint(i);
+            const double *p = feet.data() + 3 * i;
             m << p[0] << ',' << p[1] << ',' << p[2] << ',';
             if (s.tonnes >= 0)
               m << s.tonnes;

@@ -129,6 +129,15 @@ namespace abrade::field
 
   Registration register_scan(Geometry &scan, const Geometry &model, const RegistrationSettings &settings)
   {
+    if (!settings.enabled) // the scan is in the model's frame already: measured as it is
+      {
+        Registration r;
+        for (int i = 0; i < 16; ++i)
+          r.matrix[i] = i % 5 == 0 ? 1.0 : 0.0;
+        r.points_used = std::min<std::size_t>(settings.max_points, std::size_t(scan.data->GetNumberOfPoints()));
+        r.rms         = rms_distance(landmarks(scan, settings.max_points, Mat4::Identity()), model.data);
+        return r;
+      }
     // candidates: the scan as it is, and principal axes onto the model's (four proper rotations)
     std::vector<Mat4> candidates = {Mat4::Identity()};
     if (settings.coarse)

@@ -69,7 +69,7 @@ namespace abrade::geometry
         }
     }
 
-    double signed_distance(const double q[3], vtkGenericCell *cell) const
+    double signed_distance(const double q[3], vtkGenericCell *cell, double *closest = nullptr) const
     {
       if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
         return std::numeric_limits<double>::quiet_NaN();
@@ -83,6 +83,8 @@ namespace abrade::geometry
       // VTK's, so that distance and sign come from the same point
       const auto        &t = searched[id];
       const ClosestPoint c = closest_point_on_triangle(q, at(t[0]), at(t[1]), at(t[2]));
+      if (closest)
+        closest[0] = c.p[0], closest[1] = c.p[1], closest[2] = c.p[2];
       const V3           d = sub(q, c.p);
       const double       r = std::sqrt(dot(d, d));
       // inside where q - p points against the pseudonormal; on the surface (r = 0) +0
@@ -192,14 +194,17 @@ namespace abrade::geometry
 
   std::size_t SurfaceDistance::n_triangles() const { return impl->n_given; }
 
-  std::vector<double> wear_depth(const SurfaceDistance &design, const std::vector<double> &points)
+  std::vector<double> wear_depth(const SurfaceDistance &design, const std::vector<double> &points,
+                                 std::vector<double> *feet)
   {
     if (points.size() % 3 != 0)
       throw std::invalid_argument("wear_depth: " + std::to_string(points.size()) + " coordinates are not x,y,z triples");
     std::vector<double>    depth(points.size() / 3);
+    if (feet)
+      feet->assign(points.size(), std::numeric_limits<double>::quiet_NaN());
     vtkNew<vtkGenericCell> cell;
     for (std::size_t i = 0; i < depth.size(); ++i)
-      depth[i] = -design.impl->signed_distance(points.data() + 3 * i, cell);
+      depth[i] = -design.impl->signed_distance(points.data() + 3 * i, cell, feet ? feet->data() + 3 * i : nullptr);
     return depth;
   }
 } // namespace abrade::geometry

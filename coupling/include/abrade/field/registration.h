@@ -22,6 +22,7 @@ namespace abrade::field
 
   struct RegistrationSettings
   {
+    bool               enabled = true;         ///< false: the scan is in the model's frame already (no registration)
     bool               coarse = true;          ///< principal-axes candidates; false: ICP from the scan as it is
     std::optional<Box> region;                 ///< register on this part of the model only
     int                iterations = 300;

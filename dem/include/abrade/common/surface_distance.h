@@ -73,9 +73,12 @@ namespace abrade::geometry
   private:
     struct Impl;
     std::unique_ptr<Impl> impl;
-    friend std::vector<double> wear_depth(const SurfaceDistance &, const std::vector<double> &);
+    friend std::vector<double> wear_depth(const SurfaceDistance &, const std::vector<double> &, std::vector<double> *);
   };
 
   /// Wear depth of each point (x,y,z flat): its distance inside the design surface, = -signed_distance (> 0 where material is missing, < 0 outside). The single definition used by the lifetime loop and by compare.
-  std::vector<double> wear_depth(const SurfaceDistance &design, const std::vector<double> &points);
+  /// With @p feet, also the closest design point of each (x,y,z flat): the point of the fresh
+  /// knife that the worn surface lies below, where `abrade calibrate` looks the depth up.
+  std::vector<double> wear_depth(const SurfaceDistance &design, const std::vector<double> &points,
+                                 std::vector<double> *feet = nullptr);
 } // namespace abrade::geometry
