@@ -122,6 +122,20 @@ namespace abrade::fem
     return geometry::wear_depth(*design_distance, points);
   }
 
+  std::vector<double> KnifeModel::wear_depth_below(const std::vector<Point<3>> &points) const
+  {
+    std::vector<double> worn, feet;
+    for (const auto &p : current_surface.vertices)
+      worn.insert(worn.end(), {p[0], p[1], p[2]});
+    const std::vector<double> depth = geometry::wear_depth(*design_distance, worn, &feet);
+    SolidSurface              laid  = current_surface;
+    for (std::size_t v = 0; v < laid.vertices.size(); ++v)
+      laid.vertices[v] = Point<3>(feet[3 * v], feet[3 * v + 1], feet[3 * v + 2]);
+    SolidSurface at;
+    at.vertices = points;
+    return transfer_surface_field(laid, depth, at);
+  }
+
   std::vector<double> KnifeModel::at_followed_points(const std::vector<double> &field,
                                                      const std::vector<Point<3>> &points) const
   {

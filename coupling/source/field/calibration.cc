@@ -1,6 +1,7 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
+#include <abrade/common/surface_distance.h>
 #include <abrade/common/json.h>
 #include <abrade/common/vtk_input.h>
 #include <abrade/field/calibration.h>
@@ -24,6 +25,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <regex>
 #include <sstream>
 
@@ -72,25 +74,52 @@ namespace abrade::field
       return s;
     }
 
-    /// Depth at the material points that were at @p points on the fresh knife, on one output's
-    /// surface: the surface is moved back by its accumulated displacement (the fresh knife's
-    /// configuration), and the depth interpolated linearly at the closest point there.
-    std::vector<double> depth_at(vtkPolyData *surface, const std::vector<std::array<double, 3>> &points)
+    /// The surface's triangles, for a SurfaceDistance.
+    geometry::SurfaceDistance distance_to(vtkPolyData *surface)
     {
-      vtkDataArray *depth        = surface->GetPointData()->GetArray("wear_depth");
-      vtkDataArray *displacement = surface->GetPointData()->GetArray("wear_displacement");
-      vtkNew<vtkPolyData> fresh;
-      fresh->DeepCopy(surface);
-      vtkPoints *pts = fresh->GetPoints();
-      for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+      std::vector<double>              points;
+      std::vector<std::array<long, 3>> triangles;
+      for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
         {
-          double x[3];
-          pts->GetPoint(i, x);
-          const double *d = displacement->GetTuple3(i);
-          pts->SetPoint(i, x[0] - d[0], x[1] - d[1], x[2] - d[2]);
+          const double *x = surface->GetPoint(i);
+          points.insert(points.end(), {x[0], x[1], x[2]});
         }
+      for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          surface->GetCellPoints(c, n, ids);
+          if (n == 3)
+            triangles.push_back({long(ids[0]), long(ids[1]), long(ids[2])});
+        }
+      return geometry::SurfaceDistance(points, triangles);
+    }
+
+    /// The wear depth at the design points @p points, on one output's surface: every point of
+    /// the worn surface lies below its closest design point (its foot; geometry::wear_depth,
+    /// the definition compare and the lifetime loop use), so the worn surface is laid onto the
+    /// design at its feet and its depth interpolated linearly at the closest point there. A
+    /// gauge at a design point, or a scan point's foot (compare's measured_depths.csv), is
+    /// looked up where it is.
+    std::vector<double> depth_at(vtkPolyData *surface, const geometry::SurfaceDistance &design,
+                                 const std::vector<std::array<double, 3>> &points)
+    {
+      vtkDataArray       *depth = surface->GetPointData()->GetArray("wear_depth");
+      vtkNew<vtkPolyData> laid;
+      laid->DeepCopy(surface);
+      std::vector<double> worn;
+      for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+        {
+          const double *x = surface->GetPoint(i);
+          worn.insert(worn.end(), {x[0], x[1], x[2]});
+        }
+      std::vector<double> feet;
+      geometry::wear_depth(design, worn, &feet);
+      vtkPoints *pts = laid->GetPoints();
+      for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+        pts->SetPoint(i, feet[3 * i], feet[3 * i + 1], feet[3 * i + 2]);
       vtkNew<vtkStaticCellLocator> locator;
-      locator->SetDataSet(fresh);
+      locator->SetDataSet(laid);
       locator->BuildLocator();
       std::vector<double> out;
       for (const auto &p : points)
@@ -101,9 +130,9 @@ namespace abrade::field
           locator->FindClosestPoint(p.data(), q, cell, sub, d2);
           vtkIdType        n;
           const vtkIdType *ids;
-          fresh->GetCellPoints(cell, n, ids);
+          laid->GetCellPoints(cell, n, ids);
           double a[3], b[3], c[3];
-          fresh->GetPoint(ids[0], a), fresh->GetPoint(ids[1], b), fresh->GetPoint(ids[2], c);
+          laid->GetPoint(ids[0], a), laid->GetPoint(ids[1], b), laid->GetPoint(ids[2], c);
           const auto w = geometry::barycentric(q, a, b, c);
           out.push_back(w[0] * depth->GetTuple1(ids[0]) + w[1] * depth->GetTuple1(ids[1]) + w[2] * depth->GetTuple1(ids[2]));
         }
@@ -175,6 +204,7 @@ namespace abrade::field
       throw InputError(pvd, "not found: is " + directory + " the output folder of a lifetime run?");
     run.archard_coefficient = io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0);
     const std::regex entry("timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+    std::unique_ptr<geometry::SurfaceDistance> design;
     std::string      line;
     while (std::getline(in, line))
       {
@@ -187,8 +217,10 @@ namespace abrade::field
         if (!s->GetPointData()->GetArray("wear_depth") || !s->GetPointData()->GetArray("wear_displacement") ||
             s->GetNumberOfCells() == 0)
           throw InputError(file, "no knife surface with wear_depth and wear_displacement");
+        if (!design) // the first output is the fresh knife: the design
+          design = std::make_unique<geometry::SurfaceDistance>(distance_to(s));
         run.tonnes.push_back(std::stod(m[1]));
-        run.depth.push_back(depth_at(s, points));
+        run.depth.push_back(depth_at(s, *design, points));
       }
     if (run.tonnes.size() < 2)
       throw InputError(pvd, "fewer than two outputs: the run has not made an update yet");

@@ -463,7 +463,7 @@ namespace abrade::coupling::lifetime
       row.push_back(n * pv);
     row.insert(row.end(), recession.begin() + 1, recession.end());
     row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2]});
-    const auto point_depth = knife->at_followed_points(depth, s.recession_points);
+    const auto point_depth = knife->wear_depth_below(s.recession_points);
     row.insert(row.end(), point_depth.begin(), point_depth.end());
     trajectory.row(row);
     trajectory.flush();

@@ -62,6 +62,10 @@ namespace abrade::fem
     const SolidSurface           &surface() const { return current_surface; }
     /// The wear depth of every vertex of surface(): its distance inside the design surface [m].
     std::vector<double> wear_depth() const;
+    /// The wear depth below the design points @p points (points of the design surface): what a
+    /// gauge there measures. The worn surface is laid onto the design at its vertices' closest
+    /// design points and its depth interpolated there (as `abrade calibrate` looks it up).
+    std::vector<double> wear_depth_below(const std::vector<dealii::Point<3>> &points) const;
     /// How far each vertex of surface() has moved inward since the fresh knife, summed over the
     /// updates [m] (a diagnostic: at edges and corners 2.9-3x the wear depth).
     const std::vector<double>    &vertex_displacement() const { return accumulated; }
