@@ -119,6 +119,11 @@ namespace abrade::field
       std::cerr << "warning: " << w << '\n';
     std::printf("Registered %s (%zu points; scale %g) with an RMS distance of %.3f mm\n", s.scan.c_str(),
                 r.registration.points_used, r.scan_scale, 1e3 * r.registration.rms);
+    if (s.registration.region)
+      std::printf("  RMS distance in the registration region %.3f mm (%zu points), outside it %.3f mm (%zu points: "
+                  "wear and misfit)\n",
+                  1e3 * r.registration.rms_region, r.registration.points_region, 1e3 * r.registration.rms_rest,
+                  r.registration.points_rest);
     print("scan to prediction:", r.to_predicted);
     if (r.has_reference)
       {

@@ -278,12 +278,29 @@ namespace abrade::field
     // on the prediction
     const Geometry &frame = r.has_reference ? reference : predicted;
     r.registration        = register_scan(scan, frame, s.registration);
-    if (r.registration.rms > 0.05 * frame.size())
-      throw InputError(s.scan, "does not overlap the model: after registration its points lie " +
-                                 std::to_string(r.registration.rms) + " m (RMS) from the model's surface, " +
-                                 std::to_string(100 * r.registration.rms / frame.size()) + " % of its size");
-
     const std::vector<double> scan_points = coordinates(scan);
+    // the fit's quality on the region it was made on, and the rest apart: worn points belong to
+    // the rest, and an overlap is judged on the region alone
+    double fit_rms = r.registration.rms;
+    if (s.registration.region)
+      {
+        const std::vector<double> to_frame = signed_distances(scan_points, surface_distance(frame));
+        double                    in = 0, out = 0;
+        for (std::size_t i = 0; i < to_frame.size(); ++i)
+          if (s.registration.region->contains(scan_points.data() + 3 * i))
+            in += to_frame[i] * to_frame[i], ++r.registration.points_region;
+          else
+            out += to_frame[i] * to_frame[i], ++r.registration.points_rest;
+        r.registration.rms_region = r.registration.points_region ? std::sqrt(in / r.registration.points_region) : 0;
+        r.registration.rms_rest   = r.registration.points_rest ? std::sqrt(out / r.registration.points_rest) : 0;
+        fit_rms                   = r.registration.rms_region;
+      }
+    if (fit_rms > 0.05 * frame.size())
+      throw InputError(s.scan, "does not overlap the model: after registration its points lie " + std::to_string(fit_rms) +
+                                 " m (RMS" + (s.registration.region ? ", in the registration region" : "") +
+                                 ") from the model's surface, " + std::to_string(100 * fit_rms / frame.size()) +
+                                 " % of its size");
+
     const std::vector<double> deviation   = signed_distances(scan_points, surface_distance(predicted));
     r.to_predicted                      = statistics(deviation);
     r.to_predicted.hausdorff            = std::max(r.to_predicted.max_abs, model_to_scan(predicted, scan));
@@ -300,6 +317,12 @@ namespace abrade::field
             predicted_depth.push_back(measured[i] + deviation[i]); // the prediction's depth below this point
           }
         r.to_reference           = statistics(to_design);
+        if (s.registration.enabled && !s.registration.region && r.to_reference.p95 > 2e-4)
+          r.warnings.push_back(
+            "registered on the whole scan, its worn part included (95 % of |depth| up to " +
+            std::to_string(1e3 * r.to_reference.p95) +
+            " mm): the worn surface pulls the fit toward the design and the measured depths come out too small; give "
+            "--register-on a box (model coordinates) around surfaces that do not wear (the back, the bolt holes)");
         r.to_reference.hausdorff = std::max(r.to_reference.max_abs, model_to_scan(reference, scan));
         if (scan.closed && predicted.closed && reference.closed)
           {
@@ -371,8 +394,17 @@ namespace abrade::field
     reg["matrix_row_major"] = matrix;
     reg["rms_distance"]     = r.registration.rms;
     reg["points_used"]      = long(r.registration.points_used);
-    reg["on"]               = std::string(r.has_reference ? "design" : "prediction") +
-                (s.registration.region ? " (within the region given)" : " (all of it)");
+    if (s.registration.region)
+      {
+        reg["rms_distance_in_region"]      = r.registration.rms_region;
+        reg["points_in_region"]            = long(r.registration.points_region);
+        reg["rms_distance_outside_region"] = r.registration.rms_rest;
+        reg["points_outside_region"]       = long(r.registration.points_rest);
+      }
+    reg["on"] = !s.registration.enabled
+                  ? std::string("none (--no-registration: the scan is in the model's frame)")
+                  : std::string(r.has_reference ? "design" : "prediction") +
+                      (s.registration.region ? " (within the region given)" : " (all of it)");
     auto put = [](io::Json &j, const DeviationStatistics &d) {
       j["points"] = long(d.n), j["rms"] = d.rms, j["mean"] = d.mean, j["max_abs"] = d.max_abs, j["p95_abs"] = d.p95,
       j["hausdorff"] = d.hausdorff;

@@ -10,6 +10,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTriangle.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkReverseSense.h>
 #include <vtkTriangleFilter.h>
 
 #include <cmath>
@@ -129,6 +131,23 @@ namespace abrade::field
     return c;
   }
 
+  double signed_volume(vtkPolyData *surface)
+  {
+    double v = 0;
+    for (vtkIdType t = 0; t < surface->GetNumberOfCells(); ++t)
+      {
+        vtkIdType        n;
+        const vtkIdType *ids;
+        surface->GetCellPoints(t, n, ids);
+        if (n != 3)
+          continue;
+        double a[3], b[3], c[3];
+        surface->GetPoint(ids[0], a), surface->GetPoint(ids[1], b), surface->GetPoint(ids[2], c);
+        v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+      }
+    return v;
+  }
+
   double Geometry::volume() const
   {
     if (!closed)
@@ -179,6 +198,39 @@ namespace abrade::field
     g.non_manifold_edges = count_edges(g.data, false);
     g.boundary_edges     = count_edges(g.data, true);
     g.closed             = g.non_manifold_edges == 0 && g.boundary_edges == 0;
+    if (g.closed)
+      {
+        // a closed surface must face outward: every signed distance (inside / outside) and the
+        // enclosed volumes rely on it. Inward or mixed triangles (an export that flipped them)
+        // are oriented outward by VTK's normals filter, with a warning.
+        const double before = signed_volume(g.data);
+        vtkNew<vtkPolyDataNormals> orient; // one orientation for all triangles
+        orient->SetInputData(g.data);
+        orient->ConsistencyOn();
+        orient->AutoOrientNormalsOn();
+        orient->SplittingOff();
+        orient->ComputePointNormalsOff();
+        orient->ComputeCellNormalsOff();
+        orient->Update();
+        vtkSmartPointer<vtkPolyData> oriented = orient->GetOutput();
+        if (signed_volume(oriented) < 0) // all of them inward: turned round
+          {
+            vtkNew<vtkReverseSense> reverse;
+            reverse->SetInputData(oriented);
+            reverse->ReverseCellsOn();
+            reverse->ReverseNormalsOff();
+            reverse->Update();
+            oriented = reverse->GetOutput();
+          }
+        const double after = signed_volume(oriented);
+        if (!(before > 0.999999 * after))
+          {
+            g.data = oriented;
+            warnings.push_back(path + ": its triangles face inward" + (before > -0.999999 * after ? " in part" : "") +
+                               " (enclosed volume " + std::to_string(before) + " m^3 instead of " +
+                               std::to_string(after) + " m^3): turned to face outward");
+          }
+      }
     if (g.non_manifold_edges > 0)
       warnings.push_back(path + ": " + std::to_string(g.non_manifold_edges) +
                          " non-manifold edges (edges of more than two triangles): distances are still "

@@ -34,6 +34,10 @@ namespace abrade::field
     std::array<double, 16> matrix;   ///< scan -> model, row-major 4x4
     double                 rms = 0;  ///< of the scan points' distances to the model after it
     std::size_t            points_used = 0;
+    /// With a registration region: the RMS distance of the scan points inside it (what the fit
+    /// saw) and of the rest (wear and misfit), and how many points each has.
+    double                 rms_region = 0, rms_rest = 0;
+    std::size_t            points_region = 0, points_rest = 0;
   };
 
   /// Registers @p scan onto @p model and moves the scan's points into the model's frame.

@@ -28,11 +28,16 @@ namespace abrade::field
     double volume() const;
   };
 
+  /// The volume a triangle surface encloses, signed: > 0 when its triangles face outward
+  /// (counter-clockwise seen from outside), < 0 when they face inward.
+  double signed_volume(vtkPolyData *surface);
+
   /// Reads a surface (.stl, .ply, .obj, .vtp, .vtk, .vtu) or a point cloud (.ply without faces,
   /// .xyz, .csv, .txt: "x y z" or "x,y,z" per line, '#' comments, an optional header line).
   /// Polygons are triangulated and coincident points merged. Throws InputError naming the file
   /// (and the line, for tables) when it is missing, empty or malformed; @p warnings gets a line
-  /// for a non-manifold or open surface.
+  /// for a non-manifold or open surface. A closed surface whose triangles face inward (all or
+  /// some) is turned to face outward, with a warning.
   Geometry read_geometry(const std::string &path, std::vector<std::string> &warnings);
 
   /// Scales the geometry's coordinates by @p factor (millimetres to metres: 0.001).
