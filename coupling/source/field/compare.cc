@@ -4,6 +4,7 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/common/surface_distance.h>
 #include <abrade/field/compare.h>
+#include <abrade/field/worn_volume.h>
 
 #include <vtkCellArray.h>
 #include <vtkCutter.h>
@@ -14,6 +15,8 @@
 #include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkReverseSense.h>
 #include <vtkPolyData.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
@@ -119,20 +122,51 @@ namespace abrade::field
       return worst;
     }
 
-    /// Worn volume within the scanned area: the depth field integrated over the scan's triangles.
-    double integrate_over_scan(const Geometry &scan, const std::vector<double> &depth)
+    /// The scan's triangles turned to face out of the knife, as the design's do: made consistent
+    /// with their neighbours (VTK's normals filter), then all turned round if most of the scan's
+    /// area faces into the design (a scanner's surface has no inside of its own).
+    void orient_like_design(Geometry &scan, const geometry::SurfaceDistance &design)
     {
-      double v = 0;
-      for (vtkIdType t = 0; t < scan.data->GetNumberOfCells(); ++t)
+      vtkNew<vtkPolyDataNormals> consistent;
+      consistent->SetInputData(scan.data);
+      consistent->ConsistencyOn();
+      consistent->AutoOrientNormalsOff();
+      consistent->SplittingOff();
+      consistent->ComputePointNormalsOff();
+      consistent->ComputeCellNormalsOff();
+      consistent->Update();
+      vtkSmartPointer<vtkPolyData> oriented = consistent->GetOutput();
+      const double                 eps      = 1e-4 * scan.size();
+      double                       outward  = 0;
+      for (vtkIdType t = 0; t < oriented->GetNumberOfCells(); ++t)
         {
           vtkIdType        n;
           const vtkIdType *ids;
-          scan.data->GetCellPoints(t, n, ids);
-          double a[3], b[3], c[3];
-          scan.data->GetPoint(ids[0], a), scan.data->GetPoint(ids[1], b), scan.data->GetPoint(ids[2], c);
-          v += vtkTriangle::TriangleArea(a, b, c) * std::max(0.0, (depth[ids[0]] + depth[ids[1]] + depth[ids[2]]) / 3);
+          oriented->GetCellPoints(t, n, ids);
+          if (n != 3)
+            continue;
+          double a[3], b[3], c[3], normal[3];
+          oriented->GetPoint(ids[0], a), oriented->GetPoint(ids[1], b), oriented->GetPoint(ids[2], c);
+          vtkTriangle::ComputeNormal(a, b, c, normal);
+          const double area = vtkTriangle::TriangleArea(a, b, c);
+          double       up[3], down[3];
+          for (int k = 0; k < 3; ++k)
+            {
+              const double centre = (a[k] + b[k] + c[k]) / 3;
+              up[k] = centre + eps * normal[k], down[k] = centre - eps * normal[k];
+            }
+          outward += area * (design.signed_distance(up) > design.signed_distance(down) ? 1 : -1);
         }
-      return v;
+      if (outward < 0)
+        {
+          vtkNew<vtkReverseSense> reverse;
+          reverse->SetInputData(oriented);
+          reverse->ReverseCellsOn();
+          reverse->ReverseNormalsOff();
+          reverse->Update();
+          oriented = reverse->GetOutput();
+        }
+      scan.data = oriented;
     }
 
     void add_array(vtkPolyData *p, const char *name, const std::vector<double> &values)
@@ -332,9 +366,33 @@ namespace abrade::field
           }
         else if (!scan.point_cloud)
           {
-            r.measured_volume  = integrate_over_scan(scan, measured);
-            r.predicted_volume = integrate_over_scan(scan, predicted_depth);
-            r.volume_method    = "depth below the design integrated over the scanned area";
+            // an open scan: the volume between the design and the scan (the prediction) within
+            // the scan's footprint, over space (worn_volume.h)
+            const geometry::SurfaceDistance design = surface_distance(reference);
+            orient_like_design(scan, design);
+            const geometry::SurfaceDistance scanned = surface_distance(scan);
+            double sb[6], db[6];
+            scan.data->GetBounds(sb);
+            reference.data->GetBounds(db);
+            // the box: the design's, within a tenth of the scan's size around the scan, and a few
+            // cells beyond both (a scan that bulges out of the design counts negative: cut off at
+            // the design's faces, noise would add up to a positive volume)
+            std::array<double, 6> box;
+            const double          pad  = 0.1 * scan.size();
+            const double          cell = scan.size() / 400;
+            for (int k = 0; k < 3; ++k)
+              box[k]     = std::max(db[2 * k], sb[2 * k] - pad) - 10 * cell,
+              box[k + 3] = std::min(db[2 * k + 1], sb[2 * k + 1] + pad) + 10 * cell;
+            const WornVolume m    = worn_volume(design, scanned, scanned, box, cell);
+            const WornVolume p    = worn_volume(design, surface_distance(predicted), scanned, box, cell);
+            r.measured_volume     = m.volume;
+            r.predicted_volume    = p.volume;
+            char method[200];
+            std::snprintf(method, sizeof method,
+                          "the volume inside the design and outside the scan (the prediction) within the scan's "
+                          "footprint, on a grid of %.3g mm (signed: noise adds nothing on average)",
+                          1e3 * cell);
+            r.volume_method = method;
           }
         else
           {

@@ -48,6 +48,8 @@ namespace abrade::geometry
     std::vector<V3>                       face_normal;   ///< unit, per searched triangle
     std::vector<std::array<V3, 3>>        edge_normal;   ///< per searched triangle: of its edges (v0,v1), (v1,v2), (v2,v0)
     std::vector<V3>                       vertex_normal; ///< per vertex (at the welded ids)
+    std::vector<std::array<bool, 3>>      edge_on_rim;   ///< per searched triangle: its edges that only it has
+    std::vector<bool>                     vertex_on_rim; ///< per vertex: on such an edge
     vtkSmartPointer<vtkPolyData>          surface;
     vtkSmartPointer<vtkStaticCellLocator> locator;
 
@@ -69,7 +71,24 @@ namespace abrade::geometry
         }
     }
 
-    double signed_distance(const double q[3], vtkGenericCell *cell, double *closest = nullptr) const
+    /// Whether a feature of searched triangle @p t lies on the surface's rim (an open surface's
+    /// boundary): an edge that only this triangle has, or a vertex on one.
+    bool on_rim(vtkIdType t, Feature f) const
+    {
+      switch (f)
+        {
+          case face:
+            return false;
+          case edge01:
+          case edge12:
+          case edge20:
+            return edge_on_rim[t][f - edge01];
+          default:
+            return vertex_on_rim[searched[t][f - vertex0]];
+        }
+    }
+
+    double signed_distance(const double q[3], vtkGenericCell *cell, double *closest = nullptr, bool *rim = nullptr) const
     {
       if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
         return std::numeric_limits<double>::quiet_NaN();
@@ -85,6 +104,8 @@ namespace abrade::geometry
       const ClosestPoint c = closest_point_on_triangle(q, at(t[0]), at(t[1]), at(t[2]));
       if (closest)
         closest[0] = c.p[0], closest[1] = c.p[1], closest[2] = c.p[2];
+      if (rim)
+        *rim = on_rim(id, c.feature);
       const V3           d = sub(q, c.p);
       const double       r = std::sqrt(dot(d, d));
       // inside where q - p points against the pseudonormal; on the surface (r = 0) +0
@@ -117,7 +138,8 @@ namespace abrade::geometry
       weld[v] = first.emplace(V3{m.x[3 * v], m.x[3 * v + 1], m.x[3 * v + 2]}, v).first->second;
 
     // the triangles of positive area, their unit normals and the pseudonormals
-    std::map<std::pair<long, long>, V3> edges; // sum of the unit normals of the faces on each edge
+    std::map<std::pair<long, long>, V3>  edges; // sum of the unit normals of the faces on each edge
+    std::map<std::pair<long, long>, int> faces_on_edge;
     m.vertex_normal.assign(n_points, V3{0, 0, 0});
     for (const auto &given : triangles)
       {
@@ -142,6 +164,7 @@ namespace abrade::geometry
           {
             const long a = t[k], b = t[(k + 1) % 3];
             add(edges[{std::min(a, b), std::max(a, b)}], unit, 1);
+            ++faces_on_edge[{std::min(a, b), std::max(a, b)}];
             // the face's angle at corner k, between its two edges there
             const V3 u = sub(m.at(t[(k + 1) % 3]), m.at(t[k])), w = sub(m.at(t[(k + 2) % 3]), m.at(t[k]));
             const V3 uw = cross(u, w);
@@ -152,11 +175,16 @@ namespace abrade::geometry
       throw std::invalid_argument("SurfaceDistance: no triangle of positive area among " +
                                   std::to_string(triangles.size()));
     m.edge_normal.resize(m.searched.size());
+    m.edge_on_rim.resize(m.searched.size());
+    m.vertex_on_rim.assign(n_points, false);
     for (std::size_t i = 0; i < m.searched.size(); ++i)
       for (int k = 0; k < 3; ++k)
         {
           const long a = m.searched[i][k], b = m.searched[i][(k + 1) % 3];
           m.edge_normal[i][k] = edges.at({std::min(a, b), std::max(a, b)});
+          m.edge_on_rim[i][k] = faces_on_edge.at({std::min(a, b), std::max(a, b)}) == 1;
+          if (m.edge_on_rim[i][k])
+            m.vertex_on_rim[a] = m.vertex_on_rim[b] = true;
         }
 
     // the locator on a vtkPolyData of the searched triangles (cell i is searched[i]), in double
@@ -183,6 +211,12 @@ namespace abrade::geometry
   SurfaceDistance::~SurfaceDistance()                                     = default;
   SurfaceDistance::SurfaceDistance(SurfaceDistance &&) noexcept            = default;
   SurfaceDistance &SurfaceDistance::operator=(SurfaceDistance &&) noexcept = default;
+
+  double SurfaceDistance::signed_distance(const double q[3], bool &on_rim) const
+  {
+    thread_local const vtkSmartPointer<vtkGenericCell> cell = vtkSmartPointer<vtkGenericCell>::New();
+    return impl->signed_distance(q, cell, nullptr, &on_rim);
+  }
 
   double SurfaceDistance::signed_distance(const double q[3]) const
   {
