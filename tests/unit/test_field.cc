@@ -242,6 +242,74 @@ TEST(FieldCompare, NoisyOpenScanOfAnUnwornKnifeHasNoVolume)
   EXPECT_EQ(r.predicted_volume, 0);
 }
 
+// The W interval's coverage with what field data and DEM runs have: the measurements' errors are
+// correlated along the knife (a 10 mm correlation length: an AR(1) sequence over 200 points 2 mm
+// apart, 5 % of the depth), and the run's wear rate is the mean of three beds that scatter by
+// 10 % (normal). Over 400 synthetic calibrations the 95 % interval (blocks of 50 mm, the beds'
+// spread from their own sample) contains the true W in 90-99 % of them. Treating the points as
+// independent and leaving out the beds, as before, covers it far less often (printed).
+TEST(FieldCalibrate, IntervalCoversTheTrueWWithCorrelatedErrorsAndBeds)
+{
+  const int    n_points = 200, trials = 400;
+  const double W_true = 3e-14, W0 = 2e-14, spacing = 0.002, corr = 0.01, noise = 0.05, beds_sd = 0.1;
+  std::mt19937                     rng(11);
+  std::normal_distribution<double> z(0, 1);
+  auto                             rate = [](double x) { return 1e-9 * (1 + 0.5 * std::sin(15 * x)); }; // m/t at W_true
+  int covered = 0, covered_naive = 0;
+  for (int trial = 0; trial < trials; ++trial)
+    {
+      // the run: made with W0 on three beds whose mean rate is off by their scatter
+      std::vector<double> bed(3);
+      double              mean_bed = 0;
+      for (double &b : bed)
+        b = 1 + beds_sd * z(rng), mean_bed += b / 3;
+      double var = 0;
+      for (double b : bed)
+        var += (b - mean_bed) * (b - mean_bed) / 2;
+      RunSeries run;
+      run.archard_coefficient   = W0;
+      run.seeds                 = 3;
+      run.replicate_relative_sd = std::sqrt(var) / mean_bed;
+      run.tonnes                = {0, 1e5, 2e5, 3e5, 4e5};
+      std::vector<Measurement> ms;
+      double                   e = 0; // AR(1) error along the knife
+      const double             a = std::exp(-spacing / corr);
+      for (int p = 0; p < n_points; ++p)
+        {
+          const double x = p * spacing;
+          e              = a * e + std::sqrt(1 - a * a) * z(rng);
+          const double T = 2.5e5;
+          ms.push_back({{x, 0, 0}, T, rate(x) * T * (1 + noise * e), ""});
+        }
+      for (double T : run.tonnes)
+        {
+          std::vector<double> d;
+          for (int p = 0; p < n_points; ++p)
+            d.push_back(rate(p * spacing) * W0 / W_true * mean_bed * T);
+          run.depth.push_back(d);
+        }
+      const auto r = calibrate(run, ms, 0.05);
+      covered += r.low <= W_true && W_true <= r.high;
+      // the naive interval: independent points, no beds (as the fit's t-interval was before)
+      double jj = 0, sse = 0;
+      for (std::size_t i = 0; i < ms.size(); ++i)
+        {
+          const double j = run.at(i, ms[i].tonnes) ; // d depth / d s at s ~ scale: depth is linear in s
+          jj += j * j;
+          const double res = run.at(i, r.scale * ms[i].tonnes) - ms[i].depth;
+          sse += res * res;
+        }
+      const double se_naive = std::sqrt(sse / (ms.size() - 1) / jj);
+      covered_naive += std::abs(r.scale * W0 - W_true) <= 1.97 * se_naive * W0;
+    }
+  const double coverage = double(covered) / trials;
+  std::cout << "W interval coverage: " << covered << " of " << trials << " (" << 100 * coverage
+            << " %); independent points without the beds: " << covered_naive << "\n";
+  EXPECT_GE(coverage, 0.90);
+  EXPECT_LE(coverage, 0.99);
+  EXPECT_LT(covered_naive, 0.8 * trials);
+}
+
 TEST(FieldCompare, PredictionWithoutWearAgainstWornScan)
 {
   const double cut = 0.01;

@@ -6,6 +6,8 @@
 #include <abrade/common/vtk_input.h>
 #include <abrade/field/calibration.h>
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include <vtkDataArray.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkNew.h>
@@ -203,6 +205,8 @@ namespace abrade::field
     if (!in)
       throw InputError(pvd, "not found: is " + directory + " the output folder of a lifetime run?");
     run.archard_coefficient = io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0);
+    run.seeds                 = long(io::summary_number(directory + "/summary.json", "seeds").value_or(1));
+    run.replicate_relative_sd = io::summary_number(directory + "/summary.json", "worn_volume_relative_spread").value_or(0);
     const std::regex entry("timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
     std::unique_ptr<geometry::SurfaceDistance> design;
     std::string      line;
@@ -250,7 +254,7 @@ namespace abrade::field
     return 1.960 + 2.4 / dof; // within 0.2 % of the quantile above 30
   }
 
-  CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &ms)
+  CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &ms, double block)
   {
     CalibrationResult r;
     r.directory = run.directory;
@@ -282,9 +286,11 @@ namespace abrade::field
           a = c;
       }
     r.scale = 0.5 * (a + b);
-    // linearised confidence interval: J_i = d depth / d s = T_i D'(s T_i)
-    double jj = 0, mean_m = 0, mean_p = 0;
-    std::vector<double> predicted(ms.size());
+    // the interval (calibration.h): J_i = d depth / d s = T_i D'(s T_i), residuals e_i, summed
+    // per spatial block for the cluster-robust variance of the fit
+    double                                     jj = 0, mean_m = 0, mean_p = 0;
+    std::vector<double>                        predicted(ms.size());
+    std::map<std::array<long, 3>, double>      score; // per block: sum of J_i e_i
     for (std::size_t i = 0; i < ms.size(); ++i)
       {
         const double h = 1e-4 * r.scale;
@@ -292,13 +298,30 @@ namespace abrade::field
         jj += j * j;
         predicted[i] = run.at(i, r.scale * ms[i].tonnes, &r.extrapolated);
         mean_m += ms[i].depth / ms.size(), mean_p += predicted[i] / ms.size();
+        std::array<long, 3> key;
+        for (int k = 0; k < 3; ++k)
+          key[k] = long(std::floor(ms[i].point[k] / block));
+        score[key] += j * (predicted[i] - ms[i].depth);
       }
     const double sum_sq = sse(r.scale);
     r.rms_residual      = std::sqrt(sum_sq / ms.size());
-    const int    dof    = int(ms.size()) - 1;
-    const double se     = dof > 0 && jj > 0 ? std::sqrt(sum_sq / dof / jj) : std::numeric_limits<double>::infinity();
-    r.scale_low         = std::max(0.0, r.scale - student_t95(dof) * se);
-    r.scale_high        = r.scale + student_t95(dof) * se;
+    r.blocks            = long(score.size());
+    const double G      = double(score.size());
+    double       scores = 0;
+    for (const auto &[key, sg] : score)
+      scores += sg * sg;
+    const double inf      = std::numeric_limits<double>::infinity();
+    r.se_fit              = G > 1 && jj > 0 ? std::sqrt(G / (G - 1) * scores) / jj : inf;
+    const double dof_fit  = G - 1;
+    r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;
+    const double dof_rep  = double(run.seeds - 1);
+    const double se       = std::sqrt(r.se_fit * r.se_fit + r.se_replicates * r.se_replicates);
+    const double v_fit = r.se_fit * r.se_fit, v_rep = r.se_replicates * r.se_replicates;
+    r.dof = dof_fit < 1 ? 0.0
+                        : (v_fit + v_rep) * (v_fit + v_rep) / (v_fit * v_fit / dof_fit + (v_rep > 0 ? v_rep * v_rep / dof_rep : 0.0));
+    const double t = r.dof >= 1 ? boost::math::quantile(boost::math::students_t_distribution<double>(r.dof), 0.975) : inf;
+    r.scale_low    = std::max(0.0, r.scale - t * se);
+    r.scale_high   = r.scale + t * se;
     double smm = 0, spp = 0, smp = 0;
     for (std::size_t i = 0; i < ms.size(); ++i)
       {

@@ -23,9 +23,10 @@ namespace abrade::field
       (comparison.json, deviation.vtp, profile_*.csv/.png, measured_depths.csv)
 )";
   const char *calibrate_usage = R"(  abrade calibrate --run DIR [--run DIR]... --measurements FILE.csv [--locations FILE.csv]
-                   --output DIR
+                   [--block SIZE] --output DIR
       fit the Archard coefficient W of each lifetime run to measured wear depths (columns
-      tonnes, depth or depth_mm, x, y, z or location), with its 95 % interval, and rank the
+      tonnes, depth or depth_mm, x, y, z or location), with its 95 % interval (the fit's, over
+      spatial blocks of SIZE m, default 0.05, and the run's bed-to-bed spread), and rank the
       runs by pattern agreement (calibration.json/.md, residuals.csv, calibration.png)
 )";
 
@@ -139,9 +140,16 @@ namespace abrade::field
   {
     std::vector<std::string> runs;
     std::string              table, locations, output;
+    double                   block = 0.05;
     parse(args, calibrate_usage, [&](const std::string &flag, auto value) {
       if (flag == "--run")
         runs.push_back(value());
+      else if (flag == "--block")
+        {
+          block = numbers(flag, value(), 1)[0];
+          if (!(block > 0))
+            throw InputError(flag, "a positive length [m] expected");
+        }
       else if (flag == "--measurements")
         table = value();
       else if (flag == "--locations")
@@ -167,8 +175,14 @@ namespace abrade::field
     for (const auto &dir : runs)
       {
         const RunSeries run = read_run(dir, points);
-        results.push_back(calibrate(run, ms));
+        results.push_back(calibrate(run, ms, block));
         const auto &r = results.back();
+        if (run.seeds < 2 && run.archard_coefficient > 0)
+          std::cerr << "warning: " << dir << ": one bed per update: the DEM's run-to-run noise (a few per cent to "
+                    << "tens of per cent) is not in the interval; run the prediction with Lifetime/Seeds = 1, 2, 3\n";
+        if (r.blocks < 3)
+          std::cerr << "warning: " << dir << ": the measurements fall into " << r.blocks << " block(s) of "
+                    << block << " m: too few for an interval (--block sets the size)\n";
         for (std::size_t i = 0; i < ms.size(); ++i)
           residuals << dir << ',' << ms[i].point[0] << ',' << ms[i].point[1] << ',' << ms[i].point[2] << ','
                     << ms[i].tonnes << ',' << ms[i].depth << ',' << run.at(i, r.scale * ms[i].tonnes) << '\n';
@@ -186,8 +200,11 @@ namespace abrade::field
     std::ofstream md(out.file("calibration.md"));
     md << "# Calibration against " << table << " (" << ms.size() << " measurements)\n\n"
        << "Runs ranked by pattern agreement (correlation of measured and predicted depth at the fitted W).\n\n"
-       << "| rank | run | correlation | W [1/Pa] | 95 % interval | scale W/W0 | RMS residual [mm] |\n"
-       << "|---|---|---|---|---|---|---|\n";
+       << "The 95 % interval combines the fit's standard error (measurements grouped in " << block
+       << " m blocks, cluster-robust) and the run's bed-to-bed spread (its seeds); both are given, as "
+          "relative standard errors of W.\n\n"
+       << "| rank | run | correlation | W [1/Pa] | 95 % interval | scale W/W0 | RMS residual [mm] | fit | beds | blocks |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|\n";
     std::printf("%zu measurements from %s\n", ms.size(), table.c_str());
     for (std::size_t k = 0; k < order.size(); ++k)
       {
@@ -195,12 +212,15 @@ namespace abrade::field
         io::Json    j;
         j["run"] = r.directory, j["rank"] = long(k + 1), j["correlation"] = r.correlation, j["scale"] = r.scale;
         j["scale_low"] = r.scale_low, j["scale_high"] = r.scale_high, j["rms_residual"] = r.rms_residual;
+        j["scale_standard_error_fit"] = r.se_fit, j["scale_standard_error_replicates"] = r.se_replicates;
+        j["blocks"] = r.blocks, j["block_size"] = block, j["degrees_of_freedom"] = r.dof;
         j["archard_coefficient"] = r.archard_coefficient, j["archard_coefficient_low"] = r.low;
         j["archard_coefficient_high"] = r.high, j["extrapolated"] = r.extrapolated;
         json["runs"].push_back(j);
         char line[512];
-        std::snprintf(line, sizeof line, "| %zu | %s | %.4f | %.4g | %.4g ... %.4g | %.4g | %.4g |\n", k + 1,
-                      r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale, 1e3 * r.rms_residual);
+        std::snprintf(line, sizeof line, "| %zu | %s | %.4f | %.4g | %.4g ... %.4g | %.4g | %.4g | %.2g %% | %.2g %% | %ld |\n",
+                      k + 1, r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale,
+                      1e3 * r.rms_residual, 100 * r.se_fit / r.scale, 100 * r.se_replicates / r.scale, r.blocks);
         md << line;
         if (r.archard_coefficient > 0)
           std::printf("  %zu. %s: correlation %.4f, W = %.4g (%.4g ... %.4g) 1/Pa, scale %.4g, RMS residual %.3g mm\n",

@@ -587,6 +587,8 @@ namespace abrade::coupling::lifetime
     r["seeds"]                           = static_cast<long>(li.seeds);
     r["seed_factors"]                    = seed_factors[factors_of].factors();
     r["wear_rate_relative_spread"]       = li.relative_sd;
+    // the beds' spread of the whole knife's worn volume (abrade calibrate's replicate part)
+    r["worn_volume_relative_spread"] = life_interval(1.0, seed_factors[mass_criterion].factors()).relative_sd;
     r["confidence"]                      = li.confidence;
     r["predicted_tonnes_low"]            = li.low;
     r["predicted_tonnes_high"]           = li.high;

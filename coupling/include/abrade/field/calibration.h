@@ -11,8 +11,20 @@
 // series (knife/knife.pvd: the surface's accumulated wear depth per update, followed at the
 // material point that was there on the fresh knife). Wear is proportional to W and the geometry
 // evolves with the accumulated wear only, so a run made with W0 predicts D(T; W) = D(T W / W0;
-// W0): the fit is one scale factor s = W / W0 by least squares over the measurements, with a
-// 95 % confidence interval from the residuals (Student t, linearised). The pattern agreement is
+// W0): the fit is one scale factor s = W / W0 by least squares over the measurements.
+//
+// Its 95 % interval has two parts, both reported:
+//  - the fit: neighbouring measurements (the points of a scan, one gauge over several tonnages)
+//    are not independent; their residuals are correlated over lengths of the particle scale. The
+//    measurements are grouped in spatial blocks (cubes of Block size, default 50 mm) and the
+//    variance of s is the cluster-robust (sandwich) one, var = G/(G-1) sum_g (sum_{i in g} J_i
+//    e_i)^2 / (sum_i J_i^2)^2 with G blocks and J_i = d depth_i / d s, on G - 1 degrees of
+//    freedom (treating thousands of scan points as independent made the interval far too narrow);
+//  - the DEM's replicate spread: the run's wear rate is the mean over its beds (Lifetime/Seeds),
+//    whose relative standard error s_v / sqrt(n) (s_v: the beds' relative spread of the worn
+//    volume, from the run's summary.json) carries to s in proportion; n - 1 degrees of freedom.
+// They add in quadrature, the degrees of freedom by Welch-Satterthwaite. A run of one bed has no
+// replicate part: a warning says so. The pattern agreement is
 // the correlation of measured and predicted depths at the fitted scale, independent of the
 // magnitude: the candidate runs (the knife SFC of a sweep, say) are ranked by it.
 #include <array>
@@ -36,6 +48,8 @@ namespace abrade::field
   {
     std::string                      directory;
     double                           archard_coefficient = 0; ///< W0 from summary.json (0: unknown)
+    long                             seeds = 1;                ///< the run's beds per update
+    double                           replicate_relative_sd = 0; ///< the beds' relative spread of the worn volume
     std::vector<double>              tonnes;                   ///< per output
     std::vector<std::vector<double>> depth;                    ///< [output][point]
     /// Depth at point @p p after @p t tonnes, linear in t between outputs, extrapolated linearly
@@ -49,13 +63,17 @@ namespace abrade::field
   {
     std::string directory;
     double      scale = 1, scale_low = 1, scale_high = 1; ///< s = W / W0 and its 95 % interval
+    double      se_fit = 0, se_replicates = 0;            ///< the standard error's two parts (of s)
+    long        blocks = 0;                               ///< spatial blocks of the measurements
+    double      dof = 0;                                  ///< of the interval (Welch-Satterthwaite)
     double      archard_coefficient = 0, low = 0, high = 0; ///< W and its interval (0 when W0 unknown)
     double      rms_residual = 0;
     double      correlation  = 0; ///< measured vs predicted depth at the fitted scale
     bool        extrapolated = false;
   };
 
-  CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &measurements);
+  /// Fits s for @p run; measurements are grouped in cubes of @p block [m] for the interval.
+  CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &measurements, double block = 0.05);
 
   /// Two-sided 95 % Student t quantile for @p dof degrees of freedom.
   double student_t95(int dof);
