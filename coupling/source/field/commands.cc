@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -196,6 +197,16 @@ namespace abrade::field
       order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return results[a].correlation > results[b].correlation; });
+    // can the data tell the runs apart? The correlation's 95 % interval (Fisher z, with the
+    // blocks as the independent samples); a run whose interval overlaps the best one's cannot be
+    // told apart from it by these measurements
+    auto correlation_interval = [](const CalibrationResult &r) {
+      if (r.blocks <= 3 || !(std::abs(r.correlation) < 1))
+        return std::pair<double, double>{r.blocks <= 3 ? -1.0 : r.correlation, r.blocks <= 3 ? 1.0 : r.correlation};
+      const double z = std::atanh(r.correlation), h = 1.959964 / std::sqrt(double(r.blocks - 3));
+      return std::pair<double, double>{std::tanh(z - h), std::tanh(z + h)};
+    };
+    const auto best_interval = correlation_interval(results[order[0]]);
     io::Json      json;
     std::ofstream md(out.file("calibration.md"));
     md << "# Calibration against " << table << " (" << ms.size() << " measurements)\n\n"
@@ -203,8 +214,10 @@ namespace abrade::field
        << "The 95 % interval combines the fit's standard error (measurements grouped in " << block
        << " m blocks, cluster-robust) and the run's bed-to-bed spread (its seeds); both are given, as "
           "relative standard errors of W.\n\n"
-       << "| rank | run | correlation | W [1/Pa] | 95 % interval | scale W/W0 | RMS residual [mm] | fit | beds | blocks |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|\n";
+       << "A run whose correlation's 95 % interval (Fisher z over the blocks) overlaps the best one's cannot be "
+          "told apart from it by these measurements (column 'apart').\n\n"
+       << "| rank | run | correlation | W [1/Pa] | 95 % interval | scale W/W0 | RMS residual [mm] | fit | beds | blocks | apart |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
     std::printf("%zu measurements from %s\n", ms.size(), table.c_str());
     for (std::size_t k = 0; k < order.size(); ++k)
       {
@@ -214,13 +227,26 @@ namespace abrade::field
         j["scale_low"] = r.scale_low, j["scale_high"] = r.scale_high, j["rms_residual"] = r.rms_residual;
         j["scale_standard_error_fit"] = r.se_fit, j["scale_standard_error_replicates"] = r.se_replicates;
         j["blocks"] = r.blocks, j["block_size"] = block, j["degrees_of_freedom"] = r.dof;
+        const auto ci          = correlation_interval(r);
+        const bool apart       = k > 0 && ci.second < best_interval.first;
+        j["correlation_low"]   = ci.first, j["correlation_high"] = ci.second;
+        if (k > 0)
+          j["told_apart_from_the_best"] = apart;
+        char undecided[400] = "";
+        if (k > 0 && !apart)
+          std::snprintf(undecided, sizeof undecided,
+                        "     cannot be told apart from the best by these measurements: the correlations' 95 %% "
+                        "intervals, %.5f ... %.5f and %.5f ... %.5f, overlap\n",
+                        ci.first, ci.second, best_interval.first, best_interval.second);
         j["archard_coefficient"] = r.archard_coefficient, j["archard_coefficient_low"] = r.low;
         j["archard_coefficient_high"] = r.high, j["extrapolated"] = r.extrapolated;
         json["runs"].push_back(j);
         char line[512];
-        std::snprintf(line, sizeof line, "| %zu | %s | %.4f | %.4g | %.4g ... %.4g | %.4g | %.4g | %.2g %% | %.2g %% | %ld |\n",
-                      k + 1, r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale,
-                      1e3 * r.rms_residual, 100 * r.se_fit / r.scale, 100 * r.se_replicates / r.scale, r.blocks);
+        std::snprintf(line, sizeof line,
+                      "| %zu | %s | %.4f | %.4g | %.4g ... %.4g | %.4g | %.4g | %.2g %% | %.2g %% | %ld | %s |\n", k + 1,
+                      r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale,
+                      1e3 * r.rms_residual, 100 * r.se_fit / r.scale, 100 * r.se_replicates / r.scale, r.blocks,
+                      k == 0 ? "best" : (apart ? "yes" : "no"));
         md << line;
         if (r.archard_coefficient > 0)
           std::printf("  %zu. %s: correlation %.4f, W = %.4g (%.4g ... %.4g) 1/Pa, scale %.4g, RMS residual %.3g mm\n",
@@ -229,6 +255,7 @@ namespace abrade::field
         else // an analytic-wear run: no W, the rate's scale
           std::printf("  %zu. %s: correlation %.4f, scale %.4g (%.4g ... %.4g), RMS residual %.3g mm\n", k + 1,
                       r.directory.c_str(), r.correlation, r.scale, r.scale_low, r.scale_high, 1e3 * r.rms_residual);
+        std::fputs(undecided, stdout);
       }
     json["measurements"] = table;
     json.write(out.file("calibration.json"));
