@@ -2,8 +2,10 @@
 # The field loop closes: a lifetime run's own worn surface, compared as if it were a scan
 # (abrade compare against the design, at the run's tonnage) and calibrated on the
 # measured_depths.csv that compare writes, gives the run's own W back: scale 1 +- 0.01 and
-# correlation >= 0.99. Three runs: uniform and edge-concentrated analytic rates, and the small
-# DEM case (the last also registered on the knife's top, z > 0.2 m, which does not wear there).
+# correlation >= 0.99. Four runs: uniform and edge-concentrated analytic rates, one face worn
+# 8 mm (where many worn points lie below one design point: compare writes the scan points too and
+# calibrate looks them up on the predicted surface), and the small DEM case (also registered on
+# the knife's top, z > 0.2 m, which does not wear there).
 # Before the lifetime loop and compare shared one definition of wear depth (the distance below
 # the design), this gave scale 0.90 and correlation 0.66. On the edge run's scan depths the
 # candidate runs are ranked: another pattern (uniform) is told apart from the best, the same
@@ -15,11 +17,16 @@ rm -rf "$out" && mkdir -p "$out"
 "$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --quiet --output "$out/uniform" --set "Lifetime/Maximum updates=3" > /dev/null
 "$abrade" run "$src/tests/lifetime/analytic_edge.prm" --quiet --output "$out/edge" --set "Lifetime/Maximum updates=3" > /dev/null
 "$abrade" run "$src/cases/lifetime/small.prm" --quiet --output "$out/dem" --set "Lifetime/Maximum updates=3" > /dev/null
+# one face worn 8 mm: many points of the worn face lie below one design point near the end faces
+"$abrade" run "$src/tests/lifetime/analytic_one_face.prm" --quiet --output "$out/one_face" \
+  --set "Lifetime/Maximum updates=4" --set "Lifetime/Cycles per update=2000" > /dev/null
 round_trip() { # run, label, registration options...
   local run=$1 label=$2; shift 2
   local tonnes
   tonnes=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/$run/trajectory.csv")
-  "$abrade" compare --predicted "$out/$run/knife/knife_00003.stl" --scan "$out/$run/knife/knife_00003.stl" \
+  local last
+  last=$(printf "knife_%05d.stl" "$(( $(wc -l < "$out/$run/trajectory.csv") - 1 ))")
+  "$abrade" compare --predicted "$out/$run/knife/$last" --scan "$out/$run/knife/$last" \
     --reference "$out/$run/knife/knife_00000.stl" --tonnes "$tonnes" --output "$out/compare_$label" "$@" > /dev/null 2>&1
   "$abrade" calibrate --run "$out/$run" --measurements "$out/compare_$label/measured_depths.csv" \
     --output "$out/calibrate_$label" > /dev/null
@@ -27,6 +34,7 @@ round_trip() { # run, label, registration options...
 round_trip uniform uniform --no-registration
 round_trip edge edge --no-registration
 round_trip dem dem --no-registration
+round_trip one_face one_face --no-registration
 round_trip dem dem_registered --register-on -1,-1,0.2,1,1,1
 # ranking candidate runs on the edge run's scan depths (the run itself left out: it would match
 # them exactly): two runs of the same edge rate with other update sizes (the same pattern) cannot
@@ -41,7 +49,7 @@ python3 - "$out" <<'PY'
 import json, sys, os
 out = sys.argv[1]
 lines = []
-for label in ("uniform", "edge", "dem", "dem_registered"):
+for label in ("uniform", "edge", "dem", "dem_registered", "one_face"):
     r = json.load(open(os.path.join(out, f"calibrate_{label}", "calibration.json")))["runs"][0]
     assert abs(r["scale"] - 1) <= 0.01, f"{label}: scale {r['scale']}"
     assert r["correlation"] >= 0.99, f"{label}: correlation {r['correlation']}"

@@ -104,7 +104,7 @@ namespace abrade::field
     /// gauge at a design point, or a scan point's foot (compare's measured_depths.csv), is
     /// looked up where it is.
     std::vector<double> depth_at(vtkPolyData *surface, const geometry::SurfaceDistance &design,
-                                 const std::vector<std::array<double, 3>> &points)
+                                 const std::vector<Measurement> &measurements)
     {
       vtkDataArray       *depth = surface->GetPointData()->GetArray("wear_depth");
       vtkNew<vtkPolyData> laid;
@@ -120,24 +120,29 @@ namespace abrade::field
       vtkPoints *pts = laid->GetPoints();
       for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
         pts->SetPoint(i, feet[3 * i], feet[3 * i + 1], feet[3 * i + 2]);
-      vtkNew<vtkStaticCellLocator> locator;
-      locator->SetDataSet(laid);
-      locator->BuildLocator();
+      vtkNew<vtkStaticCellLocator> below_design, on_surface;
+      below_design->SetDataSet(laid);
+      below_design->BuildLocator();
+      on_surface->SetDataSet(surface);
+      on_surface->BuildLocator();
+      // the depth interpolated at the closest point of @p mesh (the laid or the actual surface)
+      auto lookup = [&](vtkStaticCellLocator *locator, vtkPolyData *mesh, const double *p) {
+        double    q[3], d2;
+        vtkIdType cell;
+        int       sub;
+        locator->FindClosestPoint(p, q, cell, sub, d2);
+        vtkIdType        n;
+        const vtkIdType *ids;
+        mesh->GetCellPoints(cell, n, ids);
+        double a[3], b[3], c[3];
+        mesh->GetPoint(ids[0], a), mesh->GetPoint(ids[1], b), mesh->GetPoint(ids[2], c);
+        const auto w = geometry::barycentric(q, a, b, c);
+        return w[0] * depth->GetTuple1(ids[0]) + w[1] * depth->GetTuple1(ids[1]) + w[2] * depth->GetTuple1(ids[2]);
+      };
       std::vector<double> out;
-      for (const auto &p : points)
-        {
-          double    q[3], d2;
-          vtkIdType cell;
-          int       sub;
-          locator->FindClosestPoint(p.data(), q, cell, sub, d2);
-          vtkIdType        n;
-          const vtkIdType *ids;
-          laid->GetCellPoints(cell, n, ids);
-          double a[3], b[3], c[3];
-          laid->GetPoint(ids[0], a), laid->GetPoint(ids[1], b), laid->GetPoint(ids[2], c);
-          const auto w = geometry::barycentric(q, a, b, c);
-          out.push_back(w[0] * depth->GetTuple1(ids[0]) + w[1] * depth->GetTuple1(ids[1]) + w[2] * depth->GetTuple1(ids[2]));
-        }
+      for (const auto &m : measurements)
+        out.push_back(m.has_worn_point ? lookup(on_surface, surface, m.worn_point.data())
+                                       : lookup(below_design, laid, m.point.data()));
       return out;
     }
   } // namespace
@@ -187,6 +192,8 @@ namespace abrade::field
           }
         else
           m.point = {number(t, r, "x"), number(t, r, "y"), number(t, r, "z")};
+        if (has(t, "worn_x") && has(t, "worn_y") && has(t, "worn_z"))
+          m.has_worn_point = true, m.worn_point = {number(t, r, "worn_x"), number(t, r, "worn_y"), number(t, r, "worn_z")};
         if (m.tonnes < 0)
           throw InputError(m.where, "negative tonnes");
         out.push_back(m);
@@ -196,7 +203,7 @@ namespace abrade::field
     return out;
   }
 
-  RunSeries read_run(const std::string &directory, const std::vector<std::array<double, 3>> &points)
+  RunSeries read_run(const std::string &directory, const std::vector<Measurement> &measurements)
   {
     RunSeries         run;
     run.directory     = directory;
@@ -224,7 +231,7 @@ namespace abrade::field
         if (!design) // the first output is the fresh knife: the design
           design = std::make_unique<geometry::SurfaceDistance>(distance_to(s));
         run.tonnes.push_back(std::stod(m[1]));
-        run.depth.push_back(depth_at(s, *design, points));
+        run.depth.push_back(depth_at(s, *design, measurements));
       }
     if (run.tonnes.size() < 2)
       throw InputError(pvd, "fewer than two outputs: the run has not made an update yet");
@@ -236,7 +243,7 @@ namespace abrade::field
     std::size_t k = 1;
     while (k + 1 < tonnes.size() && tonnes[k] < t)
       ++k;
-    if (extrapolated && t > tonnes.back())
+    if (extrapolated && t > tonnes.back() * (1 + 1e-6)) // (a fit at the last update is not beyond it)
       *extrapolated = true;
     const double f = (t - tonnes[k - 1]) / (tonnes[k] - tonnes[k - 1]);
     return depth[k - 1][p] + f * (depth[k][p] - depth[k - 1][p]);
@@ -290,7 +297,7 @@ namespace abrade::field
     // per spatial block for the cluster-robust variance of the fit
     double                                     jj = 0, mean_m = 0, mean_p = 0;
     std::vector<double>                        predicted(ms.size());
-    std::map<std::array<long, 3>, double>      score; // per block: sum of J_i e_i
+    std::map<std::array<long, 3>, std::pair<double, double>> score; // per block: sums of J_i e_i and J_i^2
     for (std::size_t i = 0; i < ms.size(); ++i)
       {
         const double h = 1e-4 * r.scale;
@@ -301,17 +308,24 @@ namespace abrade::field
         std::array<long, 3> key;
         for (int k = 0; k < 3; ++k)
           key[k] = long(std::floor(ms[i].point[k] / block));
-        score[key] += j * (predicted[i] - ms[i].depth);
+        score[key].first += j * (predicted[i] - ms[i].depth);
+        score[key].second += j * j;
       }
     const double sum_sq = sse(r.scale);
     r.rms_residual      = std::sqrt(sum_sq / ms.size());
-    r.blocks            = long(score.size());
-    const double G      = double(score.size());
-    double       scores = 0;
-    for (const auto &[key, sg] : score)
-      scores += sg * sg;
+    // the blocks that carry information on s (J = 0 where nothing wears: such blocks would only
+    // add degrees of freedom); the jackknife form of the cluster-robust variance (CR3):
+    // var = (G-1)/G sum_g (S_g / (sum J^2 - Q_g))^2, S_g = sum_g J e, Q_g = sum_g J^2
+    double G = 0, sum = 0;
+    for (const auto &[key, sq] : score)
+      if (sq.second > 1e-12 * jj)
+        ++G;
+    for (const auto &[key, sq] : score)
+      if (sq.second > 1e-12 * jj && jj - sq.second > 0)
+        sum += (sq.first / (jj - sq.second)) * (sq.first / (jj - sq.second));
+    r.blocks              = long(G);
     const double inf      = std::numeric_limits<double>::infinity();
-    r.se_fit              = G > 1 && jj > 0 ? std::sqrt(G / (G - 1) * scores) / jj : inf;
+    r.se_fit              = G > 1 && jj > 0 ? std::sqrt((G - 1) / G * sum) : inf;
     const double dof_fit  = G - 1;
     r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;
     const double dof_rep  = double(run.seeds - 1);

@@ -165,9 +165,6 @@ namespace abrade::field
       throw InputError("command line", std::string("calibrate needs --run, --measurements and --output\nusage:\n") +
                                          calibrate_usage);
     const auto                         ms = read_measurements(table, locations);
-    std::vector<std::array<double, 3>> points;
-    for (const auto &m : ms)
-      points.push_back(m.point);
     io::OutputDirectory            out(output);
     std::vector<CalibrationResult> results;
     std::ofstream                  residuals(out.file("residuals.csv"));
@@ -175,12 +172,15 @@ namespace abrade::field
     residuals << "run,x,y,z,tonnes,measured_depth,predicted_depth\n";
     for (const auto &dir : runs)
       {
-        const RunSeries run = read_run(dir, points);
+        const RunSeries run = read_run(dir, ms);
         results.push_back(calibrate(run, ms, block));
         const auto &r = results.back();
         if (run.seeds < 2 && run.archard_coefficient > 0)
           std::cerr << "warning: " << dir << ": one bed per update: the DEM's run-to-run noise (a few per cent to "
                     << "tens of per cent) is not in the interval; run the prediction with Lifetime/Seeds = 1, 2, 3\n";
+        if (r.correlation < 0.99)
+          std::cerr << "warning: " << dir << ": the predicted pattern does not match the measured one well "
+                    << "(correlation " << r.correlation << "): W's interval assumes the run's pattern is right\n";
         if (r.blocks < 3)
           std::cerr << "warning: " << dir << ": the measurements fall into " << r.blocks << " block(s) of "
                     << block << " m: too few for an interval (--block sets the size)\n";

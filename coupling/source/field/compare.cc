@@ -9,14 +9,14 @@
 #include <vtkCellArray.h>
 #include <vtkCutter.h>
 #include <vtkDoubleArray.h>
+#include <vtkIdList.h>
 #include <vtkKdTreePointLocator.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkPolyDataNormals.h>
-#include <vtkReverseSense.h>
+#include <vtkCellData.h>
 #include <vtkPolyData.h>
 #include <vtkTriangle.h>
 #include <vtkTriangleFilter.h>
@@ -25,6 +25,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <map>
 #include <fstream>
 #include <numeric>
 #include <optional>
@@ -127,17 +129,35 @@ namespace abrade::field
     /// area faces into the design (a scanner's surface has no inside of its own).
     void orient_like_design(Geometry &scan, const geometry::SurfaceDistance &design)
     {
-      vtkNew<vtkPolyDataNormals> consistent;
-      consistent->SetInputData(scan.data);
-      consistent->ConsistencyOn();
-      consistent->AutoOrientNormalsOff();
-      consistent->SplittingOff();
-      consistent->ComputePointNormalsOff();
-      consistent->ComputeCellNormalsOff();
-      consistent->Update();
-      vtkSmartPointer<vtkPolyData> oriented = consistent->GetOutput();
-      const double                 eps      = 1e-4 * scan.size();
-      double                       outward  = 0;
+      // each connected piece of the scan (a knife, the fixture next to it) on its own
+      const vtkSmartPointer<vtkPolyData> oriented = consistently_oriented(scan.data, false);
+      // the connected pieces: triangles that share a point are in one piece (union-find)
+      std::vector<vtkIdType> parent(std::size_t(oriented->GetNumberOfPoints()));
+      std::iota(parent.begin(), parent.end(), vtkIdType(0));
+      std::function<vtkIdType(vtkIdType)> root = [&](vtkIdType v) {
+        while (parent[v] != v)
+          v = parent[v] = parent[parent[v]];
+        return v;
+      };
+      for (vtkIdType t = 0; t < oriented->GetNumberOfCells(); ++t)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          oriented->GetCellPoints(t, n, ids);
+          for (vtkIdType k = 1; k < n; ++k)
+            parent[root(ids[k])] = root(ids[0]);
+        }
+      std::map<vtkIdType, std::size_t> piece_of_root;
+      std::vector<std::size_t>         piece(std::size_t(oriented->GetNumberOfCells()), 0);
+      for (vtkIdType t = 0; t < oriented->GetNumberOfCells(); ++t)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          oriented->GetCellPoints(t, n, ids);
+          piece[t] = piece_of_root.emplace(root(ids[0]), piece_of_root.size()).first->second;
+        }
+      const double  eps      = 1e-4 * scan.size();
+      std::vector<double> outward(piece_of_root.size(), 0.0);
       for (vtkIdType t = 0; t < oriented->GetNumberOfCells(); ++t)
         {
           vtkIdType        n;
@@ -155,18 +175,24 @@ namespace abrade::field
               const double centre = (a[k] + b[k] + c[k]) / 3;
               up[k] = centre + eps * normal[k], down[k] = centre - eps * normal[k];
             }
-          outward += area * (design.signed_distance(up) > design.signed_distance(down) ? 1 : -1);
+          outward[piece[t]] +=
+            area * (design.signed_distance(up) > design.signed_distance(down) ? 1 : -1);
         }
-      if (outward < 0)
+      vtkNew<vtkCellArray> cells;
+      for (vtkIdType t = 0; t < oriented->GetNumberOfCells(); ++t)
         {
-          vtkNew<vtkReverseSense> reverse;
-          reverse->SetInputData(oriented);
-          reverse->ReverseCellsOn();
-          reverse->ReverseNormalsOff();
-          reverse->Update();
-          oriented = reverse->GetOutput();
+          vtkIdType        n;
+          const vtkIdType *ids;
+          oriented->GetCellPoints(t, n, ids);
+          std::vector<vtkIdType> v(ids, ids + n);
+          if (outward[piece[t]] < 0)
+            std::reverse(v.begin(), v.end());
+          cells->InsertNextCell(n, v.data());
         }
-      scan.data = oriented;
+      auto result = vtkSmartPointer<vtkPolyData>::New();
+      result->SetPoints(oriented->GetPoints());
+      result->SetPolys(cells);
+      scan.data = result;
     }
 
     void add_array(vtkPolyData *p, const char *name, const std::vector<double> &values)
@@ -351,7 +377,28 @@ namespace abrade::field
             predicted_depth.push_back(measured[i] + deviation[i]); // the prediction's depth below this point
           }
         r.to_reference           = statistics(to_design);
-        if (s.registration.enabled && !s.registration.region && r.to_reference.p95 > 2e-4)
+        // evident wear: the 95th percentile of |depth| beyond 0.2 mm and beyond four times the
+        // scanner's noise, estimated from the depth differences of neighbouring scan points
+        // (1.4826 x their median / sqrt 2: smooth wear hardly differs between neighbours, noise does)
+        vtkNew<vtkKdTreePointLocator> neighbours;
+        neighbours->SetDataSet(scan.data);
+        neighbours->BuildLocator();
+        std::vector<double> differences;
+        vtkNew<vtkIdList>   pair;
+        for (vtkIdType i = 0; i < vtkIdType(measured.size()); i += std::max<vtkIdType>(1, vtkIdType(measured.size()) / 5000))
+          {
+            neighbours->FindClosestNPoints(2, scan_points.data() + 3 * i, pair);
+            for (vtkIdType k = 0; k < pair->GetNumberOfIds(); ++k)
+              if (pair->GetId(k) != i)
+                differences.push_back(std::abs(measured[i] - measured[pair->GetId(k)]));
+          }
+        double noise = 0;
+        if (!differences.empty())
+          {
+            std::nth_element(differences.begin(), differences.begin() + differences.size() / 2, differences.end());
+            noise = 1.4826 * differences[differences.size() / 2] / std::sqrt(2.0);
+          }
+        if (s.registration.enabled && !s.registration.region && r.to_reference.p95 > std::max(2e-4, 4 * noise))
           r.warnings.push_back(
             "registered on the whole scan, its worn part included (95 % of |depth| up to " +
             std::to_string(1e3 * r.to_reference.p95) +
@@ -425,14 +472,15 @@ namespace abrade::field
         m.precision(10);
         // the locations are the design points the scan points lie below: material points of the
         // fresh knife, as `abrade calibrate` reads them
-        m << "x,y,z,tonnes,depth\n";
-        for (vtkIdType i = 0; i < scan.data->GetNumberOfPoints(); ++i)
+        // (and worn_x, worn_y, worn_z: the scan point itself, registered)
+        m << "x,y,z,tonnes,depth,worn_x,worn_y,worn_z\n";
+        for (vtkIdType i = 0; i < vtkIdType(measured.size()); ++i)
           {
-            const double *p = feet.data() + 3 * i;
+            const double *p = feet.data() + 3 * i, *q = scan_points.data() + 3 * i;
             m << p[0] << ',' << p[1] << ',' << p[2] << ',';
             if (s.tonnes >= 0)
               m << s.tonnes;
-            m << ',' << measured[i] << '\n';
+            m << ',' << measured[i] << ',' << q[0] << ',' << q[1] << ',' << q[2] << '\n';
           }
       }
     std::vector<double> emphasis = measured;

@@ -10,6 +10,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTriangle.h>
+#include <vtkCellData.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkReverseSense.h>
 #include <vtkTriangleFilter.h>
@@ -131,6 +132,24 @@ namespace abrade::field
     return c;
   }
 
+  vtkSmartPointer<vtkPolyData> consistently_oriented(vtkPolyData *surface, bool outward)
+  {
+    // VTK's normals filter reorders the triangles as it computes cell normals (with none asked
+    // for it passes its input through unchanged)
+    vtkNew<vtkPolyDataNormals> orient;
+    orient->SetInputData(surface);
+    orient->ConsistencyOn();
+    orient->SetAutoOrientNormals(outward);
+    orient->SplittingOff();
+    orient->ComputePointNormalsOff();
+    orient->ComputeCellNormalsOn();
+    orient->Update();
+    vtkSmartPointer<vtkPolyData> out = vtkSmartPointer<vtkPolyData>::New();
+    out->ShallowCopy(orient->GetOutput());
+    out->GetCellData()->RemoveArray("Normals");
+    return out;
+  }
+
   double signed_volume(vtkPolyData *surface)
   {
     double v = 0;
@@ -203,16 +222,8 @@ namespace abrade::field
         // a closed surface must face outward: every signed distance (inside / outside) and the
         // enclosed volumes rely on it. Inward or mixed triangles (an export that flipped them)
         // are oriented outward by VTK's normals filter, with a warning.
-        const double before = signed_volume(g.data);
-        vtkNew<vtkPolyDataNormals> orient; // one orientation for all triangles
-        orient->SetInputData(g.data);
-        orient->ConsistencyOn();
-        orient->AutoOrientNormalsOn();
-        orient->SplittingOff();
-        orient->ComputePointNormalsOff();
-        orient->ComputeCellNormalsOff();
-        orient->Update();
-        vtkSmartPointer<vtkPolyData> oriented = orient->GetOutput();
+        const double                 before   = signed_volume(g.data);
+        vtkSmartPointer<vtkPolyData> oriented = consistently_oriented(g.data, true);
         if (signed_volume(oriented) < 0) // all of them inward: turned round
           {
             vtkNew<vtkReverseSense> reverse;

@@ -19,6 +19,7 @@ namespace abrade::field
     const int    fine = 4;          // fine points per coarse cell and axis
     const double H    = fine * h;   // the coarse cell
     const double reach = 0.5 * std::sqrt(3.0) * H + h;
+    const double band  = 4 * h;
     long         n[3];
     for (int k = 0; k < 3; ++k)
       n[k] = std::max(1L, long(std::ceil((box[k + 3] - box[k]) / H)));
@@ -41,8 +42,16 @@ namespace abrade::field
                 const double p[3] = {corner[0] + (a + 0.5) * h, corner[1] + (b + 0.5) * h, corner[2] + (e + 0.5) * h};
                 ++points;
                 const double in_design = inside(design.signed_distance(p), h);
-                const double in_worn   = inside(worn.signed_distance(p), h);
+                bool         on_rim    = false;
+                double       foot[3];
+                const double d_worn    = worn.signed_distance(p, on_rim, foot);
+                const double in_worn   = inside(d_worn, h);
                 if (in_design == in_worn)
+                  continue;
+                // the worn surface standing out of the design (noise, a bump) counts where it
+                // does stand out, near it: behind a scan that sees one side of the knife lies the
+                // whole half-space, beyond the design's other faces too
+                if (in_worn > in_design && (d_worn < -band || !(design.signed_distance(foot) > 1e-3 * h)))
                   continue;
                 bool rim = false;
                 footprint.signed_distance(p, rim);

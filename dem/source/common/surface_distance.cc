@@ -212,10 +212,10 @@ namespace abrade::geometry
   SurfaceDistance::SurfaceDistance(SurfaceDistance &&) noexcept            = default;
   SurfaceDistance &SurfaceDistance::operator=(SurfaceDistance &&) noexcept = default;
 
-  double SurfaceDistance::signed_distance(const double q[3], bool &on_rim) const
+  double SurfaceDistance::signed_distance(const double q[3], bool &on_rim, double closest[3]) const
   {
     thread_local const vtkSmartPointer<vtkGenericCell> cell = vtkSmartPointer<vtkGenericCell>::New();
-    return impl->signed_distance(q, cell, nullptr, &on_rim);
+    return impl->signed_distance(q, cell, closest, &on_rim);
   }
 
   double SurfaceDistance::signed_distance(const double q[3]) const

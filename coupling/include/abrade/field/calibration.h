@@ -17,9 +17,10 @@
 //  - the fit: neighbouring measurements (the points of a scan, one gauge over several tonnages)
 //    are not independent; their residuals are correlated over lengths of the particle scale. The
 //    measurements are grouped in spatial blocks (cubes of Block size, default 50 mm) and the
-//    variance of s is the cluster-robust (sandwich) one, var = G/(G-1) sum_g (sum_{i in g} J_i
-//    e_i)^2 / (sum_i J_i^2)^2 with G blocks and J_i = d depth_i / d s, on G - 1 degrees of
-//    freedom (treating thousands of scan points as independent made the interval far too narrow);
+//    variance of s is the cluster-robust one in its jackknife form (CR3), var = (G-1)/G sum_g
+//    (S_g / (sum_i J_i^2 - Q_g))^2, S_g = sum_{i in g} J_i e_i, Q_g = sum_{i in g} J_i^2, with
+//    J_i = d depth_i / d s, over the G blocks that carry information (J != 0), on G - 1 degrees
+//    of freedom (treating thousands of scan points as independent made the interval far too narrow);
 //  - the DEM's replicate spread: the run's wear rate is the mean over its beds (Lifetime/Seeds),
 //    whose relative standard error s_v / sqrt(n) (s_v: the beds' relative spread of the worn
 //    volume, from the run's summary.json) carries to s in proportion; n - 1 degrees of freedom.
@@ -35,7 +36,14 @@ namespace abrade::field
 {
   struct Measurement
   {
-    std::array<double, 3> point;
+    std::array<double, 3> point; ///< the design point the measurement lies below
+    /// Where the worn surface was measured (a scan point: columns worn_x, worn_y, worn_z, which
+    /// compare writes), if known: the prediction is then looked up at the predicted surface's
+    /// closest point to it. Several points of a worn surface can lie below one design point
+    /// (a flat-cut tip: a line of the cut face below one point of the face), which their design
+    /// point alone cannot tell apart.
+    bool                  has_worn_point = false;
+    std::array<double, 3> worn_point{};
     double                tonnes = 0, depth = 0;
     std::string           where; ///< file:line, for messages
   };
@@ -57,7 +65,7 @@ namespace abrade::field
     double at(std::size_t p, double t, bool *extrapolated = nullptr) const;
   };
 
-  RunSeries read_run(const std::string &directory, const std::vector<std::array<double, 3>> &points);
+  RunSeries read_run(const std::string &directory, const std::vector<Measurement> &measurements);
 
   struct CalibrationResult
   {

@@ -31,6 +31,9 @@ namespace abrade::field
   /// The volume a triangle surface encloses, signed: > 0 when its triangles face outward
   /// (counter-clockwise seen from outside), < 0 when they face inward.
   double signed_volume(vtkPolyData *surface);
+  /// @p surface with every triangle ordered like its neighbours (VTK's normals filter); with
+  /// @p outward, a closed surface's triangles also face outward.
+  vtkSmartPointer<vtkPolyData> consistently_oriented(vtkPolyData *surface, bool outward);
 
   /// Reads a surface (.stl, .ply, .obj, .vtp, .vtk, .vtu) or a point cloud (.ply without faces,
   /// .xyz, .csv, .txt: "x y z" or "x,y,z" per line, '#' comments, an optional header line).

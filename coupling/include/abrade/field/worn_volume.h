@@ -13,7 +13,10 @@
 // on a grid of cell h, with the indicator smeared over one cell, inside = clamp(1/2 - d/h, 0, 1)
 // (d the signed distance to the surface), which is exact to second order in h. The difference
 // is signed, so noise that puts the scan now above, now below an unworn surface adds up to
-// nothing on average. A grid point is in the footprint unless its closest point on the scan lies
+// nothing on average. A point outside the design but "inside" the worn surface counts only where
+// the worn surface does stand out of the design there (its closest point on the worn surface
+// lies outside the design) and within four cells of it: a scan of one side of the knife has the
+// whole half-space behind it "inside", beyond the design's other faces too. A grid point is in the footprint unless its closest point on the scan lies
 // on the scan's rim (its open boundary): then it is beyond what was scanned. Only a band around
 // the surfaces is visited: coarse cells of 4 h whose centre lies farther than a cell from both
 // surfaces, on the same side, hold no difference and are skipped.

@@ -68,8 +68,9 @@ namespace abrade::geometry
     /// Signed distance of q to the surface: < 0 inside, > 0 outside. NaN for a non-finite q.
     double signed_distance(const double q[3]) const;
     /// The same, and whether the closest point lies on the surface's rim (an open surface's
-    /// boundary edge or a vertex on one): then @p q is beyond the surface's footprint.
-    double signed_distance(const double q[3], bool &on_rim) const;
+    /// boundary edge or a vertex on one: then @p q is beyond the surface's footprint), and, with
+    /// @p closest, that point.
+    double signed_distance(const double q[3], bool &on_rim, double closest[3] = nullptr) const;
     /// The triangles given (degenerate ones included).
     std::size_t n_triangles() const;
 
