@@ -15,6 +15,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -42,21 +44,37 @@ namespace abrade::coupling
     kp.density   = prm.get_double("Density");
     kp.from_file = prm.get("Geometry") == "file";
     kp.file      = prm.get("File");
+    kp.file_settings.scale     = prm.get_double("File scale");
+    kp.file_settings.max_cells = prm.get_double("Maximum cells");
     prm.leave_subsection();
     if (kp.from_file && !kp.file.empty() && std::filesystem::path(kp.file).is_relative() &&
         file.file_name().front() != '<')
       kp.file = (std::filesystem::path(file.file_name()).parent_path() / kp.file).string();
     if (!kp.from_file)
-      try
-        {
-          k.check();
-        }
-      catch (const InputError &e)
-        {
-          // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
-          const std::string what = e.what();
-          throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
-        }
+      {
+        try
+          {
+            k.check();
+          }
+        catch (const InputError &e)
+          {
+            // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
+            const std::string what = e.what();
+            throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
+          }
+        // the meshing budget, before Gmsh is asked (the plate's volume is an upper bound)
+        const double cells = fem::estimated_cells(k.length * k.height * k.thickness, kp.mesh_size);
+        if (kp.file_settings.max_cells > 0 && cells > kp.file_settings.max_cells)
+          {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "%.3g m needs about %.3g tetrahedra for this knife, more than Maximum cells = %.3g; a "
+                          "Mesh size of %.3g m needs about half the limit",
+                          kp.mesh_size, cells, kp.file_settings.max_cells,
+                          kp.mesh_size * std::cbrt(cells / (0.5 * kp.file_settings.max_cells)));
+            file.fail({"Knife"}, "Mesh size", text);
+          }
+      }
     return kp;
   }
 
@@ -89,7 +107,7 @@ namespace abrade::coupling
       {
         if (kp.file.empty())
           file.fail({"Knife"}, "File", "Geometry = file needs a solid file");
-        fem::read_solid(kp.file, kp.mesh_size, tria, fem::KnifeGeometry::wearable_boundary);
+        fem::read_solid(kp.file, kp.mesh_size, tria, fem::KnifeGeometry::wearable_boundary, kp.file_settings);
       }
     const fem::SolidSurface surface = fem::extract_surface(tria);
     for (auto &wc : c.walls)
@@ -124,7 +142,7 @@ namespace abrade::coupling
         {
           if (kp.file.empty())
             ctx.parameters.fail({"Knife"}, "File", "Geometry = file needs a solid file");
-          fem::read_solid(kp.file, h, tria, fem::KnifeGeometry::wearable_boundary);
+          fem::read_solid(kp.file, h, tria, fem::KnifeGeometry::wearable_boundary, kp.file_settings);
         }
     }
     const fem::MeshQuality q = fem::mesh_quality(tria);

@@ -134,6 +134,14 @@ namespace abrade::coupling
     prm.declare_entry("Lip width", "0", Double(0, huge), "[m] How far the ridge stands out of the face. Range: >= 0.");
     prm.declare_entry("Lip offset", "0", Double(0, huge), "[m] Distance of the ridge above the bevel. Range: >= 0.");
     prm.declare_entry("Mesh size", "0.015", Double(1e-6, huge), "[m] Target tetrahedron size. Range: > 0.");
+    prm.declare_entry("File scale", "1", Double(1e-12, huge),
+                      "[-] Geometry = file: multiplies the file's coordinates. STL and .msh files have no unit "
+                      "(0.001: the file is in millimetres); STEP/IGES files declare theirs, which is converted "
+                      "to metres on import (leave 1). Range: > 0.");
+    prm.declare_entry("Maximum cells", "3000000", Double(0, huge),
+                      "[-] Refuse a knife that would need more tetrahedra than this (estimated before meshing "
+                      "from its volume and Mesh size: about 8.5 V / h^3), with a Mesh size that fits; 0: no "
+                      "limit. Range: >= 0.");
     prm.declare_entry("Density", "7800", Double(1e-6, huge), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
     prm.leave_subsection();
 

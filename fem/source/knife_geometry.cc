@@ -124,6 +124,12 @@ namespace abrade::fem
     try
       {
         build(profile(), 1.0);
+        // in millimetres, the unit OpenCASCADE's STEP writer declares (read_solid converts the
+        // declared unit back to metres)
+        gmsh::vectorpair all;
+        gmsh::model::getEntities(all, 3);
+        gmsh::model::occ::dilate(all, 0, 0, 0, 1000, 1000, 1000);
+        gmsh::model::occ::synchronize();
         gmsh::write(step_file);
       }
     catch (...)

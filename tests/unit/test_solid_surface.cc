@@ -1,5 +1,6 @@
 // The knife's boundary surface (outward, closed, the solid's volume by the divergence theorem),
 // solids read from STL and .msh files, and remeshing from the current boundary.
+#include <abrade/common/error.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 using namespace dealii;
 using namespace abrade::fem;
@@ -75,6 +77,52 @@ TEST(SolidSurface, StepRoundTrip)
   read_solid(tmp("abrade_knife.step"), 0.03, tria);
   EXPECT_NEAR(mesh_volume(tria), k.volume(), 1e-9);
   EXPECT_NEAR(boundary_area(tria, 1), extract_surface(tria).area(), 1e-12); // every face wearable
+}
+
+// A user's part in millimetres: an STL (no unit) with File scale 0.001 gives the knife's volume;
+// without it the part is refused naming its size and the likely scale; a mesh that would need too
+// many tetrahedra is refused before Gmsh meshes it. (STEP files declare their unit:
+// StepRoundTrip reads a STEP in millimetres.)
+TEST(SolidSurface, PartsInMillimetres)
+{
+  KnifeGeometry    k;
+  Triangulation<3> tria;
+  k.mesh(tria, 0.03, tmp("abrade_mm_knife.msh"));
+  abrade::io::PolyData surface = extract_surface(tria).as_polydata();
+  for (double &x : surface.points)
+    x *= 1000;
+  abrade::io::write_stl(tmp("abrade_knife_mm.stl"), surface);
+  SolidFileSettings mm;
+  mm.scale = 0.001;
+  Triangulation<3> read;
+  read_solid(tmp("abrade_knife_mm.stl"), 0.03, read, 1, mm);
+  EXPECT_NEAR(mesh_volume(read) / k.volume(), 1, 1e-9);
+  try
+    {
+      Triangulation<3> wrong;
+      read_solid(tmp("abrade_knife_mm.stl"), 0.03, wrong, 1, SolidFileSettings());
+      FAIL() << "a part of 400 m was read";
+    }
+  catch (const abrade::InputError &e)
+    {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("abrade_knife_mm.stl"), std::string::npos) << what;
+      EXPECT_NE(what.find("400 x 30 x 500 m"), std::string::npos) << what;
+      EXPECT_NE(what.find("File scale"), std::string::npos) << what;
+    }
+  k.write_step(tmp("abrade_budget_knife.step"));
+  SolidFileSettings budget;
+  budget.max_cells = 1e5;
+  try
+    {
+      Triangulation<3> fine;
+      read_solid(tmp("abrade_budget_knife.step"), 0.002, fine, 1, budget);
+      FAIL() << "an over-budget mesh was made";
+    }
+  catch (const abrade::InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("tetrahedra"), std::string::npos) << e.what();
+    }
 }
 
 // A CAD file's surfaces as triangles (a grab shell from a design tool is read this way): the

@@ -17,6 +17,7 @@ namespace abrade::coupling
     double             density   = 7800;
     bool               from_file = false;
     std::string        file;
+    fem::SolidFileSettings file_settings; ///< File scale, Maximum cells
   };
 
   /// Reads and checks subsection Knife; errors name the file.

@@ -51,7 +51,8 @@ namespace abrade::fem
     /// Gmsh file written on the way (kept for inspection).
     void mesh(dealii::Triangulation<3> &tria, double mesh_size, const std::string &msh_file) const;
 
-    /// Writes the knife's CAD geometry (OpenCASCADE) as STEP, for CAD tools or read_solid().
+    /// Writes the knife's CAD geometry (OpenCASCADE) as STEP in millimetres (the unit the file
+    /// declares), for CAD tools or read_solid().
     void write_step(const std::string &step_file) const;
 
   private:
