@@ -53,8 +53,9 @@ namespace abrade::field
                 // whole half-space, beyond the design's other faces too
                 if (in_worn > in_design && (d_worn < -band || !(design.signed_distance(foot) > 1e-3 * h)))
                   continue;
-                bool rim = false;
-                footprint.signed_distance(p, rim);
+                bool rim = on_rim; // the worn surface is the footprint (a scan): asked already
+                if (&footprint != &worn)
+                  footprint.signed_distance(p, rim);
                 if (!rim)
                   volume += (in_design - in_worn) * h * h * h;
               }
