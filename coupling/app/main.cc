@@ -332,7 +332,9 @@ int main(int argc, char **argv)
           coupling::ParameterFile p(cl.file, cl.sets);
           auto                     c = coupling::read_dem_case(p);
           io::OutputDirectory      out(cl.output);
-          coupling::fill_solid_model_walls(c, p, out.root()); // the FEM knife's surface, placed
+          io::Log                  log; // to the terminal
+          log.set_echo(true);
+          coupling::fill_solid_model_walls(c, p, out.root(), log); // the FEM knife's surface, placed
           for (const auto &w : c.walls)
             {
               dem::write_stl(out.file(w.wall.name + ".stl"), w.wall.mesh);

@@ -120,7 +120,7 @@ namespace abrade::coupling
   void run_dem_job(JobContext &ctx)
   {
     DemCase c = read_dem_case(ctx.parameters);
-    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"));
+    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"), ctx.log);
     dem::Simulation sim(c.settings);
     build_simulation(c, sim);
 

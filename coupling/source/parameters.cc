@@ -2,7 +2,9 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/dem/mesh_io.h>
-#include <abrade/fem/solid_surface.h>
+#include <abrade/fem/solid_file.h>
+
+#include <Eigen/Geometry>
 
 #include <deal.II/base/utilities.h>
 
@@ -143,6 +145,33 @@ namespace abrade::coupling
                       "from its volume and Mesh size: about 8.5 V / h^3), with a Mesh size that fits; 0: no "
                       "limit. Range: >= 0.");
     prm.declare_entry("Density", "7800", Double(1e-6, huge), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
+    prm.declare_entry("Solid", "all", Anything(),
+                      "Geometry = file, a CAD file with several solids: 'all' takes them all as one part, a "
+                      "number the solid of that number (the knife job lists them).");
+    declare_vector(prm, "Rotation axis", "0, 0, 1",
+                   "[-] Geometry = file: the axis of the rotation that brings the part from the file's "
+                   "(assembly) coordinates into the knife's frame (edge along x at the bottom, height along "
+                   "z); through the origin, right-handed.");
+    prm.declare_entry("Rotation angle", "0", Double(-360, 360),
+                      "[deg] Geometry = file: the angle of that rotation. The part's point p becomes "
+                      "R (File scale x p) + Offset: scaled, rotated about the origin, then moved. Range: "
+                      "[-360, 360].");
+    declare_vector(prm, "Offset", "0, 0, 0", "[m] Geometry = file: moves the part after its rotation.");
+    prm.declare_entry("Clamped faces", "", Anything(),
+                      "Geometry = file: the faces bolted or welded to the shell, which the mesh motion holds "
+                      "and which do not wear; selectors separated by ';': 'group NAME' (a physical group of "
+                      "a .msh, by name or number, or a CAD face by its number), 'box x0, y0, z0, x1, y1, z1' "
+                      "(faces whose centre lies in the box, in metres, in the knife's frame after scale and "
+                      "placement), 'normal nx, ny, nz[, angle]' (faces whose outward normal is within angle "
+                      "degrees, default 10, of the direction). Empty: none (every face wears). The knife job "
+                      "lists the part's faces.");
+    prm.declare_entry("Wearable faces", "", Anything(),
+                      "Geometry = file: the faces that wear (selectors as for Clamped faces); faces that "
+                      "neither list takes are held. Empty: every face that is not clamped wears.");
+    prm.declare_entry("Minimum mesh quality", "0.05", Double(0, 1),
+                      "[-] Geometry = file: a mesh whose smallest scaled Jacobian is below this is optimised "
+                      "once more (Gmsh's optimisers, harder) and, if still below, reported with the place of "
+                      "its worst cell. Range: [0, 1].");
     prm.leave_subsection();
 
     prm.enter_subsection("Lifetime");
@@ -364,6 +393,13 @@ namespace abrade::coupling
         prm.declare_entry("Knife protrusion", "0.02", Double(0, huge),
                           "[m] Mounted knife: how far its edge stands beyond the shell's lip. Range: >= 0.");
         declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
+        declare_vector(prm, "Rotation axis", "0, 0, 1",
+                       "[-] Axis of a rotation of the geometry about the origin (right-handed), before Offset: "
+                       "a point p of the file (or primitive) becomes R (File scale x p) + Offset. 'Lip centre', "
+                       "its directions and Motion/Centre are given before the rotation and turn with it.");
+        prm.declare_entry("Rotation angle", "0", Double(-360, 360),
+                          "[deg] Angle of that rotation; 0: none. Not for a mounted knife (the shell places it). "
+                          "Range: [-360, 360].");
         prm.declare_entry("Maximum edge length", "0", Double(0, huge),
                           "[m] Refine the mesh until no triangle edge is longer than this (per-"
                           "triangle wear needs triangles smaller than a particle); 0: as given. "
@@ -522,6 +558,7 @@ namespace abrade::coupling
       prm.enter_subsection("Knife");
       const double length = prm.get_double("Length");
       prm.leave_subsection();
+      c.mounted_knife_length = length;
       for (auto &wc : c.walls)
         {
           if (wc.mount.empty())
@@ -690,7 +727,16 @@ namespace abrade::coupling
               }
           }
         const Vec3 offset = get_vector(prm, "Offset");
+        const Vec3 axis   = get_vector(prm, "Rotation axis");
+        const double angle = prm.get_double("Rotation angle");
+        if (angle != 0 && !(axis.norm() > 0))
+          f.fail(wp, "Rotation axis", "must not be zero");
+        // placement: p -> rotation p + offset (the rotation about the origin first)
+        const Eigen::Matrix3d rotation =
+          angle == 0 ? Eigen::Matrix3d::Identity()
+                     : Eigen::AngleAxisd(angle * M_PI / 180, axis.normalized()).toRotationMatrix();
         wc.offset         = offset;
+        wc.rotation       = rotation;
         wc.solid_model    = geometry == "solid model";
         if (geometry == "clamshell shell")
           {
@@ -715,12 +761,19 @@ namespace abrade::coupling
             in -= in.dot(along.normalized()) * along.normalized(); // square to the lip
             if (!(in.norm() > 1e-9 * along.norm()))
               f.fail(wp, "Lip inward", "must not be parallel to 'Lip direction'");
-            wc.lip = DemCase::WallCase::Lip{get_vector(prm, "Lip centre") + offset, along.normalized(), in.normalized()};
+            wc.lip = DemCase::WallCase::Lip{rotation * get_vector(prm, "Lip centre") + offset,
+                                            rotation * along.normalized(), rotation * in.normalized()};
           }
         wc.mount = trim(prm.get("Knife mount"));
         if (!wc.mount.empty() && !wc.solid_model)
           f.fail(wp, "Knife mount", "only a wall with Geometry = solid model (a knife) can be mounted on a shell");
         wc.protrusion = prm.get_double("Knife protrusion");
+        if (!wc.mount.empty() && angle != 0)
+          f.fail(wp, "Rotation angle", "a mounted knife is placed by its shell's lip: no rotation of its own");
+        if (geometry == "clamshell shell" && angle != 0)
+          f.fail(wp, "Rotation angle", "a clamshell shell opens about its hinge (Shell opening): no rotation");
+        for (auto &v : w.mesh.vertices)
+          v = rotation * v;
         w.mesh.translate(offset);
         if (const double h = prm.get_double("Maximum edge length"); h > 0)
           w.mesh.refine(h);
@@ -753,7 +806,7 @@ namespace abrade::coupling
         m.kind   = type == "fixed" ? dem::WallMotion::Kind::fixed
                    : type == "prescribed" ? dem::WallMotion::Kind::prescribed
                                           : dem::WallMotion::Kind::rigid_body;
-        m.centre = get_vector(prm, "Centre") + offset;
+        m.centre = rotation * get_vector(prm, "Centre") + offset;
         for (const auto &[phase, v] : read_phase_vectors(f, mp, "Velocities", c.phases))
           m.phases[phase].velocity = v;
         for (const auto &[phase, v] : read_phase_vectors(f, mp, "Angular velocities", c.phases))

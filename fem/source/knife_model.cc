@@ -22,9 +22,25 @@ namespace abrade::fem
       settings.work_directory = (std::filesystem::temp_directory_path() / "abrade-knife").string();
     std::filesystem::create_directories(settings.work_directory);
     geometry.mesh(*tria, settings.mesh_size, settings.work_directory + "/knife.msh");
-    plate_thickness = geometry.thickness;
+    if (settings.plate_thickness <= 0)
+      settings.plate_thickness = geometry.thickness;
+    start();
+  }
+
+  KnifeModel::KnifeModel(std::unique_ptr<Triangulation<3>> mesh, const Settings &s)
+    : settings(s), tria(std::move(mesh))
+  {
+    if (settings.work_directory.empty())
+      settings.work_directory = (std::filesystem::temp_directory_path() / "abrade-knife").string();
+    std::filesystem::create_directories(settings.work_directory);
+    start();
+  }
+
+  void KnifeModel::start()
+  {
     current_surface   = extract_surface(*tria);
     design            = current_surface;
+    plate_thickness   = settings.plate_thickness > 0 ? settings.plate_thickness : typical_thickness(design);
     std::vector<double>                 points;
     std::vector<std::array<long, 3>>    triangles;
     for (const auto &p : design.vertices)
@@ -120,6 +136,14 @@ namespace abrade::fem
     for (const auto &p : current_surface.vertices)
       points.insert(points.end(), {p[0], p[1], p[2]});
     return geometry::wear_depth(*design_distance, points);
+  }
+
+  std::vector<double> KnifeModel::depth_below_design(const std::vector<Point<3>> &points) const
+  {
+    std::vector<double> flat;
+    for (const auto &p : points)
+      flat.insert(flat.end(), {p[0], p[1], p[2]});
+    return geometry::wear_depth(*design_distance, flat);
   }
 
   std::vector<double> KnifeModel::wear_depth_below(const std::vector<Point<3>> &points) const

@@ -116,8 +116,6 @@ namespace abrade::coupling::lifetime
     s.seed_scatter    = prm.get_double("Analytic seed scatter");
     prm.leave_subsection();
 
-    if (knife_parameters.from_file)
-      ctx.parameters.fail({"Knife"}, "Geometry", "lifetime runs use the parametric knife for now");
     if (s.seeds.empty())
       ctx.parameters.fail({"Lifetime"}, "Seeds", "at least one seed is needed");
     for (std::size_t a = 0; a < s.seeds.size(); ++a)
@@ -126,11 +124,6 @@ namespace abrade::coupling::lifetime
           ctx.parameters.fail({"Lifetime"}, "Seeds",
                               "seed " + std::to_string(s.seeds[a]) +
                                 " is given twice: the same bed twice is no replicate (its interval would be zero)");
-    if (!knife_parameters.from_file && s.max_depth >= 0.5 * knife_parameters.geometry.thickness)
-      warnings.push_back("Maximum depth " + number(s.max_depth) + " m is at least half the plate thickness (" +
-                         number(knife_parameters.geometry.thickness) +
-                         " m): the wear depth below the design is the distance to the nearest design surface and "
-                         "cannot exceed that; the edge's recession is Maximum recession (of the Recession points)");
     if (!s.analytic && s.tonnes_per_cycle == 0 && !dem_case.payload_height)
       ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
                           "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");
@@ -150,6 +143,7 @@ namespace abrade::coupling::lifetime
     dem_case         = read_dem_case(ctx.parameters);
     knife_parameters = read_knife_parameters(ctx.parameters);
     read_settings();
+    build_knife();
     if (s.analytic)
       try
         {
@@ -163,11 +157,6 @@ namespace abrade::coupling::lifetime
       source = make_dem_wear_source(dem_case, s.seeds, s.tonnes_per_cycle, ctx);
 
     ctx.output.subdirectory("beds");
-    fem::KnifeModel::Settings ks;
-    ks.mesh_size      = knife_parameters.mesh_size;
-    ks.density        = knife_parameters.density;
-    ks.work_directory = ctx.output.subdirectory("knife/work");
-    knife             = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
     knife_output      = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory("knife"), "knife");
     checkpoints       = std::make_unique<LifetimeCheckpoints>(ctx.output.subdirectory("checkpoint"));
     hash              = io::fnv1a_hex(ctx.parameters.canonical_text());
@@ -213,6 +202,43 @@ namespace abrade::coupling::lifetime
     ctx.log.line("Lifetime: knife of " + std::to_string(knife->triangulation().n_active_cells()) + " cells, " +
                  std::to_string(s.seeds.size()) + " bed seed(s) per update, wear from " +
                  (s.analytic ? "the analytic rate " + s.rate_expression : std::string("the DEM")));
+  }
+
+  // The knife: the parametric one or a user's part (its faces chosen, placed), checked against
+  // the criteria that need to know where it is.
+  void LifetimeLoop::build_knife()
+  {
+    fem::KnifeModel::Settings ks;
+    ks.mesh_size      = knife_parameters.mesh_size;
+    ks.density        = knife_parameters.density;
+    ks.work_directory = ctx.output.subdirectory("knife/work");
+    if (knife_parameters.from_file)
+      {
+        KnifeMesh m = mesh_knife(knife_parameters, ctx.parameters, ks.work_directory);
+        report_knife_mesh(knife_parameters, m, ctx.log, &warnings);
+        knife = std::make_unique<fem::KnifeModel>(std::move(m.tria), ks);
+        fit_mounted_knives(dem_case, knife->design_surface());
+      }
+    else
+      knife = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
+    frame = profile_frame(knife->design_surface());
+    if (s.max_depth >= 0.5 * knife->thickness())
+      warnings.push_back("Maximum depth " + number(s.max_depth) + " m is at least half the plate thickness (" +
+                         number(knife->thickness()) +
+                         " m): the wear depth below the design is the distance to the nearest design surface and "
+                         "cannot exceed that; the edge's recession is Maximum recession (of the Recession points)");
+    // a followed point away from the knife would follow the nearest surface point without a word
+    const std::vector<double> off = knife->depth_below_design(s.recession_points);
+    std::vector<double>       points;
+    for (const auto &p : s.recession_points)
+      points.insert(points.end(), {p[0], p[1], p[2]});
+    for (std::size_t k = 0; k < off.size(); ++k)
+      if (std::abs(off[k]) > knife_parameters.mesh_size)
+        ctx.parameters.fail({"Lifetime"}, "Recession points",
+                            "point " + std::to_string(k + 1) + " (" + number(points[3 * k]) + ", " +
+                              number(points[3 * k + 1]) + ", " + number(points[3 * k + 2]) + ") lies " +
+                              number(std::abs(off[k])) + " m from the knife's surface (more than its Mesh size): "
+                              "give points on the edge in the knife's frame (after the part's placement)");
   }
 
   void LifetimeLoop::start_afresh()
@@ -468,7 +494,7 @@ namespace abrade::coupling::lifetime
     trajectory.row(row);
     trajectory.flush();
 
-    write_profiles(surface, knife_parameters.geometry.length, s.planes, update, ctx.output.root() + "/knife");
+    write_profiles(surface, frame, s.planes, update, ctx.output.root() + "/knife");
     knife->write(*knife_output, tonnes);
     char stl[64];
     std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
@@ -610,7 +636,7 @@ namespace abrade::coupling::lifetime
           ctx.log.warning(w);
       }
     if (history.size() > 1) // nothing to plot before the first update
-      plot_lifetime(ctx.output.root(), s.planes, knife_parameters.geometry);
+      plot_lifetime(ctx.output.root(), s.planes, frame);
     std::ostringstream line;
     line << "Lifetime: " << end << " after " << cycles << " cycles; predicted life " << e.tonnes << " t ("
          << describe(e, criteria) << ")";

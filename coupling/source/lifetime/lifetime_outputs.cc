@@ -1,6 +1,7 @@
 #include <abrade/common/external.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -17,12 +18,30 @@ namespace abrade::coupling::lifetime
     }
   } // namespace
 
-  void write_profiles(const fem::SolidSurface &s, double length, const std::vector<double> &planes, long update,
-                      const std::string &dir)
+  ProfileFrame profile_frame(const fem::SolidSurface &design)
+  {
+    ProfileFrame f;
+    if (design.vertices.empty())
+      return f;
+    double lo[3], hi[3];
+    for (int c = 0; c < 3; ++c)
+      lo[c] = hi[c] = design.vertices[0][c];
+    for (const auto &p : design.vertices)
+      for (int c = 0; c < 3; ++c)
+        lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
+    const double t = hi[1] - lo[1];
+    f.x0 = lo[0], f.x1 = hi[0];
+    f.y0 = lo[1] - 0.5 * t, f.y1 = hi[1] + 0.5 * t;
+    f.z0 = lo[2], f.z1 = lo[2] + std::min(hi[2] - lo[2], 3 * t);
+    return f;
+  }
+
+  void write_profiles(const fem::SolidSurface &s, const ProfileFrame &frame, const std::vector<double> &planes,
+                      long update, const std::string &dir)
   {
     for (double f : planes)
       {
-        const double  x0    = f * length;
+        const double  x0    = frame.x0 + f * (frame.x1 - frame.x0);
         const bool    first = update == 1;
         std::ofstream out(dir + "/" + profile_name(f) + ".csv", first ? std::ios::trunc : std::ios::app);
         if (first)
@@ -64,7 +83,7 @@ namespace abrade::coupling::lifetime
       }
   }
 
-  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const fem::KnifeGeometry &k)
+  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame)
   {
     std::ofstream gp(dir + "/lifetime.gp");
     gp << "set terminal pngcairo size 900,600\nset grid\nset datafile separator ','\nset datafile columnheaders\n"
@@ -80,10 +99,10 @@ namespace abrade::coupling::lifetime
     for (double f : planes)
       {
         const std::string name = "knife/" + profile_name(f);
-        // the worn end of the knife: three bevel heights, at its true shape
+        // the worn end of the knife, at its true shape
         gp << "set output '" << name << ".png'\nset xlabel 'y [mm]'\nset ylabel 'z [mm]'\nset key outside\n"
-           << "set xrange [" << -1000 * k.thickness << ":" << 1000 * k.thickness << "]\nset yrange [-2:"
-           << 3000 * k.bevel << "]\n"
+           << "set xrange [" << 1000 * frame.y0 << ":" << 1000 * frame.y1 << "]\nset yrange ["
+           << 1000 * frame.z0 - 2 << ":" << 1000 * frame.z1 << "]\n"
            << "stats '" << name << ".csv' nooutput\n"
            << "plot for [i=0:STATS_blocks-1] '" << name
            << ".csv' index i using ($2*1000):($3*1000):(($4-$2)*1000):(($5-$3)*1000) with vectors nohead "

@@ -1,12 +1,17 @@
 #pragma once
 // The knife's solid model as the parameter file describes it (subsection Knife), shared by the
 // knife and lifetime jobs.
+#include <abrade/common/log.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/part_faces.h>
+#include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_surface.h>
 
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace abrade::coupling
 {
@@ -17,11 +22,31 @@ namespace abrade::coupling
     double             density   = 7800;
     bool               from_file = false;
     std::string        file;
-    fem::SolidFileSettings file_settings; ///< File scale, Maximum cells
+    fem::SolidFileSettings file_settings; ///< File scale, Maximum cells, Solid, placement
+    std::vector<fem::FaceSelector> clamped_faces, wearable_faces;
   };
 
   /// Reads and checks subsection Knife; errors name the file.
   KnifeParameters read_knife_parameters(ParameterFile &file);
+
+  /// The knife's volume mesh as subsection Knife describes it, with what was found on the way.
+  struct KnifeMesh
+  {
+    std::unique_ptr<dealii::Triangulation<3>> tria;
+    fem::SolidFileReport                      report;     ///< a part from a file: notes, warnings
+    std::vector<fem::PartFace>                file_faces; ///< its faces as the file numbers them
+    fem::FaceAssignment                       faces;      ///< which wear, which are clamped
+  };
+
+  /// Meshes the parametric knife (its Gmsh file written into @p directory) or reads the part
+  /// from its file and chooses its wearable and clamped faces (boundary ids
+  /// KnifeGeometry::wearable_boundary and clamped_boundary). Errors name the parameter.
+  KnifeMesh mesh_knife(const KnifeParameters &kp, ParameterFile &file, const std::string &directory);
+
+  /// Writes what mesh_knife found out about a part from a file (its solids, its faces, which
+  /// wear, a poor mesh) to @p log, and its warnings also into @p warnings.
+  void report_knife_mesh(const KnifeParameters &kp, const KnifeMesh &m, io::Log &log,
+                         std::vector<std::string> *warnings = nullptr);
 
   /// @p surface as a wall mesh, every vertex p moved to @p linear p + @p offset.
   dem::TriangleMesh wall_mesh(const fem::SolidSurface &surface, const Eigen::Matrix3d &linear,
@@ -29,9 +54,14 @@ namespace abrade::coupling
   /// The knife's surface placed as wall @p wc's geometry (its rotation, then its offset).
   dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc);
 
+  /// A part from a file mounted on a shell: centred along the lip by its bounding box, its
+  /// lowest point (the edge) 'Knife protrusion' beyond the lip (the parametric knife, x from 0
+  /// to its length and its edge at z = 0, is placed so by construction).
+  void fit_mounted_knives(DemCase &c, const fem::SolidSurface &design);
+
   /// Meshes the knife of subsection Knife (into @p directory) and gives every wall with
   /// Geometry = solid model its surface, placed.
-  void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory);
+  void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory, io::Log &log);
 
   /// MPI (for PETSc) in this single process, initialised once.
   void init_mpi_once();

@@ -78,6 +78,8 @@ namespace abrade::coupling
       double               protrusion = 0.02; ///< of a mounted knife's edge beyond the lip [m]
     };
     std::vector<WallCase> walls;
+    /// Knife/Length, by which mount_knives centres a mounted knife on its lip [m]
+    double mounted_knife_length = 0.4;
     double snapshot_interval = 0.05, force_interval = 1e-3;
     bool   write_particles   = true;
   };

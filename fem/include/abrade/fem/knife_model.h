@@ -44,9 +44,18 @@ namespace abrade::fem
       double      remesh_quality = 0.5;   ///< remesh below this fraction of the fresh mesh's quality
       double      density        = 7800;  ///< [kg/m^3]
       std::string work_directory;         ///< for Gmsh files
+      /// [m] Where the part is thinner than half of this (the region of a sharp edge, whose
+      /// receding the mesh motion and remeshing follow), reaching the local thickness does not
+      /// count as worn through. 0: the plate thickness of a parametric knife, or for any other
+      /// part the area-weighted median of the local thickness of its wearable surface.
+      double plate_thickness = 0;
     };
 
+    /// The parametric knife, meshed with Gmsh.
     KnifeModel(const KnifeGeometry &geometry, const Settings &settings);
+    /// A part already meshed (a user's part, fem/solid_file.h): its boundary faces with id
+    /// KnifeGeometry::wearable_boundary wear, all others are held (clamped).
+    KnifeModel(std::unique_ptr<dealii::Triangulation<3>> mesh, const Settings &settings);
 
     struct UpdateResult
     {
@@ -62,6 +71,8 @@ namespace abrade::fem
     const SolidSurface           &surface() const { return current_surface; }
     /// The wear depth of every vertex of surface(): its distance inside the design surface [m].
     std::vector<double> wear_depth() const;
+    /// How far each of @p points lies inside the design surface [m] (< 0: outside).
+    std::vector<double> depth_below_design(const std::vector<dealii::Point<3>> &points) const;
     /// The wear depth below the design points @p points (points of the design surface): what a
     /// gauge there measures. The worn surface is laid onto the design at its vertices' closest
     /// design points and its depth interpolated there (as `abrade calibrate` looks it up).
@@ -85,6 +96,8 @@ namespace abrade::fem
       return at_followed_points(accumulated, points);
     }
     double volume() const;
+    /// The thickness that separates the edge region from the plate (Settings::plate_thickness).
+    double thickness() const { return plate_thickness; }
     double mass() const { return volume() * settings.density; }
     unsigned n_remeshes() const { return remeshes; }
 
@@ -98,6 +111,9 @@ namespace abrade::fem
     void write(SolidOutput &output, double time) const;
 
   private:
+    /// The design surface, the fields and the quality threshold of the fresh mesh.
+    void start();
+
     Settings                                  settings;
     std::unique_ptr<dealii::Triangulation<3>> tria;
     SolidSurface                              current_surface;

@@ -41,6 +41,11 @@ namespace abrade::fem
   /// surface on the other side (ray cast; infinity where the ray leaves through no triangle).
   std::vector<double> local_thickness(const SolidSurface &surface);
 
+  /// The typical wall thickness of a part: the area-weighted median of local_thickness over the
+  /// vertices of its faces with boundary id @p id (a plate's thickness, as its two large faces
+  /// carry most of the area); 0 when no ray finds the other side.
+  double typical_thickness(const SolidSurface &surface, dealii::types::boundary_id id = 1);
+
   /// Surface vertices whose inward wear depth reaches @p fraction of the local thickness: where
   /// the knife is worn through, which ends its life (reported, never carried into the mesh).
   /// Vertices thinner than @p ignore_below (the region of a sharp edge, whose receding and
@@ -57,41 +62,6 @@ namespace abrade::fem
   /// The boundary faces with the given ids (all boundary faces when @p ids is empty).
   SolidSurface extract_surface(const dealii::Triangulation<3> &tria,
                                const std::set<dealii::types::boundary_id> &ids = {});
-
-  /// How a solid file is read: units and limits (a user's part, not a generated one).
-  struct SolidFileSettings
-  {
-    /// Multiplies the file's coordinates: STL, OBJ and .msh files have no units (0.001: the file
-    /// is in millimetres). STEP/IGES files declare their unit, which is converted to metres on
-    /// import (OpenCASCADE); the scale applies on top of that.
-    double scale = 1;
-    /// Refuse parts that would need more tetrahedra than this (estimated before meshing from the
-    /// part's volume: about 8.5 V / h^3); 0: no limit.
-    double max_cells = 0;
-    /// Refuse parts whose bounding box is larger than this or whose largest extent is smaller
-    /// than min_extent [m], naming the box and the likely unit (a part in millimetres read as
-    /// metres is 1000x too large).
-    double max_extent = 50, min_extent = 1e-3;
-  };
-
-  /// Reads a solid: a Gmsh .msh file (boundary ids from its physical surface tags), a STEP/IGES
-  /// CAD file or a closed STL surface (both meshed with Gmsh into tetrahedra of size
-  /// @p mesh_size [m]; every boundary face then gets @p boundary_id). Throws InputError naming the
-  /// file when it cannot be read, does not enclose a volume, has an implausible size for its unit
-  /// or would need more cells than @p settings allow.
-  void read_solid(const std::string &path, double mesh_size, dealii::Triangulation<3> &tria,
-                  dealii::types::boundary_id boundary_id = 1, const SolidFileSettings &settings = {});
-
-  /// The number of tetrahedra of size @p mesh_size that fill @p volume, about: a regular
-  /// tetrahedron of edge h has the volume h^3 / (6 sqrt 2), and Gmsh's are a little smaller.
-  double estimated_cells(double volume, double mesh_size);
-
-  /// The surfaces of a STEP/IGES CAD file (a grab shell, say: open or closed) as triangles of
-  /// size @p mesh_size, meshed with Gmsh; only vertices and triangles are set. Throws
-  /// InputError naming the file when it cannot be read or holds no surface.
-  SolidSurface read_cad_surface(const std::string &path, double mesh_size);
-  /// Whether @p path names a CAD file by its extension (.step/.stp/.iges/.igs, any case).
-  bool is_cad_file(const std::string &path);
 
   /// Remeshing: a new tetrahedral mesh of size @p mesh_size that fills the current boundary of
   /// @p tria (through an STL of the surface and Gmsh); boundary ids of the new faces are taken

@@ -23,6 +23,7 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
 #include <abrade/coupling/lifetime/life_interval.h>
+#include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/coupling/lifetime_checkpoints.h>
@@ -87,6 +88,7 @@ namespace abrade::coupling::lifetime
     void      finish();
 
     void read_settings();
+    void build_knife();
     bool resume();
     void start_afresh();
     /// Adds this update's seed rates of every criterion's quantity to seed_factors; returns the
@@ -98,6 +100,7 @@ namespace abrade::coupling::lifetime
     DemCase                               dem_case;
     KnifeParameters                       knife_parameters;
     std::unique_ptr<fem::KnifeModel>      knife;
+    ProfileFrame                          frame; ///< where the profiles are cut
     std::unique_ptr<fem::SolidOutput>     knife_output;
     std::unique_ptr<WearSource>           source;
     std::unique_ptr<LifetimeCheckpoints>  checkpoints;

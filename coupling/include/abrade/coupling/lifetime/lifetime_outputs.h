@@ -2,7 +2,6 @@
 // The lifetime loop's files besides trajectory.csv and the knife series: cross-sections of the
 // knife per update (knife/profile_F.csv, blocks per update) and the gnuplot figures
 // (trajectory.png, knife/profile_F.png).
-#include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/solid_surface.h>
 
 #include <string>
@@ -10,15 +9,25 @@
 
 namespace abrade::coupling::lifetime
 {
-  /// The knife's cross-sections at x = f L for each f of @p planes: segments (y, z) where
+  /// Where the knife's cross-sections are taken and what the figures show, from the design
+  /// surface's bounding box (the knife's frame: x along the edge, z up from the edge): the
+  /// planes x = x0 + f (x1 - x0); the figures span y over twice the part's thickness and z from
+  /// its lowest point up to three thicknesses (the worn end).
+  struct ProfileFrame
+  {
+    double x0 = 0, x1 = 1, y0 = -1, y1 = 1, z0 = 0, z1 = 1;
+  };
+  ProfileFrame profile_frame(const fem::SolidSurface &design);
+
+  /// The knife's cross-sections at the fractions @p planes of its length: segments (y, z) where
   /// surface triangles cross the plane, appended as update @p update's block (the first update
   /// starts the files).
-  void write_profiles(const fem::SolidSurface &s, double length, const std::vector<double> &planes, long update,
-                      const std::string &directory);
+  void write_profiles(const fem::SolidSurface &s, const ProfileFrame &frame, const std::vector<double> &planes,
+                      long update, const std::string &directory);
 
   /// Cuts the profile files back to the blocks of updates <= @p update (resume).
   void truncate_profiles(const std::vector<double> &planes, long update, const std::string &directory);
 
   /// trajectory.png (wear depth, recession and worn volume vs tonnes) and knife/profile_F.png.
-  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const fem::KnifeGeometry &k);
+  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame);
 } // namespace abrade::coupling::lifetime

@@ -1,0 +1,224 @@
+// Subsection Knife: the parametric knife or a user's part (knife_parameters.h), meshed, its faces
+// chosen, and placed as the DEM's walls.
+#include <abrade/common/error.h>
+#include <abrade/coupling/knife_parameters.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace abrade::coupling
+{
+  namespace
+  {
+    dealii::Tensor<1, 3> get_tensor(dealii::ParameterHandler &prm, const std::string &name)
+    {
+      const auto v = dealii::Utilities::split_string_list(prm.get(name));
+      return dealii::Tensor<1, 3>({std::stod(v[0]), std::stod(v[1]), std::stod(v[2])});
+    }
+
+    std::vector<fem::FaceSelector> get_selectors(ParameterFile &file, dealii::ParameterHandler &prm,
+                                                 const std::string &name)
+    {
+      try
+        {
+          return fem::parse_face_selectors(prm.get(name));
+        }
+      catch (const std::invalid_argument &e)
+        {
+          prm.leave_subsection();
+          file.fail({"Knife"}, name, e.what());
+        }
+    }
+
+    std::string format(double x)
+    {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.4g", x);
+      return b;
+    }
+  } // namespace
+
+  KnifeParameters read_knife_parameters(ParameterFile &file)
+  {
+    auto           &prm = file.handler();
+    KnifeParameters kp;
+    auto           &k = kp.geometry;
+    prm.enter_subsection("Knife");
+    k.length     = prm.get_double("Length");
+    k.height     = prm.get_double("Height");
+    k.thickness  = prm.get_double("Thickness");
+    k.bevel      = prm.get_double("Bevel height");
+    const std::string side = prm.get("Bevel side");
+    k.bevel_side = side == "both" ? fem::KnifeGeometry::BevelSide::both
+                   : side == "plus" ? fem::KnifeGeometry::BevelSide::plus
+                                    : fem::KnifeGeometry::BevelSide::minus;
+    k.tip_radius = prm.get_double("Tip radius");
+    k.lip_height = prm.get_double("Lip height");
+    k.lip_width  = prm.get_double("Lip width");
+    k.lip_offset = prm.get_double("Lip offset");
+    kp.mesh_size = prm.get_double("Mesh size");
+    kp.density   = prm.get_double("Density");
+    kp.from_file = prm.get("Geometry") == "file";
+    kp.file      = prm.get("File");
+    auto &fs     = kp.file_settings;
+    fs.scale          = prm.get_double("File scale");
+    fs.max_cells      = prm.get_double("Maximum cells");
+    fs.max_volume     = 1e6 / kp.density; // 1,000 t: no knife, liner or tooth weighs that
+    fs.solid          = dealii::Utilities::trim(prm.get("Solid"));
+    fs.min_quality    = prm.get_double("Minimum mesh quality");
+    fs.rotation_axis  = get_tensor(prm, "Rotation axis");
+    fs.rotation_angle = prm.get_double("Rotation angle");
+    fs.offset         = get_tensor(prm, "Offset");
+    kp.clamped_faces  = get_selectors(file, prm, "Clamped faces");
+    kp.wearable_faces = get_selectors(file, prm, "Wearable faces");
+    prm.leave_subsection();
+    if (kp.from_file && fs.rotation_angle != 0 && !(fs.rotation_axis.norm() > 0))
+      file.fail({"Knife"}, "Rotation axis", "must not be zero");
+    if (kp.from_file && !kp.file.empty() && std::filesystem::path(kp.file).is_relative() &&
+        file.file_name().front() != '<')
+      kp.file = (std::filesystem::path(file.file_name()).parent_path() / kp.file).string();
+    if (kp.from_file && kp.file.empty())
+      file.fail({"Knife"}, "File", "Geometry = file needs a solid file");
+    if (!kp.from_file)
+      {
+        try
+          {
+            k.check();
+          }
+        catch (const InputError &e)
+          {
+            // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
+            const std::string what = e.what();
+            throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
+          }
+        // the meshing budget, before Gmsh is asked (the plate's volume is an upper bound)
+        const double cells = fem::estimated_cells(k.length * k.height * k.thickness, kp.mesh_size);
+        if (kp.file_settings.max_cells > 0 && cells > kp.file_settings.max_cells)
+          {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "%.3g m needs about %.3g tetrahedra for this knife, more than Maximum cells = %.3g; a "
+                          "Mesh size of %.3g m needs about half the limit",
+                          kp.mesh_size, cells, kp.file_settings.max_cells,
+                          kp.mesh_size * std::cbrt(cells / (0.5 * kp.file_settings.max_cells)));
+            file.fail({"Knife"}, "Mesh size", text);
+          }
+        if (!kp.clamped_faces.empty() || !kp.wearable_faces.empty())
+          file.fail({"Knife"}, "Clamped faces",
+                    "the parametric knife's clamped face is its top (bolted to the shell); face selectors are for "
+                    "Geometry = file");
+      }
+    return kp;
+  }
+
+  KnifeMesh mesh_knife(const KnifeParameters &kp, ParameterFile &file, const std::string &directory)
+  {
+    KnifeMesh m;
+    m.tria = std::make_unique<dealii::Triangulation<3>>();
+    if (!kp.from_file)
+      {
+        kp.geometry.mesh(*m.tria, kp.mesh_size, directory + "/knife.msh");
+        return m;
+      }
+    m.report     = fem::read_solid(kp.file, kp.mesh_size, *m.tria, kp.file_settings);
+    m.file_faces = fem::part_faces(*m.tria, m.report.face_names);
+    try
+      {
+        m.faces = fem::assign_faces(*m.tria, kp.clamped_faces, kp.wearable_faces, m.report.face_names,
+                                    fem::KnifeGeometry::wearable_boundary, fem::KnifeGeometry::clamped_boundary);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        std::string faces;
+        for (const auto &f : m.file_faces)
+          if (faces.size() < 600)
+            faces += (faces.empty() ? "" : "; ") + std::to_string(f.id) + (f.name.empty() ? "" : " '" + f.name + "'") +
+                     " at (" + format(f.centre[0]) + ", " + format(f.centre[1]) + ", " + format(f.centre[2]) + ")";
+        file.fail({"Knife"}, kp.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
+                  std::string(e.what()) + "; the part's faces: " + faces);
+      }
+    return m;
+  }
+
+  void report_knife_mesh(const KnifeParameters &kp, const KnifeMesh &m, io::Log &log, std::vector<std::string> *warnings)
+  {
+    if (!kp.from_file)
+      return;
+    for (const auto &n : m.report.notes)
+      log.line("Knife: " + kp.file + ": " + n);
+    std::ostringstream faces;
+    faces << "Knife: " << m.file_faces.size() << " faces in the file; wearable " << m.faces.wearable_area
+          << " m^2, clamped " << m.faces.clamped_area << " m^2"
+          << (kp.clamped_faces.empty() && kp.wearable_faces.empty() ? " (no Clamped faces given: every face wears)" : "");
+    log.line(faces.str());
+    for (const auto &w : m.report.warnings)
+      {
+        log.warning("Knife: " + kp.file + ": " + w);
+        if (warnings)
+          warnings->push_back(kp.file + ": " + w);
+      }
+  }
+
+  dem::TriangleMesh wall_mesh(const fem::SolidSurface &surface, const Eigen::Matrix3d &linear,
+                              const dem::Vec3 &offset)
+  {
+    dem::TriangleMesh m;
+    for (const auto &p : surface.vertices)
+      m.vertices.push_back(linear * dem::Vec3(p[0], p[1], p[2]) + offset);
+    for (const auto &t : surface.triangles)
+      m.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
+    return m;
+  }
+
+  dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc)
+  {
+    return wall_mesh(surface, wc.rotation, wc.offset);
+  }
+
+  void fit_mounted_knives(DemCase &c, const fem::SolidSurface &design)
+  {
+    if (design.vertices.empty())
+      return;
+    double x0 = design.vertices[0][0], x1 = x0, z0 = design.vertices[0][2];
+    for (const auto &p : design.vertices)
+      x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), z0 = std::min(z0, p[2]);
+    for (auto &wc : c.walls)
+      if (wc.solid_model && !wc.mount.empty())
+        {
+          // mount_knives placed x = length / 2 at the lip's centre and z = 0 'protrusion' beyond it
+          const double length = c.mounted_knife_length;
+          wc.offset += wc.rotation * dem::Vec3(0.5 * length - 0.5 * (x0 + x1), 0, -z0);
+        }
+  }
+
+  void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory, io::Log &log)
+  {
+    if (std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
+      return;
+    init_mpi_once();
+    const KnifeParameters   kp = read_knife_parameters(file);
+    const KnifeMesh         m  = mesh_knife(kp, file, directory);
+    report_knife_mesh(kp, m, log);
+    const fem::SolidSurface surface = fem::extract_surface(*m.tria);
+    if (kp.from_file)
+      fit_mounted_knives(c, surface);
+    for (auto &wc : c.walls)
+      if (wc.solid_model)
+        wc.wall.mesh = place_surface(surface, wc);
+  }
+
+  void init_mpi_once()
+  {
+    // PETSc and the FEM need MPI; a single process here
+    static int                                      argc = 1;
+    static char                                     name[] = "abrade", *args[] = {name, nullptr};
+    static char                                   **argv = args;
+    static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  }
+} // namespace abrade::coupling

@@ -1,0 +1,78 @@
+#pragma once
+// Which faces of a part wear and which are held.
+//
+// A part read from a file keeps the file's own face numbers as boundary ids: a CAD face's number
+// (STEP/IGES, as Gmsh numbers the surfaces it imports), a physical surface's tag (.msh; its name
+// too, when the file gives one), or a patch of an STL (split at edges sharper than 15 degrees).
+// The user then says which faces are clamped (bolted or welded to the shell: the mesh motion
+// holds them, no wear is applied there) and which wear, with selectors:
+//
+//   group NAME | group NUMBER            a physical group (by name or tag) or a CAD face (number)
+//   box x0, y0, z0, x1, y1, z1           faces whose centre lies in the box [m, the part's frame]
+//   normal nx, ny, nz [, angle]          faces whose outward normal is within angle (degrees,
+//                                        default 10) of the direction
+//
+// several separated by ';'. A face is clamped when a clamped selector takes it; otherwise it wears
+// when a wearable selector takes it, or when no wearable selector is given (the default: every
+// face that is not clamped wears). A face that neither list takes is held like a clamped one. A
+// selector that takes no face is an error (a box in millimetres for a part in metres, say).
+// Boxes and normals are evaluated per boundary face (a triangle of the mesh), after the part is
+// scaled and placed: in the coordinates the knife job writes knife.stl in.
+#include <abrade/fem/solid_surface.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace abrade::fem
+{
+  struct FaceSelector
+  {
+    enum class Kind
+    {
+      group,
+      box,
+      normal
+    } kind = Kind::group;
+    std::string           group;                  ///< name or number
+    std::array<double, 6> box{};                  ///< lower corner, upper corner
+    std::array<double, 3> direction{};            ///< unit
+    double                angle_degrees = 10;
+    std::string           text;                   ///< as written, for messages
+  };
+
+  /// Parses a ';'-separated list of selectors (empty: none); throws std::invalid_argument saying
+  /// what is wrong with which one.
+  std::vector<FaceSelector> parse_face_selectors(const std::string &text);
+
+  /// A face of the part as the file numbers it: the boundary faces with one boundary id.
+  struct PartFace
+  {
+    dealii::types::boundary_id id = 0;
+    std::string                name;   ///< the physical group's name, when the file has one
+    double                     area = 0;
+    dealii::Point<3>           centre; ///< area-weighted
+    dealii::Tensor<1, 3>       normal; ///< area-weighted mean outward normal (unit; zero if it cancels)
+  };
+
+  /// The faces of @p tria grouped by boundary id, with the names of @p names where given.
+  std::vector<PartFace> part_faces(const dealii::Triangulation<3>                        &tria,
+                                   const std::map<dealii::types::boundary_id, std::string> &names = {});
+
+  struct FaceAssignment
+  {
+    double   wearable_area = 0, clamped_area = 0;
+    unsigned wearable_faces = 0, clamped_faces = 0; ///< boundary faces (mesh faces)
+  };
+
+  /// Sets the boundary id of every boundary face of @p tria to @p wearable_id or @p clamped_id
+  /// by the rules above. @p names: the file's names of its boundary ids. Throws
+  /// std::invalid_argument naming a selector that takes no face, or when no face wears.
+  FaceAssignment assign_faces(dealii::Triangulation<3> &tria, const std::vector<FaceSelector> &clamped,
+                              const std::vector<FaceSelector>                         &wearable,
+                              const std::map<dealii::types::boundary_id, std::string> &names,
+                              dealii::types::boundary_id wearable_id, dealii::types::boundary_id clamped_id);
+} // namespace abrade::fem

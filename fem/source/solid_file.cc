@@ -1,0 +1,519 @@
+// Reading a user's part (solid_file.h): Gmsh for CAD, STL and the physical names of .msh files,
+// deal.II's GridIn for the volume mesh.
+#include <abrade/common/error.h>
+#include <abrade/fem/solid_file.h>
+#include <abrade/fem/solid_output.h>
+
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/physics/transformations.h>
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace abrade::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string format_number(double x)
+    {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.4g", x);
+      return b;
+    }
+
+    std::string lower_extension(const std::string &path)
+    {
+      std::string ext = std::filesystem::path(path).extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+      return ext;
+    }
+
+    void read_msh_file(const std::string &path, Triangulation<3> &tria)
+    {
+      std::ifstream file(path);
+      GridIn<3>     in;
+      in.attach_triangulation(tria);
+      try
+        {
+          in.read_msh(file); // deal.II's own parser: physical surface tags become boundary ids
+        }
+      catch (const std::exception &e)
+        {
+          std::string what = e.what();
+          // deal.II's messages are long; the line that says what is wrong
+          const auto at = what.find("Additional information:");
+          if (at != std::string::npos)
+            what = what.substr(at + 23);
+          what.erase(std::remove(what.begin(), what.end(), '\n'), what.end());
+          throw InputError(path, "not a readable Gmsh volume mesh:" + what.substr(0, 300));
+        }
+      if (tria.n_active_cells() == 0)
+        throw InputError(path, "the mesh holds no volume elements (tetrahedra or hexahedra)");
+    }
+
+    template <typename F>
+    void with_gmsh(const std::string &label, F &&f)
+    {
+      gmsh::initialize();
+      gmsh::option::setNumber("General.Terminal", 0);
+      try
+        {
+          f();
+        }
+      catch (const InputError &)
+        {
+          gmsh::finalize();
+          throw;
+        }
+      catch (...)
+        {
+          std::string last;
+          gmsh::logger::getLastError(last);
+          gmsh::finalize();
+          throw InputError(label, "Gmsh could not mesh it: " + (last.empty() ? std::string("unknown error") : last));
+        }
+      gmsh::finalize();
+    }
+
+    /// The names of a .msh file's physical surfaces, by tag.
+    std::map<types::boundary_id, std::string> physical_surface_names(const std::string &path)
+    {
+      std::map<types::boundary_id, std::string> names;
+      with_gmsh(path, [&] {
+        gmsh::open(path);
+        gmsh::vectorpair groups;
+        gmsh::model::getPhysicalGroups(groups, 2);
+        for (const auto &[dim, tag] : groups)
+          {
+            std::string name;
+            gmsh::model::getPhysicalName(dim, tag, name);
+            if (!name.empty())
+              names[types::boundary_id(tag)] = name;
+          }
+      });
+      return names;
+    }
+
+    /// Gmsh: the volumes of the current model -> tetrahedra -> .msh 2.2. Every surface that
+    /// bounds the part (one volume on its side) is a physical group of its own number, which
+    /// deal.II reads as the boundary id: the file's face numbers. @p again: a second, harder
+    /// optimisation (after a first mesh was poor).
+    void mesh_volume_with_gmsh(const std::string &label, double h, const std::string &msh, bool again)
+    {
+      gmsh::vectorpair volumes;
+      gmsh::model::getEntities(volumes, 3);
+      if (volumes.empty())
+        throw InputError(label, "the geometry encloses no volume (is the surface closed?)");
+      gmsh::vectorpair surfaces;
+      gmsh::model::getEntities(surfaces, 2);
+      std::vector<int> vtags;
+      for (const auto &v : volumes)
+        vtags.push_back(v.second);
+      gmsh::model::addPhysicalGroup(3, vtags, 1);
+      for (const auto &f : surfaces)
+        {
+          std::vector<int> up, down;
+          gmsh::model::getAdjacencies(2, f.second, up, down);
+          if (up.size() <= 1) // not a face between two solids of one part
+            gmsh::model::addPhysicalGroup(2, {f.second}, f.second);
+        }
+      gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+      gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * h);
+      gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+      gmsh::option::setNumber("Mesh.Optimize", 1);
+      gmsh::model::mesh::generate(3);
+      if (again)
+        {
+          // harder: all cells below 0.5 (Gmsh's own default threshold is 0.3), vertices relocated
+          // (Debian's Gmsh has no Netgen optimiser)
+          gmsh::option::setNumber("Mesh.OptimizeThreshold", 0.5);
+          gmsh::model::mesh::optimize("Relocate3D", true, 5);
+          gmsh::model::mesh::optimize("", true, 5);
+        }
+      gmsh::write(msh);
+    }
+
+    /// Loads the shapes of a STEP or IGES file into the current Gmsh model, in metres:
+    /// OpenCASCADE converts the unit the file declares to millimetres (its default), which is
+    /// scaled here to metres. (Gmsh 4.8's Geometry.OCCTargetUnit does not change that.)
+    void import_cad(const std::string &path)
+    {
+      gmsh::vectorpair shapes;
+      gmsh::model::occ::importShapes(path, shapes);
+      gmsh::model::occ::synchronize();
+      gmsh::vectorpair top;
+      for (int dim = 3; dim >= 0 && top.empty(); --dim)
+        gmsh::model::getEntities(top, dim);
+      if (!top.empty())
+        {
+          gmsh::model::occ::dilate(top, 0, 0, 0, 0.001, 0.001, 0.001);
+          gmsh::model::occ::synchronize();
+        }
+    }
+
+    /// Keeps the solid @p choice ("" or "all": all of them, fused into one conforming part) of
+    /// the current model; says which in @p report.
+    void choose_solid(const std::string &path, const std::string &choice, SolidFileReport &report)
+    {
+      gmsh::vectorpair volumes;
+      gmsh::model::getEntities(volumes, 3);
+      report.n_solids = unsigned(volumes.size());
+      std::string list;
+      for (const auto &v : volumes)
+        {
+          double m = 0;
+          gmsh::model::occ::getMass(3, v.second, m);
+          list += (list.empty() ? "" : ", ") + std::to_string(v.second) + " (" + format_number(m) + " m^3)";
+        }
+      if (choice.empty() || choice == "all")
+        {
+          if (volumes.size() > 1)
+            {
+              gmsh::vectorpair out;
+              std::vector<gmsh::vectorpair> map;
+              gmsh::model::occ::fragment(volumes, {}, out, map);
+              gmsh::model::occ::synchronize();
+              report.notes.push_back(std::to_string(volumes.size()) + " solids (" + list +
+                                     "), all taken as one part (Knife/Solid = NUMBER takes one)");
+            }
+          return;
+        }
+      std::size_t used = 0;
+      int         tag  = -1;
+      try
+        {
+          tag = std::stoi(choice, &used);
+        }
+      catch (const std::exception &)
+        {
+          used = 0;
+        }
+      const bool known = used == choice.size() && std::any_of(volumes.begin(), volumes.end(),
+                                                                  [&](const auto &v) { return v.second == tag; });
+      if (!known)
+        throw InputError(path, "Knife/Solid = '" + choice + "' is not one of its solids: " +
+                                 (list.empty() ? std::string("it holds none") : list) + " (or 'all')");
+      gmsh::vectorpair others;
+      for (const auto &v : volumes)
+        if (v.second != tag)
+          others.push_back(v);
+      if (!others.empty())
+        {
+          gmsh::model::occ::remove(others, true);
+          gmsh::model::occ::synchronize();
+        }
+      report.notes.push_back("solid " + choice + " of " + std::to_string(volumes.size()) + " (" + list + ")");
+    }
+
+    /// Refuses a part whose size is implausible for its unit, naming its bounding box (in metres,
+    /// after @p scale) and the likely scale.
+    void check_extent(const std::string &path, const std::array<double, 6> &box, double scale,
+                      const SolidFileSettings &s, bool has_units)
+    {
+      double extent[3], largest = 0;
+      for (int k = 0; k < 3; ++k)
+        largest = std::max(largest, extent[k] = scale * (box[k + 3] - box[k]));
+      if (!std::isfinite(largest))
+        throw InputError(path, "the part has coordinates that are not finite numbers");
+      const std::string size = format_number(extent[0]) + " x " + format_number(extent[1]) + " x " +
+                               format_number(extent[2]) + " m";
+      const std::string fix  = has_units ? "check the unit the file declares, or set Knife/File scale"
+                                         : "set Knife/File scale (the file has no unit)";
+      if (largest > s.max_extent)
+        throw InputError(path, "the part's bounding box is " + size + ", larger than " + format_number(s.max_extent) +
+                                 " m: is it in millimetres? " + fix + " = " + format_number(0.001 * scale));
+      if (largest < s.min_extent)
+        throw InputError(path, "the part's bounding box is " + size + ", smaller than " + format_number(s.min_extent) +
+                                 " m: is it in metres read as millimetres? " + fix + " = " + format_number(1000 * scale));
+    }
+
+    /// Refuses a part that is implausibly heavy, or that would need more than the allowed
+    /// tetrahedra (with the estimate and a mesh size that fits).
+    void check_volume(const std::string &path, double volume, double h, const SolidFileSettings &s)
+    {
+      if (s.max_volume > 0 && volume > s.max_volume)
+        throw InputError(path, "the part's volume is " + format_number(volume) + " m^3, more than " +
+                                 format_number(s.max_volume) +
+                                 " m^3 (the mass limit at its density): is it in millimetres? set Knife/File scale");
+      if (s.max_cells <= 0 || h <= 0)
+        return;
+      const double cells = estimated_cells(volume, h);
+      if (cells > s.max_cells)
+        throw InputError(path, "meshing the part (" + format_number(volume) + " m^3) with Knife/Mesh size " +
+                                 format_number(h) + " m needs about " + format_number(cells) +
+                                 " tetrahedra, more than Knife/Maximum cells = " + format_number(s.max_cells) +
+                                 "; a Mesh size of " + format_number(h * std::cbrt(cells / (0.5 * s.max_cells))) +
+                                 " m needs about half the limit");
+    }
+
+    /// The bounding box of the current Gmsh model.
+    std::array<double, 6> model_box()
+    {
+      std::array<double, 6> b;
+      gmsh::model::getBoundingBox(-1, -1, b[0], b[1], b[2], b[3], b[4], b[5]);
+      return b;
+    }
+
+    /// The volume enclosed by the current Gmsh model's surface triangles (an STL just merged),
+    /// by the divergence theorem; oriented either way.
+    double enclosed_volume_of_triangles()
+    {
+      std::vector<std::size_t> tags;
+      std::vector<double>      xyz, parametric;
+      gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+      std::map<std::size_t, std::size_t> at;
+      for (std::size_t k = 0; k < tags.size(); ++k)
+        at[tags[k]] = k;
+      std::vector<int>                      types;
+      std::vector<std::vector<std::size_t>> elements, nodes;
+      gmsh::model::mesh::getElements(types, elements, nodes, 2, -1);
+      double v = 0;
+      for (std::size_t b = 0; b < types.size(); ++b)
+        if (types[b] == 2)
+          for (std::size_t k = 0; k + 2 < nodes[b].size(); k += 3)
+            {
+              const double *p = &xyz[3 * at.at(nodes[b][k])], *q = &xyz[3 * at.at(nodes[b][k + 1])],
+                           *r = &xyz[3 * at.at(nodes[b][k + 2])];
+              v += (p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) +
+                    p[2] * (q[0] * r[1] - q[1] * r[0])) / 6;
+            }
+      return std::abs(v);
+    }
+
+    /// The current Gmsh model from a CAD file, in metres, the solid chosen and checked.
+    void load_cad(const std::string &path, double h, const SolidFileSettings &settings, SolidFileReport &report)
+    {
+      import_cad(path);
+      choose_solid(path, settings.solid, report);
+      if (settings.scale != 1)
+        {
+          gmsh::vectorpair volumes;
+          gmsh::model::getEntities(volumes, 3);
+          gmsh::model::occ::dilate(volumes, 0, 0, 0, settings.scale, settings.scale, settings.scale);
+          gmsh::model::occ::synchronize();
+        }
+      check_extent(path, model_box(), 1.0, settings, true);
+      gmsh::vectorpair volumes;
+      gmsh::model::getEntities(volumes, 3);
+      double volume = 0;
+      for (const auto &v : volumes)
+        {
+          double m = 0;
+          gmsh::model::occ::getMass(v.first, v.second, m);
+          volume += m;
+        }
+      check_volume(path, volume, h, settings);
+    }
+
+    /// The current Gmsh model from a closed STL surface (in the file's unit), checked: sharp
+    /// edges (more than 15 degrees) stay edges, the facets become remeshable surfaces.
+    void load_stl(const std::string &path, double h, const SolidFileSettings &settings)
+    {
+      gmsh::merge(path);
+      check_extent(path, model_box(), settings.scale, settings, false);
+      check_volume(path, enclosed_volume_of_triangles() * std::pow(settings.scale, 3), h, settings);
+      gmsh::model::mesh::classifySurfaces(15 * M_PI / 180, true, true, M_PI);
+      gmsh::model::mesh::createGeometry();
+      gmsh::vectorpair surfaces;
+      gmsh::model::getEntities(surfaces, 2);
+      std::vector<int> tags;
+      for (const auto &f : surfaces)
+        tags.push_back(f.second);
+      const int loop = gmsh::model::geo::addSurfaceLoop(tags);
+      gmsh::model::geo::addVolume({loop});
+      gmsh::model::geo::synchronize();
+    }
+
+    /// The centre of active cell @p index.
+    Point<3> cell_centre(const Triangulation<3> &tria, unsigned index)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->active_cell_index() == index)
+          return cell->center();
+      return {};
+    }
+  } // namespace
+
+  double estimated_cells(double volume, double h) { return 8.5 * volume / (h * h * h); }
+
+  Tensor<2, 3> rotation_matrix(const Tensor<1, 3> &axis, double degrees)
+  {
+    if (degrees == 0)
+      return unit_symmetric_tensor<3>();
+    if (!(axis.norm() > 0))
+      throw std::invalid_argument("the rotation axis must not be zero");
+    return Physics::Transformations::Rotations::rotation_matrix_3d(Point<3>(axis / axis.norm()),
+                                                                   degrees * M_PI / 180);
+  }
+
+  SolidFileReport read_solid(const std::string &path, double h, Triangulation<3> &tria, const SolidFileSettings &settings)
+  {
+    if (!(settings.scale > 0))
+      throw InputError(path, "the file scale must be positive");
+    if (!std::filesystem::exists(path))
+      throw InputError(path, "solid file not found");
+    const std::string ext = lower_extension(path);
+    SolidFileReport   report;
+    const bool        cad = is_cad_file(path);
+    if (ext == ".msh")
+      {
+        read_msh_file(path, tria);
+        report.face_names = physical_surface_names(path);
+        if (settings.scale != 1)
+          GridTools::scale(settings.scale, tria);
+        const BoundingBox<3> b = GridTools::compute_bounding_box(tria);
+        check_extent(path, {b.lower_bound(0), b.lower_bound(1), b.lower_bound(2), b.upper_bound(0), b.upper_bound(1),
+                            b.upper_bound(2)},
+                     1.0, settings, false);
+        check_volume(path, mesh_volume(tria), 0, settings);
+      }
+    else if (cad || ext == ".stl")
+      {
+        if (!(h > 0))
+          throw InputError(path, "meshing a CAD or STL solid needs a positive mesh size");
+        // a name of this process's own: MPI ranks and the parallel runs of a study mesh at once
+        static int        meshed = 0;
+        const std::string msh    = (std::filesystem::temp_directory_path() /
+                                 (std::filesystem::path(path).stem().string() + "-abrade-volume-" +
+                                  std::to_string(::getpid()) + "-" + std::to_string(meshed++) + ".msh"))
+                                  .string();
+        // the file's own length unit: h in it (STL), or the model scaled to metres first (CAD)
+        auto mesh = [&](bool again, Triangulation<3> &into) {
+          with_gmsh(path, [&] {
+            if (cad)
+              load_cad(path, h, settings, report);
+            else
+              load_stl(path, h, settings);
+            mesh_volume_with_gmsh(path, cad ? h : h / settings.scale, msh, again);
+          });
+          read_msh_file(msh, into);
+          std::filesystem::remove(msh);
+          if (!cad && settings.scale != 1)
+            GridTools::scale(settings.scale, into);
+        };
+        mesh(false, tria);
+        const double first = mesh_quality(tria).min_scaled_jacobian;
+        if (first < settings.min_quality)
+          {
+            const auto       notes = report.notes; // the same notes again from the second pass
+            Triangulation<3> again;
+            mesh(true, again);
+            report.notes       = notes;
+            const double other = mesh_quality(again).min_scaled_jacobian;
+            if (other > first)
+              {
+                tria.clear();
+                tria.copy_triangulation(again);
+              }
+            report.notes.push_back("minimum scaled Jacobian " + format_number(first) + ", " + format_number(other) +
+                                   " after Gmsh's optimisers once more" + (other > first ? "" : " (not taken)"));
+          }
+      }
+    else
+      throw InputError(path, "unknown solid format '" + ext + "' (use .msh, .step/.stp, .iges/.igs or a closed .stl)");
+
+    // into place: rotated about the origin, then moved
+    const Tensor<2, 3> r = [&] {
+      try
+        {
+          return rotation_matrix(settings.rotation_axis, settings.rotation_angle);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw InputError(path, e.what());
+        }
+    }();
+    if (settings.rotation_angle != 0 || settings.offset.norm() > 0)
+      GridTools::transform([&](const Point<3> &p) { return Point<3>(r * p + settings.offset); }, tria);
+
+    report.quality = mesh_quality(tria);
+    if (report.quality.n_inverted > 0)
+      throw InputError(path, "the mesh has " + std::to_string(report.quality.n_inverted) +
+                               " inverted cells (one near " + [&] {
+                                 std::ostringstream s;
+                                 s << cell_centre(tria, report.quality.worst_cell) << " m)";
+                                 return s.str();
+                               }());
+    if (report.quality.min_scaled_jacobian < settings.min_quality)
+      {
+        std::ostringstream s;
+        s << "poor mesh: minimum scaled Jacobian " << format_number(report.quality.min_scaled_jacobian)
+          << " (below " << settings.min_quality << ") in cell " << report.quality.worst_cell << " near ("
+          << cell_centre(tria, report.quality.worst_cell) << ") m; "
+          << (ext == ".msh" ? "improve the mesh in Gmsh (Mesh > Optimize 3D), or give the CAD file"
+                            : "a smaller Knife/Mesh size, or a cleaned CAD face there (slivers, short edges), helps");
+        report.warnings.push_back(s.str());
+      }
+    return report;
+  }
+
+  bool is_cad_file(const std::string &path)
+  {
+    const std::string ext = lower_extension(path);
+    return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs";
+  }
+
+  SolidSurface read_cad_surface(const std::string &path, double h)
+  {
+    if (!std::filesystem::exists(path))
+      throw InputError(path, "CAD file not found");
+    if (!is_cad_file(path))
+      throw InputError(path, "not a CAD file (.step/.stp or .iges/.igs)");
+    if (!(h > 0))
+      throw InputError(path, "meshing a CAD surface needs a positive mesh size");
+    SolidSurface s;
+    with_gmsh(path, [&] {
+      import_cad(path);
+      gmsh::vectorpair surfaces;
+      gmsh::model::getEntities(surfaces, 2);
+      if (surfaces.empty())
+        throw InputError(path, "the file holds no surface");
+      gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+      gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * h);
+      gmsh::model::mesh::generate(2);
+      // the nodes of the model (on surfaces, curves and points); those of triangles are kept
+      std::vector<std::size_t> tags;
+      std::vector<double>      xyz, parametric;
+      gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+      std::map<std::size_t, std::size_t> position;
+      for (std::size_t k = 0; k < tags.size(); ++k)
+        position[tags[k]] = k;
+      std::map<std::size_t, unsigned> index;
+      auto vertex = [&](std::size_t tag) {
+        const auto [it, added] = index.try_emplace(tag, static_cast<unsigned>(s.vertices.size()));
+        if (added)
+          {
+            const std::size_t k = position.at(tag);
+            s.vertices.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+          }
+        return it->second;
+      };
+      std::vector<int>                      types;
+      std::vector<std::vector<std::size_t>> elements, nodes;
+      gmsh::model::mesh::getElements(types, elements, nodes, 2, -1);
+      for (std::size_t b = 0; b < types.size(); ++b)
+        {
+          if (types[b] != 2) // 3-node triangles only (no quadrangles are asked for)
+            throw InputError(path, "Gmsh made surface elements other than triangles");
+          for (std::size_t k = 0; k + 2 < nodes[b].size(); k += 3)
+            s.triangles.push_back({vertex(nodes[b][k]), vertex(nodes[b][k + 1]), vertex(nodes[b][k + 2])});
+        }
+    });
+    if (s.triangles.empty())
+      throw InputError(path, "Gmsh made no triangles of its surfaces");
+    return s;
+  }
+} // namespace abrade::fem

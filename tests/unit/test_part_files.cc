@@ -1,0 +1,299 @@
+// A user's part from a file (fem/solid_file.h, fem/part_faces.h): every format the Knife accepts
+// gives the same analytic solid in metres (a 400 x 30 x 500 mm block in millimetres: STEP and
+// IGES declare the unit, STL and .msh get a scale), placement moves the bounding box as the
+// rotation says, faces are chosen by group name, CAD face number, box and normal, a clamped face
+// does not move under wear, several solids are taken together or one by number, and a poor mesh
+// is reported where it is.
+#include <abrade/common/error.h>
+#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/knife_model.h>
+#include <abrade/fem/mesh_quality.h>
+#include <abrade/fem/part_faces.h>
+#include <abrade/fem/solid_file.h>
+#include <abrade/fem/solid_surface.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include "fem_test_helpers.h"
+
+#include <gmsh.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+
+using namespace dealii;
+using namespace abrade::fem;
+using namespace abrade::fem::testing;
+
+namespace
+{
+  constexpr double block_volume = 0.4 * 0.03 * 0.5;
+
+  /// The block (x 0..400, y -15..15, z 0..500 mm) in millimetres: as CAD (@p file ends in
+  /// .step or .igs), or meshed by Gmsh into a .msh with the top face in a physical group 'bolted'
+  /// and the other faces in 'wearing', or its surface as an STL.
+  void write_block_mm(const std::string &file)
+  {
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::model::add("block");
+    gmsh::model::occ::addBox(0, -15, 0, 400, 30, 500);
+    gmsh::model::occ::synchronize();
+    const std::string ext = std::filesystem::path(file).extension().string();
+    if (ext == ".msh" || ext == ".stl")
+      {
+        gmsh::vectorpair faces;
+        gmsh::model::getEntities(faces, 2);
+        std::vector<int> top, rest;
+        for (const auto &f : faces)
+          {
+            double x0, y0, z0, x1, y1, z1;
+            gmsh::model::getBoundingBox(2, f.second, x0, y0, z0, x1, y1, z1);
+            (z0 > 499 ? top : rest).push_back(f.second);
+          }
+        gmsh::model::addPhysicalGroup(3, {1}, 1);
+        gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, top, 7), "bolted");
+        gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, rest, 8), "wearing");
+        gmsh::option::setNumber("Mesh.MeshSizeMax", 40);
+        gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+        gmsh::model::mesh::generate(ext == ".msh" ? 3 : 2);
+      }
+    gmsh::write(file);
+    gmsh::finalize();
+  }
+
+  BoundingBox<3> box_of(const Triangulation<3> &t) { return GridTools::compute_bounding_box(t); }
+
+  double clamped_area(Triangulation<3> &t, const std::string &clamped, const std::map<types::boundary_id, std::string> &names = {})
+  {
+    return assign_faces(t, parse_face_selectors(clamped), {}, names, 1, 2).clamped_area;
+  }
+} // namespace
+
+// STEP declares millimetres (converted on import); STL and .msh have no unit (scale 0.001).
+// Each gives the block's volume to 1e-9 and its top face (0.4 x 0.03 m) by its normal. (IGES is
+// read by the same OpenCASCADE import as STEP; Gmsh cannot write IGES, so no IGES file is made
+// here.)
+TEST(PartFiles, EveryFormatInMillimetres)
+{
+  for (const std::string ext : {".step", ".stl", ".msh"})
+    {
+      SCOPED_TRACE(ext);
+      const std::string file = tmp("abrade_block_mm" + ext);
+      write_block_mm(file);
+      SolidFileSettings s;
+      s.scale = ext == ".step" ? 1 : 0.001;
+      Triangulation<3> t;
+      read_solid(file, 0.05, t, s);
+      EXPECT_NEAR(mesh_volume(t) / block_volume, 1, 1e-9);
+      const BoundingBox<3> b = box_of(t);
+      EXPECT_NEAR(b.upper_bound(2), 0.5, 1e-9);
+      EXPECT_NEAR(clamped_area(t, "normal 0, 0, 1"), 0.4 * 0.03, 1e-12);
+      // without the scale a unit-less file in millimetres is a 400 m part: refused
+      if (s.scale != 1)
+        {
+          Triangulation<3> wrong;
+          EXPECT_THROW(read_solid(file, 0.05, wrong, SolidFileSettings()), abrade::InputError);
+        }
+    }
+}
+
+// A .msh file's physical groups by name and by number; a CAD face by its number; a box.
+TEST(PartFiles, FacesByGroupNumberAndBox)
+{
+  const std::string msh = tmp("abrade_block_groups.msh");
+  write_block_mm(msh);
+  SolidFileSettings s;
+  s.scale = 0.001;
+  Triangulation<3>      t;
+  const SolidFileReport r = read_solid(msh, 0, t, s);
+  ASSERT_EQ(r.face_names.count(7), 1u);
+  EXPECT_EQ(r.face_names.at(7), "bolted");
+  Triangulation<3> by_number;
+  by_number.copy_triangulation(t);
+  Triangulation<3> in_box;
+  in_box.copy_triangulation(t);
+  EXPECT_NEAR(clamped_area(t, "group bolted", r.face_names), 0.012, 1e-12);
+  EXPECT_NEAR(clamped_area(by_number, "group 7", r.face_names), 0.012, 1e-12);
+  // the -y face (0.4 x 0.5) and the top by a box around each
+  EXPECT_NEAR(clamped_area(in_box, "box -1, -0.016, -1, 1, -0.014, 1; box -1, -1, 0.499, 1, 1, 0.501"), 0.2 + 0.012,
+              1e-12);
+  // the faces listed as the file numbers them (assign_faces renumbered the others)
+  Triangulation<3> fresh;
+  read_solid(msh, 0, fresh, s);
+  const auto faces = part_faces(fresh, r.face_names);
+  ASSERT_EQ(faces.size(), 2u);
+  EXPECT_EQ(faces[0].name, "bolted");
+  EXPECT_NEAR(faces[0].area, 0.012, 1e-12);
+  EXPECT_NEAR(faces[0].normal[2], 1, 1e-12);
+  // a selector that takes nothing (a box in millimetres) is an error naming it
+  try
+    {
+      clamped_area(fresh, "box 0, -15, 490, 400, 15, 510");
+      FAIL() << "an empty selector was accepted";
+    }
+  catch (const std::invalid_argument &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("box 0, -15, 490, 400, 15, 510"), std::string::npos) << e.what();
+    }
+  // CAD: every face its own number (six for the block)
+  write_block_mm(tmp("abrade_block_faces.step"));
+  Triangulation<3> cad;
+  read_solid(tmp("abrade_block_faces.step"), 0.05, cad);
+  EXPECT_EQ(part_faces(cad).size(), 6u);
+  for (const auto &f : part_faces(cad))
+    if (f.normal[2] > 0.99)
+      {
+        Triangulation<3> c2;
+        c2.copy_triangulation(cad);
+        EXPECT_NEAR(clamped_area(c2, "group " + std::to_string(f.id)), 0.012, 1e-12);
+      }
+}
+
+TEST(PartFiles, SelectorsAreParsedOrRefused)
+{
+  const auto v = parse_face_selectors("group bolt holes; normal 0, 0, 2, 30 ;box 1,2,3, 0,0,0");
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_EQ(v[0].group, "bolt holes");
+  EXPECT_NEAR(v[1].direction[2], 1, 1e-15);
+  EXPECT_EQ(v[1].angle_degrees, 30);
+  EXPECT_EQ(v[2].box[0], 0);
+  EXPECT_EQ(v[2].box[3], 1); // corners sorted
+  EXPECT_TRUE(parse_face_selectors("").empty());
+  for (const std::string bad : {"box 1, 2", "normal 0, 0, 0", "normal 0, 0, 1, 200", "plane 0, 0, 1", "group",
+                                "box 1, 2, 3, 4, 5, x"})
+    EXPECT_THROW(parse_face_selectors(bad), std::invalid_argument) << bad;
+}
+
+// Placement: scale, rotate about the origin, then move. The block turned 90 degrees about z
+// lies along y from 0 to 0.4 (x from -0.015 to 0.015), then moved by (1, 2, 3).
+TEST(PartFiles, PlacementMovesTheBoundingBox)
+{
+  write_block_mm(tmp("abrade_block_place.step"));
+  SolidFileSettings s;
+  s.rotation_axis  = Tensor<1, 3>({0, 0, 2});
+  s.rotation_angle = 90;
+  s.offset         = Tensor<1, 3>({1, 2, 3});
+  Triangulation<3> t;
+  read_solid(tmp("abrade_block_place.step"), 0.1, t, s);
+  const BoundingBox<3> b = box_of(t);
+  EXPECT_NEAR(b.lower_bound(0), 1 - 0.015, 1e-9);
+  EXPECT_NEAR(b.upper_bound(0), 1 + 0.015, 1e-9);
+  EXPECT_NEAR(b.lower_bound(1), 2, 1e-9);
+  EXPECT_NEAR(b.upper_bound(1), 2.4, 1e-9);
+  EXPECT_NEAR(b.lower_bound(2), 3, 1e-9);
+  EXPECT_NEAR(b.upper_bound(2), 3.5, 1e-9);
+  EXPECT_NEAR(mesh_volume(t), block_volume, 1e-12);
+  // the rotation is right-handed: +x goes to +y
+  const Tensor<2, 3> r = rotation_matrix(Tensor<1, 3>({0, 0, 1}), 90);
+  EXPECT_NEAR((r * Tensor<1, 3>({1, 0, 0}))[1], 1, 1e-15);
+}
+
+// The knife exported to STEP in millimetres, read back as a user's part with its top clamped by
+// its normal: uniform wear of 1 mm moves every wearable vertex and not one clamped vertex
+// (1e-12); the typical thickness is the plate's.
+TEST(PartFiles, ClampedFacesDoNotMove)
+{
+  KnifeGeometry k;
+  k.write_step(tmp("abrade_clamped_knife.step"));
+  auto tria = std::make_unique<Triangulation<3>>();
+  read_solid(tmp("abrade_clamped_knife.step"), 0.03, *tria);
+  const FaceAssignment a = assign_faces(*tria, parse_face_selectors("normal 0, 0, 1"), {}, {}, 1, 2);
+  EXPECT_NEAR(a.clamped_area, 0.4 * 0.03, 1e-12);
+  KnifeModel::Settings ks;
+  ks.mesh_size      = 0.03;
+  ks.work_directory = tmp("abrade_clamped_work");
+  KnifeModel knife(std::move(tria), ks);
+  EXPECT_NEAR(knife.thickness(), 0.03, 1e-9);
+  const SolidSurface  before = knife.surface();
+  std::vector<bool>   clamped(before.vertices.size(), false);
+  for (std::size_t t = 0; t < before.triangles.size(); ++t)
+    if (before.boundary_id[t] == KnifeGeometry::clamped_boundary)
+      for (unsigned v : before.triangles[t])
+        clamped[v] = true;
+  ASSERT_FALSE(knife.apply_wear(std::vector<double>(before.vertices.size(), 1e-3)).remeshed);
+  const auto &after = knife.triangulation().get_vertices();
+  unsigned    held = 0, moved = 0;
+  for (std::size_t v = 0; v < before.vertices.size(); ++v)
+    {
+      const double d = after[before.tria_vertex[v]].distance(before.vertices[v]);
+      if (clamped[v])
+        {
+          EXPECT_LT(d, 1e-12);
+          ++held;
+        }
+      else if (std::abs(before.vertices[v][1] - 0.015) < 1e-9 && before.vertices[v][2] > 0.1 &&
+               before.vertices[v][2] < 0.4 && before.vertices[v][0] > 0.05 && before.vertices[v][0] < 0.35)
+        {
+          EXPECT_NEAR(d, 1e-3, 1e-9); // the middle of the +y face: the wear depth
+          ++moved;
+        }
+    }
+  EXPECT_GT(held, 10u);
+  EXPECT_GT(moved, 5u);
+}
+
+// Several solids: all as one part (the sum of their volumes) or one by its number; an unknown
+// number is refused with the list.
+TEST(PartFiles, SeveralSolids)
+{
+  const std::string file = tmp("abrade_two_blocks.step");
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::model::add("two");
+  gmsh::model::occ::addBox(0, 0, 0, 100, 20, 50);
+  gmsh::model::occ::addBox(200, 0, 0, 50, 20, 50);
+  gmsh::model::occ::synchronize();
+  gmsh::write(file);
+  gmsh::finalize();
+  Triangulation<3>      all;
+  const SolidFileReport r = read_solid(file, 0.02, all);
+  EXPECT_EQ(r.n_solids, 2u);
+  EXPECT_NEAR(mesh_volume(all), 1e-4 + 5e-5, 1e-12);
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes[0].find("all taken as one part"), std::string::npos) << r.notes[0];
+  SolidFileSettings s;
+  s.solid = "2";
+  Triangulation<3> second;
+  read_solid(file, 0.02, second, s);
+  EXPECT_NEAR(mesh_volume(second), 5e-5, 1e-12);
+  s.solid = "3";
+  Triangulation<3> none;
+  try
+    {
+      read_solid(file, 0.02, none, s);
+      FAIL() << "solid 3 of 2 was read";
+    }
+  catch (const abrade::InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("1 (0.0001 m^3), 2 (5e-05 m^3)"), std::string::npos) << e.what();
+    }
+}
+
+// A .msh with a sliver (a tetrahedron 1/1000 as high as wide) is reported as a poor mesh, with
+// the place of the sliver; the regular tetrahedron next to it is not.
+TEST(PartFiles, PoorMeshIsReportedWhereItIs)
+{
+  const std::string msh = tmp("abrade_sliver.msh");
+  std::ofstream(msh) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"
+                        "5 0.34 0.33 -0.001\n$EndNodes\n$Elements\n2\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 1 3 2 5\n"
+                        "$EndElements\n";
+  Triangulation<3>      t;
+  const SolidFileReport r = read_solid(msh, 0, t);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("poor mesh"), std::string::npos) << r.warnings[0];
+  EXPECT_NE(r.warnings[0].find("0.335 0.3325 -0.00025"), std::string::npos) << r.warnings[0];
+  SolidFileSettings lenient;
+  lenient.min_quality = 0;
+  Triangulation<3> t2;
+  EXPECT_TRUE(read_solid(msh, 0, t2, lenient).warnings.empty());
+}
+
+int main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
