@@ -3,6 +3,7 @@
 //   abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
 //   abrade params [--format text|prm]
 //   abrade export-walls [FILE.prm] --output DIR
+//   abrade convert SCRIPT.geo|CAD --output FILE.step
 //   abrade compare --predicted WORN --scan SCAN [--reference DESIGN] --output DIR [...]
 //   abrade calibrate --run DIR... --measurements FILE.csv --output DIR
 //   abrade --version
@@ -18,6 +19,7 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/fem/solid_file.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/sweep.h>
 #include <abrade/dem/mesh_io.h>
@@ -54,6 +56,9 @@ namespace
       knife life too (lifetime/NAME/, lifetime.png)
   abrade export-walls [FILE.prm] [--set ...]... --output DIR
       write every wall of the case, as the simulation sees it at t = 0, as DIR/NAME.stl
+  abrade convert SCRIPT.geo|FILE.step|FILE.brep --output FILE.step
+      write the CAD model of a Gmsh script (OpenCASCADE kernel) as STEP, its numbers as they
+      are (a script in millimetres gives a STEP in millimetres): a part drawn as a script
   abrade --version
 )";
 
@@ -324,6 +329,14 @@ int main(int argc, char **argv)
           o.lifetime_updates = cl.lifetime_updates;
           io::ProgressLine::set_quiet(cl.quiet);
           return coupling::run_concepts(o, std::filesystem::canonical("/proc/self/exe").string());
+        }
+      if (cl.command == "convert")
+        {
+          if (cl.file.empty() || cl.output.empty())
+            throw InputError("command line", "convert needs an input file and --output FILE.step");
+          fem::convert_to_step(cl.file, cl.output);
+          std::cout << cl.output << "\n";
+          return 0;
         }
       if (cl.command == "export-walls")
         {

@@ -4,7 +4,8 @@
 // 2. Check the mesh: scaled Jacobians, aspect ratio, inverted cells (an inverted cell is an
 //    error), the wearable and clamped boundary.
 // 3. Write knife/knife.pvd + .vtu (cell field scaled_jacobian), knife/knife.stl (the surface the
-//    DEM would see), and volume, mass and quality into summary.json.
+//    DEM would see; boundary_id 1 wears, 2 is clamped), the parametric knife as knife/knife.step
+//    (millimetres), and volume, mass, quality and a part's faces into summary.json.
 #include <abrade/common/error.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
@@ -66,7 +67,10 @@ namespace abrade::coupling
     r["bounding_box"] = std::vector<double>{box.lower_bound(0), box.lower_bound(1), box.lower_bound(2),
                                             box.upper_bound(0), box.upper_bound(1), box.upper_bound(2)};
     if (!kp.from_file)
-      r["analytic_volume"] = k.volume();
+      {
+        r["analytic_volume"] = k.volume();
+        k.write_step(dir + "/knife.step"); // the design as CAD, in millimetres
+      }
     else
       {
         // the part's faces as the file numbers them: what Clamped faces / Wearable faces select

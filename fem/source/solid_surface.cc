@@ -236,7 +236,25 @@ namespace abrade::fem
     io::write_stl(stl, old.as_polydata());
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
-    read_solid(stl, h, new_tria, as_is);
+    try
+      {
+        read_solid(stl, h, new_tria, as_is);
+      }
+    catch (const InputError &remeshing)
+      {
+        // Gmsh could not remesh the worn surface (it cannot parametrise a folded or tangled
+        // patch): the volume is filled again inside the surface's own triangles, which the next
+        // remesh may then improve
+        new_tria.clear();
+        try
+          {
+            read_closed_triangles(stl, h, new_tria);
+          }
+        catch (const InputError &)
+          {
+            throw remeshing;
+          }
+      }
     // boundary ids from the old boundary triangle closest to each new face's centre
     for (const auto &cell : new_tria.active_cell_iterators())
       for (const unsigned f : cell->face_indices())

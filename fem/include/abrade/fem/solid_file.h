@@ -67,6 +67,11 @@ namespace abrade::fem
   SolidFileReport read_solid(const std::string &path, double mesh_size, dealii::Triangulation<3> &tria,
                              const SolidFileSettings &settings = {});
 
+  /// Tetrahedra that fill the closed triangle surface of @p stl as it is (its triangles are not
+  /// remeshed; the interior with tetrahedra of at most @p mesh_size). Boundary ids: Gmsh's
+  /// surface number. Throws InputError when Gmsh cannot fill it.
+  void read_closed_triangles(const std::string &stl, double mesh_size, dealii::Triangulation<3> &tria);
+
   /// The number of tetrahedra of size @p mesh_size that fill @p volume, about: a regular
   /// tetrahedron of edge h has the volume h^3 / (6 sqrt 2), and Gmsh's are a little smaller.
   double estimated_cells(double volume, double mesh_size);
@@ -78,6 +83,11 @@ namespace abrade::fem
   /// size @p mesh_size, meshed with Gmsh; only vertices and triangles are set. Throws
   /// InputError naming the file when it cannot be read or holds no surface.
   SolidSurface read_cad_surface(const std::string &path, double mesh_size);
+  /// Writes the CAD model of @p input (a Gmsh script, .geo, with the OpenCASCADE kernel, or a
+  /// STEP/BREP file) as STEP to @p step_file, its numbers as they are: a script drawn in
+  /// millimetres gives a STEP in millimetres (the unit OpenCASCADE's writer declares). Throws
+  /// InputError naming the file when Gmsh cannot read it or it holds no solid.
+  void convert_to_step(const std::string &input, const std::string &step_file);
   /// Whether @p path names a CAD file by its extension (.step/.stp/.iges/.igs, any case).
   bool is_cad_file(const std::string &path);
 } // namespace abrade::fem
