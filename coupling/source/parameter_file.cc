@@ -4,6 +4,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -36,22 +37,48 @@ namespace abrade::coupling
       return s.str();
     }
 
-    template <typename F>
-    void translating_errors(F &&f)
+    /// Appends @p file's lines to @p text, every `include FILE` line replaced by that file's
+    /// lines (relative to @p file's directory), recording where each line comes from.
+    void expand_includes(const std::string &file, std::vector<std::string> &chain, std::string &text,
+                         std::vector<std::pair<std::string, int>> &origin)
     {
-      try
+      const std::string canonical = std::filesystem::weakly_canonical(file).string();
+      if (chain.size() >= 32)
+        throw InputError(file, "includes nested more than 32 deep");
+      chain.push_back(canonical);
+      std::istringstream in(read_text(file));
+      std::string        line;
+      const auto         base = std::filesystem::path(file).parent_path();
+      for (int n = 1; std::getline(in, line); ++n)
         {
-          f();
+          const std::string t = dealii::Utilities::trim(line.substr(0, line.find('#')));
+          if (t.rfind("include ", 0) == 0 || t.rfind("INCLUDE ", 0) == 0)
+            {
+              std::filesystem::path included(dealii::Utilities::trim(t.substr(8)));
+              if (included.is_relative())
+                included = base / included;
+              const std::string where = file + ":" + std::to_string(n);
+              if (!std::filesystem::is_regular_file(included))
+                throw InputError(where, "included file " + included.string() + " not found");
+              if (std::find(chain.begin(), chain.end(), std::filesystem::weakly_canonical(included).string()) !=
+                  chain.end())
+                {
+                  std::string how;
+                  for (const auto &c : chain)
+                    how += std::filesystem::path(c).filename().string() + " -> ";
+                  throw InputError(where, "includes " + included.filename().string() + " again (" + how +
+                                            included.filename().string() +
+                                            "): a file cannot include itself, directly or through others");
+                }
+              expand_includes(included.string(), chain, text, origin);
+              continue;
+            }
+          text += line + "\n";
+          origin.emplace_back(file, n);
         }
-      catch (const abrade::InputError &)
-        {
-          throw;
-        }
-      catch (const dealii::ExceptionBase &e)
-        {
-          throw InputError("", one_line(e));
-        }
+      chain.pop_back();
     }
+
   } // namespace
 
   Override parse_override(const std::string &text)
@@ -95,11 +122,38 @@ namespace abrade::coupling
         prm.leave_subsection();
     }
 
-    void parse_into(dealii::ParameterHandler &prm, const std::string &file, const std::string &text,
-                    bool lenient)
+    /// Parses @p text (of @p file, includes expanded); an error names the file and line the
+    /// offending line comes from (@p origin).
+    void parse_into(dealii::ParameterHandler &prm, const std::string &file, const std::string &text, bool lenient,
+                    const std::vector<std::pair<std::string, int>> &origin)
     {
       std::istringstream in(text);
-      translating_errors([&] { prm.parse_input(in, file, "", lenient); });
+      try
+        {
+          prm.parse_input(in, file, "", lenient);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          std::string msg = one_line(e);
+          if (msg.rfind(file + ":", 0) == 0)
+            {
+              const std::string rest = msg.substr(file.size() + 1);
+              const auto        colon = rest.find(':');
+              std::size_t       used  = 0;
+              long              n     = 0;
+              try
+                {
+                  n = std::stol(rest.substr(0, colon), &used);
+                }
+              catch (const std::exception &)
+                {
+                  used = 0;
+                }
+              if (colon != std::string::npos && used == colon && n >= 1 && std::size_t(n) <= origin.size())
+                msg = origin[n - 1].first + ":" + std::to_string(origin[n - 1].second) + rest.substr(colon);
+            }
+          throw InputError("", msg);
+        }
     }
   } // namespace
 
@@ -114,20 +168,8 @@ namespace abrade::coupling
           throw InputError(f, "parameter file not found");
         if (!std::filesystem::is_regular_file(f))
           throw InputError(f, "not a regular file");
-        text = read_text(f);
-        // `include FILE` is relative to this file's directory, not to the working directory
-        std::istringstream in(text);
-        std::string        line, resolved;
-        const auto         base = std::filesystem::path(f).parent_path();
-        while (std::getline(in, line))
-          {
-            const std::string t = dealii::Utilities::trim(line);
-            if ((t.rfind("include ", 0) == 0 || t.rfind("INCLUDE ", 0) == 0) &&
-                std::filesystem::path(dealii::Utilities::trim(t.substr(8))).is_relative())
-              line = "include " + (base / dealii::Utilities::trim(t.substr(8))).string();
-            resolved += line + "\n";
-          }
-        text = resolved;
+        std::vector<std::string> chain;
+        expand_includes(f, chain, text, origin);
       }
     std::vector<Override> overrides;
     for (const auto &s : set)
@@ -136,14 +178,14 @@ namespace abrade::coupling
     // pass 1: the lists that shape the declarations
     dealii::ParameterHandler lists;
     declare_lists(lists);
-    parse_into(lists, file, text, true);
+    parse_into(lists, file, text, true, origin);
     for (const auto &o : overrides)
       apply_override(lists, o, true);
     const DeclarationLists l = read_lists(lists);
 
     // pass 2: everything, strictly
     declare_parameters(prm, l);
-    parse_into(prm, file, text, false);
+    parse_into(prm, file, text, false, origin);
     for (const auto &o : overrides)
       apply_override(prm, o, false);
   }
@@ -155,14 +197,13 @@ namespace abrade::coupling
 
   std::string ParameterFile::locate(const std::vector<std::string> &path, const std::string &key) const
   {
-    // Walk the file's subsection structure and find "set KEY" inside PATH.
+    // Walk the file's subsection structure and find the last "set KEY" inside PATH (the one that
+    // takes effect), in the file it comes from.
     std::istringstream       in(text);
-    std::string              line;
+    std::string              line, where = file;
     std::vector<std::string> current;
-    int                      n = 0;
-    while (std::getline(in, line))
+    for (std::size_t n = 0; std::getline(in, line); ++n)
       {
-        ++n;
         std::string l = dealii::Utilities::trim(line.substr(0, line.find('#')));
         if (l.rfind("subsection ", 0) == 0)
           current.push_back(dealii::Utilities::trim(l.substr(11)));
@@ -172,10 +213,11 @@ namespace abrade::coupling
           {
             const auto eq = l.find('=');
             if (eq != std::string::npos && dealii::Utilities::trim(l.substr(4, eq - 4)) == key)
-              return file + ":" + std::to_string(n);
+              where = n < origin.size() ? origin[n].first + ":" + std::to_string(origin[n].second)
+                                        : file + ":" + std::to_string(n + 1);
           }
       }
-    return file;
+    return where;
   }
 
   void ParameterFile::fail(const std::vector<std::string> &path, const std::string &key,

@@ -4,7 +4,10 @@
 // Some subsections depend on the file itself (one "Wall NAME" subsection per name in "Walls"),
 // so a file is read twice: a first lenient pass reads only those lists, then every parameter is
 // declared and the file is read strictly. Every problem becomes an abrade::InputError with a
-// one-line message naming the file, the line and the key.
+// one-line message naming the file, the line and the key. `include FILE` lines are expanded in
+// place (relative to the including file, nested to any depth; a file that includes itself,
+// directly or through others, is an error naming the chain), and every message names the file
+// and line a parameter really comes from.
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -43,7 +46,9 @@ namespace abrade::coupling
   private:
     dealii::ParameterHandler prm;
     std::string              file;
-    std::string              text; ///< the file's content
+    std::string              text; ///< the file's content, its includes expanded in place
+    /// the file and line each line of text comes from (includes expanded)
+    std::vector<std::pair<std::string, int>> origin;
   };
 
   /// The embedded default case used by `abrade run` without a file.
