@@ -4,7 +4,8 @@
 // 2. Check the mesh: scaled Jacobians, aspect ratio, inverted cells (an inverted cell is an
 //    error), the wearable and clamped boundary.
 // 3. Write knife/knife.pvd + .vtu (cell field scaled_jacobian), knife/knife.stl (the surface the
-//    DEM would see; boundary_id 1 wears, 2 is clamped), the parametric knife as knife/knife.step
+//    DEM would see), knife/knife_surface.vtp (the same with boundary_id: 1 wears, 2 is clamped),
+//    the parametric knife as knife/knife.step
 //    (millimetres), and volume, mass, quality and a part's faces into summary.json.
 #include <abrade/common/error.h>
 #include <abrade/coupling/jobs.h>
@@ -53,7 +54,8 @@ namespace abrade::coupling
     fem::SolidOutput out(dir, "knife");
     out.write(tria, {{"scaled_jacobian", fem::cell_scaled_jacobians(tria)}}, 0.0);
     const fem::SolidSurface surface = fem::extract_surface(tria);
-    io::write_stl(dir + "/knife.stl", surface.as_polydata()); // boundary_id: 1 wears, 2 clamped
+    io::write_stl(dir + "/knife.stl", surface.as_polydata());
+    io::write_vtp(dir + "/knife_surface.vtp", surface.as_polydata()); // boundary_id: 1 wears, 2 clamped
 
     io::Json &r                  = ctx.results["knife"];
     r["cells"]                   = static_cast<long>(tria.n_active_cells());

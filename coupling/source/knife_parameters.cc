@@ -110,10 +110,17 @@ namespace abrade::coupling
             file.fail({"Knife"}, "Mesh size", text);
           }
         if (!kp.clamped_faces.empty() || !kp.wearable_faces.empty())
-          file.fail({"Knife"}, "Clamped faces",
+          file.fail({"Knife"}, kp.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
                     "the parametric knife's clamped face is its top (bolted to the shell); face selectors are for "
                     "Geometry = file");
+        // the parametric knife is built in the knife's frame: nothing to place
+        if (fs.rotation_angle != 0)
+          file.fail({"Knife"}, "Rotation angle", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        if (fs.offset.norm() > 0)
+          file.fail({"Knife"}, "Offset", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
       }
+    else if (!fem::is_cad_file(kp.file) && fs.solid != "all" && !fs.solid.empty())
+      file.fail({"Knife"}, "Solid", "only a CAD file (STEP/IGES) can hold several solids; " + kp.file + " is read whole");
     return kp;
   }
 
@@ -140,8 +147,12 @@ namespace abrade::coupling
           if (faces.size() < 600)
             faces += (faces.empty() ? "" : "; ") + std::to_string(f.id) + (f.name.empty() ? "" : " '" + f.name + "'") +
                      " at (" + format(f.centre[0]) + ", " + format(f.centre[1]) + ", " + format(f.centre[2]) + ")";
-        file.fail({"Knife"}, kp.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
-                  std::string(e.what()) + "; the part's faces: " + faces);
+        const std::string what = e.what();
+        file.fail({"Knife"}, what.rfind("Wearable faces:", 0) == 0 ? "Wearable faces" : "Clamped faces",
+                  (what.rfind("Wearable faces: ", 0) == 0 || what.rfind("Clamped faces: ", 0) == 0
+                     ? what.substr(what.find(':') + 2)
+                     : what) +
+                    "; the part's faces: " + faces);
       }
     return m;
   }
@@ -181,13 +192,15 @@ namespace abrade::coupling
     return wall_mesh(surface, wc.rotation, wc.offset);
   }
 
-  void fit_mounted_knives(DemCase &c, const fem::SolidSurface &design)
+  std::string fit_mounted_knives(DemCase &c, const fem::SolidSurface &design)
   {
     if (design.vertices.empty())
-      return;
-    double x0 = design.vertices[0][0], x1 = x0, z0 = design.vertices[0][2];
+      return {};
+    double x0 = design.vertices[0][0], x1 = x0, z0 = design.vertices[0][2], y0 = design.vertices[0][1], y1 = y0;
     for (const auto &p : design.vertices)
-      x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), z0 = std::min(z0, p[2]);
+      x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), z0 = std::min(z0, p[2]), y0 = std::min(y0, p[1]),
+      y1 = std::max(y1, p[1]);
+    const bool mounted = std::any_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model && !w.mount.empty(); });
     for (auto &wc : c.walls)
       if (wc.solid_model && !wc.mount.empty())
         {
@@ -195,6 +208,11 @@ namespace abrade::coupling
           const double length = c.mounted_knife_length;
           wc.offset += wc.rotation * dem::Vec3(0.5 * length - 0.5 * (x0 + x1), 0, -z0);
         }
+    if (mounted && !(y0 < 0 && y1 > 0))
+      return "the mounted part lies at y = " + format(y0) + " ... " + format(y1) +
+             " m in the knife's frame: its y = 0 plane is put on the lip's line (the middle of the plate "
+             "should be there); Knife/Offset moves it";
+    return {};
   }
 
   void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory, io::Log &log)
@@ -207,7 +225,8 @@ namespace abrade::coupling
     report_knife_mesh(kp, m, log);
     const fem::SolidSurface surface = fem::extract_surface(*m.tria);
     if (kp.from_file)
-      fit_mounted_knives(c, surface);
+      if (const std::string w = fit_mounted_knives(c, surface); !w.empty())
+        log.warning(w);
     for (auto &wc : c.walls)
       if (wc.solid_model)
         wc.wall.mesh = place_surface(surface, wc);

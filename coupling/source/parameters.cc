@@ -139,7 +139,8 @@ namespace abrade::coupling
     prm.declare_entry("File scale", "1", Double(1e-12, huge),
                       "[-] Geometry = file: multiplies the file's coordinates. STL and .msh files have no unit "
                       "(0.001: the file is in millimetres); STEP/IGES files declare theirs, which is converted "
-                      "to metres on import (leave 1). Range: > 0.");
+                      "to metres on import (leave 1; another value multiplies on top, with a warning). A .msh "
+                      "of hexahedra is split into tetrahedra. Range: > 0.");
     prm.declare_entry("Maximum cells", "3000000", Double(0, huge),
                       "[-] Refuse a knife that would need more tetrahedra than this (estimated before meshing "
                       "from its volume and Mesh size: about 8.5 V / h^3), with a Mesh size that fits; 0: no "
@@ -151,7 +152,8 @@ namespace abrade::coupling
     declare_vector(prm, "Rotation axis", "0, 0, 1",
                    "[-] Geometry = file: the axis of the rotation that brings the part from the file's "
                    "(assembly) coordinates into the knife's frame (edge along x at the bottom, height along "
-                   "z); through the origin, right-handed.");
+                   "z); through the origin, right-handed. A mounted part is then centred on its shell's lip "
+                   "along x and z by its bounding box; across the lip its y = 0 plane lies on the lip's line.");
     prm.declare_entry("Rotation angle", "0", Double(-360, 360),
                       "[deg] Geometry = file: the angle of that rotation. The part's point p becomes "
                       "R (File scale x p) + Offset: scaled, rotated about the origin, then moved. Range: "
@@ -381,7 +383,8 @@ namespace abrade::coupling
                           "and Offset are ignored). Empty: placed by Offset.");
         prm.declare_entry("Lip centre", "", List(Double(-huge, huge), 0, 3),
                           "[m] A shell read from a file (Geometry = file) that carries a knife: the "
-                          "centre of its lip, in the file's coordinates (before Offset): 'x, y, z'. "
+                          "centre of its lip, in the file's coordinates in metres (after File scale, before "
+                          "Rotation and Offset): 'x, y, z'. "
                           "Empty: the wall has no lip.");
         declare_vector(prm, "Lip direction", "0, 1, 0",
                        "Shell from a file: the direction along its lip. Its sign decides which face of "
@@ -395,8 +398,10 @@ namespace abrade::coupling
         declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
         declare_vector(prm, "Rotation axis", "0, 0, 1",
                        "[-] Axis of a rotation of the geometry about the origin (right-handed), before Offset: "
-                       "a point p of the file (or primitive) becomes R (File scale x p) + Offset. 'Lip centre', "
-                       "its directions and Motion/Centre are given before the rotation and turn with it.");
+                       "a point p of the geometry (a file's, in metres after File scale, or a primitive's) becomes "
+                       "R p + Offset. 'Lip centre', its directions and Motion/Centre are given before the rotation "
+                       "and turn with it; Motion/Velocities, Angular velocities and the Layer probe's Axis are in "
+                       "the global frame and do not.");
         prm.declare_entry("Rotation angle", "0", Double(-360, 360),
                           "[deg] Angle of that rotation; 0: none. Not for a mounted knife (the shell places it). "
                           "Range: [-360, 360].");

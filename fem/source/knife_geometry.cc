@@ -1,6 +1,8 @@
 #include <abrade/common/error.h>
 #include <abrade/fem/knife_geometry.h>
 
+#include "quiet_stdout.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria_base.h>
 #include <deal.II/grid/grid_in.h>
@@ -130,7 +132,7 @@ namespace abrade::fem
         gmsh::model::getEntities(all, 3);
         gmsh::model::occ::dilate(all, 0, 0, 0, 1000, 1000, 1000);
         gmsh::model::occ::synchronize();
-        gmsh::write(step_file);
+        with_stdout_silenced([&] { gmsh::write(step_file); });
       }
     catch (...)
       {

@@ -101,7 +101,7 @@ namespace abrade::fem
       {
         const SolidSurface old_surface = extract_surface(*tria);
         auto               fresh       = std::make_unique<Triangulation<3>>();
-        remesh(*tria, settings.mesh_size, *fresh, settings.work_directory);
+        r.surface_kept = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory);
         tria = std::move(fresh);
         ++remeshes;
         r.remeshed = true;

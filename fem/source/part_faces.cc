@@ -2,6 +2,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -61,8 +62,15 @@ namespace abrade::fem
         {
           case FaceSelector::Kind::group:
             {
-              if (const auto it = names.find(id); it != names.end() && it->second == s.group)
-                return true;
+              // a name the file gives takes precedence over a number (a group named "7" is not
+              // the group of tag 7)
+              const bool is_a_name = std::any_of(names.begin(), names.end(),
+                                                 [&](const auto &n) { return n.second == s.group; });
+              if (is_a_name)
+                {
+                  const auto it = names.find(id);
+                  return it != names.end() && it->second == s.group;
+                }
               return s.group == std::to_string(id);
             }
           case FaceSelector::Kind::box:

@@ -4,11 +4,14 @@
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
 
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/physics/transformations.h>
 
 #include <gmsh.h>
+
+#include "quiet_stdout.h"
 
 #include <algorithm>
 #include <array>
@@ -235,14 +238,19 @@ namespace abrade::fem
         throw InputError(path, "the part has coordinates that are not finite numbers");
       const std::string size = format_number(extent[0]) + " x " + format_number(extent[1]) + " x " +
                                format_number(extent[2]) + " m";
-      const std::string fix  = has_units ? "check the unit the file declares, or set Knife/File scale"
-                                         : "set Knife/File scale (the file has no unit)";
+      // a CAD file's unit is converted on import: its File scale (s.scale) multiplies on top
+      const double      now = has_units ? s.scale : scale;
+      const std::string fix =
+        has_units ? (s.scale != 1 ? "the file declares its unit, which is converted: is Knife/File scale = " +
+                                      format_number(s.scale) + " meant? (1 reads it as declared); or set it"
+                                  : "check the unit the file declares, or set Knife/File scale")
+                  : "set Knife/File scale (the file has no unit)";
       if (largest > s.max_extent)
         throw InputError(path, "the part's bounding box is " + size + ", larger than " + format_number(s.max_extent) +
-                                 " m: is it in millimetres? " + fix + " = " + format_number(0.001 * scale));
+                                 " m: is it in millimetres? " + fix + " = " + format_number(0.001 * now));
       if (largest < s.min_extent)
         throw InputError(path, "the part's bounding box is " + size + ", smaller than " + format_number(s.min_extent) +
-                                 " m: is it in metres read as millimetres? " + fix + " = " + format_number(1000 * scale));
+                                 " m: is it in metres read as millimetres? " + fix + " = " + format_number(1000 * now));
     }
 
     /// Refuses a part that is implausibly heavy, or that would need more than the allowed
@@ -305,6 +313,9 @@ namespace abrade::fem
       choose_solid(path, settings.solid, report);
       if (settings.scale != 1)
         {
+          report.warnings.push_back("Knife/File scale = " + format_number(settings.scale) +
+                                    " multiplies the part on top of the unit the file declares (converted to metres "
+                                    "on import): 1 reads it as declared");
           gmsh::vectorpair volumes;
           gmsh::model::getEntities(volumes, 3);
           gmsh::model::occ::dilate(volumes, 0, 0, 0, settings.scale, settings.scale, settings.scale);
@@ -382,6 +393,19 @@ namespace abrade::fem
       {
         read_msh_file(path, tria);
         report.face_names = physical_surface_names(path);
+        bool hexahedra = false;
+        for (const auto &cell : tria.active_cell_iterators())
+          hexahedra = hexahedra || !cell->reference_cell().is_simplex();
+        if (hexahedra)
+          {
+            // the knife model (mesh motion, remeshing, checkpoints) works on tetrahedra: each
+            // hexahedron becomes tetrahedra (deal.II), boundary ids kept
+            Triangulation<3> tets;
+            GridGenerator::convert_hypercube_to_simplex_mesh(tria, tets);
+            tria.clear();
+            tria.copy_triangulation(tets);
+            report.notes.push_back("hexahedra split into " + std::to_string(tria.n_active_cells()) + " tetrahedra");
+          }
         if (settings.scale != 1)
           GridTools::scale(settings.scale, tria);
         const BoundingBox<3> b = GridTools::compute_bounding_box(tria);
@@ -502,7 +526,7 @@ namespace abrade::fem
       gmsh::model::getEntities(volumes, 3);
       if (volumes.empty())
         throw InputError(input, "holds no solid (a .geo script needs SetFactory(\"OpenCASCADE\") and a volume)");
-      gmsh::write(step_file);
+      with_stdout_silenced([&] { gmsh::write(step_file); });
     });
     if (!std::filesystem::exists(step_file))
       throw InputError(step_file, "Gmsh did not write it");

@@ -228,7 +228,7 @@ namespace abrade::fem
     return s;
   }
 
-  void remesh(const Triangulation<3> &tria, double h, Triangulation<3> &new_tria, const std::string &dir)
+  std::string remesh(const Triangulation<3> &tria, double h, Triangulation<3> &new_tria, const std::string &dir)
   {
     const SolidSurface old = extract_surface(tria);
     std::filesystem::create_directories(dir);
@@ -236,12 +236,14 @@ namespace abrade::fem
     io::write_stl(stl, old.as_polydata());
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
+    std::string kept;
     try
       {
         read_solid(stl, h, new_tria, as_is);
       }
     catch (const InputError &remeshing)
       {
+        kept = remeshing.what();
         // Gmsh could not remesh the worn surface (it cannot parametrise a folded or tangled
         // patch): the volume is filled again inside the surface's own triangles, which the next
         // remesh may then improve
@@ -275,5 +277,6 @@ namespace abrade::fem
               }
             cell->face(f)->set_boundary_id(old.boundary_id[best]);
           }
+    return kept;
   }
 } // namespace abrade::fem

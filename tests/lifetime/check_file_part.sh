@@ -13,6 +13,8 @@
 #     interpolated). (That clamped faces do not move: the unit test PartFiles.ClampedFacesDoNotMove.)
 #  3. A part mounted on a grab shell: the grab's knife as STEP, moved by Knife/Offset, sits on
 #     the lip where the parametric knife sits (bounding boxes to 1e-5 m: single-precision STL).
+#  4. A file wall turned by Rotation axis / Rotation angle and moved by Offset lies where R p + o
+#     puts it.
 #   check_file_part.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -46,6 +48,22 @@ grab=$src/cases/grab/grab_coarse.prm
 "$abrade" export-walls "$grab" --output "$out/grab_file" --set "Knife/Geometry=file" \
   --set "Knife/File=$out/grab_knife/knife/knife.step" --set "Knife/Offset=1, 0, 3" > /dev/null
 
+# 4. a wall from a file, turned 90 degrees about z and moved: the knife STL in millimetres
+#    (x 0..400, y -15..15, z 0..500) lies at x 1 -+ 0.015, y 2 .. 2.4, z 3 .. 3.5
+cat > "$out/turned_wall.prm" <<PRM
+set Job   = dem
+set Walls = turned
+subsection Wall turned
+  set Geometry       = file
+  set File           = $src/tests/cli/knife_mm.stl
+  set File scale     = 0.001
+  set Rotation axis  = 0, 0, 1
+  set Rotation angle = 90
+  set Offset         = 1, 2, 3
+end
+PRM
+"$abrade" export-walls "$out/turned_wall.prm" --output "$out/turned" > /dev/null
+
 python3 - "$out" <<'EOF'
 import csv, json, sys
 out = sys.argv[1]
@@ -77,7 +95,11 @@ check(abs(c["volume"] / m["volume"] - 1) < 1e-9 and len(c["file_faces"]) == len(
       f"edge.step is what edge.geo makes: {c['volume']} / {m['volume']} m^3, {len(c['file_faces'])} faces")
 box = c["bounding_box"]
 check(all(abs(x - y) < 1e-9 for x, y in zip(box, [0, -0.015, 0, 0.4, 0.015, 0.5])), f"placed: bounding box {box}")
-check(c["clamped_area"] > 0.1, f"clamped: bolt holes, top, back: {c['clamped_area']} m^2")
+# the clamped faces' true area: four holes (22 mm, 30 mm deep), the top (0.4 x 0.03), the back
+# above 0.3 m (0.4 x 0.2) less the holes' openings; the mesh's holes are 12-sided prisms (-0.1 %)
+import math
+true = 4 * math.pi * 0.022 * 0.03 + 0.4 * 0.03 + 0.4 * 0.2 - 4 * math.pi * 0.011 ** 2
+check(abs(c["clamped_area"] / true - 1) < 5e-3, f"clamped: bolt holes, top, back: {c['clamped_area']} m^2 (true {true:.6f})")
 e = results("edge_life")["lifetime"]
 check(e["end"] == "maximum depth reached" and e["end_of_life_method"].startswith("interpolated"),
       f"worked example: {e['end']}, {e['end_of_life_method']}, {e['predicted_tonnes_to_end_of_life']:.0f} t")
@@ -96,6 +118,8 @@ def stl_box(path):
 for knife in ("right_knife", "left_knife"):
     a, b = stl_box(f"{out}/grab_parametric/{knife}.stl"), stl_box(f"{out}/grab_file/{knife}.stl")
     check(all(abs(x - y) < 1e-5 for x, y in zip(a, b)), f"{knife} mounted from a file: {b} vs parametric {a}")
+t = stl_box(f"{out}/turned/turned.stl")
+check(all(abs(x - y) < 1e-6 for x, y in zip(t, [0.985, 2, 3, 1.015, 2.4, 3.5])), f"wall turned 90 deg about z and moved: {t}")
 if fails:
     sys.exit(1)
 EOF

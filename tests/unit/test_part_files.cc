@@ -117,6 +117,10 @@ TEST(PartFiles, FacesByGroupNumberAndBox)
   in_box.copy_triangulation(t);
   EXPECT_NEAR(clamped_area(t, "group bolted", r.face_names), 0.012, 1e-12);
   EXPECT_NEAR(clamped_area(by_number, "group 7", r.face_names), 0.012, 1e-12);
+  // a group the file names "7" is that group, not the group of tag 7 (names win over numbers)
+  Triangulation<3> named_seven;
+  read_solid(msh, 0, named_seven, s);
+  EXPECT_NEAR(clamped_area(named_seven, "group 7", {{7, "bolted"}, {8, "7"}}), 0.454 - 0.012, 1e-12);
   // the -y face (0.4 x 0.5) and the top by a box around each
   EXPECT_NEAR(clamped_area(in_box, "box -1, -0.016, -1, 1, -0.014, 1; box -1, -1, 0.499, 1, 1, 0.501"), 0.2 + 0.012,
               1e-12);

@@ -217,7 +217,11 @@ namespace abrade::coupling::lifetime
         KnifeMesh m = mesh_knife(knife_parameters, ctx.parameters, ks.work_directory);
         report_knife_mesh(knife_parameters, m, ctx.log, &warnings);
         knife = std::make_unique<fem::KnifeModel>(std::move(m.tria), ks);
-        fit_mounted_knives(dem_case, knife->design_surface());
+        if (const std::string w = fit_mounted_knives(dem_case, knife->design_surface()); !w.empty())
+          {
+            ctx.log.warning(w);
+            warnings.push_back(w);
+          }
       }
     else
       knife = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
@@ -369,6 +373,12 @@ namespace abrade::coupling::lifetime
         if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
           {
             st.moved = true;
+            if (!st.result.surface_kept.empty())
+              {
+                ++surfaces_kept;
+                ctx.log.warning("update " + std::to_string(update) + ": " + st.result.surface_kept +
+                                "; the knife was meshed again inside its worn surface's own triangles");
+              }
             break;
           }
         if (error.empty())
@@ -602,6 +612,8 @@ namespace abrade::coupling::lifetime
     r["worn_mass"]     = (volume0 - knife->volume()) * knife_parameters.density;
     r["archard_volume"] = archard_total;
     r["remeshes"]      = static_cast<long>(knife->n_remeshes());
+    // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
+    r["remeshes_inside_worn_surface"] = surfaces_kept;
     r["smoothing_radius"] = s.smoothing;
     if (source->archard_coefficient() > 0) // the W the depths scale with (abrade calibrate rescales it)
       r["archard_coefficient"] = source->archard_coefficient();

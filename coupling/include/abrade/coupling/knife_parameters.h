@@ -56,8 +56,10 @@ namespace abrade::coupling
 
   /// A part from a file mounted on a shell: centred along the lip by its bounding box, its
   /// lowest point (the edge) 'Knife protrusion' beyond the lip (the parametric knife, x from 0
-  /// to its length and its edge at z = 0, is placed so by construction).
-  void fit_mounted_knives(DemCase &c, const fem::SolidSurface &design);
+  /// to its length and its edge at z = 0, is placed so by construction). Across the lip (y) the
+  /// part stays as placed: its y = 0 plane on the lip's line. Returns a warning when the part
+  /// does not straddle y = 0 (empty otherwise).
+  std::string fit_mounted_knives(DemCase &c, const fem::SolidSurface &design);
 
   /// Meshes the knife of subsection Knife (into @p directory) and gives every wall with
   /// Geometry = solid model its surface, placed.

@@ -61,6 +61,9 @@ namespace abrade::fem
     {
       MeshQuality           quality;
       bool                  remeshed = false;
+      /// Gmsh could not remesh the worn surface: why (the volume was filled inside the
+      /// surface's own triangles instead); empty otherwise.
+      std::string           surface_kept;
       std::vector<unsigned> worn_through; ///< surface vertices (of the surface before the update)
       double                volume = 0;
     };

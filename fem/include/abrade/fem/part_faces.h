@@ -7,7 +7,8 @@
 // The user then says which faces are clamped (bolted or welded to the shell: the mesh motion
 // holds them, no wear is applied there) and which wear, with selectors:
 //
-//   group NAME | group NUMBER            a physical group (by name or tag) or a CAD face (number)
+//   group NAME | group NUMBER            a physical group (by name or tag) or a CAD face (number);
+//                                        a name the file gives wins over a number
 //   box x0, y0, z0, x1, y1, z1           faces whose centre lies in the box [m, the part's frame]
 //   normal nx, ny, nz [, angle]          faces whose outward normal is within angle (degrees,
 //                                        default 10) of the direction

@@ -66,7 +66,7 @@ namespace abrade::fem
   /// Remeshing: a new tetrahedral mesh of size @p mesh_size that fills the current boundary of
   /// @p tria (through an STL of the surface and Gmsh); boundary ids of the new faces are taken
   /// from the nearest old boundary face. When Gmsh cannot remesh the surface, the volume is filled
-  /// again inside the surface's own triangles.
-  void remesh(const dealii::Triangulation<3> &tria, double mesh_size, dealii::Triangulation<3> &new_tria,
-              const std::string &work_directory);
+  /// again inside the surface's own triangles: returns the reason then (empty: remeshed).
+  std::string remesh(const dealii::Triangulation<3> &tria, double mesh_size, dealii::Triangulation<3> &new_tria,
+                     const std::string &work_directory);
 } // namespace abrade::fem

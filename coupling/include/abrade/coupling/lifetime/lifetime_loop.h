@@ -118,6 +118,7 @@ namespace abrade::coupling::lifetime
     std::vector<SeedFactors>     seed_factors; ///< per criterion
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
+    long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)
 
     // the end of the run
     std::string end = "maximum updates reached";
