@@ -172,6 +172,34 @@ namespace abrade::fem
         }
     }
 
+    /// A CAD file of faces and no solid (a surface model, as IGES files often are): the faces
+    /// sewn into one closed shell (their shared edges matched geometrically) and the volume it
+    /// encloses, said in @p report; an error naming the file when they do not close.
+    void sew_faces_into_a_solid(const std::string &path, SolidFileReport &report)
+    {
+      gmsh::vectorpair volumes, faces;
+      gmsh::model::getEntities(volumes, 3);
+      gmsh::model::getEntities(faces, 2);
+      if (!volumes.empty() || faces.empty())
+        return;
+      std::vector<int> tags;
+      for (const auto &f : faces)
+        tags.push_back(f.second);
+      try
+        {
+          const int shell = gmsh::model::occ::addSurfaceLoop(tags, -1, true);
+          gmsh::model::occ::addVolume({shell});
+          gmsh::model::occ::synchronize();
+        }
+      catch (...)
+        {
+          throw InputError(path, "holds " + std::to_string(faces.size()) +
+                                   " faces and no solid, and the faces do not sew into a closed shell");
+        }
+      report.notes.push_back("no solid in the file: its " + std::to_string(faces.size()) +
+                             " faces sewn into a closed shell and the volume it encloses");
+    }
+
     /// Keeps the solid @p choice ("" or "all": all of them, fused into one conforming part) of
     /// the current model; says which in @p report.
     void choose_solid(const std::string &path, const std::string &choice, SolidFileReport &report)
@@ -310,6 +338,7 @@ namespace abrade::fem
     void load_cad(const std::string &path, double h, const SolidFileSettings &settings, SolidFileReport &report)
     {
       import_cad(path);
+      sew_faces_into_a_solid(path, report);
       choose_solid(path, settings.solid, report);
       if (settings.scale != 1)
         {

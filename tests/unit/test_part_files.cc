@@ -276,6 +276,46 @@ TEST(PartFiles, SeveralSolids)
     }
 }
 
+// A CAD file of faces and no solid (a surface model, as IGES files often are): the six faces of
+// the block, written without their volume, are sewn into a shell and give the block's volume;
+// five faces (an open box) are refused, naming the file.
+TEST(PartFiles, FacesSewnIntoASolid)
+{
+  for (const bool closed : {true, false})
+    {
+      const std::string file = tmp(closed ? "abrade_block_faces_only.step" : "abrade_open_box.step");
+      gmsh::initialize();
+      gmsh::option::setNumber("General.Terminal", 0);
+      gmsh::model::add("faces");
+      gmsh::model::occ::addBox(0, -15, 0, 400, 30, 500);
+      gmsh::model::occ::synchronize();
+      gmsh::model::occ::remove({{3, 1}}); // the faces stay
+      if (!closed)
+        gmsh::model::occ::remove({{2, 6}}, true);
+      gmsh::model::occ::synchronize();
+      gmsh::write(file);
+      gmsh::finalize();
+      Triangulation<3> t;
+      if (closed)
+        {
+          const SolidFileReport r = read_solid(file, 0.05, t);
+          EXPECT_NEAR(mesh_volume(t) / block_volume, 1, 1e-9);
+          ASSERT_FALSE(r.notes.empty());
+          EXPECT_NE(r.notes[0].find("6 faces sewn"), std::string::npos) << r.notes[0];
+        }
+      else
+        try
+          {
+            read_solid(file, 0.05, t);
+            FAIL() << "an open box was read as a solid";
+          }
+        catch (const abrade::InputError &e)
+          {
+            EXPECT_NE(std::string(e.what()).find("abrade_open_box.step"), std::string::npos) << e.what();
+          }
+    }
+}
+
 // A .msh with a sliver (a tetrahedron 1/1000 as high as wide) is reported as a poor mesh, with
 // the place of the sliver; the regular tetrahedron next to it is not.
 TEST(PartFiles, PoorMeshIsReportedWhereItIs)
