@@ -15,6 +15,8 @@
 #     the lip where the parametric knife sits (bounding boxes to 1e-5 m: single-precision STL).
 #  4. A file wall turned by Rotation axis / Rotation angle and moved by Offset lies where R p + o
 #     puts it.
+#  5. An IGES surface model in millimetres (iges_block.py) is read in metres and sewn into the
+#     block: its volume to 1e-9, its top face by its normal.
 #   check_file_part.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -63,6 +65,12 @@ subsection Wall turned
 end
 PRM
 "$abrade" export-walls "$out/turned_wall.prm" --output "$out/turned" > /dev/null
+
+# 5. IGES: the block (400 x 30 x 500 mm) as an IGES surface model in millimetres (six bounded
+#    planes, written by iges_block.py: Gmsh cannot write IGES), sewn into a solid
+python3 "$src/tests/lifetime/iges_block.py" "$out/block.igs"
+"$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/iges" --quiet --set "Knife/File=$out/block.igs" \
+  --set "Knife/Rotation angle=0" --set "Knife/Offset=0, 0, 0" --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
 
 python3 - "$out" <<'EOF'
 import csv, json, sys
@@ -118,6 +126,9 @@ def stl_box(path):
 for knife in ("right_knife", "left_knife"):
     a, b = stl_box(f"{out}/grab_parametric/{knife}.stl"), stl_box(f"{out}/grab_file/{knife}.stl")
     check(all(abs(x - y) < 1e-5 for x, y in zip(a, b)), f"{knife} mounted from a file: {b} vs parametric {a}")
+i = results("iges")["knife"]
+check(abs(i["volume"] / 0.006 - 1) < 1e-9 and abs(i["clamped_area"] - 0.012) < 1e-12,
+      f"IGES block in mm: volume {i['volume']} m^3, top {i['clamped_area']} m^2")
 t = stl_box(f"{out}/turned/turned.stl")
 check(all(abs(x - y) < 1e-6 for x, y in zip(t, [0.985, 2, 3, 1.015, 2.4, 3.5])), f"wall turned 90 deg about z and moved: {t}")
 if fails:

@@ -73,9 +73,9 @@ namespace
 } // namespace
 
 // STEP declares millimetres (converted on import); STL and .msh have no unit (scale 0.001).
-// Each gives the block's volume to 1e-9 and its top face (0.4 x 0.03 m) by its normal. (IGES is
-// read by the same OpenCASCADE import as STEP; Gmsh cannot write IGES, so no IGES file is made
-// here.)
+// Each gives the block's volume to 1e-9 and its top face (0.4 x 0.03 m) by its normal. (IGES:
+// Gmsh cannot write it; tests/lifetime/iges_block.py writes the block as an IGES surface model,
+// checked in ctest lifetime/file_part.)
 TEST(PartFiles, EveryFormatInMillimetres)
 {
   for (const std::string ext : {".step", ".stl", ".msh"})
