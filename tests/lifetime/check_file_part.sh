@@ -17,6 +17,8 @@
 #     puts it.
 #  5. An IGES surface model in millimetres (iges_block.py) is read in metres and sewn into the
 #     block: its volume to 1e-9, its top face by its normal.
+#  6. The field loop closes on the part: its last worn surface compared as a scan and calibrated
+#     gives scale 1 +- 0.01, correlation >= 0.99.
 #   check_file_part.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -71,6 +73,17 @@ PRM
 python3 "$src/tests/lifetime/iges_block.py" "$out/block.igs"
 "$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/iges" --quiet --set "Knife/File=$out/block.igs" \
   --set "Knife/Rotation angle=0" --set "Knife/Offset=0, 0, 0" --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
+
+# 6. the field loop on the part: its run's last worn surface compared as a scan (no registration)
+#    and calibrated gives the run's own wear scale back
+rows=$(( $(wc -l < "$out/edge_life/trajectory.csv") - 1 ))
+last=$(printf "knife_%05d.stl" "$rows")
+tonnes=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/edge_life/trajectory.csv")
+"$abrade" compare --predicted "$out/edge_life/knife/$last" --scan "$out/edge_life/knife/$last" \
+  --reference "$out/edge_life/knife/knife_00000.stl" --tonnes "$tonnes" --output "$out/edge_compare" \
+  --no-registration > /dev/null 2>&1
+"$abrade" calibrate --run "$out/edge_life" --measurements "$out/edge_compare/measured_depths.csv" \
+  --output "$out/edge_calibrate" > /dev/null
 
 python3 - "$out" <<'EOF'
 import csv, json, sys
@@ -129,6 +142,9 @@ for knife in ("right_knife", "left_knife"):
 i = results("iges")["knife"]
 check(abs(i["volume"] / 0.006 - 1) < 1e-9 and abs(i["clamped_area"] - 0.012) < 1e-12,
       f"IGES block in mm: volume {i['volume']} m^3, top {i['clamped_area']} m^2")
+cal = json.load(open(f"{out}/edge_calibrate/calibration.json"))["runs"][0]
+check(abs(cal["scale"] - 1) <= 0.01 and cal["correlation"] >= 0.99,
+      f"the part's own worn surface calibrates to scale {cal['scale']:.4f}, correlation {cal['correlation']:.4f}")
 t = stl_box(f"{out}/turned/turned.stl")
 check(all(abs(x - y) < 1e-6 for x, y in zip(t, [0.985, 2, 3, 1.015, 2.4, 3.5])), f"wall turned 90 deg about z and moved: {t}")
 if fails:
