@@ -2,6 +2,7 @@
 #include <abrade/coupling/lifetime_checkpoints.h>
 #include <abrade/dem/parallel.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 
@@ -21,18 +22,31 @@ namespace abrade::coupling
     return directory + "/loop-" + std::to_string(update) + ".txt";
   }
 
-  long LifetimeCheckpoints::newest() const
+  std::vector<long> LifetimeCheckpoints::updates() const
   {
-    long             newest = -1;
-    const std::regex state(R"(loop-([0-9]+)\.txt)");
-    std::error_code  ec;
+    // the updates that have a state or a knife file (a stray name with a 30-digit number is
+    // not one: at most 15 digits)
+    std::vector<long> found;
+    const std::regex  files(R"((loop-([0-9]{1,15})\.txt)|(knife-([0-9]{1,15})\.ckpt))");
+    std::error_code   ec;
     for (const auto &entry : std::filesystem::directory_iterator(directory, ec))
       {
-        std::smatch      m;
+        std::smatch       m;
         const std::string name = entry.path().filename().string();
-        if (std::regex_match(name, m, state))
-          newest = std::max(newest, std::stol(m[1]));
+        if (std::regex_match(name, m, files))
+          found.push_back(std::stol(m[2].matched ? m[2].str() : m[4].str()));
       }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  }
+
+  long LifetimeCheckpoints::newest() const
+  {
+    long newest = -1;
+    for (const long u : updates())
+      if (std::filesystem::exists(state_file(u)))
+        newest = std::max(newest, u);
     return newest;
   }
 
@@ -40,8 +54,9 @@ namespace abrade::coupling
   {
     const long mine   = newest();
     const long common = std::max(0L, long(ranks.min(double(mine))));
-    for (long u = mine; u > common; --u)
-      remove(u);
+    for (const long u : updates()) // those beyond the common point (not counted down: a stray
+      if (u > common)              // loop-999999999999.txt would take years)
+        remove(u);
     if (common > 0 && !std::filesystem::exists(state_file(common)))
       throw InputError(state_file(common), "missing: another MPI rank resumes from this update, this rank kept "
                                            "only update " + std::to_string(mine) + " (checkpoints edited?)");
@@ -52,7 +67,7 @@ namespace abrade::coupling
 
   void LifetimeCheckpoints::clear() const
   {
-    for (long u = newest(); u >= 0; --u)
+    for (const long u : updates())
       remove(u);
   }
 

@@ -37,6 +37,8 @@ namespace abrade::coupling
       return s.str();
     }
 
+    constexpr std::size_t max_line_length = 20000;
+
     /// Appends @p file's lines to @p text, every `include FILE` line replaced by that file's
     /// lines (relative to @p file's directory), recording where each line comes from.
     void expand_includes(const std::string &file, std::vector<std::string> &chain, std::string &text,
@@ -51,6 +53,12 @@ namespace abrade::coupling
       const auto         base = std::filesystem::path(file).parent_path();
       for (int n = 1; std::getline(in, line); ++n)
         {
+          // deal.II matches values with regular expressions, which overflow the stack on
+          // megabyte values: no parameter needs more than this
+          if (line.size() > max_line_length)
+            throw InputError(file + ":" + std::to_string(n), "a line of " + std::to_string(line.size()) +
+                                                               " characters, more than " +
+                                                               std::to_string(max_line_length));
           const std::string t = dealii::Utilities::trim(line.substr(0, line.find('#')));
           if (t.rfind("include ", 0) == 0 || t.rfind("INCLUDE ", 0) == 0)
             {
@@ -83,6 +91,10 @@ namespace abrade::coupling
 
   Override parse_override(const std::string &text)
   {
+    if (text.size() > max_line_length)
+      throw InputError("--set '" + text.substr(0, 40) + "...'", "a value of " + std::to_string(text.size()) +
+                                                                   " characters, more than " +
+                                                                   std::to_string(max_line_length));
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
       throw InputError("--set '" + text + "'", "expected \"Section/Subsection/Key=value\"");

@@ -96,6 +96,12 @@ namespace abrade::coupling
   {
     DeclarationLists l;
     l.walls = get_list(prm, "Walls");
+    // every wall is a subsection of some sixty parameters and a triangle mesh in every contact
+    // search: thousands are a mistake (a list pasted by accident), not a case
+    constexpr std::size_t most_walls = 1000;
+    if (l.walls.size() > most_walls)
+      throw InputError("", "Walls: " + std::to_string(l.walls.size()) + " walls listed, more than " +
+                             std::to_string(most_walls) + " (one name per wall, separated by commas)");
     return l;
   }
 

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/hash.h>
 #include <abrade/fem/knife_model.h>
 #include <abrade/fem/mesh_motion.h>
 
@@ -6,10 +7,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 namespace abrade::fem
 {
@@ -176,20 +179,24 @@ namespace abrade::fem
 
   namespace
   {
+    // A knife checkpoint: this line, the blocks (each its length, then its values), and the
+    // FNV-1a hash of all before it (16 hex digits): a changed byte is named, never read as a mesh.
+    const std::string checkpoint_magic = "abrade knife checkpoint 2\n";
+
     template <typename T>
-    void put(std::ofstream &out, const std::vector<T> &v)
+    void put(std::ostream &out, const std::vector<T> &v)
     {
       const std::uint64_t n = v.size();
       out.write(reinterpret_cast<const char *>(&n), sizeof n);
       out.write(reinterpret_cast<const char *>(v.data()), n * sizeof(T));
     }
     template <typename T>
-    std::vector<T> get(std::ifstream &in, const std::string &path)
+    std::vector<T> get(std::istream &in, std::size_t bytes_left, const std::string &path)
     {
       std::uint64_t n = 0;
       in.read(reinterpret_cast<char *>(&n), sizeof n);
-      if (!in || n > (1ULL << 32))
-        throw InputError(path, "corrupt knife checkpoint");
+      if (!in || n > bytes_left / sizeof(T))
+        throw InputError(path, "corrupt knife checkpoint (a block longer than the file)");
       std::vector<T> v(n);
       in.read(reinterpret_cast<char *>(v.data()), n * sizeof(T));
       if (!in)
@@ -216,23 +223,52 @@ namespace abrade::fem
                                        cell->face(f)->vertex_index(2), unsigned(cell->face(f)->boundary_id())});
       }
     const std::vector<double> state = {quality_threshold, double(remeshes)};
-    std::ofstream out(path, std::ios::binary);
-    put(out, vertices), put(out, cells), put(out, faces), put(out, accumulated), put(out, displacement),
-      put(out, since_remesh), put(out, state);
+    std::ostringstream        blocks(std::ios::binary);
+    blocks << checkpoint_magic;
+    put(blocks, vertices), put(blocks, cells), put(blocks, faces), put(blocks, accumulated), put(blocks, displacement),
+      put(blocks, since_remesh), put(blocks, state);
+    const std::string content = blocks.str();
+    std::ofstream     out(path, std::ios::binary);
+    out << content << io::fnv1a_hex(content);
+    out.close();
     if (!out)
       throw RunError("cannot write " + path);
   }
 
   void KnifeModel::load(const std::string &path)
   {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    std::ifstream file(path, std::ios::binary);
+    if (!file)
       throw InputError(path, "cannot open knife checkpoint");
-    const auto v = get<double>(in, path);
-    const auto c = get<unsigned>(in, path);
-    const auto f = get<unsigned>(in, path);
-    auto       acc = get<double>(in, path), disp = get<double>(in, path), since = get<double>(in, path);
-    const auto state = get<double>(in, path);
+    std::ostringstream whole;
+    whole << file.rdbuf();
+    const std::string text = whole.str();
+    if (text.rfind(checkpoint_magic, 0) != 0)
+      throw InputError(path, "not a knife checkpoint of this version of abrade (start afresh without --resume)");
+    if (text.size() < checkpoint_magic.size() + 16 ||
+        io::fnv1a_hex(text.substr(0, text.size() - 16)) != text.substr(text.size() - 16))
+      throw InputError(path, "corrupt knife checkpoint (its checksum does not match: changed or cut; start afresh "
+                             "without --resume, or remove this update's checkpoint files to resume from the one before)");
+    std::istringstream in(text.substr(checkpoint_magic.size(), text.size() - 16 - checkpoint_magic.size()),
+                          std::ios::binary);
+    const std::size_t  size = text.size();
+    const auto v = get<double>(in, size, path);
+    const auto c = get<unsigned>(in, size, path);
+    const auto f = get<unsigned>(in, size, path);
+    auto       acc = get<double>(in, size, path), disp = get<double>(in, size, path), since = get<double>(in, size, path);
+    const auto state = get<double>(in, size, path);
+    // what a checksum cannot catch (a file written by other code): the blocks' shapes and ranges
+    const std::size_t n_points = v.size() / 3;
+    bool              sane     = v.size() % 3 == 0 && c.size() % 4 == 0 && f.size() % 4 == 0 && state.size() >= 2 &&
+                    disp.size() == 3 * acc.size() && since.size() == acc.size();
+    for (std::size_t k = 0; sane && k < v.size(); ++k)
+      sane = std::isfinite(v[k]);
+    for (std::size_t k = 0; sane && k < c.size(); ++k)
+      sane = c[k] < n_points;
+    for (std::size_t k = 0; sane && k < f.size(); ++k)
+      sane = k % 4 == 3 || f[k] < n_points;
+    if (!sane)
+      throw InputError(path, "corrupt knife checkpoint (block sizes or vertex indices out of range)");
     std::vector<Point<3>> points;
     for (std::size_t k = 0; k < v.size(); k += 3)
       points.emplace_back(v[k], v[k + 1], v[k + 2]);
@@ -241,7 +277,14 @@ namespace abrade::fem
       for (unsigned j = 0; j < 4; ++j)
         cells[k].vertices[j] = c[4 * k + j];
     auto fresh = std::make_unique<Triangulation<3>>();
-    fresh->create_triangulation(points, cells, SubCellData());
+    try
+      {
+        fresh->create_triangulation(points, cells, SubCellData());
+      }
+    catch (const std::exception &)
+      {
+        throw InputError(path, "corrupt knife checkpoint (its cells do not form a mesh)");
+      }
     std::map<std::array<unsigned, 3>, unsigned> ids;
     for (std::size_t k = 0; k < f.size(); k += 4)
       {

@@ -571,7 +571,7 @@ namespace abrade::coupling::lifetime
     std::string method    = e.reached ? "interpolated within update " + std::to_string(e.update)
                                       : (e.extrapolated ? "extrapolated from the last update's rate" : "none");
     std::vector<double> where = deepest;
-    std::size_t         factors_of = e.criterion == EndOfLife::none ? depth_criterion : e.criterion;
+    std::size_t         factors_of = e.criterion == EndOfLife::none ? std::size_t(depth_criterion) : e.criterion;
     if (worn_through)
       if (const EndOfLife rival = end_of_life(criteria, worn_through_rival);
           rival.reached && rival.tonnes < worn_through_tonnes)

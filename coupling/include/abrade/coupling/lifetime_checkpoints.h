@@ -7,6 +7,7 @@
 // resume together from the newest update that all of them completed (they are never more than
 // one update apart: each update's DEM cycles need all of them).
 #include <string>
+#include <vector>
 
 namespace abrade::dem
 {
@@ -46,6 +47,8 @@ namespace abrade::coupling
     std::string directory;
     /// The newest complete checkpoint on this process (-1: none).
     long newest() const;
+    /// Every update that has a file here (ascending).
+    std::vector<long> updates() const;
     /// Removes the checkpoint of @p update (what there is of it).
     void remove(long update) const;
   };
