@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -56,12 +57,18 @@ namespace abrade::fem
       catch (const std::exception &e)
         {
           std::string what = e.what();
-          // deal.II's messages are long; the line that says what is wrong
+          // deal.II's messages are long: what is wrong, without the stack trace, on one line
           const auto at = what.find("Additional information:");
           if (at != std::string::npos)
             what = what.substr(at + 23);
-          what.erase(std::remove(what.begin(), what.end(), '\n'), what.end());
-          throw InputError(path, "not a readable Gmsh volume mesh:" + what.substr(0, 300));
+          what = what.substr(0, what.find("Stacktrace"));
+          std::string line;
+          for (const char c : what)
+            if (!std::isspace(static_cast<unsigned char>(c)) || (!line.empty() && line.back() != ' '))
+              line += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+          while (!line.empty() && line.back() == ' ')
+            line.pop_back();
+          throw InputError(path, "not a readable Gmsh volume mesh: " + line.substr(0, 400));
         }
       if (tria.n_active_cells() == 0)
         throw InputError(path, "the mesh holds no volume elements (tetrahedra or hexahedra)");
@@ -370,6 +377,17 @@ namespace abrade::fem
     void load_stl(const std::string &path, double h, const SolidFileSettings &settings, bool keep_triangles = false)
     {
       gmsh::merge(path);
+      {
+        // a coordinate that is not a number sends Gmsh's meshers into an endless loop
+        std::vector<std::size_t> tags;
+        std::vector<double>      xyz, parametric;
+        gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+        for (std::size_t k = 0; k < xyz.size(); ++k)
+          if (!std::isfinite(xyz[k]))
+            throw InputError(path, "vertex " + std::to_string(k / 3 + 1) + " has a coordinate that is not a finite number");
+        if (xyz.empty())
+          throw InputError(path, "holds no triangles");
+      }
       check_extent(path, model_box(), settings.scale, settings, false);
       check_volume(path, enclosed_volume_of_triangles() * std::pow(settings.scale, 3), h, settings);
       if (!keep_triangles)

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Hostile inputs end in one clear error line and exit 2, within seconds (no crash, no hang):
 # a wall OBJ whose face points past its vertices, a PLY whose header announces more vertices than
-# it holds, a 5 MB parameter value, thousands of walls, a knife checkpoint with one byte changed,
-# and a stray checkpoint of update 999999999999 (counting down to it took years).
+# it holds, a 5 MB parameter value, thousands of walls, .msh files of garbage, with a missing
+# node or without volume elements, an STL with a NaN coordinate, a knife checkpoint with one byte
+# changed, and a stray checkpoint of update 999999999999 (counting down to it took years).
 #   check_hostile.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -17,6 +18,20 @@ python3 -c "open('long.prm','w').write('set Job = knife\nsubsection Knife\n  set
 $expect 2 "long.prm:3: a line of 5000015 characters, more than 20000" -- timeout 20 "$abrade" run long.prm --output o3
 python3 -c "open('walls.prm','w').write('set Job = dem\nset Walls = ' + ','.join('w%d' % i for i in range(3000)) + '\n')"
 $expect 2 "Walls: 3000 walls listed, more than 1000" -- timeout 20 "$abrade" run walls.prm --output o4
+# solids: a .msh of garbage, one whose cell names a missing node, one with no volume elements,
+# an STL with a coordinate that is not a number (Gmsh looped forever)
+knife=("$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Knife/Geometry=file
+       --set "Knife/File scale=0.001")
+printf 'garbage\n' > garbage.msh
+$expect 2 "garbage.msh: not a readable Gmsh volume mesh: The string <garbage> is not recognized" -- "${knife[@]}" --output o_garbage.msh --set "Knife/File=$out/garbage.msh"
+nodes='$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n'
+printf "$nodes"'$Elements\n1\n1 4 2 1 1 1 2 3 9\n$EndElements\n' > missing_node.msh
+$expect 2 "missing_node.msh: .*referencing a vertex with index 9" -- "${knife[@]}" --output o_missing_node.msh --set "Knife/File=$out/missing_node.msh"
+printf "$nodes"'$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n' > surface_only.msh
+$expect 2 "surface_only.msh: .*did not find any cells" -- "${knife[@]}" --output o_surface_only.msh --set "Knife/File=$out/surface_only.msh"
+sed 's/vertex 0.0 -15.0 0.0/vertex nan -15.0 0.0/' "$src/tests/cli/knife_mm.stl" > nan.stl
+$expect 2 "nan.stl: vertex 1 has a coordinate that is not a finite number" -- timeout 30 "${knife[@]}" \
+  --output o_nan --set "Knife/File=$out/nan.stl"
 prm=$src/tests/lifetime/analytic_uniform.prm
 "$abrade" run "$prm" --output life --quiet --set "Lifetime/Maximum updates=2" > /dev/null
 python3 -c "
