@@ -19,18 +19,21 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameter_file.h>
-#include <abrade/fem/solid_file.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/sweep.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/dem/parallel.h>
+#include <abrade/fem/solid_file.h>
 #include <abrade/field/commands.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <utility>
+
+#include <unistd.h>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -263,8 +266,24 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  /// SIGTERM and SIGINT (Ctrl-C) end the process at once, saying so: checkpoints are written
+  /// aside and renamed into place, so the last complete one is intact whenever the signal
+  /// comes, and `abrade run ... --resume` continues from it. (Only async-signal-safe calls here.)
+  extern "C" void on_termination(int signal)
+  {
+    static const char message[] =
+      "\nabrade: interrupted; the last complete checkpoint is kept (a lifetime run continues with --resume)\n";
+    [[maybe_unused]] const auto written = ::write(2, message, sizeof message - 1);
+    ::_exit(128 + signal);
+  }
+} // namespace
+
 int main(int argc, char **argv)
 {
+  std::signal(SIGTERM, on_termination);
+  std::signal(SIGINT, on_termination);
   try
     {
       if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version"))

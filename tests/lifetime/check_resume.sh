@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Checkpoint and resume: a lifetime run killed with SIGKILL mid-cycle and resumed with --resume
-# produces the same trajectory (byte for byte) and the same prediction as an uninterrupted run.
+# Checkpoint and resume: a lifetime run killed with SIGKILL mid-cycle (or ABRADE_SIGNAL: TERM,
+# INT) and resumed with --resume produces the same trajectory (byte for byte) and the same
+# prediction as an uninterrupted run.
 # With ABRADE_LAUNCH="mpirun -np 2 --oversubscribe" the runs are MPI runs (every rank
 # checkpoints its own copy; all are killed and resumed together). There the kill is also made to
 # fall between two ranks' checkpoints of one update (rank 1's newest is removed when both have
@@ -26,8 +27,9 @@ for _ in $(seq 1 600); do   # at most 60 s
   (( $(newest "$out/killed/checkpoint") >= 2 )) && break
   sleep 0.1
 done
-kill -9 "$pid" 2>/dev/null || { echo "the run finished before it could be killed"; exit 1; }
-pkill -9 -f -- "--output $out/killed" 2>/dev/null || true # the MPI ranks, if any
+signal=${ABRADE_SIGNAL:-KILL}
+kill -s "$signal" "$pid" 2>/dev/null || { echo "the run finished before it could be killed"; exit 1; }
+pkill -"$signal" -f -- "--output $out/killed" 2>/dev/null || true # the MPI ranks, if any
 wait "$pid" 2>/dev/null || true
 killed_at=$(newest "$out/killed/checkpoint")
 if [[ -d $out/killed/.rank-1/checkpoint ]]; then
