@@ -1,6 +1,7 @@
 #include <abrade/common/error.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/coupling/run_size.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/fem/solid_file.h>
 
@@ -255,6 +256,10 @@ namespace abrade::coupling
     prm.declare_entry("Time step", "0", Double(0, 1),
                       "[s] Time step; 0: 'Rayleigh fraction' times the Rayleigh time step of the "
                       "smallest particle. Range: [0, 1].");
+    prm.declare_entry("Maximum particle-steps", "1e12", Double(0, huge),
+                      "[-] Refuse a run (one operating cycle, with its settling) that needs more particle-steps "
+                      "than this, estimated from the particles, the time step and the phases before the bed is "
+                      "generated (about 28 hours at 1e7 particle-steps/s); 0: no limit. Range: >= 0.");
     prm.declare_entry("Rayleigh fraction", "0.2", Double(1e-6, 1),
                       "[-] Time step as a fraction of the Rayleigh time step (EDEM recommends 0.2 "
                       "for dense packings, 0.4 for loose ones). Range: (0, 1].");
@@ -677,6 +682,10 @@ namespace abrade::coupling
     c.bed_file        = prm.get("Bed file");
     prm.leave_subsection();
     prm.leave_subsection();
+    prm.enter_subsection("Simulation");
+    c.max_particle_steps = prm.get_double("Maximum particle-steps");
+    prm.leave_subsection();
+    check_run_size(c, f); // a run of years, or of more memory than there is, is refused here
 
     for (const auto &name : get_list(prm, "Walls"))
       {

@@ -74,8 +74,10 @@ namespace abrade::fem
         throw InputError(path, "the mesh holds no volume elements (tetrahedra or hexahedra)");
     }
 
+    /// Runs @p f on a fresh Gmsh session; a Gmsh error becomes an InputError naming @p label and
+    /// saying what Gmsh could not @p do.
     template <typename F>
-    void with_gmsh(const std::string &label, F &&f)
+    void with_gmsh(const std::string &label, F &&f, const std::string &doing = "mesh it")
     {
       gmsh::initialize();
       gmsh::option::setNumber("General.Terminal", 0);
@@ -93,17 +95,30 @@ namespace abrade::fem
           std::string last;
           gmsh::logger::getLastError(last);
           gmsh::finalize();
-          throw InputError(label, "Gmsh could not mesh it: " + (last.empty() ? std::string("unknown error") : last));
+          throw InputError(label, "Gmsh could not " + doing + ": " + (last.empty() ? std::string("unknown error") : last));
         }
       gmsh::finalize();
     }
 
-    /// The names of a .msh file's physical surfaces, by tag.
-    std::map<types::boundary_id, std::string> physical_surface_names(const std::string &path)
+    /// A user's .msh file, read by Gmsh (whose reader knows every .msh version and stops on a
+    /// broken file; deal.II's looped forever on a cut one) and written again as .msh 2.2 to
+    /// @p clean, for deal.II. Returns the names of its physical surfaces, by tag.
+    std::map<types::boundary_id, std::string> normalise_msh(const std::string &path, const std::string &clean)
     {
       std::map<types::boundary_id, std::string> names;
       with_gmsh(path, [&] {
         gmsh::open(path);
+        std::vector<std::size_t> tags;
+        std::vector<double>      xyz, parametric;
+        gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+        for (std::size_t k = 0; k < xyz.size(); ++k)
+          if (!std::isfinite(xyz[k]))
+            throw InputError(path, "node " + std::to_string(tags[k / 3]) + " has a coordinate that is not a finite number");
+        std::vector<int>                      types;
+        std::vector<std::vector<std::size_t>> elements, nodes;
+        gmsh::model::mesh::getElements(types, elements, nodes, 3, -1);
+        if (types.empty())
+          throw InputError(path, "the mesh holds no volume elements (tetrahedra or hexahedra)");
         gmsh::vectorpair groups;
         gmsh::model::getPhysicalGroups(groups, 2);
         for (const auto &[dim, tag] : groups)
@@ -113,7 +128,22 @@ namespace abrade::fem
             if (!name.empty())
               names[types::boundary_id(tag)] = name;
           }
-      });
+        // Gmsh writes the elements of physical groups (with their tags, deal.II's boundary ids);
+        // the volume, if the file gives it no group, gets one
+        gmsh::vectorpair volume_groups;
+        gmsh::model::getPhysicalGroups(volume_groups, 3);
+        if (volume_groups.empty())
+          {
+            gmsh::vectorpair volumes;
+            gmsh::model::getEntities(volumes, 3);
+            std::vector<int> vtags;
+            for (const auto &v : volumes)
+              vtags.push_back(v.second);
+            gmsh::model::addPhysicalGroup(3, vtags);
+          }
+        gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+        gmsh::write(clean);
+      }, "read it");
       return names;
     }
 
@@ -438,8 +468,22 @@ namespace abrade::fem
     const bool        cad = is_cad_file(path);
     if (ext == ".msh")
       {
-        read_msh_file(path, tria);
-        report.face_names = physical_surface_names(path);
+        const std::string clean = (std::filesystem::temp_directory_path() /
+                                   ("abrade-msh-" + std::to_string(::getpid()) + "-" +
+                                    std::filesystem::path(path).filename().string()))
+                                    .string();
+        report.face_names = normalise_msh(path, clean);
+        try
+          {
+            read_msh_file(clean, tria);
+          }
+        catch (const InputError &e)
+          {
+            std::filesystem::remove(clean);
+            const std::string what = e.what(); // named after the clean copy: name the user's file
+            throw InputError(path, what.substr(what.find(": ") + 2));
+          }
+        std::filesystem::remove(clean);
         bool hexahedra = false;
         for (const auto &cell : tria.active_cell_iterators())
           hexahedra = hexahedra || !cell->reference_cell().is_simplex();

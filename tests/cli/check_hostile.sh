@@ -2,8 +2,10 @@
 # Hostile inputs end in one clear error line and exit 2, within seconds (no crash, no hang):
 # a wall OBJ whose face points past its vertices, a PLY whose header announces more vertices than
 # it holds, a 5 MB parameter value, thousands of walls, .msh files of garbage, with a missing
-# node or without volume elements, an STL with a NaN coordinate, a knife checkpoint with one byte
-# changed, and a stray checkpoint of update 999999999999 (counting down to it took years).
+# node or without volume elements, an STL with a NaN coordinate, a time step of 1e-9 s or a density
+# of 1e-12 (runs of years: refused with the estimate), 1e9 particles (more memory than there is),
+# a knife checkpoint with one byte changed, and a stray checkpoint of update 999999999999
+# (counting down to it took years).
 #   check_hostile.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -13,22 +15,31 @@ wall() { printf 'set Job = dem\nset Walls = w\nsubsection Wall w\n  set Geometry
 wall "$src/tests/cli/bad_index.obj" obj.prm
 $expect 2 "bad_index.obj:5: vertex index 2147483647 out of range \(3 vertices" -- "$abrade" run obj.prm --output o1
 wall "$src/tests/cli/truncated.ply" ply.prm
-$expect 2 "truncated.ply: the header announces 9 vertices and faces, the file holds 4" -- "$abrade" run ply.prm --output o2
+$expect 2 "truncated.ply: the header announces 8 vertex elements, the file ends at vertex 4" -- "$abrade" run ply.prm --output o2
 python3 -c "open('long.prm','w').write('set Job = knife\nsubsection Knife\n  set Length = ' + '1' * 5000000 + '\nend\n')"
 $expect 2 "long.prm:3: a line of 5000015 characters, more than 20000" -- timeout 20 "$abrade" run long.prm --output o3
 python3 -c "open('walls.prm','w').write('set Job = dem\nset Walls = ' + ','.join('w%d' % i for i in range(3000)) + '\n')"
 $expect 2 "Walls: 3000 walls listed, more than 1000" -- timeout 20 "$abrade" run walls.prm --output o4
+# runs of years, or of more memory than there is, refused before the bed is generated
+kb=$src/cases/knife_bed/knife_bed.prm
+$expect 2 "Simulation/Maximum particle-steps: one run needs about 1.64e\+13 particle-steps \(1e\+04 particles x 1.64e\+09 steps of 1e-09 s" \
+  -- timeout 20 "$abrade" run "$kb" --output o_dt --set "Simulation/Time step=1e-9"
+$expect 2 "Simulation/Maximum particle-steps: one run needs about 8.71e\+15 particle-steps" \
+  -- timeout 20 "$abrade" run "$kb" --output o_rho --set "Particles/Material/Density=1e-12"
+$expect 2 "Particles/Generation/Count: about 1e\+09 particles need about 1e\+03 GB, this machine has" \
+  -- timeout 20 "$abrade" run "$kb" --output o_n --set "Particles/Generation/Count=1000000000" \
+  --set "Simulation/Maximum particle-steps=0"
 # solids: a .msh of garbage, one whose cell names a missing node, one with no volume elements,
 # an STL with a coordinate that is not a number (Gmsh looped forever)
 knife=("$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Knife/Geometry=file
        --set "Knife/File scale=0.001")
 printf 'garbage\n' > garbage.msh
-$expect 2 "garbage.msh: not a readable Gmsh volume mesh: The string <garbage> is not recognized" -- "${knife[@]}" --output o_garbage.msh --set "Knife/File=$out/garbage.msh"
+$expect 2 "garbage.msh: Gmsh could not read it: .*line 1: syntax error" -- "${knife[@]}" --output o_garbage.msh --set "Knife/File=$out/garbage.msh"
 nodes='$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n'
 printf "$nodes"'$Elements\n1\n1 4 2 1 1 1 2 3 9\n$EndElements\n' > missing_node.msh
-$expect 2 "missing_node.msh: .*referencing a vertex with index 9" -- "${knife[@]}" --output o_missing_node.msh --set "Knife/File=$out/missing_node.msh"
+$expect 2 "missing_node.msh: Gmsh could not read it: Wrong node index 9" -- "${knife[@]}" --output o_missing_node.msh --set "Knife/File=$out/missing_node.msh"
 printf "$nodes"'$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n' > surface_only.msh
-$expect 2 "surface_only.msh: .*did not find any cells" -- "${knife[@]}" --output o_surface_only.msh --set "Knife/File=$out/surface_only.msh"
+$expect 2 "surface_only.msh: the mesh holds no volume elements" -- "${knife[@]}" --output o_surface_only.msh --set "Knife/File=$out/surface_only.msh"
 sed 's/vertex 0.0 -15.0 0.0/vertex nan -15.0 0.0/' "$src/tests/cli/knife_mm.stl" > nan.stl
 $expect 2 "nan.stl: vertex 1 has a coordinate that is not a finite number" -- timeout 30 "${knife[@]}" \
   --output o_nan --set "Knife/File=$out/nan.stl"

@@ -40,6 +40,7 @@ namespace abrade::coupling
     dem::FillRegion          fill;
     std::string              region_mesh_file;
     double                   settle_ke = 1e-4, settle_max_time = 1;
+    double                   max_particle_steps = 1e12; ///< of one run (0: no limit)
     std::string              bed_file;
     std::vector<Phase>       phases;
     std::optional<double>    payload_height; ///< report the mass above it after every phase

@@ -1,0 +1,85 @@
+#include <abrade/coupling/run_size.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+namespace abrade::coupling
+{
+  namespace
+  {
+    /// A rate this code reaches on one core of an ordinary machine (docs/benchmarks.md measures
+    /// 0.7-1.4e7 on the knife-bed): the wall-time estimate is an order of magnitude, no more.
+    constexpr double particle_steps_per_core_second = 5e6;
+    constexpr double bytes_per_particle             = 1000;
+
+    std::string g(double x)
+    {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.3g", x);
+      return b;
+    }
+  } // namespace
+
+  RunSize estimate_run_size(const DemCase &c)
+  {
+    RunSize      r;
+    const auto  &fill  = c.fill;
+    const double box   = (fill.box_max - fill.box_min).prod();
+    r.particles        = fill.count > 0 ? double(fill.count)
+                                        : fill.solid_fraction * box / std::max(fill.sizes.mean_volume(), 1e-300);
+    const auto  &sizes = fill.sizes;
+    const double r_min = sizes.kind == dem::SizeDistribution::Kind::constant || !(sizes.min > 0) ? sizes.radius : sizes.min;
+    const auto  &m     = c.particle_material;
+    const double rayleigh =
+      M_PI * r_min * std::sqrt(m.density / m.shear_modulus()) / (0.1631 * m.poisson_ratio + 0.8766);
+    r.time_step = c.settings.time_step > 0 ? c.settings.time_step : c.settings.rayleigh_fraction * rayleigh;
+    for (const auto &phase : c.phases)
+      r.simulated_time += phase.second;
+    if (c.bed_file.empty() || !std::ifstream(c.bed_file)) // the bed is generated and settled
+      r.simulated_time += c.settle_max_time;
+    r.steps          = r.simulated_time / r.time_step;
+    r.particle_steps = r.particles * r.steps;
+    r.bytes          = r.particles * bytes_per_particle;
+    return r;
+  }
+
+  double available_memory()
+  {
+    std::ifstream in("/proc/meminfo");
+    for (std::string key; in >> key;)
+      {
+        double      kb = 0;
+        std::string unit;
+        in >> kb >> unit;
+        if (key == "MemAvailable:")
+          return kb * 1024;
+      }
+    return 0;
+  }
+
+  void check_run_size(const DemCase &c, ParameterFile &file)
+  {
+    const RunSize r = estimate_run_size(c);
+    if (!std::isfinite(r.particle_steps) || (c.max_particle_steps > 0 && r.particle_steps > c.max_particle_steps))
+      {
+        const double cores = std::max(1u, std::thread::hardware_concurrency());
+        const double hours = r.particle_steps / (particle_steps_per_core_second * cores) / 3600;
+        file.fail({"Simulation"}, "Maximum particle-steps",
+                  "one run needs about " + g(r.particle_steps) + " particle-steps (" + g(r.particles) +
+                    " particles x " + g(r.steps) + " steps of " + g(r.time_step) + " s over " + g(r.simulated_time) +
+                    " s), more than the limit " + g(c.max_particle_steps) + ": about " + g(hours) + " hours on " +
+                    g(cores) + " cores. Check Time step, the particles' Density and Shear modulus (the Rayleigh "
+                    "time step), Radius and Count; or raise Maximum particle-steps to run it anyway");
+      }
+    const double available = available_memory();
+    if (available > 0 && r.bytes > available)
+      file.fail({"Particles", "Generation"}, "Count",
+                "about " + g(r.particles) + " particles need about " + g(r.bytes / 1e9) + " GB, this machine has " +
+                  g(available / 1e9) + " GB available");
+  }
+} // namespace abrade::coupling
