@@ -796,7 +796,24 @@ namespace abrade::coupling
           v = rotation * v;
         w.mesh.translate(offset);
         if (const double h = prm.get_double("Maximum edge length"); h > 0)
-          w.mesh.refine(h);
+          {
+            // the triangles a refinement makes, about: each becomes ~ its area over that of an
+            // equilateral triangle of edge h, at least itself
+            double made = 0;
+            for (const auto &t : w.mesh.triangles)
+              {
+                const Vec3 a = w.mesh.vertices[t[0]], b = w.mesh.vertices[t[1]], c3 = w.mesh.vertices[t[2]];
+                made += std::max(1.0, 0.5 * (b - a).cross(c3 - a).norm() / (0.433 * h * h));
+              }
+            constexpr double most_triangles = 2e7;
+            if (!(made <= most_triangles))
+              f.fail(wp, "Maximum edge length",
+                     "refining the wall's " + std::to_string(w.mesh.n_triangles()) + " triangles to edges of " +
+                       std::to_string(h) + " m makes about " + std::to_string(long(std::min(made, 1e18))) +
+                       " triangles, more than " + std::to_string(long(most_triangles)) +
+                       " (each in every contact search): a longer edge, about the particle radius, is enough");
+            w.mesh.refine(h);
+          }
         if (prm.get_bool("Flip normals"))
           w.mesh.flip();
         wc.material    = read_material(f, wp, name);

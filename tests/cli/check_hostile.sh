@@ -29,6 +29,10 @@ $expect 2 "Simulation/Maximum particle-steps: one run needs about 8.71e\+15 part
 $expect 2 "Particles/Generation/Count: about 1e\+09 particles need about 1e\+03 GB, this machine has" \
   -- timeout 20 "$abrade" run "$kb" --output o_n --set "Particles/Generation/Count=1000000000" \
   --set "Simulation/Maximum particle-steps=0"
+# a wall refined to edges of 0.1 mm: billions of triangles, refused with the count
+printf 'set Job = dem\nset Walls = w\nsubsection Wall w\n  set Geometry = box\n  set Maximum edge length = 1e-4\nend\n' > refine.prm
+$expect 2 "refine.prm:5: Wall w/Maximum edge length: refining the wall's 10 triangles to edges of .* makes about 2771362586 triangles" \
+  -- timeout 20 "$abrade" run refine.prm --output o_refine
 # solids: a .msh of garbage, one whose cell names a missing node, one with no volume elements,
 # an STL with a coordinate that is not a number (Gmsh looped forever)
 knife=("$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Knife/Geometry=file
