@@ -388,7 +388,17 @@ int main(int argc, char **argv)
     }
   catch (const std::exception &e)
     {
-      report("abrade: internal error: ", e.what());
+      // not an input problem (those are InputErrors): a bug, and what to report
+      report("abrade: internal error: ", std::string(e.what()) + " (a bug in abrade " + version_string +
+                                           ", not in the input: please report it with the command line, the "
+                                           "parameter file and this line)");
+      return 1;
+    }
+  catch (...)
+    {
+      report("abrade: internal error: ", std::string("an exception of unknown type (a bug in abrade ") +
+                                           version_string + ": please report it with the command line and the "
+                                                            "parameter file)");
       return 1;
     }
 }
