@@ -4,8 +4,9 @@
 # it holds, a 5 MB parameter value, thousands of walls, .msh files of garbage, with a missing
 # node or without volume elements, an STL with a NaN coordinate, a time step of 1e-9 s or a density
 # of 1e-12 (runs of years: refused with the estimate), 1e9 particles (more memory than there is),
-# a knife checkpoint with one byte changed, and a stray checkpoint of update 999999999999
-# (counting down to it took years).
+# a knife checkpoint with one byte changed, a stray checkpoint of update 999999999999
+# (counting down to it took years), garbage in trajectory.csv before --resume (rebuilt from the
+# checkpoint), a profile line of garbage, a loop state changed by hand, a bed file cut short.
 #   check_hostile.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -57,3 +58,40 @@ $expect 2 "knife-2.ckpt: corrupt knife checkpoint \(its checksum does not match"
 touch life/checkpoint/loop-999999999999.txt
 $expect 0 "Done" -- timeout 60 "$abrade" run "$prm" --output life --set "Lifetime/Maximum updates=1"
 [[ ! -e life/checkpoint/loop-999999999999.txt ]] || { echo "the stray checkpoint was not cleared"; exit 1; }
+# resume after edits: trajectory.csv is rebuilt from the checkpoint (garbage there or an emptied
+# file cannot leak into the result: byte-identical to the uninterrupted run); a profile line of
+# garbage and a loop state changed by hand are named; a cut bed file is named
+resume() { "$abrade" run "$prm" --output "$1" --quiet --set "Lifetime/Maximum updates=3" "${@:2}"; }
+resume whole > /dev/null
+resume edited > /dev/null
+rm edited/checkpoint/*-3.*
+printf 'update,garbage\n1,%%%%,x\n' > edited/trajectory.csv
+echo "12 0.1" >> edited/knife/profile_0.50.csv # an append cut by a crash: dropped
+resume edited --resume > /dev/null
+cmp whole/trajectory.csv edited/trajectory.csv
+cmp whole/knife/profile_0.50.csv edited/knife/profile_0.50.csv
+rm edited/checkpoint/*-3.*
+sed -i '3s/.*/zz 1 2 3 4/' edited/knife/profile_0.50.csv
+$expect 2 "edited/knife/profile_0.50.csv:3: not a profile line" -- "$abrade" run "$prm" --output edited --quiet --set "Lifetime/Maximum updates=3" --resume
+sed -i 's/^tonnes = .*/tonnes = 2999.5/' edited/checkpoint/loop-2.txt
+$expect 2 "edited/checkpoint/loop-2.txt: corrupt state file \(its checksum does not match" -- "$abrade" run "$prm" --output edited --quiet --set "Lifetime/Maximum updates=3" --resume
+cat > bed.prm <<'PRM'
+set Job = dem
+set Walls =
+subsection Simulation
+  set Phases = settle: 0.001
+end
+subsection Particles
+  subsection Generation
+    set Count = 20
+  end
+  subsection Settling
+    set Bed file = bed.bed
+    set Maximum time = 0.001
+  end
+end
+PRM
+"$abrade" run bed.prm --output bed --quiet > /dev/null
+head -c 500 bed/bed.bed > cut.bed && mv cut.bed bed/bed.bed
+$expect 2 "bed/bed.bed: corrupt bed file: it announces 20 particles, its size of 500 bytes" -- "$abrade" run bed.prm --output bed --quiet
+echo "hostile inputs: all refused"

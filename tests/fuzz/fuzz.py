@@ -9,12 +9,21 @@ Each target is a small valid input and the cheapest command that reads it:
   stl   a wall's STL (ASCII)                                     abrade export-walls
   obj   a wall's OBJ                                             abrade export-walls
   ply   a wall's PLY (ASCII)                                     abrade export-walls
+  vtk   a wall's legacy VTK polydata (ASCII)                     abrade export-walls
   msh   the knife as a Gmsh .msh volume mesh (two tetrahedra)    abrade run (Job = knife)
+  step  the knife as a STEP block in mm (abrade convert)         abrade run (Job = knife)
+  xyz   a point-cloud scan                                       abrade compare
+  vtp   a surface scan (VTK XML, ASCII)                          abrade compare
+  csv   a measurement table                                      abrade calibrate
+  pvd   a lifetime run's knife.pvd                               abrade calibrate
+  bed   a settled bed (binary, with its checksum)                abrade run (Job = dem)
+The targets that need a lifetime run (xyz, vtp, csv, pvd) share one small analytic run, made
+first (a few seconds).
 Mutations (several per input): a flipped byte, a line deleted or repeated, a number replaced by
 an extreme one (0, -1, 1e300, nan, inf, 2147483647, -99, 1e-300, a word), the file cut short,
 random bytes inserted. The random seed makes a run reproducible.
 
-    fuzz.py ABRADE OUTDIR [--mutations N] [--seed S] [--targets prm,stl,...]
+    fuzz.py ABRADE OUTDIR [--mutations N] [--seed S] [--targets prm,stl,...] [--timeout SECONDS]
 """
 import argparse
 import os
@@ -144,6 +153,97 @@ $EndElements
 """,
 }
 
+VTK_CORPUS = {
+    "vtk": """# vtk DataFile Version 3.0
+a wall
+ASCII
+DATASET POLYDATA
+POINTS 4 float
+0 0 0 1 0 0 0 1 0 0 0 1
+POLYGONS 3 12
+3 0 2 1
+3 0 1 3
+3 0 3 2
+""",
+    "vtp": """<?xml version="1.0"?>
+<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
+  <PolyData>
+    <Piece NumberOfPoints="4" NumberOfPolys="4">
+      <Points>
+        <DataArray type="Float64" NumberOfComponents="3" format="ascii">
+          0.05 0.015 0.05  0.1 0.015 0.05  0.075 0.015 0.1  0.075 0.0 0.075
+        </DataArray>
+      </Points>
+      <Polys>
+        <DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 0 3 1 1 3 2 2 3 0</DataArray>
+        <DataArray type="Int64" Name="offsets" format="ascii">3 6 9 12</DataArray>
+      </Polys>
+    </Piece>
+  </PolyData>
+</VTKFile>
+""",
+}
+CORPUS.update(VTK_CORPUS)
+CORPUS["xyz"] = "x y z\n" + "".join(f"{0.05 + 0.01 * i:.3f} 0.015 {0.05 + 0.005 * i:.4f}\n" for i in range(12))
+TARGETS = ("prm", "stl", "obj", "ply", "vtk", "msh", "step", "xyz", "vtp", "csv", "pvd", "bed")
+BINARY = ("bed",)
+MADE = ("step", "xyz", "vtp", "csv", "pvd", "bed")  # made by abrade at the start (Fixtures)
+
+BED_PRM = """set Job = dem
+set Walls =
+subsection Simulation
+  set Phases = settle: 0.001
+end
+subsection Particles
+  subsection Generation
+    set Count = 20
+  end
+  subsection Settling
+    set Bed file = {bed}
+    set Maximum time = 0.001
+  end
+end
+"""
+
+
+class Fixtures:
+    """What the targets that are not plain text share: a small analytic lifetime run (its worn
+    knife, its knife.pvd, a measurement table from its trajectory), a STEP block, a bed."""
+
+    def __init__(self, abrade, out, source):
+        self.abrade, self.dir, self.source = abrade, os.path.join(out, "fixtures"), source
+        self.made = False
+
+    def make(self):
+        if self.made:
+            return
+        self.made = True
+        d = self.dir
+        os.makedirs(d, exist_ok=True)
+        run = lambda *a: subprocess.run([self.abrade, *a], check=True, capture_output=True,
+                                        env=dict(os.environ, OMP_NUM_THREADS="1"))
+        self.run = os.path.join(d, "run")
+        run("run", os.path.join(self.source, "tests/lifetime/analytic_uniform.prm"), "--quiet", "--output", self.run,
+            "--set", "Lifetime/Maximum updates=2")
+        self.worn = os.path.join(self.run, "knife", "knife_00002.stl")
+        rows = open(os.path.join(self.run, "trajectory.csv")).read().splitlines()
+        header = rows[0].split(",")
+        t, dep = header.index("tonnes"), header.index("point_depth")
+        CORPUS["csv"] = "x,y,z,tonnes,depth\n" + "".join(
+            "0.075,0.015,0.06,%s,%s\n" % (r.split(",")[t], r.split(",")[dep]) for r in rows[1:])
+        self.table = os.path.join(d, "measurements.csv")
+        open(self.table, "w").write(CORPUS["csv"])
+        CORPUS["pvd"] = open(os.path.join(self.run, "knife", "knife.pvd")).read()
+        geo = os.path.join(d, "block.geo")
+        open(geo, "w").write('SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n')
+        run("convert", geo, "--output", os.path.join(d, "block.step"))
+        CORPUS["step"] = open(os.path.join(d, "block.step")).read()
+        prm = os.path.join(d, "bed.prm")
+        open(prm, "w").write(BED_PRM.format(bed="bed.bed"))
+        run("run", prm, "--quiet", "--output", os.path.join(d, "bed"))
+        CORPUS["bed"] = open(os.path.join(d, "bed", "bed.bed"), "rb").read()
+
+
 EXTREMES = ["0", "-1", "1e300", "-1e300", "nan", "inf", "2147483647", "-99", "1e-300", "x", ""]
 NUMBER = re.compile(rb"-?\d+(\.\d*)?([eE][-+]?\d+)?")
 
@@ -175,16 +275,35 @@ def mutate(data: bytes, rng: random.Random) -> bytes:
     return data
 
 
-def command(abrade, target, path, work):
+def command(abrade, target, path, work, fixtures):
     if target == "prm":
         return [abrade, "export-walls", path, "--output", work]
-    if target in ("stl", "obj", "ply"):
+    if target in ("stl", "obj", "ply", "vtk"):
         prm = os.path.join(work, "wall.prm")
         with open(prm, "w") as f:
             f.write(WALL_PRM.format(file=path))
         return [abrade, "export-walls", prm, "--output", work]
+    if target in ("xyz", "vtp"):
+        return [abrade, "compare", "--predicted", fixtures.worn, "--scan", path, "--output", os.path.join(work, "c")]
+    if target == "csv":
+        return [abrade, "calibrate", "--run", fixtures.run, "--measurements", path, "--output", os.path.join(work, "c")]
+    if target == "pvd":  # the run's knife outputs, under a mutated knife.pvd
+        run = os.path.join(work, "run")
+        os.makedirs(os.path.join(run, "knife"))
+        for name in os.listdir(os.path.join(fixtures.run, "knife")):
+            if name.endswith(".vtu"):
+                os.symlink(os.path.join(fixtures.run, "knife", name), os.path.join(run, "knife", name))
+        shutil.copy(os.path.join(fixtures.run, "summary.json"), run)
+        shutil.copy(path, os.path.join(run, "knife", "knife.pvd"))
+        return [abrade, "calibrate", "--run", run, "--measurements", fixtures.table, "--output", os.path.join(work, "c")]
+    if target == "bed":
+        prm = os.path.join(work, "bed.prm")
+        with open(prm, "w") as f:
+            f.write(BED_PRM.format(bed=path))
+        return [abrade, "run", prm, "--quiet", "--output", os.path.join(work, "o")]
+    clamped = "group bolted" if target == "msh" else "normal 0, 0, 1"
     return [abrade, "run", "--output", work, "--quiet", "--set", "Job=knife", "--set", "Knife/Geometry=file",
-            "--set", f"Knife/File={path}", "--set", "Knife/Clamped faces=group bolted"]
+            "--set", f"Knife/File={path}", "--set", f"Knife/Clamped faces={clamped}"]
 
 
 def main():
@@ -193,17 +312,22 @@ def main():
     a.add_argument("out")
     a.add_argument("--mutations", type=int, default=200)
     a.add_argument("--seed", type=int, default=1)
-    a.add_argument("--targets", default=",".join(CORPUS))
+    a.add_argument("--targets", default=",".join(TARGETS))
     a.add_argument("--timeout", type=float, default=20)
     o = a.parse_args()
+    o.out = os.path.abspath(o.out)
     shutil.rmtree(o.out, ignore_errors=True)
     os.makedirs(os.path.join(o.out, "failures"))
+    fixtures = Fixtures(os.path.abspath(o.abrade), o.out, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
     rng = random.Random(o.seed)
     failures = 0
     for target in o.targets.split(","):
+        if target in MADE:
+            fixtures.make()
         seen = {0: 0, 2: 0}
+        valid = CORPUS[target] if target in BINARY else CORPUS[target].encode()
         for n in range(o.mutations):
-            data = mutate(CORPUS[target].encode(), rng)
+            data = mutate(valid, rng)
             work = os.path.join(o.out, target)
             shutil.rmtree(work, ignore_errors=True)
             os.makedirs(work)
@@ -211,7 +335,7 @@ def main():
             with open(path, "wb") as f:
                 f.write(data)
             try:
-                r = subprocess.run(command(o.abrade, target, path, work), capture_output=True, timeout=o.timeout,
+                r = subprocess.run(command(o.abrade, target, path, work, fixtures), capture_output=True, timeout=o.timeout,
                                    env=dict(os.environ, OMP_NUM_THREADS="1"))
                 code, tail = r.returncode, (r.stdout + r.stderr).decode(errors="replace").strip().splitlines()[-1:]
             except subprocess.TimeoutExpired:

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 using namespace abrade;
@@ -293,7 +294,37 @@ TEST(Bed, SaveAndLoadRoundTrip)
   EXPECT_EQ(b.particles().wy, a.particles().wy);
   EXPECT_EQ(b.particles().id, a.particles().id);
   EXPECT_EQ(b.particles().mass, a.particles().mass);
-  std::ofstream(path) << "not a bed";
-  EXPECT_THROW(load_bed(b, path), InputError);
+  // corruption is named, never read as particles: a changed byte (a radius, a count), a cut
+  // file, a file of other content
+  std::ifstream     in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto refused = [&](std::string changed, const std::string &why) {
+    std::ofstream(path, std::ios::binary) << changed;
+    try
+      {
+        load_bed(b, path);
+        ADD_FAILURE() << "a corrupt bed was read (" << why << ")";
+      }
+    catch (const InputError &e)
+      {
+        EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+      }
+  };
+  std::string changed = bytes;
+  changed[24 + 9 * 8 * a.particles().size() + 3] ^= 0x10; // the first particle's radius
+  refused(changed, "checksum does not match");
+  changed = bytes;
+  changed[8] ^= 0x40; // the count
+  refused(changed, "it announces");
+  refused(bytes.substr(0, bytes.size() - 100), "it announces");
+  refused("not a bed", "not an abrade bed file");
+  refused("ABRBED01" + bytes.substr(8), "older abrade");
+  std::ofstream(path, std::ios::binary) << bytes;
+  EXPECT_NO_THROW(load_bed(b, path));
+  // a bed whose checksum holds but whose particles do not (a state that blew up)
+  a.particles().vx[0] = std::nan("");
+  save_bed(a, path);
+  refused(std::string(std::istreambuf_iterator<char>(std::ifstream(path, std::ios::binary).rdbuf()), {}),
+          "not a finite number");
   std::filesystem::remove(path);
 }

@@ -2,6 +2,7 @@
 // under a known rigid transform and noise are registered back and give the known deviations;
 // the design against itself gives zero deviation; bad scans and tables are clear errors.
 #include <abrade/common/error.h>
+#include <abrade/common/vtk_input.h>
 #include <abrade/dem/triangle_mesh.h>
 #include <abrade/field/calibration.h>
 #include <abrade/field/compare.h>
@@ -10,6 +11,7 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
 #include <vtkSTLWriter.h>
 
 #include <gtest/gtest.h>
@@ -480,6 +482,79 @@ TEST(FieldCompare, BadScansAreClearErrors)
   }
   s.scan = tmp("ball.xyz");
   EXPECT_NE(error_of(s).find("does not overlap"), std::string::npos) << error_of(s);
+}
+
+// Legacy .vtk files are read by abrade's own checked reader: what VTK's writer wrote (version 5,
+// ASCII and BINARY) must come back point for point and triangle for triangle (an independent
+// path: VTK's writer against abrade's reader), a version-4 file with a triangle strip gives its
+// triangles, and damaged files name the line.
+TEST(LegacyVtk, VtksOwnFilesComeBackAndDamageIsNamed)
+{
+  vtkNew<vtkPoints>    points;
+  vtkNew<vtkCellArray> polys;
+  for (int i = 0; i < 6; ++i)
+    points->InsertNextPoint(0.1 * i, 0.3 * std::sin(i), 1.0 / (i + 3));
+  const vtkIdType quad[4] = {0, 1, 2, 3}, tri[3] = {3, 4, 5};
+  polys->InsertNextCell(3, tri);
+  polys->InsertNextCell(4, quad);
+  vtkNew<vtkPolyData> original;
+  original->SetPoints(points);
+  original->SetPolys(polys);
+  for (const bool binary : {false, true})
+    {
+      const std::string path = tmp(binary ? "legacy_binary.vtk" : "legacy_ascii.vtk");
+      vtkNew<vtkPolyDataWriter> w;
+      w->SetInputData(original);
+      w->SetFileName(path.c_str());
+      if (binary)
+        w->SetFileTypeToBinary();
+      else
+        w->SetFileTypeToASCII();
+      w->Write();
+      const auto back = abrade::io::read_polydata(path);
+      ASSERT_EQ(back->GetNumberOfPoints(), 6) << path;
+      for (vtkIdType i = 0; i < 6; ++i)
+        for (int k = 0; k < 3; ++k) // the writer writes floats, in ASCII with 6 digits
+          EXPECT_NEAR(back->GetPoint(i)[k], original->GetPoint(i)[k], binary ? 1e-7 : 1e-6) << path;
+      ASSERT_EQ(back->GetNumberOfCells(), 2) << path;
+      vtkIdType        n;
+      const vtkIdType *ids;
+      back->GetCellPoints(1, n, ids);
+      EXPECT_EQ(std::vector<vtkIdType>(ids, ids + n), (std::vector<vtkIdType>{0, 1, 2, 3})) << path;
+    }
+  const std::string v4 = "# vtk DataFile Version 3.0\nstrip\nASCII\nDATASET POLYDATA\nPOINTS 5 float\n"
+                         "0 0 0 1 0 0 0 1 0 1 1 0 0 2 0\nTRIANGLE_STRIPS 1 6\n5 0 1 2 3 4\n"
+                         "POINT_DATA 5\nSCALARS s float\nLOOKUP_TABLE default\n1 2 3 4 5\n";
+  std::ofstream(tmp("strip.vtk")) << v4;
+  const auto strip = abrade::io::read_polydata(tmp("strip.vtk"));
+  ASSERT_EQ(strip->GetNumberOfCells(), 3);
+  vtkIdType        n;
+  const vtkIdType *ids;
+  strip->GetCellPoints(1, n, ids); // the second triangle of a strip is turned: 1 3 2
+  EXPECT_EQ(std::vector<vtkIdType>(ids, ids + n), (std::vector<vtkIdType>{1, 3, 2}));
+  auto error_of = [&](const std::string &text) {
+    std::ofstream(tmp("damaged.vtk")) << text;
+    try
+      {
+        abrade::io::read_polydata(tmp("damaged.vtk"));
+      }
+    catch (const InputError &e)
+      {
+        return std::string(e.what());
+      }
+    return std::string("no error");
+  };
+  auto replaced = [&](const std::string &from, const std::string &to) {
+    std::string t = v4;
+    return t.replace(t.find(from), from.size(), to);
+  };
+  EXPECT_NE(error_of(replaced("5 0 1 2 3 4", "5 0 1 2 3 9")).find("damaged.vtk:8: TRIANGLE_STRIPS: point index 9 out of range"),
+            std::string::npos) << error_of(replaced("5 0 1 2 3 4", "5 0 1 2 3 9"));
+  EXPECT_NE(error_of(replaced("TRIANGLE_STRIPS 1 6", "TRIANGLE_STRIPS 1 2147483647")).find("more than the rest of the file"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced("5 0 1 2 3 4", "2147483647 0 1 2 3 4")).find("cell 0 of 1 does not fit"), std::string::npos);
+  EXPECT_NE(error_of(v4.substr(0, 80)).find("damaged.vtk:"), std::string::npos);
+  EXPECT_NE(error_of(replaced("POLYDATA", "UNSTRUCTURED_GRID")).find("only DATASET POLYDATA"), std::string::npos);
 }
 
 TEST(FieldCompare, NonManifoldScanIsAWarning)

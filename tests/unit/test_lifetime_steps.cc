@@ -25,6 +25,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <numeric>
 
 using namespace abrade;
@@ -201,24 +202,55 @@ TEST(StateFile, NumbersComeBackBitForBitAndErrorsNameTheLine)
   out.set("hash", "abc123");
   out.set("x", x);
   out.set("list", std::vector<double>{y, -2.5e-300, 12000});
+  out.set("bad", "1.5e");
+  out.set("not_finite", "0 nan");
   out.write(path);
   const auto in = coupling::StateFile::read(path);
   EXPECT_EQ(in.text("hash"), "abc123");
   EXPECT_EQ(in.number("x"), x);
   EXPECT_EQ(in.numbers("list"), (std::vector<double>{y, -2.5e-300, 12000}));
   EXPECT_THROW(in.number("missing"), InputError);
-  std::ofstream(path) << "hash = abc\nx = 1.5e\n";
-  try
-    {
-      coupling::StateFile::read(path).number("x");
-      FAIL() << "a bad number was read";
-    }
-  catch (const InputError &e)
-    {
-      EXPECT_NE(std::string(e.what()).find(path + ":2"), std::string::npos) << e.what();
-    }
-  std::ofstream(path) << "no equals sign\n";
-  EXPECT_THROW(coupling::StateFile::read(path), InputError);
+  // errors name the file and the line
+  for (const std::string key : {"bad", "not_finite"})
+    try
+      {
+        in.numbers(key);
+        FAIL() << "'" << key << "' was read as numbers";
+      }
+    catch (const InputError &e)
+      {
+        EXPECT_NE(std::string(e.what()).find(path + ":" + (key == "bad" ? "4" : "5")), std::string::npos) << e.what();
+      }
+}
+
+TEST(StateFile, AChangedCutOrUncheckedFileIsRefused)
+{
+  const std::string path = fem::testing::tmp("abrade_state_file_corrupt.txt");
+  coupling::StateFile out;
+  out.set("tonnes", 12000.0);
+  out.set("history", std::vector<double>{0, 6000, 12000});
+  out.write(path);
+  std::ifstream     in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto refused = [&](const std::string &changed, const std::string &why) {
+    std::ofstream(path) << changed;
+    try
+      {
+        coupling::StateFile::read(path);
+        ADD_FAILURE() << "read: " << changed;
+      }
+    catch (const InputError &e)
+      {
+        EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+      }
+  };
+  std::string edited = text;
+  edited[text.find("12000")] = '9'; // a plausible number changed by hand
+  refused(edited, "checksum does not match");
+  refused(text.substr(0, text.find("history")), "no checksum line");
+  refused(text.substr(0, text.size() - 3), "checksum does not match");
+  std::ofstream(path) << text;
+  EXPECT_EQ(coupling::StateFile::read(path).number("tonnes"), 12000.0);
 }
 
 namespace

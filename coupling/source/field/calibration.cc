@@ -145,6 +145,27 @@ namespace abrade::field
                                        : lookup(below_design, laid, m.point.data()));
       return out;
     }
+    /// Every measured point lies near the knife: within a tenth of its size of the design
+    /// surface (a worn point lies less than the wear depth inside it). A point far away is in
+    /// other coordinates or units, and would be fitted to the nearest corner of the knife.
+    void check_on_knife(const geometry::SurfaceDistance &design, vtkPolyData *fresh,
+                        const std::vector<Measurement> &measurements)
+    {
+      double b[6];
+      fresh->GetBounds(b);
+      const double size = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+                                    (b[5] - b[4]) * (b[5] - b[4]));
+      for (const auto &m : measurements)
+        {
+          const auto  &p = m.has_worn_point ? m.worn_point : m.point;
+          const double d = std::abs(design.signed_distance(p.data()));
+          if (d > 0.1 * size)
+            throw InputError(m.where, "the point (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
+                                        std::to_string(p[2]) + ") m lies " + std::to_string(d) +
+                                        " m from the knife's surface (the knife is " + std::to_string(size) +
+                                        " m across): coordinates in other units or another frame?");
+        }
+    }
   } // namespace
 
   std::vector<Measurement> read_measurements(const std::string &path, const std::string &locations)
@@ -158,8 +179,17 @@ namespace abrade::field
         for (const char *c : {"name", "x", "y", "z"})
           if (!has(l, c))
             throw InputError(locations, std::string("missing column '") + c + "' (found: " + columns_of(l) + ")");
+        std::map<std::string, long> defined_on;
         for (std::size_t r = 0; r < l.rows.size(); ++r)
-          named[l.rows[r][l.find("name")]] = {number(l, r, "x"), number(l, r, "y"), number(l, r, "z")};
+          {
+            const std::string &name = l.rows[r][l.find("name")];
+            if (defined_on.count(name))
+              throw InputError(locations + ":" + std::to_string(l.line[r]),
+                               "location '" + name + "' is defined twice (first on line " +
+                                 std::to_string(defined_on[name]) + ")");
+            defined_on[name] = l.line[r];
+            named[name]      = {number(l, r, "x"), number(l, r, "y"), number(l, r, "z")};
+          }
       }
     const bool by_name = has(t, "location");
     std::vector<std::string> required = {"tonnes"};
@@ -196,10 +226,15 @@ namespace abrade::field
           m.has_worn_point = true, m.worn_point = {number(t, r, "worn_x"), number(t, r, "worn_y"), number(t, r, "worn_z")};
         if (m.tonnes < 0)
           throw InputError(m.where, "negative tonnes");
+        for (const auto &earlier : out)
+          if (earlier.point == m.point && earlier.tonnes == m.tonnes && earlier.depth == m.depth)
+            throw InputError(m.where, "the same measurement as " + earlier.where + " (a row copied twice?)");
         out.push_back(m);
       }
     if (out.empty())
       throw InputError(path, "no measurements (the table has a header only)");
+    if (std::none_of(out.begin(), out.end(), [](const Measurement &m) { return m.tonnes > 0; }))
+      throw InputError(path, "every measurement is at 0 t: the fit needs wear measured after handled tonnes");
     return out;
   }
 
@@ -214,23 +249,35 @@ namespace abrade::field
     run.archard_coefficient = io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0);
     run.seeds                 = long(io::summary_number(directory + "/summary.json", "seeds").value_or(1));
     run.replicate_relative_sd = io::summary_number(directory + "/summary.json", "worn_volume_relative_spread").value_or(0);
-    const std::regex entry("timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+    const std::regex entry("timestep=\"([^\"]*)\"[^>]*file=\"([^\"]+)\"");
     std::unique_ptr<geometry::SurfaceDistance> design;
     std::string      line;
-    while (std::getline(in, line))
+    for (long n = 1; std::getline(in, line); ++n)
       {
         std::smatch m;
         if (!std::regex_search(line, m, entry))
           continue;
-        const std::string file = directory + "/knife/" + m[2].str();
+        const std::string where = pvd + ":" + std::to_string(n);
+        const std::string time  = m[1].str();
+        char             *end   = nullptr;
+        const double      t     = std::strtod(time.c_str(), &end);
+        if (time.empty() || *end != '\0' || !std::isfinite(t) || t < 0)
+          throw InputError(where, "timestep \"" + time.substr(0, 40) + "\" is not a number of tonnes");
+        if (!run.tonnes.empty() && !(t > run.tonnes.back()))
+          throw InputError(where, "timestep " + time + " t does not follow " + std::to_string(run.tonnes.back()) +
+                                    " t: the outputs must come in increasing tonnes (edited?)");
+        const std::string file    = directory + "/knife/" + m[2].str();
         const auto        surface = io::read_polydata(file);
         vtkPolyData      *s       = surface;
         if (!s->GetPointData()->GetArray("wear_depth") || !s->GetPointData()->GetArray("wear_displacement") ||
             s->GetNumberOfCells() == 0)
           throw InputError(file, "no knife surface with wear_depth and wear_displacement");
         if (!design) // the first output is the fresh knife: the design
-          design = std::make_unique<geometry::SurfaceDistance>(distance_to(s));
-        run.tonnes.push_back(std::stod(m[1]));
+          {
+            design = std::make_unique<geometry::SurfaceDistance>(distance_to(s));
+            check_on_knife(*design, s, measurements);
+          }
+        run.tonnes.push_back(t);
         run.depth.push_back(depth_at(s, *design, measurements));
       }
     if (run.tonnes.size() < 2)
@@ -282,6 +329,10 @@ namespace abrade::field
         if (e < best_sse)
           best = s, best_sse = e;
       }
+    if (best <= 1.0001e-3 || best >= 0.9999e3 || !std::isfinite(best_sse))
+      throw InputError(run.directory, "the best fit lies at the end of the range searched (the run's wear scaled by "
+                                      "1e-3 .. 1e3): the run and the measurements differ by more than a factor of "
+                                      "1000 (depths in mm given as m, tonnes in kg, or no wear measured?)");
     double       a = best * std::pow(10.0, -0.01), b = best * std::pow(10.0, 0.01);
     const double g = (std::sqrt(5.0) - 1) / 2;
     for (int it = 0; it < 100; ++it)

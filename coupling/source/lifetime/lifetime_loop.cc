@@ -180,23 +180,12 @@ namespace abrade::coupling::lifetime
     for (std::size_t p = 0; p < s.recession_points.size(); ++p)
       columns.push_back(p == 0 ? std::string("point_depth") : "point_depth_" + std::to_string(p + 1));
 
-    std::vector<std::string> kept_rows;
-    if (ctx.resume && resume())
-      {
-        std::ifstream old(ctx.output.file("trajectory.csv"));
-        std::string   line;
-        std::getline(old, line); // header
-        while (std::getline(old, line) && long(kept_rows.size()) < update)
-          kept_rows.push_back(line);
-        if (long(kept_rows.size()) < update)
-          throw InputError(ctx.output.file("trajectory.csv"), "has " + std::to_string(kept_rows.size()) +
-                                                                 " rows, the checkpoint " + std::to_string(update) +
-                                                                 " (edited or cut? start afresh without --resume)");
-      }
-    else
+    // trajectory.csv is an output, never read back: a resumed run writes it anew from the rows
+    // the checkpoint holds (a file edited, cut or emptied by a second crash cannot leak in)
+    if (!(ctx.resume && resume()))
       start_afresh();
     trajectory.open(ctx.output.file("trajectory.csv"), columns);
-    for (const auto &row : kept_rows)
+    for (const auto &row : trajectory_rows)
       trajectory.raw_row(row);
     trajectory.flush();
     ctx.log.line("Lifetime: knife of " + std::to_string(knife->triangulation().n_active_cells()) + " cells, " +
@@ -277,6 +266,8 @@ namespace abrade::coupling::lifetime
     const auto t  = state.numbers("history_tonnes");
     if (long(t.size()) != done + 1 || deepest.size() != 3)
       throw InputError(file, "corrupt lifetime checkpoint (history of " + std::to_string(t.size()) + " points)");
+    if (cycles < 0 || tonnes < 0 || t.front() != 0 || !std::is_sorted(t.begin(), t.end()) || t.back() != tonnes)
+      throw InputError(file, "corrupt lifetime checkpoint (negative or decreasing tonnes or cycles)");
     history.assign(t.size(), {0.0, std::vector<double>(n_criteria, 0.0)});
     for (std::size_t k = 0; k < t.size(); ++k)
       history[k].tonnes = t[k];
@@ -296,12 +287,19 @@ namespace abrade::coupling::lifetime
             throw InputError(file, e.what());
           }
       }
+    trajectory_rows.clear();
+    for (long k = 1; k <= done; ++k)
+      trajectory_rows.push_back(state.text("trajectory_row_" + std::to_string(k)));
     knife->load(checkpoints->knife_file(done));
     std::vector<double> output_times;
     for (const auto &p : history)
       output_times.push_back(p.tonnes);
     knife_output->adopt(output_times);
-    truncate_profiles(s.planes, done, ctx.output.root() + "/knife");
+    for (const auto &path : truncate_profiles(s.planes, done, ctx.output.root() + "/knife"))
+      {
+        warnings.push_back(path + " is missing: its profiles start at update " + std::to_string(done + 1));
+        ctx.log.warning(warnings.back());
+      }
     ctx.log.line("Resuming after update " + std::to_string(done) + " (" + std::to_string(cycles) + " cycles)");
     return true;
   }
@@ -501,7 +499,7 @@ namespace abrade::coupling::lifetime
     row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2]});
     const auto point_depth = knife->wear_depth_below(s.recession_points);
     row.insert(row.end(), point_depth.begin(), point_depth.end());
-    trajectory.row(row);
+    trajectory_rows.push_back(trajectory.row(row));
     trajectory.flush();
 
     write_profiles(surface, frame, s.planes, update, ctx.output.root() + "/knife");
@@ -542,6 +540,8 @@ namespace abrade::coupling::lifetime
         state.set("history_criterion_" + std::to_string(c), v);
         state.set("seed_factor_sums_" + std::to_string(c), seed_factors[c].sums());
       }
+    for (std::size_t k = 0; k < trajectory_rows.size(); ++k)
+      state.set("trajectory_row_" + std::to_string(k + 1), trajectory_rows[k]);
     state.write(checkpoints->state_file_aside(update));
     checkpoints->commit(update);
   }

@@ -1,7 +1,10 @@
+#include <abrade/common/atomic_file.h>
+#include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -63,24 +66,56 @@ namespace abrade::coupling::lifetime
       }
   }
 
-  void truncate_profiles(const std::vector<double> &planes, long update, const std::string &dir)
+  std::vector<std::string> truncate_profiles(const std::vector<double> &planes, long update, const std::string &dir)
   {
+    std::vector<std::string> missing;
     for (double f : planes)
       {
-        const std::string  path = dir + "/" + profile_name(f) + ".csv";
-        std::ifstream      in(path);
+        const std::string path = dir + "/" + profile_name(f) + ".csv";
+        std::ifstream     in(path);
+        if (!in)
+          {
+            missing.push_back(path);
+            continue;
+          }
+        std::vector<std::string> lines;
+        for (std::string l; std::getline(in, l);)
+          lines.push_back(l);
+        std::size_t last = lines.size(); // the last line that is not blank
+        while (last > 0 && lines[last - 1].empty())
+          --last;
         std::ostringstream keep;
         bool               kept = true; // the block the line is in; its blank separators go with it
-        for (std::string l; std::getline(in, l);)
+        for (std::size_t n = 0; n < lines.size(); ++n)
           {
-            if (!l.empty() && l[0] != '#')
-              kept = std::stol(l.substr(0, l.find(' '))) <= update;
-            if (kept || (!l.empty() && l[0] == '#'))
+            const std::string &l = lines[n];
+            if (l.empty() || l[0] == '#')
+              {
+                if (kept || !l.empty())
+                  keep << l << '\n';
+                continue;
+              }
+            // "update y0 z0 y1 z1"; a line cut by a crash can only be the last one
+            std::istringstream words(l);
+            long               u = 0;
+            double             v[4];
+            std::string        rest;
+            const bool         ok = (words >> u >> v[0] >> v[1] >> v[2] >> v[3]) && !(words >> rest) && u >= 1 &&
+                            std::isfinite(v[0] + v[1] + v[2] + v[3]);
+            if (!ok && n + 1 == last)
+              break;
+            if (!ok)
+              throw InputError(path + ":" + std::to_string(n + 1),
+                               "not a profile line 'update y0 z0 y1 z1': '" + l.substr(0, 60) +
+                                 "' (edited? delete the file to resume without the earlier profiles)");
+            kept = u <= update;
+            if (kept)
               keep << l << '\n';
           }
         in.close();
-        std::ofstream(path) << keep.str();
+        io::write_file_atomically(path, keep.str());
       }
+    return missing;
   }
 
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame)

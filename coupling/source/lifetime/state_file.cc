@@ -1,10 +1,13 @@
 #include <abrade/common/error.h>
+#include <abrade/common/hash.h>
 #include <abrade/coupling/lifetime/state_file.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace abrade::coupling
@@ -20,22 +23,38 @@ namespace abrade::coupling
 
     std::string trim(const std::string &s)
     {
-      const auto a = s.find_first_not_of(" \t\r");
+      const auto a = s.find_first_not_of(" \t\r\n");
       if (a == std::string::npos)
         return "";
-      return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+      return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
     }
   } // namespace
 
+  namespace
+  {
+    const std::string checksum_key = "checksum";
+  }
+
   StateFile StateFile::read(const std::string &path)
   {
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in)
       throw InputError(path, "cannot read the state file");
-    StateFile s;
+    const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // the last line is the checksum of everything before it: a changed or cut file is named,
+    // never read as state
+    const auto last = all.rfind(checksum_key + " = ");
+    if (last == std::string::npos || (last > 0 && all[last - 1] != '\n'))
+      throw InputError(path, "no checksum line (cut short, or written by an older abrade): start afresh without --resume");
+    const std::string stored = trim(all.substr(last + checksum_key.size() + 3));
+    if (stored != io::fnv1a_hex(all.substr(0, last)))
+      throw InputError(path, "corrupt state file (its checksum does not match: changed or cut); start afresh "
+                             "without --resume");
+    StateFile          s;
     s.path = path;
-    int n  = 0;
-    for (std::string line; std::getline(in, line);)
+    std::istringstream lines(all.substr(0, last));
+    int                n = 0;
+    for (std::string line; std::getline(lines, line);)
       {
         ++n;
         if (trim(line).empty() || trim(line)[0] == '#')
@@ -52,9 +71,11 @@ namespace abrade::coupling
 
   void StateFile::write(const std::string &file) const
   {
-    std::ofstream out(file);
+    std::ostringstream text;
     for (const auto &key : order)
-      out << key << " = " << values.at(key) << '\n';
+      text << key << " = " << values.at(key) << '\n';
+    std::ofstream out(file, std::ios::binary);
+    out << text.str() << checksum_key << " = " << io::fnv1a_hex(text.str()) << '\n';
     out.close();
     if (!out)
       throw RunError("cannot write " + file);
@@ -108,8 +129,8 @@ namespace abrade::coupling
         char *end = nullptr;
         errno     = 0;
         const double x = std::strtod(word.c_str(), &end);
-        if (end == word.c_str() || *end != '\0' || errno == ERANGE)
-          throw InputError(where(key), "'" + key + "': '" + word.substr(0, 40) + "' is not a number");
+        if (end == word.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+          throw InputError(where(key), "'" + key + "': '" + word.substr(0, 40) + "' is not a finite number");
         out.push_back(x);
       }
     return out;

@@ -44,6 +44,10 @@ namespace abrade::io
           }
         if (t.header.empty())
           t.header = std::move(cells);
+        else if (cells.size() != t.header.size())
+          throw InputError(path + ":" + std::to_string(number),
+                           std::to_string(cells.size()) + " cells, the header has " + std::to_string(t.header.size()) +
+                             " (a comma inside a value, or a cell missing?)");
         else
           t.rows.push_back(std::move(cells)), t.line.push_back(number);
       }

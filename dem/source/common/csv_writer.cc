@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 
 #include <iomanip>
+#include <sstream>
 
 namespace abrade::io
 {
@@ -22,13 +23,16 @@ namespace abrade::io
     out << '\n' << std::setprecision(10);
   }
 
-  void CsvWriter::row(const std::vector<double> &values)
+  std::string CsvWriter::row(const std::vector<double> &values)
   {
     if (values.size() != n_columns)
       throw std::logic_error("CSV row width mismatch in " + path);
+    std::ostringstream line;
+    line << std::setprecision(10);
     for (std::size_t i = 0; i < values.size(); ++i)
-      out << (i ? "," : "") << values[i];
-    out << '\n';
+      line << (i ? "," : "") << values[i];
+    out << line.str() << '\n';
+    return line.str();
   }
 
   void CsvWriter::row(const std::string &label, const std::vector<double> &values)

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/legacy_vtk.h>
 #include <abrade/common/vtk_input.h>
 
 #include <vtkCellArray.h>
@@ -11,7 +12,6 @@
 #include <vtkObject.h>
 #include <vtkPLYReader.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
 #include <vtkSTLReader.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
@@ -307,7 +307,7 @@ namespace abrade::io
         return read_with<vtkPLYReader>(path);
       }
     if (ext == ".vtk")
-      return read_with<vtkPolyDataReader>(path);
+      return read_legacy_vtk(path);
     if (ext == ".vtp")
       return read_with<vtkXMLPolyDataReader>(path);
     if (ext == ".vtu")

@@ -1,4 +1,6 @@
+#include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
+#include <abrade/common/hash.h>
 #include <abrade/common/closest_point.h>
 #include <abrade/dem/generation.h>
 #include <abrade/dem/simulation.h>
@@ -7,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 
 namespace abrade::dem
 {
@@ -184,30 +187,49 @@ namespace abrade::dem
   }
 
   // ---------------------------------------------------------------------------------------------
+  // A bed file: "ABRBED02", the particle count n (uint64), the time (double), then per field n
+  // values (x y z, v, w, radius, mass as doubles; material as int; id as int64), and last the
+  // 16 hex digits of the FNV-1a hash of all before it. The count is checked against the file's
+  // size before anything is allocated, the checksum before anything is read as particles.
   namespace
   {
-    constexpr char bed_magic[8] = {'A', 'B', 'R', 'B', 'E', 'D', '0', '1'};
-  }
+    constexpr char        bed_magic[9]     = "ABRBED02";
+    constexpr char        old_bed_magic[9] = "ABRBED01";
+    constexpr std::size_t bed_header       = 8 + sizeof(std::uint64_t) + sizeof(double);
+    constexpr std::size_t bytes_per_particle = 11 * sizeof(double) + sizeof(int) + sizeof(std::int64_t);
+    constexpr std::size_t checksum_digits    = 16;
+
+    template <typename T>
+    void append(std::string &out, const T *data, std::size_t n)
+    {
+      out.append(reinterpret_cast<const char *>(data), n * sizeof(T));
+    }
+
+    template <typename T>
+    void take(const std::string &in, std::size_t &at, T *data, std::size_t n)
+    {
+      std::memcpy(data, in.data() + at, n * sizeof(T));
+      at += n * sizeof(T);
+    }
+  } // namespace
 
   void save_bed(const Simulation &sim, const std::string &path)
   {
     const ParticleStore P = sim.gather_particles(); // sorted by id: the same file on any ranks
     if (sim.parallel().rank() != 0)
       return;
-    std::ofstream out(path, std::ios::binary);
-    if (!out)
-      throw RunError("cannot write bed file " + path);
     const std::uint64_t n = P.size();
-    out.write(bed_magic, 8);
-    out.write(reinterpret_cast<const char *>(&n), sizeof n);
-    const double t = sim.time();
-    out.write(reinterpret_cast<const char *>(&t), sizeof t);
+    const double        t = sim.time();
+    std::string         bytes(bed_magic, 8);
+    bytes.reserve(bed_header + n * bytes_per_particle + checksum_digits);
+    append(bytes, &n, 1);
+    append(bytes, &t, 1);
     for (const auto *a : {&P.x, &P.y, &P.z, &P.vx, &P.vy, &P.vz, &P.wx, &P.wy, &P.wz, &P.radius, &P.mass})
-      out.write(reinterpret_cast<const char *>(a->data()), n * sizeof(double));
-    out.write(reinterpret_cast<const char *>(P.material.data()), n * sizeof(int));
-    out.write(reinterpret_cast<const char *>(P.id.data()), n * sizeof(std::int64_t));
-    if (!out)
-      throw RunError("error writing bed file " + path);
+      append(bytes, a->data(), n);
+    append(bytes, P.material.data(), n);
+    append(bytes, P.id.data(), n);
+    bytes += io::fnv1a_hex(bytes);
+    io::write_file_atomically(path, bytes); // a crash never leaves half a bed
   }
 
   void load_bed(Simulation &sim, const std::string &path)
@@ -215,35 +237,57 @@ namespace abrade::dem
     std::ifstream in(path, std::ios::binary);
     if (!in)
       throw InputError(path, "cannot open bed file");
-    char magic[8];
-    in.read(magic, 8);
-    if (!in || std::memcmp(magic, bed_magic, 8) != 0)
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (bytes.compare(0, 8, old_bed_magic) == 0)
+      throw InputError(path, "a bed file of an older abrade (format 01, without a checksum): delete it, the bed is "
+                             "made again");
+    if (bytes.size() < bed_header + checksum_digits || bytes.compare(0, 8, bed_magic) != 0)
       throw InputError(path, "not an abrade bed file (bad header)");
     std::uint64_t n;
     double        t;
-    in.read(reinterpret_cast<char *>(&n), sizeof n);
-    in.read(reinterpret_cast<char *>(&t), sizeof t);
-    if (!in || n > (1ULL << 34))
-      throw InputError(path, "corrupt bed file (particle count)");
-    auto &P = sim.particles();
-    P.clear();
+    std::size_t   at = 8;
+    take(bytes, at, &n, 1);
+    take(bytes, at, &t, 1);
+    const std::size_t body = bytes.size() - bed_header - checksum_digits;
+    if (body % bytes_per_particle != 0 || n != body / bytes_per_particle)
+      throw InputError(path, "corrupt bed file: it announces " + std::to_string(n) + " particles, its size of " +
+                               std::to_string(bytes.size()) + " bytes holds " +
+                               std::to_string(double(body) / bytes_per_particle) + " (cut short or changed)");
+    if (io::fnv1a_hex(bytes.substr(0, bytes.size() - checksum_digits)) != bytes.substr(bytes.size() - checksum_digits))
+      throw InputError(path, "corrupt bed file (its checksum does not match: changed or cut); delete it, the bed is "
+                             "made again");
     std::vector<std::vector<double>> a(11, std::vector<double>(n));
     for (auto &v : a)
-      in.read(reinterpret_cast<char *>(v.data()), n * sizeof(double));
+      take(bytes, at, v.data(), n);
     std::vector<int>          mat(n);
     std::vector<std::int64_t> id(n);
-    in.read(reinterpret_cast<char *>(mat.data()), n * sizeof(int));
-    in.read(reinterpret_cast<char *>(id.data()), n * sizeof(std::int64_t));
-    if (!in)
-      throw InputError(path, "truncated bed file");
+    take(bytes, at, mat.data(), n);
+    take(bytes, at, id.data(), n);
+    // what a checksum cannot catch (a file written by other code)
     const int n_mat = static_cast<int>(sim.materials().size());
     for (std::uint64_t k = 0; k < n; ++k)
       {
+        const std::string particle = "particle " + std::to_string(k) + " (id " + std::to_string(id[k]) + ")";
         if (mat[k] < 0 || mat[k] >= n_mat)
-          throw InputError(path, "particle " + std::to_string(id[k]) + " has unknown material " + std::to_string(mat[k]));
-        const double r = a[9][k];
+          throw InputError(path, particle + " has unknown material " + std::to_string(mat[k]));
+        for (const auto &v : a)
+          if (!std::isfinite(v[k]))
+            throw InputError(path, particle + " has a value that is not a finite number");
+        if (!(a[9][k] > 0) || !(a[10][k] > 0))
+          throw InputError(path, particle + " has a radius or mass that is not positive");
+      }
+    std::vector<std::int64_t> sorted = id;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      throw InputError(path, "particle id " + std::to_string(*std::adjacent_find(sorted.begin(), sorted.end())) +
+                               " comes twice");
+    auto &P = sim.particles();
+    P.clear();
+    for (std::uint64_t k = 0; k < n; ++k)
+      {
+        const double r       = a[9][k];
         const double density = a[10][k] / (4.0 / 3.0 * M_PI * r * r * r);
-        const auto   i = P.add(id[k], a[0][k], a[1][k], a[2][k], r, density, mat[k]);
+        const auto   i       = P.add(id[k], a[0][k], a[1][k], a[2][k], r, density, mat[k]);
         P.mass[i] = a[10][k], P.inv_mass[i] = 1 / a[10][k];
         P.vx[i] = a[3][k], P.vy[i] = a[4][k], P.vz[i] = a[5][k];
         P.wx[i] = a[6][k], P.wy[i] = a[7][k], P.wz[i] = a[8][k];

@@ -21,7 +21,8 @@ namespace abrade::io
     int column(const std::string &name) const;
   };
 
-  /// Reads @p path; throws InputError naming it when it cannot be opened. A file without a
-  /// header comes back with an empty header.
+  /// Reads @p path; throws InputError naming it when it cannot be opened, and naming the line
+  /// when a row has more or fewer cells than the header. A file without a header comes back
+  /// with an empty header.
   CsvTable read_csv(const std::string &path);
 } // namespace abrade::io

@@ -14,8 +14,9 @@ namespace abrade::io
     void open(const std::string &path, const std::vector<std::string> &columns);
     bool is_open() const { return out.is_open(); }
 
-    /// Writes one row; the number of values must match the header.
-    void row(const std::vector<double> &values);
+    /// Writes one row; the number of values must match the header. Returns the row's text
+    /// (without its newline), as raw_row takes it back.
+    std::string row(const std::vector<double> &values);
     /// Writes one row whose first column is text (a name, a phase).
     void row(const std::string &label, const std::vector<double> &values);
     /// Writes a row given as text (rows kept from an earlier, resumed run).

@@ -60,6 +60,9 @@ namespace abrade::dem
   /// whole file (Simulation::setup() spreads the particles over the ranks).
   void save_bed(const Simulation &sim, const std::string &path);
   /// Replaces the simulation's particles with those in @p path; throws InputError naming the
-  /// file if it is not a bed file or refers to unknown materials.
+  /// file if it is not a bed file, its size does not match its count, its checksum does not
+  /// match (changed or cut), or a particle has a non-finite value, a non-positive radius or
+  /// mass, an unknown material or a repeated id. save_bed replaces the file at once (written
+  /// aside and renamed).
   void load_bed(Simulation &sim, const std::string &path);
 } // namespace abrade::dem

@@ -115,6 +115,7 @@ namespace abrade::coupling::lifetime
     double                       volume0 = 0;
     std::vector<Criterion>       criteria;
     std::vector<TrajectoryPoint> history;      ///< per update (and the fresh knife) the criteria's values
+    std::vector<std::string>     trajectory_rows; ///< trajectory.csv's rows as written (rebuilt from them on resume)
     std::vector<SeedFactors>     seed_factors; ///< per criterion
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made

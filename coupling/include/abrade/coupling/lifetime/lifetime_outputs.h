@@ -25,8 +25,11 @@ namespace abrade::coupling::lifetime
   void write_profiles(const fem::SolidSurface &s, const ProfileFrame &frame, const std::vector<double> &planes,
                       long update, const std::string &directory);
 
-  /// Cuts the profile files back to the blocks of updates <= @p update (resume).
-  void truncate_profiles(const std::vector<double> &planes, long update, const std::string &directory);
+  /// Cuts the profile files back to the blocks of updates <= @p update (resume), each replaced
+  /// at once (written aside, renamed). A line that is not a profile segment is an InputError
+  /// naming the file and line, unless it is the last (an append cut by a crash: dropped).
+  /// Returns the profile files that are missing.
+  std::vector<std::string> truncate_profiles(const std::vector<double> &planes, long update, const std::string &directory);
 
   /// trajectory.png (wear depth, recession and worn volume vs tonnes) and knife/profile_F.png.
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame);

@@ -3,7 +3,9 @@
 // read back exactly). Numbers are written with 17 significant digits, so they read back bit for
 // bit (a resumed run continues byte-identically); lists are space separated. Every key is
 // written by name, so adding a field cannot shift the others; reading a key that is missing, or
-// a value that is not a number, is an InputError naming the file and the line.
+// a value that is not a finite number, is an InputError naming the file and the line. The last
+// line is a checksum (64-bit FNV-1a of all before it): a file changed by hand, cut short by a
+// crash or written by an older version is refused when it is read, never taken as state.
 #include <map>
 #include <string>
 #include <vector>
@@ -14,7 +16,8 @@ namespace abrade::coupling
   {
   public:
     StateFile() = default;
-    /// Reads @p path (InputError naming it when it cannot be read or a line has no '=').
+    /// Reads @p path (InputError naming it when it cannot be read, its checksum does not match
+    /// or a line has no '=').
     static StateFile read(const std::string &path);
     /// Writes to @p path (RunError when the write fails).
     void write(const std::string &path) const;
