@@ -1,6 +1,7 @@
 // Reading a user's part (solid_file.h): Gmsh for CAD, STL and the physical names of .msh files,
 // deal.II's GridIn for the volume mesh.
 #include <abrade/common/error.h>
+#include <abrade/fem/cad_check.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
 
@@ -196,6 +197,7 @@ namespace abrade::fem
     /// scaled here to metres. (Gmsh 4.8's Geometry.OCCTargetUnit does not change that.)
     void import_cad(const std::string &path)
     {
+      check_cad_file(path);
       gmsh::vectorpair shapes;
       gmsh::model::occ::importShapes(path, shapes);
       gmsh::model::occ::synchronize();
@@ -404,7 +406,67 @@ namespace abrade::fem
     /// edges (more than 15 degrees) stay edges, the facets become remeshable surfaces. With
     /// @p keep_triangles the facets are not remeshed: they bound the volume as they are (a
     /// worn surface whose remeshing failed).
-    void load_stl(const std::string &path, double h, const SolidFileSettings &settings, bool keep_triangles = false)
+    /// Removes the triangles of zero area (three points on a line: an STL exporter's slivers)
+    /// from the merged STL: Gmsh's surface mesher throws inside a parallel region on one, and
+    /// the process aborts. Returns how many were removed.
+    std::size_t remove_zero_area_triangles()
+    {
+      gmsh::vectorpair surfaces;
+      gmsh::model::getEntities(surfaces, 2);
+      double box[6];
+      gmsh::model::getBoundingBox(-1, -1, box[0], box[1], box[2], box[3], box[4], box[5]);
+      const double size2 = std::pow(box[3] - box[0], 2) + std::pow(box[4] - box[1], 2) + std::pow(box[5] - box[2], 2);
+      struct Surface
+      {
+        int                      tag;
+        std::vector<std::size_t> nodes, triangles, corners;
+        std::vector<double>      xyz;
+      };
+      std::vector<Surface> kept;
+      std::size_t          removed = 0;
+      for (const auto &[dim, tag] : surfaces)
+        {
+          Surface                  s{tag, {}, {}, {}, {}};
+          std::vector<double>      parametric;
+          std::vector<std::size_t> triangles, corners;
+          gmsh::model::mesh::getNodes(s.nodes, s.xyz, parametric, 2, tag, true, false);
+          gmsh::model::mesh::getElementsByType(2, triangles, corners, tag);
+          std::map<std::size_t, std::size_t> index;
+          for (std::size_t k = 0; k < s.nodes.size(); ++k)
+            index[s.nodes[k]] = k;
+          for (std::size_t t = 0; t < triangles.size(); ++t)
+            {
+              double p[3][3];
+              for (int c = 0; c < 3; ++c)
+                for (int d = 0; d < 3; ++d)
+                  p[c][d] = s.xyz[3 * index[corners[3 * t + c]] + d];
+              const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+              const double v[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+              const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+              if (n[0] * n[0] + n[1] * n[1] + n[2] * n[2] <= 1e-24 * size2 * size2)
+                ++removed;
+              else
+                {
+                  s.triangles.push_back(triangles[t]);
+                  s.corners.insert(s.corners.end(), corners.begin() + 3 * t, corners.begin() + 3 * t + 3);
+                }
+            }
+          kept.push_back(std::move(s));
+        }
+      if (removed == 0)
+        return 0;
+      // the mesh again without them (nodes where they were, on the entities they were on)
+      gmsh::model::mesh::clear();
+      for (const auto &s : kept)
+        {
+          gmsh::model::mesh::addNodes(2, s.tag, s.nodes, s.xyz);
+          gmsh::model::mesh::addElementsByType(s.tag, 2, s.triangles, s.corners);
+        }
+      return removed;
+    }
+
+    void load_stl(const std::string &path, double h, const SolidFileSettings &settings, SolidFileReport *report,
+                  bool keep_triangles = false)
     {
       gmsh::merge(path);
       {
@@ -418,6 +480,8 @@ namespace abrade::fem
         if (xyz.empty())
           throw InputError(path, "holds no triangles");
       }
+      if (const std::size_t removed = remove_zero_area_triangles(); removed > 0 && report)
+        report->notes.push_back(std::to_string(removed) + " triangle(s) of zero area removed from the STL");
       check_extent(path, model_box(), settings.scale, settings, false);
       check_volume(path, enclosed_volume_of_triangles() * std::pow(settings.scale, 3), h, settings);
       if (!keep_triangles)
@@ -521,7 +585,7 @@ namespace abrade::fem
             if (cad)
               load_cad(path, h, settings, report);
             else
-              load_stl(path, h, settings);
+              load_stl(path, h, settings, &report);
             mesh_volume_with_gmsh(path, cad ? h : h / settings.scale, msh, again, cad);
           });
           read_msh_file(msh, into);
@@ -598,7 +662,7 @@ namespace abrade::fem
     const std::string msh = stl + ".volume.msh";
     SolidFileSettings as_is;
     with_gmsh(stl, [&] {
-      load_stl(stl, 0, as_is, true);
+      load_stl(stl, 0, as_is, nullptr, true);
       mesh_volume_with_gmsh(stl, h, msh, false, false);
     });
     read_msh_file(msh, tria);

@@ -1,0 +1,73 @@
+#include <abrade/common/error.h>
+#include <abrade/fem/cad_check.h>
+
+#include <IGESControl_Reader.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_CheckTool.hxx>
+#include <Interface_InterfaceModel.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TCollection_HAsciiString.hxx>
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+
+namespace abrade::fem
+{
+  void check_cad_file(const std::string &path)
+  {
+    std::string ext = path.substr(std::min(path.size(), path.rfind('.')));
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    // OpenCASCADE's reports go to its messenger's printers (the terminal): silenced here, the
+    // error below says what matters
+    const Handle(Message_Messenger) messenger = Message::DefaultMessenger();
+    const Message_SequenceOfPrinters printers  = messenger->Printers();
+    messenger->RemovePrinters(STANDARD_TYPE(Message_Printer));
+    struct Restore
+    {
+      const Handle(Message_Messenger) &m;
+      const Message_SequenceOfPrinters &p;
+      ~Restore()
+      {
+        for (const auto &printer : p)
+          m->AddPrinter(printer);
+      }
+    } restore{messenger, printers};
+
+    std::unique_ptr<XSControl_Reader> reader;
+    if (ext == ".step" || ext == ".stp")
+      reader = std::make_unique<STEPControl_Reader>();
+    else if (ext == ".iges" || ext == ".igs")
+      reader = std::make_unique<IGESControl_Reader>();
+    else
+      return;
+    if (reader->ReadFile(path.c_str()) != IFSelect_RetDone || reader->Model().IsNull())
+      throw InputError(path, "OpenCASCADE cannot read it as a " + std::string(ext == ".igs" || ext == ".iges" ? "IGES" : "STEP") +
+                               " file (cut short, or not one)");
+    const Handle(Interface_InterfaceModel) model = reader->Model();
+    Interface_CheckTool                    tool(model);
+    Interface_CheckIterator                checks = tool.CompleteCheckList();
+    long                                   failed = 0;
+    std::string                            first;
+    for (checks.Start(); checks.More(); checks.Next())
+      if (checks.Value()->HasFailed())
+        {
+          if (failed++ == 0)
+            {
+              const Handle(Standard_Transient) entity = checks.Value()->Entity();
+              std::string label = checks.Number() > 0 ? "entity " + std::to_string(checks.Number()) + ": " : "";
+              if (!entity.IsNull() && !model->StringLabel(entity).IsNull())
+                label = "entity " + std::string(model->StringLabel(entity)->ToCString()) + ": ";
+              first = label + checks.Value()->Fail(1)->ToCString(); // (0: the file's syntax, with its line)
+            }
+        }
+    if (failed > 0)
+      throw InputError(path, std::to_string(failed) + " entit" + (failed == 1 ? "y" : "ies") +
+                               " failed to read (" + first +
+                               "); the file is damaged or uses what OpenCASCADE does not read: export it again");
+  }
+} // namespace abrade::fem
