@@ -346,8 +346,8 @@ def main():
             failures += 1
             kept = os.path.join(o.out, "failures", f"{target}-{n}.{target}")
             shutil.copy(path, kept)
-            print(f"FAIL {target} #{n}: exit {code}: {tail[0] if tail else ''} (input: {kept})")
-        print(f"{target}: {o.mutations} mutations: {seen[0]} still valid, {seen[2]} clear errors")
+            print(f"FAIL {target} #{n}: exit {code}: {tail[0] if tail else ''} (input: {kept})", flush=True)
+        print(f"{target}: {o.mutations} mutations: {seen[0]} still valid, {seen[2]} clear errors", flush=True)
     print(f"{failures} failures")
     sys.exit(1 if failures else 0)
 

@@ -42,6 +42,12 @@ namespace abrade::coupling::lifetime
     }
   } // namespace
 
+  namespace
+  {
+    /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum.
+    const std::string state_format = "abrade lifetime state 2";
+  } // namespace
+
   LifetimeLoop::LifetimeLoop(JobContext &ctx) : ctx(ctx) {}
   LifetimeLoop::~LifetimeLoop() = default;
 
@@ -251,6 +257,10 @@ namespace abrade::coupling::lifetime
       return false;
     const std::string file  = checkpoints->state_file(done);
     const StateFile   state = StateFile::read(file);
+    if (!state.has("format") || state.text("format") != state_format)
+      throw InputError(file, "a lifetime checkpoint of another abrade version (format '" +
+                               (state.has("format") ? state.text("format") : std::string("1")) + "', this one reads '" +
+                               state_format + "'); start afresh without --resume");
     if (state.text("parameter_hash") != hash)
       throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
                                ", now " + hash + "); resume with the same parameter file and --set options");
@@ -520,6 +530,7 @@ namespace abrade::coupling::lifetime
   {
     knife->save(checkpoints->knife_file_aside(update));
     StateFile state;
+    state.set("format", state_format);
     state.set("parameter_hash", hash);
     state.set("update", double(update));
     state.set("cycles", double(cycles));
