@@ -135,6 +135,8 @@ namespace
         auto value = [&](const std::string &flag) {
           if (k + 1 >= a.size())
             throw InputError("command line", flag + " needs a value");
+          if (a[k + 1].empty())
+            throw InputError("command line", flag + " needs a value (it is empty)");
           return a[++k];
         };
         if (a[k] == "--set")

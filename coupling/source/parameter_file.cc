@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace abrade::coupling
@@ -194,12 +195,48 @@ namespace abrade::coupling
     for (const auto &o : overrides)
       apply_override(lists, o, true);
     const DeclarationLists l = read_lists(lists);
+    check_wall_list(l, overrides);
 
     // pass 2: everything, strictly
     declare_parameters(prm, l);
     parse_into(prm, file, text, false, origin);
     for (const auto &o : overrides)
       apply_override(prm, o, false);
+  }
+
+  void ParameterFile::check_wall_list(const DeclarationLists &l, const std::vector<Override> &overrides) const
+  {
+    // every wall is a subsection of some sixty parameters and a triangle mesh in every contact
+    // search: thousands are a mistake (a list pasted by accident), not a case
+    constexpr std::size_t most_walls = 1000;
+    const std::string     where      = locate({}, "Walls");
+    if (l.walls.size() > most_walls)
+      throw InputError(where, "Walls: " + std::to_string(l.walls.size()) + " walls listed, more than " +
+                                std::to_string(most_walls) + " (one name per wall, separated by commas)");
+    for (const auto &name : l.walls)
+      if (const std::string why = bad_name(name); !why.empty())
+        throw InputError(where, "Walls: " + why);
+    // a wall the file lists without its subsection would be a default 2 m box, silently
+    const bool listed_here = where != file ||
+                             std::any_of(overrides.begin(), overrides.end(),
+                                         [](const Override &o) { return o.path.empty() && o.key == "Walls"; });
+    if (!listed_here)
+      return;
+    std::set<std::string> sections;
+    std::istringstream    in(text);
+    for (std::string line; std::getline(in, line);)
+      {
+        const std::string t = dealii::Utilities::trim(line.substr(0, line.find('#')));
+        if (t.rfind("subsection ", 0) == 0)
+          sections.insert(dealii::Utilities::trim(t.substr(11)));
+      }
+    for (const auto &o : overrides)
+      if (!o.path.empty())
+        sections.insert(o.path[0]);
+    for (const auto &name : l.walls)
+      if (!sections.count("Wall " + name))
+        throw InputError(where, "Walls: '" + name + "' is listed, but there is no 'subsection Wall " +
+                                                name + "' for it (its geometry, material and motion)");
   }
 
   ParameterFile::ParameterFile() : file("<defaults>")

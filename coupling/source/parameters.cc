@@ -86,6 +86,16 @@ namespace abrade::coupling
     }
   } // namespace
 
+  std::string bad_name(const std::string &name)
+  {
+    // names become file and column names (walls/NAME_wear.csv): no paths, no separators
+    if (name.empty() || name.size() > 64 ||
+        !std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; }))
+      return "'" + name.substr(0, 64) +
+             "' is not a name: up to 64 letters, digits, '_' and '-' (names become file names)";
+    return "";
+  }
+
   void declare_lists(ParameterHandler &prm)
   {
     prm.declare_entry("Walls", "container, knife", List(Anything()),
@@ -97,12 +107,6 @@ namespace abrade::coupling
   {
     DeclarationLists l;
     l.walls = get_list(prm, "Walls");
-    // every wall is a subsection of some sixty parameters and a triangle mesh in every contact
-    // search: thousands are a mistake (a list pasted by accident), not a case
-    constexpr std::size_t most_walls = 1000;
-    if (l.walls.size() > most_walls)
-      throw InputError("", "Walls: " + std::to_string(l.walls.size()) + " walls listed, more than " +
-                             std::to_string(most_walls) + " (one name per wall, separated by commas)");
     return l;
   }
 
@@ -630,6 +634,8 @@ namespace abrade::coupling
       {
         const auto colon = item.find(':');
         c.phases.emplace_back(trim(item.substr(0, colon)), std::stod(item.substr(colon + 1)));
+        if (const std::string why = bad_name(c.phases.back().first); !why.empty())
+          f.fail({"Simulation"}, "Phases", why);
       }
     if (const std::string h = prm.get("Payload height"); !h.empty())
       {

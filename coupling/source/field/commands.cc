@@ -61,6 +61,8 @@ namespace abrade::field
           auto value = [&]() -> std::string {
             if (k + 1 >= args.size())
               throw InputError("command line", args[k] + " needs a value");
+            if (args[k + 1].empty())
+              throw InputError("command line", args[k] + " needs a value (it is empty)");
             return args[++k];
           };
           if (!handle(args[k], value))

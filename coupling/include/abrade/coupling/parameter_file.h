@@ -15,6 +15,8 @@
 
 namespace abrade::coupling
 {
+  struct DeclarationLists;
+
   /// "Section/Sub/Key=value" overrides from the command line.
   struct Override
   {
@@ -44,6 +46,10 @@ namespace abrade::coupling
     std::string canonical_text();
 
   private:
+    /// The walls listed: at most 1,000, names that can be file names, and each listed in the
+    /// file's (or --set's) Walls has its 'Wall NAME' subsection.
+    void check_wall_list(const DeclarationLists &lists, const std::vector<Override> &overrides) const;
+
     dealii::ParameterHandler prm;
     std::string              file;
     std::string              text; ///< the file's content, its includes expanded in place

@@ -21,6 +21,10 @@ namespace abrade::coupling
     std::vector<std::string> walls = {"container", "knife"};
   };
 
+  /// Why @p name cannot be a wall or phase name (it becomes a file name: letters, digits, '_'
+  /// and '-', at most 64), or "" when it can.
+  std::string bad_name(const std::string &name);
+
   /// First pass: declares the lists only.
   void declare_lists(dealii::ParameterHandler &prm);
   DeclarationLists read_lists(dealii::ParameterHandler &prm);
