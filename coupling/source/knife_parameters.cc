@@ -1,6 +1,7 @@
 // Subsection Knife: the parametric knife or a user's part (knife_parameters.h), meshed, its faces
 // chosen, and placed as the DEM's walls.
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/coupling/knife_parameters.h>
 
 #include <deal.II/base/mpi.h>
@@ -36,12 +37,6 @@ namespace abrade::coupling
         }
     }
 
-    std::string format(double x)
-    {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.4g", x);
-      return b;
-    }
   } // namespace
 
   KnifeParameters read_knife_parameters(ParameterFile &file)
@@ -146,7 +141,7 @@ namespace abrade::coupling
         for (const auto &f : m.file_faces)
           if (faces.size() < 600)
             faces += (faces.empty() ? "" : "; ") + std::to_string(f.id) + (f.name.empty() ? "" : " '" + f.name + "'") +
-                     " at (" + format(f.centre[0]) + ", " + format(f.centre[1]) + ", " + format(f.centre[2]) + ")";
+                     " at (" + io::format_number(f.centre[0]) + ", " + io::format_number(f.centre[1]) + ", " + io::format_number(f.centre[2]) + ")";
         const std::string what = e.what();
         file.fail({"Knife"}, what.rfind("Wearable faces:", 0) == 0 ? "Wearable faces" : "Clamped faces",
                   (what.rfind("Wearable faces: ", 0) == 0 || what.rfind("Clamped faces: ", 0) == 0
@@ -209,7 +204,7 @@ namespace abrade::coupling
           wc.offset += wc.rotation * dem::Vec3(0.5 * length - 0.5 * (x0 + x1), 0, -z0);
         }
     if (mounted && !(y0 < 0 && y1 > 0))
-      return "the mounted part lies at y = " + format(y0) + " ... " + format(y1) +
+      return "the mounted part lies at y = " + io::format_number(y0) + " ... " + io::format_number(y1) +
              " m in the knife's frame: its y = 0 plane is put on the lip's line (the middle of the plate "
              "should be there); Knife/Offset moves it";
     return {};

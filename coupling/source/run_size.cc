@@ -1,3 +1,4 @@
+#include <abrade/common/format_number.h>
 #include <abrade/coupling/run_size.h>
 
 #include <algorithm>
@@ -17,12 +18,7 @@ namespace abrade::coupling
     constexpr double particle_steps_per_core_second = 5e6;
     constexpr double bytes_per_particle             = 1000;
 
-    std::string g(double x)
-    {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.3g", x);
-      return b;
-    }
+    std::string g(double x) { return io::format_number(x, 3); }
   } // namespace
 
   RunSize estimate_run_size(const DemCase &c)

@@ -1,6 +1,7 @@
 // Reading a user's part (solid_file.h): Gmsh for CAD, STL and the physical names of .msh files,
 // deal.II's GridIn for the volume mesh.
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/fem/cad_check.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
@@ -29,16 +30,10 @@
 namespace abrade::fem
 {
   using namespace dealii;
+  using io::format_number;
 
   namespace
   {
-    std::string format_number(double x)
-    {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.4g", x);
-      return b;
-    }
-
     std::string lower_extension(const std::string &path)
     {
       std::string ext = std::filesystem::path(path).extension().string();

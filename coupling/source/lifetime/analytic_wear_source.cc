@@ -1,5 +1,6 @@
 // The analytic wear source (Lifetime/Wear source = analytic): a known rate instead of the DEM,
 // for verification of the loop (tests/lifetime/).
+#include <abrade/common/format_number.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/surface_filter.h>
@@ -39,7 +40,12 @@ namespace abrade::coupling::lifetime
             throw std::invalid_argument("cannot evaluate '" + expression + "' as a function of x, y, z and t");
           }
         for (int s : seeds)
-          factor.push_back(1 + scatter * standard_normal_of_seed(s));
+          {
+            factor.push_back(1 + scatter * standard_normal_of_seed(s));
+            if (!(factor.back() >= 0))
+              throw std::invalid_argument("the scatter makes seed " + std::to_string(s) +
+                                          "'s rate negative: a smaller Seed scatter");
+          }
       }
 
       CycleWear cycle(const fem::SolidSurface &surface, double tonnes) override
@@ -51,7 +57,17 @@ namespace abrade::coupling::lifetime
         std::vector<double> volume(surface.vertices.size(), 0.0);
         for (std::size_t v = 0; v < volume.size(); ++v)
           if (area[v] > 0)
-            volume[v] = rate.value(surface.vertices[v]) * tonnes_per_cycle * area[v];
+            {
+              const double r = rate.value(surface.vertices[v]);
+              if (!(r >= 0) || !std::isfinite(r))
+                {
+                  const auto &p = surface.vertices[v];
+                  throw std::domain_error("the rate is " + io::format_number(r) + " at (" + io::format_number(p[0]) +
+                                          ", " + io::format_number(p[1]) + ", " + io::format_number(p[2]) + ") after " +
+                                          io::format_number(tonnes) + " t: a wear rate is a finite number >= 0 [m/t]");
+                }
+              volume[v] = r * tonnes_per_cycle * area[v];
+            }
         for (double f : factor)
           {
             w.seed_volume.push_back(volume);

@@ -69,10 +69,12 @@ namespace abrade::coupling::lifetime
               run.walls[k].wall.mesh = place_surface(surface, run.walls[k]);
               knives.push_back(k);
             }
-        run.settings.stop_on_error = false; // a cycle reports overlaps and lost particles, and goes on
+        // the case's fault policy (Simulation/On error) holds in every cycle: stop ends the run
+        // (exit 3, the last checkpoint kept), continue goes on and the warnings are counted
         dem::Simulation sim(run.settings);
         build_simulation(run, sim);
-        io::Log    quiet;
+        io::Log    quiet; // the bed's lines stay out of the loop's log; its warnings do not
+        quiet.set_echo(false);
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
         prepare_bed(run, sim, cycle_ctx, "beds/bed-seed" + std::to_string(seed) + ".bed");
         sim.set_time(0);
@@ -89,6 +91,10 @@ namespace abrade::coupling::lifetime
               payload = std::max(payload, sim.mass_above(*run.payload_height));
           }
         w.particle_radius = sim.largest_radius();
+        for (const auto &text : quiet.take_warnings()) // the bed's (generation, settling)
+          w.warnings.push_back("seed " + std::to_string(seed) + ": " + text);
+        for (const auto &text : sim.take_warnings()) // the cycle's
+          w.warnings.push_back("seed " + std::to_string(seed) + ": " + text);
         std::vector<double> volume(surface.vertices.size(), 0.0);
         for (std::size_t k : knives)
           {

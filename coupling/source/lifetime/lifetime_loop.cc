@@ -2,6 +2,7 @@
 // the loop's bookkeeping; the arithmetic of every step is in its own file (end_of_life.cc,
 // life_interval.cc, update_size.cc, fem/surface_filter.cc, fem/knife_model.cc).
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/hash.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/timer.h>
@@ -34,16 +35,6 @@ namespace abrade::coupling::lifetime
       n_criteria
     };
 
-    std::string number(double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-  } // namespace
-
-  namespace
-  {
     /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum.
     const std::string state_format = "abrade lifetime state 2";
   } // namespace
@@ -181,7 +172,7 @@ namespace abrade::coupling::lifetime
       columns.push_back("archard_volume_" + phase); // this update's wear per phase of the cycle
     for (std::size_t p = 1; p < s.recession_points.size(); ++p)
       columns.push_back("point_recession_" + std::to_string(p + 1));
-    columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z"});
+    columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z", "dem_warnings"});
     // the wear depth (below the design) at the followed points: what a gauge there measures
     for (std::size_t p = 0; p < s.recession_points.size(); ++p)
       columns.push_back(p == 0 ? std::string("point_depth") : "point_depth_" + std::to_string(p + 1));
@@ -222,8 +213,8 @@ namespace abrade::coupling::lifetime
       knife = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
     frame = profile_frame(knife->design_surface());
     if (s.max_depth >= 0.5 * knife->thickness())
-      warnings.push_back("Maximum depth " + number(s.max_depth) + " m is at least half the plate thickness (" +
-                         number(knife->thickness()) +
+      warnings.push_back("Maximum depth " + io::format_number(s.max_depth) + " m is at least half the plate thickness (" +
+                         io::format_number(knife->thickness()) +
                          " m): the wear depth below the design is the distance to the nearest design surface and "
                          "cannot exceed that; the edge's recession is Maximum recession (of the Recession points)");
     // a followed point away from the knife would follow the nearest surface point without a word
@@ -234,9 +225,9 @@ namespace abrade::coupling::lifetime
     for (std::size_t k = 0; k < off.size(); ++k)
       if (std::abs(off[k]) > knife_parameters.mesh_size)
         ctx.parameters.fail({"Lifetime"}, "Recession points",
-                            "point " + std::to_string(k + 1) + " (" + number(points[3 * k]) + ", " +
-                              number(points[3 * k + 1]) + ", " + number(points[3 * k + 2]) + ") lies " +
-                              number(std::abs(off[k])) + " m from the knife's surface (more than its Mesh size): "
+                            "point " + std::to_string(k + 1) + " (" + io::format_number(points[3 * k]) + ", " +
+                              io::format_number(points[3 * k + 1]) + ", " + io::format_number(points[3 * k + 2]) + ") lies " +
+                              io::format_number(std::abs(off[k])) + " m from the knife's surface (more than its Mesh size): "
                               "give points on the edge in the knife's frame (after the part's placement)");
   }
 
@@ -318,7 +309,27 @@ namespace abrade::coupling::lifetime
   // 1. One cycle's wear, per seed.
   CycleWear LifetimeLoop::run_cycles()
   {
-    CycleWear wear = source->cycle(knife->surface(), tonnes);
+    CycleWear wear;
+    try
+      {
+        wear = source->cycle(knife->surface(), tonnes);
+      }
+    catch (const std::domain_error &e) // an analytic rate that is negative or not a number
+      {
+        ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
+      }
+    // the DEM's warnings (Simulation/On error = continue): each kind logged once, all counted
+    dem_warnings_now = long(wear.warnings.size());
+    dem_warnings_total += dem_warnings_now;
+    for (const auto &w : wear.warnings)
+      {
+        const std::string kind = w.substr(0, w.find(" at step ")); // (the step and time vary)
+        if (warning_kinds.insert(kind).second)
+          {
+            ctx.log.warning("update " + std::to_string(update) + ", DEM: " + w);
+            warnings.push_back("update " + std::to_string(update) + ", DEM: " + w);
+          }
+      }
     if (s.smoothing <= 0 && !s.analytic)
       s.smoothing = wear.particle_radius; // the particle's footprint (analytic rates: no filter unless asked)
     return wear;
@@ -506,7 +517,7 @@ namespace abrade::coupling::lifetime
     for (double pv : wear.phase_volume)
       row.push_back(n * pv);
     row.insert(row.end(), recession.begin() + 1, recession.end());
-    row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2]});
+    row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2], double(dem_warnings_now)});
     const auto point_depth = knife->wear_depth_below(s.recession_points);
     row.insert(row.end(), point_depth.begin(), point_depth.end());
     trajectory_rows.push_back(trajectory.row(row));
@@ -623,12 +634,14 @@ namespace abrade::coupling::lifetime
     r["worn_mass"]     = (volume0 - knife->volume()) * knife_parameters.density;
     r["archard_volume"] = archard_total;
     r["remeshes"]      = static_cast<long>(knife->n_remeshes());
+    r["dem_warnings"]  = dem_warnings_total; // overlaps, lost particles, time step (this run; per update: trajectory.csv)
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
     r["remeshes_inside_worn_surface"] = surfaces_kept;
     r["smoothing_radius"] = s.smoothing;
     if (source->archard_coefficient() > 0) // the W the depths scale with (abrade calibrate rescales it)
       r["archard_coefficient"] = source->archard_coefficient();
-    r["predicted_tonnes_to_end_of_life"] = e.tonnes;
+    if (e.criterion != EndOfLife::none)
+      r["predicted_tonnes_to_end_of_life"] = e.tonnes;
     r["end_of_life_criterion"]           = criterion;
     r["end_of_life_method"]              = method;
     r["end_of_life_where"]               = where;
@@ -658,14 +671,26 @@ namespace abrade::coupling::lifetime
         if (w.rfind("one bed seed", 0) == 0 || w.rfind("the beds scatter", 0) == 0)
           ctx.log.warning(w);
       }
+    if (dem_warnings_total > 0)
+      ctx.log.warning(std::to_string(dem_warnings_total) +
+                      " DEM warning(s) in this run's cycles (Simulation/On error = continue): the life rests on "
+                      "cycles the DEM flagged; log.txt names each kind, trajectory.csv counts them per update");
     if (history.size() > 1) // nothing to plot before the first update
       plot_lifetime(ctx.output.root(), s.planes, frame);
     std::ostringstream line;
+    if (e.criterion == EndOfLife::none)
+      {
+        // no criterion grew: there is no life to report, and a run that predicts none has failed
+        // (its outputs so far are written); the summary says so, the exit code is 3
+        ctx.log.line("Lifetime: " + end + " after " + std::to_string(cycles) + " cycles; no life predicted");
+        throw RunError("no life predicted: " + end + " after " + std::to_string(cycles) +
+                       " cycles (no end-of-life criterion grows)");
+      }
     line << "Lifetime: " << end << " after " << cycles << " cycles; predicted life " << e.tonnes << " t ("
          << describe(e, criteria) << ")";
     if (li.seeds > 1 && e.tonnes > 0)
       line << ", " << 100 * li.confidence << " % interval " << li.low << " ... "
-           << (li.high > 0 ? number(li.high) : std::string("unbounded")) << " t over " << li.seeds << " beds";
+           << (li.high > 0 ? io::format_number(li.high, 6) : std::string("unbounded")) << " t over " << li.seeds << " beds";
     ctx.log.line(line.str());
   }
 } // namespace abrade::coupling::lifetime

@@ -32,6 +32,7 @@
 #include <abrade/fem/solid_output.h>
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -120,6 +121,8 @@ namespace abrade::coupling::lifetime
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
     long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)
+    long                         dem_warnings_now = 0, dem_warnings_total = 0; ///< this update's, this run's
+    std::set<std::string>        warning_kinds; ///< the DEM warnings logged (each kind once)
 
     // the end of the run
     std::string end = "maximum updates reached";

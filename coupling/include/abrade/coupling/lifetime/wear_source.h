@@ -22,6 +22,9 @@ namespace abrade::coupling::lifetime
     double                           tonnes_per_cycle = 0;
     double                           particle_radius  = 0; ///< the largest particle's [m] (0: no particles)
     std::string                      stop; ///< not empty: why the loop cannot go on (no payload, ...)
+    /// the DEM's warnings of the cycle (overlaps, lost particles, time step), per seed: the loop
+    /// logs and counts them
+    std::vector<std::string> warnings;
   };
 
   class WearSource
