@@ -38,7 +38,7 @@ cal() { $expect 2 "$1" -- "$abrade" calibrate --run "${3:-run}" --measurements "
 cal "kg.csv.*|run: the best fit lies at the end of the range searched" kg.csv
 cal "run: the best fit lies at the end of the range searched" huge.csv
 cal "zero.csv: every measurement is at 0 t" zero.csv
-cal "far.csv:2: the point \(10.075.*lies 9.9.* m from the knife's surface" far.csv
+cal "far.csv:2: the point \(10.07.*lies 9.9.* m or more from the knife's surface" far.csv
 cal "short_row.csv:5: 4 cells, the header has 5" short_row.csv
 cal "copied.csv:5: the same measurement as copied.csv:3" copied.csv
 $expect 2 "locations.csv:3: location 'tip' is defined twice \(first on line 2\)" -- \

@@ -11,6 +11,7 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPLYWriter.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLWriter.h>
 
@@ -555,6 +556,63 @@ TEST(LegacyVtk, VtksOwnFilesComeBackAndDamageIsNamed)
   EXPECT_NE(error_of(replaced("5 0 1 2 3 4", "2147483647 0 1 2 3 4")).find("cell 0 of 1 does not fit"), std::string::npos);
   EXPECT_NE(error_of(v4.substr(0, 80)).find("damaged.vtk:"), std::string::npos);
   EXPECT_NE(error_of(replaced("POLYDATA", "UNSTRUCTURED_GRID")).find("only DATASET POLYDATA"), std::string::npos);
+}
+
+// PLY files are read by abrade's own checked reader: what VTK's writer wrote (ASCII, binary
+// little- and big-endian) comes back exactly; a file whose last line has no newline (VTK's reader
+// freed a pointer twice on it) is read; a face past the vertices names the line.
+TEST(PlyFile, VtksOwnFilesComeBackAndDamageIsNamed)
+{
+  vtkNew<vtkPoints>    points;
+  vtkNew<vtkCellArray> polys;
+  for (int i = 0; i < 5; ++i)
+    points->InsertNextPoint(0.25 * i, 0.5 * std::sin(i), 0.125 * i * i);
+  const vtkIdType quad[4] = {0, 1, 2, 3}, tri[3] = {2, 3, 4};
+  polys->InsertNextCell(4, quad);
+  polys->InsertNextCell(3, tri);
+  vtkNew<vtkPolyData> original;
+  original->SetPoints(points);
+  original->SetPolys(polys);
+  for (const int format : {0, 1, 2})
+    {
+      const std::string path = tmp("ply_" + std::to_string(format) + ".ply");
+      vtkNew<vtkPLYWriter> w;
+      w->SetInputData(original);
+      w->SetFileName(path.c_str());
+      if (format == 0)
+        w->SetFileTypeToASCII();
+      else
+        {
+          w->SetFileTypeToBinary();
+          w->SetDataByteOrder(format == 1 ? VTK_LITTLE_ENDIAN : VTK_BIG_ENDIAN);
+        }
+      w->Write();
+      const auto back = abrade::io::read_polydata(path);
+      ASSERT_EQ(back->GetNumberOfPoints(), 5) << path;
+      for (vtkIdType i = 0; i < 5; ++i)
+        for (int k = 0; k < 3; ++k) // floats
+          EXPECT_NEAR(back->GetPoint(i)[k], original->GetPoint(i)[k], 1e-6) << path;
+      ASSERT_EQ(back->GetNumberOfCells(), 2) << path;
+      vtkIdType        n;
+      const vtkIdType *ids;
+      back->GetCellPoints(0, n, ids);
+      EXPECT_EQ(std::vector<vtkIdType>(ids, ids + n), (std::vector<vtkIdType>{0, 1, 2, 3})) << path;
+    }
+  const std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                           "property float z\nproperty uchar red\nelement face 1\nproperty list uchar int "
+                           "vertex_indices\nend_header\n0 0 0 255\n1 0 0 0\n0 1 0 9\n3 0 1 2";
+  std::ofstream(tmp("no_newline.ply")) << text;
+  EXPECT_EQ(abrade::io::read_polydata(tmp("no_newline.ply"))->GetNumberOfCells(), 1);
+  std::ofstream(tmp("bad_face.ply")) << text.substr(0, text.size() - 1) << "3\n";
+  try
+    {
+      abrade::io::read_polydata(tmp("bad_face.ply"));
+      ADD_FAILURE() << "a face past the vertices was read";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("bad_face.ply:14: vertex index 3"), std::string::npos) << e.what();
+    }
 }
 
 TEST(FieldCompare, NonManifoldScanIsAWarning)

@@ -1,6 +1,7 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/surface_distance.h>
 #include <abrade/common/json.h>
 #include <abrade/common/vtk_input.h>
@@ -157,12 +158,16 @@ namespace abrade::field
                                     (b[5] - b[4]) * (b[5] - b[4]));
       for (const auto &m : measurements)
         {
-          const auto  &p = m.has_worn_point ? m.worn_point : m.point;
-          const double d = std::abs(design.signed_distance(p.data()));
+          const auto &p = m.has_worn_point ? m.worn_point : m.point;
+          // the distance to the knife's box first (a point at 1e300 m is no query for a locator)
+          double outside = 0;
+          for (int k = 0; k < 3; ++k)
+            outside += std::pow(std::max({b[2 * k] - p[k], p[k] - b[2 * k + 1], 0.0}), 2);
+          const double d = std::sqrt(outside) > 0.1 * size ? std::sqrt(outside) : std::abs(design.signed_distance(p.data()));
           if (d > 0.1 * size)
-            throw InputError(m.where, "the point (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
-                                        std::to_string(p[2]) + ") m lies " + std::to_string(d) +
-                                        " m from the knife's surface (the knife is " + std::to_string(size) +
+            throw InputError(m.where, "the point (" + io::format_number(p[0]) + ", " + io::format_number(p[1]) + ", " +
+                                        io::format_number(p[2]) + ") m lies " + io::format_number(d) +
+                                        " m or more from the knife's surface (the knife is " + io::format_number(size) +
                                         " m across): coordinates in other units or another frame?");
         }
     }

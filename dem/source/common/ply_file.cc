@@ -1,0 +1,236 @@
+// PLY files (Turk's polygon file format: ASCII, binary little- and big-endian)
+// read by abrade rather than by vtkPLYReader, which trusts the file: a header
+// announcing more than the file holds, an unknown keyword, an index past the
+// vertices or a last line without its newline freed pointers twice and crashed.
+// The whole file is walked as its header declares it: known keywords and types
+// only, x, y, z for the vertices and an index list for the faces, every number
+// finite and every index a vertex; errors name the line (ASCII) or the element.
+// Other properties (normals, colours) are read past; the geometry is what walls
+// and scans need.
+#include <abrade/common/error.h>
+#include <abrade/common/ply_file.h>
+
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace abrade::io
+{
+  vtkSmartPointer<vtkPolyData> read_ply(const std::string &path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::string   line;
+    std::getline(in, line);
+    if (line != "ply" && line != "ply\r")
+      throw InputError(path + ":1", "not a PLY file (it does not start with 'ply')");
+    const std::map<std::string, int> sizes = {{"char", 1},  {"uchar", 1},  {"int8", 1},    {"uint8", 1},
+                                              {"short", 2}, {"ushort", 2}, {"int16", 2},   {"uint16", 2},
+                                              {"int", 4},   {"uint", 4},   {"int32", 4},   {"uint32", 4},
+                                              {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+    struct Property
+    {
+      std::string name, type, count_type; // count_type: a list
+    };
+    struct Element
+    {
+      std::string           name;
+      long                  count = 0;
+      std::vector<Property> properties;
+    };
+    std::vector<Element> elements;
+    std::string          format;
+    long                 n = 1;
+    auto fail = [&](const std::string &what) { throw InputError(path + ":" + std::to_string(n), what); };
+    auto type_size = [&](const std::string &t) {
+      const auto it = sizes.find(t);
+      if (it == sizes.end())
+        fail("unknown PLY type '" + t + "'");
+      return it->second;
+    };
+    for (bool ended = false; !ended;)
+      {
+        if (!std::getline(in, line))
+          fail("the header has no end_header line");
+        ++n;
+        if (!line.empty() && line.back() == '\r')
+          line.pop_back();
+        std::istringstream words(line);
+        std::string        kind;
+        words >> kind;
+        if (kind == "end_header")
+          ended = true;
+        else if (kind == "format")
+          {
+            std::string version;
+            words >> format >> version;
+            if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+              fail("unknown PLY format '" + format + "'");
+          }
+        else if (kind == "comment" || kind == "obj_info")
+          continue;
+        else if (kind == "element")
+          {
+            Element e;
+            words >> e.name >> e.count;
+            if (!words || e.count < 0 || e.count > (1L << 32))
+              fail("'element NAME COUNT' expected");
+            elements.push_back(e);
+          }
+        else if (kind == "property")
+          {
+            if (elements.empty())
+              fail("a property before any element");
+            Property p;
+            words >> p.type;
+            if (p.type == "list")
+              {
+                words >> p.count_type >> p.type;
+                type_size(p.count_type);
+              }
+            type_size(p.type);
+            words >> p.name;
+            if (!words)
+              fail("'property TYPE NAME' expected");
+            elements.back().properties.push_back(p);
+          }
+        else
+          fail("unknown PLY header line '" + line.substr(0, 40) + "'");
+      }
+    if (format.empty())
+      fail("the header has no format line");
+    long vertices = -1;
+    for (const auto &e : elements)
+      if (e.name == "vertex")
+        {
+          vertices = e.count;
+          for (const char *c : {"x", "y", "z"})
+            if (std::none_of(e.properties.begin(), e.properties.end(), [&](const Property &p) {
+                  return p.name == c && p.count_type.empty();
+                }))
+              fail(std::string("the vertices have no property ") + c);
+        }
+      else if (e.name == "face" && std::none_of(e.properties.begin(), e.properties.end(), [](const Property &p) {
+                 return !p.count_type.empty() && (p.name == "vertex_indices" || p.name == "vertex_index");
+               }))
+        fail("the faces have no index list (property list ... vertex_indices)");
+    if (vertices < 0)
+      fail("the header declares no vertex element");
+
+    const bool ascii = format == "ascii";
+    const bool swap  = format == "binary_big_endian";
+    // one value of type t: from the ASCII line's words, or from the binary stream
+    std::istringstream words;
+    auto               value = [&](const std::string &t) {
+      if (ascii)
+        {
+          std::string word;
+          if (!(words >> word))
+            fail("fewer values than the header declares");
+          std::size_t used = 0;
+          double      x    = 0;
+          try
+            {
+              x = std::stod(word, &used);
+            }
+          catch (const std::exception &)
+            {
+              used = 0;
+            }
+          if (used != word.size() || !std::isfinite(x))
+            fail("'" + word.substr(0, 20) + "' is not a finite number");
+          return x;
+        }
+      unsigned char bytes[8] = {};
+      const int     size     = type_size(t);
+      if (!in.read(reinterpret_cast<char *>(bytes), size))
+        throw InputError(path, "the file ends inside its data (the header announces more than it holds)");
+      if (swap)
+        std::reverse(bytes, bytes + size);
+      double x = 0;
+      if (t == "float" || t == "float32")
+        {
+          float f;
+          std::memcpy(&f, bytes, 4);
+          x = f;
+        }
+      else if (t == "double" || t == "float64")
+        std::memcpy(&x, bytes, 8);
+      else
+        {
+          const bool is_signed = t[0] != 'u';
+          long long  v         = 0;
+          for (int k = size - 1; k >= 0; --k)
+            v = (v << 8) | bytes[k];
+          if (is_signed && size < 8 && (v >> (8 * size - 1)) & 1)
+            v -= 1LL << (8 * size);
+          x = double(v);
+        }
+      if (!std::isfinite(x))
+        throw InputError(path, "a value that is not a finite number");
+      return x;
+    };
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkCellArray>   polys;
+    std::vector<vtkIdType> face;
+    for (const auto &e : elements)
+      for (long item = 0; item < e.count; ++item)
+        {
+          if (ascii)
+            {
+              do
+                {
+                  if (!std::getline(in, line))
+                    throw InputError(path, "the header announces " + std::to_string(e.count) + " " + e.name +
+                                             " elements, the file ends at " + e.name + " " + std::to_string(item));
+                  ++n;
+                }
+              while (line.find_first_not_of(" \t\r") == std::string::npos);
+              words.clear();
+              words.str(line);
+            }
+          double xyz[3] = {0, 0, 0};
+          for (const auto &p : e.properties)
+            {
+              const long count = p.count_type.empty() ? 1 : long(value(p.count_type));
+              if (count < 0 || count > 1000)
+                fail("a list of " + std::to_string(count) + " values");
+              const bool indices = e.name == "face" && !p.count_type.empty() &&
+                                   (p.name == "vertex_indices" || p.name == "vertex_index");
+              if (indices && count < 3)
+                fail("a face of " + std::to_string(count) + " vertices");
+              face.clear();
+              for (long k = 0; k < count; ++k)
+                {
+                  const double x = value(p.type);
+                  if (indices && (x < 0 || x >= double(vertices) || x != std::floor(x)))
+                    fail("vertex index " + std::to_string(x) + " out of range (" + std::to_string(vertices) +
+                         " vertices, counted from 0)");
+                  if (indices)
+                    face.push_back(vtkIdType(x));
+                  else if (e.name == "vertex" && p.count_type.empty() && p.name.size() == 1 && p.name[0] >= 'x' &&
+                           p.name[0] <= 'z')
+                    xyz[p.name[0] - 'x'] = x;
+                }
+              if (indices)
+                polys->InsertNextCell(vtkIdType(face.size()), face.data());
+            }
+          if (e.name == "vertex")
+            points->InsertNextPoint(xyz);
+        }
+    auto polydata = vtkSmartPointer<vtkPolyData>::New();
+    polydata->SetPoints(points);
+    polydata->SetPolys(polys);
+    return polydata;
+  }
+} // namespace abrade::io
