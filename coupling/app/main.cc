@@ -11,6 +11,7 @@
 // Exit codes: 0 success, 2 bad input (command line, parameter file, mesh), 3 run-time failure
 // (NaN, lost particle, inverted element), 1 anything else.
 #include <abrade/common/error.h>
+#include <abrade/common/termination.h>
 #include <abrade/common/hash.h>
 #include <abrade/common/json.h>
 #include <abrade/common/progress.h>
@@ -27,7 +28,6 @@
 #include <abrade/field/commands.h>
 
 #include <chrono>
-#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -227,6 +227,8 @@ namespace
     }
     summary["threads"] = threads;
     summary["mpi_ranks"] = static_cast<long>(ranks.size());
+    summary["status"]    = "interrupted (SIGTERM, SIGINT or SIGHUP); a lifetime run continues with --resume";
+    io::prepare_interrupted_summary(out.file("summary.json"), summary.dump());
     io::Timers           timers;
     io::Json            &results = summary["results"];
     coupling::JobContext ctx{params, out, results, timers, log, cl.resume};
@@ -268,24 +270,9 @@ namespace
   }
 } // namespace
 
-namespace
-{
-  /// SIGTERM and SIGINT (Ctrl-C) end the process at once, saying so: checkpoints are written
-  /// aside and renamed into place, so the last complete one is intact whenever the signal
-  /// comes, and `abrade run ... --resume` continues from it. (Only async-signal-safe calls here.)
-  extern "C" void on_termination(int signal)
-  {
-    static const char message[] =
-      "\nabrade: interrupted; the last complete checkpoint is kept (a lifetime run continues with --resume)\n";
-    [[maybe_unused]] const auto written = ::write(2, message, sizeof message - 1);
-    ::_exit(128 + signal);
-  }
-} // namespace
-
 int main(int argc, char **argv)
 {
-  std::signal(SIGTERM, on_termination);
-  std::signal(SIGINT, on_termination);
+  io::install_termination_handlers();
   try
     {
       if (argc >= 2 && (std::string(argv[1]) == "--version" || std::string(argv[1]) == "version"))

@@ -230,6 +230,9 @@ namespace abrade::coupling
     progress.finish();
     if (snapshot_every && sim.step_number() % snapshot_every != 0)
       output.write_snapshot(sim); // the final state, with the complete wear fields
+    output.close();
+    if (payload_table)
+      payload_table->close();
 
     // wear per wall and phase: walls/NAME_wear.csv and summary.json
     for (std::size_t w = 0; w < sim.n_walls(); ++w)
@@ -261,6 +264,7 @@ namespace abrade::coupling
             if (laws[w].finnie)
               j["finnie_wear"] = row[4];
           }
+        csv.close();
       }
     // contact-layer probes: walls/NAME_layer.csv, and the mean slip of the layer per phase
     for (const auto &probe : probes)
@@ -275,6 +279,7 @@ namespace abrade::coupling
             auto &a = per_phase[smp.phase];
             a[0] += 1, a[1] += smp.mean_velocity, a[2] += smp.count;
           }
+        csv.close();
         for (const auto &[phase, a] : per_phase)
           {
             io::Json &j            = ctx.results["layer"][name][phase];

@@ -33,8 +33,11 @@ namespace abrade::coupling
     std::string read_text(const std::string &file)
     {
       std::ifstream in(file);
+      if (!in)
+        throw InputError(file, "cannot read the parameter file (permissions?)");
       std::ostringstream s;
-      s << in.rdbuf();
+      if (in.peek() != std::ifstream::traits_type::eof() && !(s << in.rdbuf()))
+        throw InputError(file, "cannot read the parameter file");
       return s.str();
     }
 

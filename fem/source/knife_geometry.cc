@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/termination.h>
 #include <abrade/fem/knife_geometry.h>
 
 #include "quiet_stdout.h"
@@ -113,6 +114,7 @@ namespace abrade::fem
                                      const std::string &msh_file) const
   {
     gmsh::initialize();
+    io::install_termination_handlers(); // (Gmsh's own ignored SIGTERM and Ctrl-C)
     gmsh::option::setNumber("General.Terminal", 0);
     const int volume_tag = build(p, h);
     mesh_built(volume_tag, h, msh_file);
@@ -122,6 +124,7 @@ namespace abrade::fem
   {
     check();
     gmsh::initialize();
+    io::install_termination_handlers(); // (Gmsh's own ignored SIGTERM and Ctrl-C)
     gmsh::option::setNumber("General.Terminal", 0);
     try
       {

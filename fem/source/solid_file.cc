@@ -2,6 +2,7 @@
 // deal.II's GridIn for the volume mesh.
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/termination.h>
 #include <abrade/fem/cad_check.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
@@ -76,6 +77,7 @@ namespace abrade::fem
     void with_gmsh(const std::string &label, F &&f, const std::string &doing = "mesh it")
     {
       gmsh::initialize();
+      io::install_termination_handlers(); // (Gmsh installs its own, which ignored SIGTERM and Ctrl-C)
       gmsh::option::setNumber("General.Terminal", 0);
       try
         {

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/atomic_file.h>
 #include <abrade/fem/solid_output.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace abrade::fem
 {
@@ -72,13 +74,12 @@ namespace abrade::fem
     char tag[16];
     std::snprintf(tag, sizeof tag, "%05zu", records.size());
     const std::string file = base + "_" + tag + ".vtu";
-    std::ofstream     out(directory + "/" + file);
-    if (!out)
-      throw RunError("cannot write " + directory + "/" + file);
-    data_out.write_vtu(out);
+    std::ostringstream vtu, pvd; // each file replaced at once, its write checked
+    data_out.write_vtu(vtu);
+    io::write_file_atomically(directory + "/" + file, vtu.str());
     records.emplace_back(time, file);
-    std::ofstream pvd(directory + "/" + base + ".pvd");
     dealii::DataOutBase::write_pvd_record(pvd, records);
+    io::write_file_atomically(directory + "/" + base + ".pvd", pvd.str());
     return directory + "/" + file;
   }
 

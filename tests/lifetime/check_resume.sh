@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Checkpoint and resume: a lifetime run killed with SIGKILL mid-cycle (or ABRADE_SIGNAL: TERM,
-# INT) and resumed with --resume produces the same trajectory (byte for byte) and the same
-# prediction as an uninterrupted run.
+# INT), resumed with --resume and killed again inside the first resumed update, then resumed to
+# the end, produces the same trajectory and profiles (byte for byte) and the same prediction as
+# an uninterrupted run. (A second kill once left trajectory.csv empty and the next resume
+# finished with the later rows only.)
 # With ABRADE_LAUNCH="mpirun -np 2 --oversubscribe" the runs are MPI runs (every rank
 # checkpoints its own copy; all are killed and resumed together). There the kill is also made to
 # fall between two ranks' checkpoints of one update (rank 1's newest is removed when both have
@@ -40,11 +42,23 @@ if [[ -d $out/killed/.rank-1/checkpoint ]]; then
   fi
   killed_at=$(( u1 < killed_at ? u1 : killed_at ))
 fi
+if [[ -z ${ABRADE_LAUNCH:-} ]]; then # the second kill: inside the first resumed update
+  run "$prm" --output "$out/killed" --quiet --resume "${sets[@]}" > /dev/null 2>&1 &
+  pid=$!
+  for _ in $(seq 1 3000); do # killed as soon as it says it resumes: inside the next update's cycle
+    grep -q "Resuming after update $killed_at" "$out/killed/log.txt" 2>/dev/null && break
+    sleep 0.01
+  done
+  kill -s "$signal" "$pid" 2>/dev/null || { echo "the resumed run finished before it could be killed"; exit 1; }
+  wait "$pid" 2>/dev/null || true
+  (( $(newest "$out/killed/checkpoint") == killed_at )) || { echo "the second kill came after an update"; exit 1; }
+fi
 run "$prm" --output "$out/killed" --quiet --resume "${sets[@]}" > /dev/null
-grep -q "Resuming after update $killed_at" "$out/killed/log.txt" || { echo "did not resume"; exit 1; }
+(( $(grep -c "Resuming after update $killed_at" "$out/killed/log.txt") >= 1 )) || { echo "did not resume"; exit 1; }
 cmp "$out/whole/trajectory.csv" "$out/killed/trajectory.csv" || { diff "$out/whole/trajectory.csv" "$out/killed/trajectory.csv"; exit 1; }
 cmp "$out/whole/knife/profile_0.50.csv" "$out/killed/knife/profile_0.50.csv" || { echo "profiles differ"; exit 1; }
 p1=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results']['lifetime']['predicted_tonnes_to_end_of_life'])" "$out/whole/summary.json")
 p2=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results']['lifetime']['predicted_tonnes_to_end_of_life'])" "$out/killed/summary.json")
 [[ "$p1" == "$p2" ]] || { echo "predictions differ: $p1 vs $p2"; exit 1; }
-echo "ok: killed after update $killed_at, resumed; trajectory, profiles and prediction ($p1 t) identical"
+echo "ok: killed after update $killed_at, resumed (and killed again inside the next update unless under MPI);" \
+     "trajectory, profiles and prediction ($p1 t) identical"

@@ -16,7 +16,7 @@ namespace abrade::io
       if (!out)
         {
           std::remove(aside.c_str());
-          throw RunError("cannot write " + path + " (disk full or not writable?)");
+          throw RunError("cannot write " + path + " (disk full, or not writable?)");
         }
     }
     if (std::rename(aside.c_str(), path.c_str()) != 0)

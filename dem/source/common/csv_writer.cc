@@ -32,7 +32,34 @@ namespace abrade::io
     for (std::size_t i = 0; i < values.size(); ++i)
       line << (i ? "," : "") << values[i];
     out << line.str() << '\n';
+    check();
     return line.str();
+  }
+
+  void CsvWriter::raw_row(const std::string &line)
+  {
+    out << line << '\n';
+    check();
+  }
+
+  void CsvWriter::flush()
+  {
+    out.flush();
+    check();
+  }
+
+  void CsvWriter::close()
+  {
+    if (!out.is_open())
+      return;
+    out.close();
+    check();
+  }
+
+  void CsvWriter::check()
+  {
+    if (!out)
+      throw RunError("cannot write " + path + " (disk full, or not writable?)");
   }
 
   void CsvWriter::row(const std::string &label, const std::vector<double> &values)
@@ -43,5 +70,6 @@ namespace abrade::io
     for (double v : values)
       out << ',' << v;
     out << '\n';
+    check();
   }
 } // namespace abrade::io

@@ -1,3 +1,4 @@
+#include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/json.h>
 
@@ -112,10 +113,7 @@ namespace abrade::io
 
   void Json::write(const std::string &path) const
   {
-    std::ofstream f(path);
-    if (!f)
-      throw RunError("cannot write " + path);
-    f << dump();
+    write_file_atomically(path, dump()); // checked; a crash leaves the old summary or the new one
   }
 
   std::optional<double> summary_number(const std::string &path, const std::string &key)

@@ -1,3 +1,4 @@
+#include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_output.h>
 
@@ -13,6 +14,7 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include <fstream>
+#include <sstream>
 #include <iomanip>
 
 namespace abrade::io
@@ -98,9 +100,7 @@ namespace abrade::io
   void PvdSeries::add(double time, const std::string &file)
   {
     entries.emplace_back(time, file);
-    std::ofstream out(path);
-    if (!out)
-      throw RunError("cannot write " + path);
+    std::ostringstream out;
     out << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
         << "  <Collection>\n"
@@ -109,5 +109,6 @@ namespace abrade::io
       out << "    <DataSet timestep=\"" << t << "\" group=\"\" part=\"0\" file=\"" << f
           << "\"/>\n";
     out << "  </Collection>\n</VTKFile>\n";
+    write_file_atomically(path, out.str()); // checked; a kill leaves the old series or the new one
   }
 } // namespace abrade::io

@@ -89,4 +89,10 @@ namespace abrade::dem
                            wall.torque[2], c[0], c[1], c[2]});
       }
   }
+
+  void DemOutput::close()
+  {
+    for (auto &csv : force_csv)
+      csv->close();
+  }
 } // namespace abrade::dem

@@ -20,10 +20,15 @@ namespace abrade::io
     /// Writes one row whose first column is text (a name, a phase).
     void row(const std::string &label, const std::vector<double> &values);
     /// Writes a row given as text (rows kept from an earlier, resumed run).
-    void raw_row(const std::string &line) { out << line << '\n'; }
-    void flush() { out.flush(); }
+    void raw_row(const std::string &line);
+    /// Hands what is buffered to the file; RunError naming it when the write failed (a full
+    /// disk), as every row does once the buffer is written.
+    void flush();
+    /// Flushes and closes the file (RunError as flush): the last rows' write checked too.
+    void close();
 
   private:
+    void          check();
     std::ofstream out;
     std::string   path;
     std::size_t   n_columns = 0;

@@ -30,6 +30,8 @@ namespace abrade::dem
     void write_snapshot(const Simulation &sim);
     /// Appends one row per wall to the force CSV files.
     void write_forces(const Simulation &sim);
+    /// Closes the force CSV files (RunError naming one whose write failed).
+    void close();
 
   private:
     std::string                                       particle_dir, wall_dir;
