@@ -1,6 +1,9 @@
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/fem/cad_check.h>
 
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
@@ -13,6 +16,7 @@
 #include <TCollection_HAsciiString.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <memory>
 
@@ -69,5 +73,19 @@ namespace abrade::fem
       throw InputError(path, std::to_string(failed) + " entit" + (failed == 1 ? "y" : "ies") +
                                " failed to read (" + first +
                                "); the file is damaged or uses what OpenCASCADE does not read: export it again");
+    // coordinates of 1e18 or 1e30 make Gmsh's search trees assert (abort) or loop: the shapes'
+    // bounding box, in millimetres (OpenCASCADE's unit), must be that of a part
+    reader->TransferRoots();
+    Bnd_Box box;
+    BRepBndLib::Add(reader->OneShape(), box);
+    if (!box.IsVoid())
+      {
+        double x0, y0, z0, x1, y1, z1;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        const double largest = std::max({std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1), std::abs(y1), std::abs(z1)});
+        if (!std::isfinite(largest) || largest > 1e7)
+          throw InputError(path, "coordinates up to " + io::format_number(largest) +
+                                   " mm (more than 10 km): a damaged file, or one in other units");
+      }
   }
 } // namespace abrade::fem

@@ -403,8 +403,8 @@ namespace abrade::fem
     /// edges (more than 15 degrees) stay edges, the facets become remeshable surfaces. With
     /// @p keep_triangles the facets are not remeshed: they bound the volume as they are (a
     /// worn surface whose remeshing failed).
-    /// Removes the triangles of zero area (three points on a line: an STL exporter's slivers)
-    /// from the merged STL: Gmsh's surface mesher throws inside a parallel region on one, and
+    /// Removes the triangles of zero area (three points on or within 1e-8 of the part's size of
+    /// a line: an STL exporter's slivers) from the merged STL: Gmsh's surface mesher throws inside a parallel region on one, and
     /// the process aborts. Returns how many were removed.
     std::size_t remove_zero_area_triangles()
     {
@@ -440,7 +440,15 @@ namespace abrade::fem
               const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
               const double v[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
               const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-              if (n[0] * n[0] + n[1] * n[1] + n[2] * n[2] <= 1e-24 * size2 * size2)
+              // its height over the longest edge: below 1e-8 of the part's size it is a sliver
+              // (Gmsh aborted on heights of 1e-12 to 1e-10 of it)
+              double longest2 = 0;
+              for (int c = 0; c < 3; ++c)
+                longest2 = std::max(longest2, std::pow(p[c][0] - p[(c + 1) % 3][0], 2) +
+                                                std::pow(p[c][1] - p[(c + 1) % 3][1], 2) +
+                                                std::pow(p[c][2] - p[(c + 1) % 3][2], 2));
+              const double twice_area2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+              if (longest2 == 0 || twice_area2 <= 1e-16 * size2 * longest2)
                 ++removed;
               else
                 {

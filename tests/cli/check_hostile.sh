@@ -96,16 +96,17 @@ PRM
 "$abrade" run bed.prm --output bed --quiet > /dev/null
 head -c 500 bed/bed.bed > cut.bed && mv cut.bed bed/bed.bed
 $expect 2 "bed/bed.bed: corrupt bed file: it announces 20 particles, its size of 500 bytes" -- "$abrade" run bed.prm --output bed --quiet
-# a knife STL with a zero-area triangle (Gmsh threw inside a parallel region: abort): removed, said
+# a knife STL with a zero-area triangle and one of height 1e-10 (Gmsh threw inside a parallel
+# region: abort): removed, said
 python3 - <<'PY'
 v = [(0, 0, 0), (0.1, 0, 0), (0.1, 0.06, 0), (0, 0.06, 0), (0, 0, 0.02), (0.1, 0, 0.02), (0.1, 0.06, 0.02), (0, 0.06, 0.02)]
 faces = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6),
          (3, 0, 4), (3, 4, 7)]
 tri = lambda *p: "facet normal 0 0 0\n outer loop\n" + "".join("  vertex %g %g %g\n" % q for q in p) + " endloop\nendfacet\n"
 open("sliver.stl", "w").write("solid b\n" + "".join(tri(*(v[i] for i in f)) for f in faces) +
-                              tri(v[0], v[1], (0.05, 0, 0)) + "endsolid b\n")
+                              tri(v[0], v[1], (0.05, 0, 0)) + tri(v[1], v[0], (0.05, 1e-10, 0)) + "endsolid b\n")
 PY
-$expect 0 "sliver.stl: 1 triangle\(s\) of zero area removed" -- "${knife[@]}" --output o_sliver --set "Knife/File=$out/sliver.stl" \
+$expect 0 "sliver.stl: 2 triangle\(s\) of zero area removed" -- "${knife[@]}" --output o_sliver --set "Knife/File=$out/sliver.stl" \
   --set "Knife/Clamped faces=normal 0, 0, 1" --set "Knife/File scale=1"
 # a STEP file with an entity of a misspelt type, or an entity defined twice (OpenCASCADE crashed
 # after Gmsh imported it): the entity named
@@ -117,4 +118,8 @@ $expect 2 "misspelt.step: [0-9]+ entit(y|ies) failed to read \(entity #[0-9]+" -
 awk '/= DIRECTION\(/ && !done { print; done = 1 } { print }' block.step > twice.step
 $expect 2 "twice.step: [0-9]+ entit(y|ies) failed to read \(Ident defined SEVERAL TIMES : #[0-9]+" -- "${knife[@]}" \
   --output o_twice --set "Knife/File=$out/twice.step" --set "Knife/Clamped faces=normal 0, 0, 1"
+# a STEP point at 1e30 (Gmsh's search tree asserted: abort; at 1e18 it looped)
+sed "0,/CARTESIAN_POINT('',(\([^,]*\),/s//CARTESIAN_POINT('',(1.E30,/" block.step > far.step
+$expect 2 "far.step: coordinates up to 1e\+30 mm" -- "${knife[@]}" --output o_far --set "Knife/File=$out/far.step" \
+  --set "Knife/Clamped faces=normal 0, 0, 1"
 echo "hostile inputs: all refused"

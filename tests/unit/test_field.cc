@@ -556,6 +556,16 @@ TEST(LegacyVtk, VtksOwnFilesComeBackAndDamageIsNamed)
   EXPECT_NE(error_of(replaced("5 0 1 2 3 4", "2147483647 0 1 2 3 4")).find("cell 0 of 1 does not fit"), std::string::npos);
   EXPECT_NE(error_of(v4.substr(0, 80)).find("damaged.vtk:"), std::string::npos);
   EXPECT_NE(error_of(replaced("POLYDATA", "UNSTRUCTURED_GRID")).find("only DATASET POLYDATA"), std::string::npos);
+  // cells read against the first points, then POINTS again (a crash when it was let through)
+  EXPECT_NE(error_of(replaced("POINT_DATA", "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOINT_DATA")).find("POINTS given twice"),
+            std::string::npos);
+  // what VTK's and ParaView's writers add: FIELD data before the points, METADATA after them,
+  // an empty title, a format word in lower case
+  const std::string extras = "# vtk DataFile Version 5.1\n\nascii\nDATASET POLYDATA\nFIELD FieldData 2\n"
+                             "TimeValue 1 1 double\n0.5\nNAMES 2 1 float\n1 2\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+                             "METADATA\nINFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 0 1\n\n"
+                             "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n";
+  EXPECT_EQ(error_of(extras), "no error");
 }
 
 // PLY files are read by abrade's own checked reader: what VTK's writer wrote (ASCII, binary

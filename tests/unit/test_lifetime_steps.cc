@@ -201,14 +201,14 @@ TEST(StateFile, NumbersComeBackBitForBitAndErrorsNameTheLine)
   const double        x = 0.1 + 0.2, y = 1.0 / 3;
   out.set("hash", "abc123");
   out.set("x", x);
-  out.set("list", std::vector<double>{y, -2.5e-300, 12000});
+  out.set("list", std::vector<double>{y, -2.5e-300, 12000, 4.9406564584124654e-324}); // (a subnormal too)
   out.set("bad", "1.5e");
   out.set("not_finite", "0 nan");
   out.write(path);
   const auto in = coupling::StateFile::read(path);
   EXPECT_EQ(in.text("hash"), "abc123");
   EXPECT_EQ(in.number("x"), x);
-  EXPECT_EQ(in.numbers("list"), (std::vector<double>{y, -2.5e-300, 12000}));
+  EXPECT_EQ(in.numbers("list"), (std::vector<double>{y, -2.5e-300, 12000, 4.9406564584124654e-324}));
   EXPECT_THROW(in.number("missing"), InputError);
   // errors name the file and the line
   for (const std::string key : {"bad", "not_finite"})

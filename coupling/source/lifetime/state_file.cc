@@ -129,7 +129,8 @@ namespace abrade::coupling
         char *end = nullptr;
         errno     = 0;
         const double x = std::strtod(word.c_str(), &end);
-        if (end == word.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+        // (ERANGE with a finite result is an underflow to a subnormal or 0: kept, as written)
+        if (end == word.c_str() || *end != '\0' || !std::isfinite(x))
           throw InputError(where(key), "'" + key + "': '" + word.substr(0, 40) + "' is not a finite number");
         out.push_back(x);
       }

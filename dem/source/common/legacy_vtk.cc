@@ -23,6 +23,7 @@
 #include <vtkPolyData.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -46,8 +47,9 @@ namespace abrade::io
         text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
       }
 
-      /// The next line that is not blank (without its end), or "" at the end of the file.
-      std::string line()
+      /// The next line that is not blank (without its end and trailing blanks), or "" at the end
+      /// of the file; with @p raw the next line as it is, blank or not.
+      std::string line(bool raw = false)
       {
         while (at < text.size())
           {
@@ -55,13 +57,15 @@ namespace abrade::io
             std::string       l   = text.substr(at, end - at);
             token                 = at;
             at                    = end + 1;
-            if (!l.empty() && l.back() == '\r')
+            while (!l.empty() && (l.back() == '\r' || l.back() == ' ' || l.back() == '\t'))
               l.pop_back();
-            if (l.find_first_not_of(" \t") != std::string::npos)
+            if (raw || l.find_first_not_of(" \t") != std::string::npos)
               return l;
           }
         return "";
       }
+
+      bool at_end() const { return at >= text.size(); }
 
       /// @p count values of VTK type @p type (ASCII words or big-endian bytes).
       std::vector<double> values(long count, const std::string &type)
@@ -82,6 +86,8 @@ namespace abrade::io
                 at += size->second;
                 std::reverse(b, b + size->second); // big-endian
                 v[k] = decode(b, type, size->second);
+                if (!std::isfinite(v[k]))
+                  fail("a value that is not a finite number (value " + std::to_string(k) + " of the section)");
               }
             if (at < text.size() && text[at] == '\n')
               ++at;
@@ -165,8 +171,9 @@ namespace abrade::io
     LegacyVtkFile f(path);
     if (f.line().rfind("# vtk DataFile Version", 0) != 0)
       f.fail("not a legacy VTK file (it does not start with '# vtk DataFile Version')");
-    f.line(); // the title
-    const std::string format = f.line();
+    f.line(true); // the title (it may be empty)
+    std::string format = f.line();
+    std::transform(format.begin(), format.end(), format.begin(), ::toupper);
     if (format != "ASCII" && format != "BINARY")
       f.fail("'ASCII' or 'BINARY' expected, found '" + format.substr(0, 40) + "'");
     const std::string dataset = f.line();
@@ -187,6 +194,8 @@ namespace abrade::io
           break;
         if (key == "POINTS")
           {
+            if (n_points >= 0) // (the cells read so far index the first points)
+              f.fail("POINTS given twice");
             n_points       = count_from(f, a, "points");
             const auto xyz = f.values(3 * n_points, b);
             points->SetDataTypeToDouble();
@@ -257,8 +266,22 @@ namespace abrade::io
                     }
               }
           }
-        else if (key == "FIELD" || key == "METADATA")
-          f.fail(key + " sections are not read: save the file without them, or as .vtp");
+        else if (key == "METADATA") // information keys, up to a blank line
+          while (!f.at_end() && !f.line(true).empty())
+            ;
+        else if (key == "FIELD") // FIELD name n, then n arrays "name components tuples type" + values
+          {
+            const long arrays = count_from(f, b, "arrays");
+            for (long k = 0; k < arrays; ++k)
+              {
+                std::istringstream array(f.line());
+                std::string        name, components, tuples, type;
+                array >> name >> components >> tuples >> type;
+                if (name == "NULL_ARRAY")
+                  continue;
+                f.values(count_from(f, components, "components") * count_from(f, tuples, "tuples"), type);
+              }
+          }
         else
           f.fail("unknown section '" + l.substr(0, 40) + "'");
       }

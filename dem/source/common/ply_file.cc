@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -96,6 +97,8 @@ namespace abrade::io
               {
                 words >> p.count_type >> p.type;
                 type_size(p.count_type);
+                if (p.count_type.find("float") != std::string::npos || p.count_type == "double")
+                  fail("a list's count type must be an integer type, not " + p.count_type);
               }
             type_size(p.type);
             words >> p.name;
@@ -125,6 +128,21 @@ namespace abrade::io
         fail("the faces have no index list (property list ... vertex_indices)");
     if (vertices < 0)
       fail("the header declares no vertex element");
+    // every element takes at least a byte of the file (more in ASCII): counts the file cannot hold
+    // are refused before anything is read, and an element without properties holds nothing
+    {
+      const double size  = double(std::filesystem::file_size(path));
+      double       least = 0;
+      for (const auto &e : elements)
+        {
+          if (e.count > 0 && e.properties.empty())
+            fail("element " + e.name + " has no properties");
+          least += double(e.count);
+        }
+      if (least > size)
+        fail("the header announces " + std::to_string(long(least)) + " elements, more than the file's " +
+             std::to_string(long(size)) + " bytes can hold");
+    }
 
     const bool ascii = format == "ascii";
     const bool swap  = format == "binary_big_endian";
@@ -138,14 +156,9 @@ namespace abrade::io
             fail("fewer values than the header declares");
           std::size_t used = 0;
           double      x    = 0;
-          try
-            {
-              x = std::stod(word, &used);
-            }
-          catch (const std::exception &)
-            {
-              used = 0;
-            }
+          char *end = nullptr;
+          x         = std::strtod(word.c_str(), &end); // (1e-320: subnormal, ERANGE, kept)
+          used      = std::size_t(end - word.c_str());
           if (used != word.size() || !std::isfinite(x))
             fail("'" + word.substr(0, 20) + "' is not a finite number");
           return x;
