@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -216,9 +217,16 @@ namespace abrade::coupling
     if (l.walls.size() > most_walls)
       throw InputError(where, "Walls: " + std::to_string(l.walls.size()) + " walls listed, more than " +
                                 std::to_string(most_walls) + " (one name per wall, separated by commas)");
+    std::set<std::string> seen; // (in lower case: 'W' and 'w' are one file on some file systems)
     for (const auto &name : l.walls)
-      if (const std::string why = bad_name(name); !why.empty())
-        throw InputError(where, "Walls: " + why);
+      {
+        if (const std::string why = bad_name(name); !why.empty())
+          throw InputError(where, "Walls: " + why);
+        std::string lower = name;
+        std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+        if (!seen.insert(lower).second)
+          throw InputError(where, "Walls: '" + name + "' is listed twice (names are compared ignoring case)");
+      }
     // a wall the file lists without its subsection would be a default 2 m box, silently
     const bool listed_here = where != file ||
                              std::any_of(overrides.begin(), overrides.end(),

@@ -636,6 +636,10 @@ namespace abrade::coupling
         c.phases.emplace_back(trim(item.substr(0, colon)), std::stod(item.substr(colon + 1)));
         if (const std::string why = bad_name(c.phases.back().first); !why.empty())
           f.fail({"Simulation"}, "Phases", why);
+        for (std::size_t k = 0; k + 1 < c.phases.size(); ++k)
+          if (strcasecmp(c.phases[k].first.c_str(), c.phases.back().first.c_str()) == 0)
+            f.fail({"Simulation"}, "Phases", "'" + c.phases.back().first + "' is listed twice (names are compared "
+                                                                            "ignoring case)");
       }
     if (const std::string h = prm.get("Payload height"); !h.empty())
       {

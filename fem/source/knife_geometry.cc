@@ -107,7 +107,14 @@ namespace abrade::fem
     dealii::GridIn<3> in;
     in.attach_triangulation(tria);
     std::ifstream file(msh_file);
-    in.read_msh(file);
+    try
+      {
+        in.read_msh(file);
+      }
+    catch (const std::exception &) // the file Gmsh wrote a moment ago (a full disk cuts it)
+      {
+        throw RunError("cannot read back the knife mesh Gmsh wrote to " + msh_file + " (disk full?)");
+      }
   }
 
   void KnifeGeometry::build_and_mesh(const std::vector<std::pair<double, double>> &p, double h,

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# abrade calibrate refuses what it cannot fit, with the file and line, instead of reporting a W:
+# abrade calibrate reads what spreadsheets write (a byte order mark, quotes, CRLF) and refuses
+# what it cannot fit, with the file and line, instead of reporting a W: both depth columns,
 # a knife.pvd whose time is not a number or does not increase, a measurement row with a cell
 # missing, a location defined twice, a row copied twice, every measurement at 0 t, a point
 # 10 m from the knife, tonnes in kg (the fit runs to the end of its range), 1e300 tonnes.
@@ -27,6 +28,10 @@ table("zero.csv", lambda t, d: (0.0, d))
 table("far.csv", point="10.075,0.015,0.06")
 table("short_row.csv", extra=["0.075,0.015,0.06,100"])
 lines = open("good.csv").read().splitlines()
+# what spreadsheets write: a byte order mark, quoted names and cells, CRLF line ends
+open("excel.csv", "w", newline="").write("\ufeff" + "\r\n".join(
+    ['"x","y","z","tonnes","depth"'] + ['"' + '","'.join(l.split(",")) + '"' for l in lines[1:]]) + "\r\n")
+open("both_depths.csv", "w").write("x,y,z,tonnes,depth,depth_mm\n0.075,0.015,0.06,1500,0.0015,1.5\n")
 open("copied.csv", "w").write("\n".join(lines + [lines[2]]) + "\n")
 open("locations.csv", "w").write("name,x,y,z\ntip,0.075,0.015,0.06\ntip,0.075,0.015,0.07\n")
 open("by_name.csv", "w").write("location,tonnes,depth\ntip,1500,0.0015\n")
@@ -34,10 +39,13 @@ PY
 # the valid table fits (scale 1: the run's own analytic rate)
 "$abrade" calibrate --run run --measurements good.csv --output cal > /dev/null
 python3 -c "import json; r = json.load(open('cal/calibration.json'))['runs'][0]; assert abs(r['scale'] - 1) < 1e-3, r"
+"$abrade" calibrate --run run --measurements excel.csv --output cal_excel > /dev/null
+python3 -c "import json; r = json.load(open('cal_excel/calibration.json'))['runs'][0]; assert abs(r['scale'] - 1) < 1e-3, r"
 cal() { $expect 2 "$1" -- "$abrade" calibrate --run "${3:-run}" --measurements "$2" --output cal_bad; }
-cal "kg.csv.*|run: the best fit lies at the end of the range searched" kg.csv
+cal "run: the best fit lies at the end of the range searched" kg.csv
 cal "run: the best fit lies at the end of the range searched" huge.csv
 cal "zero.csv: every measurement is at 0 t" zero.csv
+cal "both_depths.csv: both 'depth' \[m\] and 'depth_mm' columns" both_depths.csv
 cal "far.csv:2: the point \(10.07.*lies 9.9.* m or more from the knife's surface" far.csv
 cal "short_row.csv:5: 4 cells, the header has 5" short_row.csv
 cal "copied.csv:5: the same measurement as copied.csv:3" copied.csv

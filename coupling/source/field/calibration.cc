@@ -146,9 +146,10 @@ namespace abrade::field
                                        : lookup(below_design, laid, m.point.data()));
       return out;
     }
-    /// Every measured point lies near the knife: within a tenth of its size of the design
-    /// surface (a worn point lies less than the wear depth inside it). A point far away is in
-    /// other coordinates or units, and would be fitted to the nearest corner of the knife.
+    /// Every measured point lies near the knife: within half its size of the design surface (a
+    /// worn point lies less than the wear depth inside it; a scan may hold some of the holder). A
+    /// point farther away is in other coordinates or units (a factor of 1000), and would be
+    /// fitted to the nearest corner of the knife.
     void check_on_knife(const geometry::SurfaceDistance &design, vtkPolyData *fresh,
                         const std::vector<Measurement> &measurements)
     {
@@ -163,8 +164,8 @@ namespace abrade::field
           double outside = 0;
           for (int k = 0; k < 3; ++k)
             outside += std::pow(std::max({b[2 * k] - p[k], p[k] - b[2 * k + 1], 0.0}), 2);
-          const double d = std::sqrt(outside) > 0.1 * size ? std::sqrt(outside) : std::abs(design.signed_distance(p.data()));
-          if (d > 0.1 * size)
+          const double d = std::sqrt(outside) > 0.5 * size ? std::sqrt(outside) : std::abs(design.signed_distance(p.data()));
+          if (d > 0.5 * size)
             throw InputError(m.where, "the point (" + io::format_number(p[0]) + ", " + io::format_number(p[1]) + ", " +
                                         io::format_number(p[2]) + ") m lies " + io::format_number(d) +
                                         " m or more from the knife's surface (the knife is " + io::format_number(size) +
@@ -204,12 +205,15 @@ namespace abrade::field
       if (!has(t, c))
         throw InputError(path, "missing column '" + c + "' (found: " + columns_of(t) +
                                  "; needed: tonnes, depth or depth_mm, and x, y, z or location)");
+    if (has(t, "depth") && has(t, "depth_mm"))
+      throw InputError(path, "both 'depth' [m] and 'depth_mm' columns: keep one");
     const bool in_mm = !has(t, "depth") && has(t, "depth_mm");
     if (!has(t, "depth") && !in_mm)
       throw InputError(path, "missing column 'depth' [m] or 'depth_mm' (found: " + columns_of(t) + ")");
     if (by_name && named.empty())
       throw InputError(path, "column 'location' names points: give their coordinates with --locations FILE");
-    std::vector<Measurement> out;
+    std::vector<Measurement>                          out;
+    std::map<std::array<double, 5>, std::string> seen; // point, tonnes, depth: where first
     for (std::size_t r = 0; r < t.rows.size(); ++r)
       {
         Measurement m;
@@ -231,9 +235,9 @@ namespace abrade::field
           m.has_worn_point = true, m.worn_point = {number(t, r, "worn_x"), number(t, r, "worn_y"), number(t, r, "worn_z")};
         if (m.tonnes < 0)
           throw InputError(m.where, "negative tonnes");
-        for (const auto &earlier : out)
-          if (earlier.point == m.point && earlier.tonnes == m.tonnes && earlier.depth == m.depth)
-            throw InputError(m.where, "the same measurement as " + earlier.where + " (a row copied twice?)");
+        const std::array<double, 5> key = {m.point[0], m.point[1], m.point[2], m.tonnes, m.depth};
+        if (const auto [it, fresh] = seen.emplace(key, m.where); !fresh)
+          throw InputError(m.where, "the same measurement as " + it->second + " (a row copied twice?)");
         out.push_back(m);
       }
     if (out.empty())
@@ -254,16 +258,18 @@ namespace abrade::field
     run.archard_coefficient = io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0);
     run.seeds                 = long(io::summary_number(directory + "/summary.json", "seeds").value_or(1));
     run.replicate_relative_sd = io::summary_number(directory + "/summary.json", "worn_volume_relative_spread").value_or(0);
-    const std::regex entry("timestep=\"([^\"]*)\"[^>]*file=\"([^\"]+)\"");
+    const std::regex data_set("<DataSet\\b([^>]*)>"), timestep("timestep=\"([^\"]*)\""), file_of("file=\"([^\"]*)\"");
     std::unique_ptr<geometry::SurfaceDistance> design;
     std::string      line;
     for (long n = 1; std::getline(in, line); ++n)
       {
-        std::smatch m;
-        if (!std::regex_search(line, m, entry))
+        std::smatch tag, m, f;
+        if (!std::regex_search(line, tag, data_set))
           continue;
-        const std::string where = pvd + ":" + std::to_string(n);
-        const std::string time  = m[1].str();
+        const std::string attributes = tag[1].str(), where = pvd + ":" + std::to_string(n);
+        if (!std::regex_search(attributes, m, timestep) || !std::regex_search(attributes, f, file_of) || f[1].str().empty())
+          throw InputError(where, "a DataSet without its timestep or file");
+        const std::string time = m[1].str();
         char             *end   = nullptr;
         const double      t     = std::strtod(time.c_str(), &end);
         if (time.empty() || *end != '\0' || !std::isfinite(t) || t < 0)
@@ -271,7 +277,7 @@ namespace abrade::field
         if (!run.tonnes.empty() && !(t > run.tonnes.back()))
           throw InputError(where, "timestep " + time + " t does not follow " + std::to_string(run.tonnes.back()) +
                                     " t: the outputs must come in increasing tonnes (edited?)");
-        const std::string file    = directory + "/knife/" + m[2].str();
+        const std::string file    = directory + "/knife/" + f[1].str();
         const auto        surface = io::read_polydata(file);
         vtkPolyData      *s       = surface;
         if (!s->GetPointData()->GetArray("wear_depth") || !s->GetPointData()->GetArray("wear_displacement") ||

@@ -248,6 +248,8 @@ namespace abrade::dem
     std::size_t   at = 8;
     take(bytes, at, &n, 1);
     take(bytes, at, &t, 1);
+    if (!std::isfinite(t))
+      throw InputError(path, "corrupt bed file (its time is not a finite number)");
     const std::size_t body = bytes.size() - bed_header - checksum_digits;
     if (body % bytes_per_particle != 0 || n != body / bytes_per_particle)
       throw InputError(path, "corrupt bed file: it announces " + std::to_string(n) + " particles, its size of " +
@@ -273,8 +275,13 @@ namespace abrade::dem
         for (const auto &v : a)
           if (!std::isfinite(v[k]))
             throw InputError(path, particle + " has a value that is not a finite number");
-        if (!(a[9][k] > 0) || !(a[10][k] > 0))
-          throw InputError(path, particle + " has a radius or mass that is not positive");
+        if (!(a[9][k] >= 1e-6 && a[9][k] <= 10) || !(a[10][k] > 0))
+          throw InputError(path, particle + " has a radius of " + std::to_string(a[9][k]) +
+                                   " m (a bed's are 1 um to 10 m) or a mass that is not positive");
+        const auto &box = sim.settings();
+        for (int d = 0; d < 3; ++d)
+          if (a[d][k] < box.domain_min[d] || a[d][k] > box.domain_max[d])
+            throw InputError(path, particle + " lies outside Simulation/Domain (a bed made for another domain?)");
       }
     std::vector<std::int64_t> sorted = id;
     std::sort(sorted.begin(), sorted.end());

@@ -784,7 +784,12 @@ namespace abrade::dem
       w.set_phase(phase);
     for (auto &hook : hooks)
       hook->phase_changed(*this, phase);
-    const long n_steps = std::lround(duration / time_step);
+    const double steps = duration / time_step;
+    if (!std::isfinite(steps) || steps > 1e15) // (lround of 1e300 is undefined: it ran 0 steps)
+      throw RunError("phase '" + phase + "' of " + std::to_string(duration) + " s needs " + std::to_string(steps) +
+                     " steps of " + std::to_string(time_step) + " s: a time step that small is no run (a particle "
+                     "radius or mass far too small?)");
+    const long n_steps = std::lround(steps);
     for (long s = 0; s < n_steps; ++s)
       {
         step();
