@@ -541,13 +541,13 @@ namespace abrade::coupling
                 {
                   std::size_t used = 0;
                   vec[d]           = std::stod(v[d], &used);
-                  if (used != v[d].size())
+                  if (used != v[d].size() || !std::isfinite(vec[d]))
                     throw std::invalid_argument("junk");
                 }
             }
           catch (const std::exception &)
             {
-              f.fail(path, key, "phase '" + phase + "': expected three numbers, got '" + trim(item.substr(colon + 1)) + "'");
+              f.fail(path, key, "phase '" + phase + "': expected three finite numbers, got '" + trim(item.substr(colon + 1)) + "'");
             }
           if (std::none_of(phases.begin(), phases.end(), [&](const Phase &p) { return p.first == phase; }) &&
               phase != "settle")
@@ -682,6 +682,10 @@ namespace abrade::coupling
     prm.leave_subsection();
     if (!(fill.box_min.array() < fill.box_max.array()).all())
       f.fail(gp, "Region max", "must exceed Region min in x, y and z");
+    // particles placed outside the domain are lost at the first step: a fill box outside it
+    // gave a run of 0 particles and exit 0
+    if (!(fill.box_min.array() >= s.domain_min.array()).all() || !(fill.box_max.array() <= s.domain_max.array()).all())
+      f.fail(gp, "Region max", "the fill box (Region min .. Region max) must lie inside Simulation/Domain min .. max");
     if (dist != "constant" && !(fill.sizes.min > 0 && fill.sizes.max > fill.sizes.min))
       f.fail(gp, "Maximum radius", "a " + dist + " distribution needs 0 < Minimum radius < Maximum radius");
     if (dist == "normal" && !(fill.sizes.std > 0))
