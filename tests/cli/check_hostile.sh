@@ -77,25 +77,9 @@ sed -i '3s/.*/zz 1 2 3 4/' edited/knife/profile_0.50.csv
 $expect 2 "edited/knife/profile_0.50.csv:3: not a profile line" -- "$abrade" run "$prm" --output edited --quiet --set "Lifetime/Maximum updates=3" --resume
 sed -i 's/^tonnes = .*/tonnes = 2999.5/' edited/checkpoint/loop-2.txt
 $expect 2 "edited/checkpoint/loop-2.txt: corrupt state file \(its checksum does not match" -- "$abrade" run "$prm" --output edited --quiet --set "Lifetime/Maximum updates=3" --resume
-cat > bed.prm <<'PRM'
-set Job = dem
-set Walls =
-subsection Simulation
-  set Phases = settle: 0.001
-end
-subsection Particles
-  subsection Generation
-    set Count = 20
-  end
-  subsection Settling
-    set Bed file = bed.bed
-    set Maximum time = 0.001
-  end
-end
-PRM
-"$abrade" run bed.prm --output bed --quiet > /dev/null
+"$abrade" run "$src/tests/cli/small_bed.prm" --output bed --quiet > /dev/null
 head -c 500 bed/bed.bed > cut.bed && mv cut.bed bed/bed.bed
-$expect 2 "bed/bed.bed: corrupt bed file: it announces 20 particles, its size of 500 bytes" -- "$abrade" run bed.prm --output bed --quiet
+$expect 2 "bed/bed.bed: corrupt bed file: it announces 20 particles, its size of 500 bytes" -- "$abrade" run "$src/tests/cli/small_bed.prm" --output bed --quiet
 # a knife STL with a zero-area triangle and one of height 1e-10 (Gmsh threw inside a parallel
 # region: abort): removed, said
 python3 - <<'PY'

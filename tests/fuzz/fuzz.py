@@ -189,21 +189,6 @@ TARGETS = ("prm", "stl", "obj", "ply", "vtk", "msh", "step", "xyz", "vtp", "csv"
 BINARY = ("bed",)
 MADE = ("step", "xyz", "vtp", "csv", "pvd", "bed")  # made by abrade at the start (Fixtures)
 
-BED_PRM = """set Job = dem
-set Walls =
-subsection Simulation
-  set Phases = settle: 0.001
-end
-subsection Particles
-  subsection Generation
-    set Count = 20
-  end
-  subsection Settling
-    set Bed file = {bed}
-    set Maximum time = 0.001
-  end
-end
-"""
 
 
 class Fixtures:
@@ -238,9 +223,7 @@ class Fixtures:
         open(geo, "w").write('SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n')
         run("convert", geo, "--output", os.path.join(d, "block.step"))
         CORPUS["step"] = open(os.path.join(d, "block.step")).read()
-        prm = os.path.join(d, "bed.prm")
-        open(prm, "w").write(BED_PRM.format(bed="bed.bed"))
-        run("run", prm, "--quiet", "--output", os.path.join(d, "bed"))
+        run("run", os.path.join(self.source, "tests/cli/small_bed.prm"), "--quiet", "--output", os.path.join(d, "bed"))
         CORPUS["bed"] = open(os.path.join(d, "bed", "bed.bed"), "rb").read()
 
 
@@ -297,10 +280,8 @@ def command(abrade, target, path, work, fixtures):
         shutil.copy(path, os.path.join(run, "knife", "knife.pvd"))
         return [abrade, "calibrate", "--run", run, "--measurements", fixtures.table, "--output", os.path.join(work, "c")]
     if target == "bed":
-        prm = os.path.join(work, "bed.prm")
-        with open(prm, "w") as f:
-            f.write(BED_PRM.format(bed=path))
-        return [abrade, "run", prm, "--quiet", "--output", os.path.join(work, "o")]
+        return [abrade, "run", os.path.join(fixtures.source, "tests/cli/small_bed.prm"), "--quiet", "--output",
+                os.path.join(work, "o"), "--set", f"Particles/Settling/Bed file={path}"]
     clamped = "group bolted" if target == "msh" else "normal 0, 0, 1"
     return [abrade, "run", "--output", work, "--quiet", "--set", "Job=knife", "--set", "Knife/Geometry=file",
             "--set", f"Knife/File={path}", "--set", f"Knife/Clamped faces={clamped}"]
