@@ -255,6 +255,8 @@ namespace abrade::dem
       throw InputError(path, "corrupt bed file: it announces " + std::to_string(n) + " particles, its size of " +
                                std::to_string(bytes.size()) + " bytes holds " +
                                std::to_string(double(body) / bytes_per_particle) + " (cut short or changed)");
+    if (n == 0)
+      throw InputError(path, "the bed holds no particles");
     if (io::fnv1a_hex(bytes.substr(0, bytes.size() - checksum_digits)) != bytes.substr(bytes.size() - checksum_digits))
       throw InputError(path, "corrupt bed file (its checksum does not match: changed or cut); delete it, the bed is "
                              "made again");
