@@ -71,7 +71,7 @@ namespace abrade::fem
         data_out.add_data_vector(vectors.back(), f.name, dealii::DataOut<3>::type_cell_data);
       }
     data_out.build_patches();
-    char tag[16];
+    char tag[32];
     std::snprintf(tag, sizeof tag, "%05zu", records.size());
     const std::string file = base + "_" + tag + ".vtu";
     std::ostringstream vtu, pvd; // each file replaced at once, its write checked
@@ -88,7 +88,7 @@ namespace abrade::fem
     records.clear();
     for (std::size_t k = 0; k < times.size(); ++k)
       {
-        char tag[16];
+        char tag[32];
         std::snprintf(tag, sizeof tag, "%05zu", k);
         records.emplace_back(times[k], base + "_" + tag + ".vtu");
       }
