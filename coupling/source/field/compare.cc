@@ -1,3 +1,4 @@
+#include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/common/json.h>
@@ -23,6 +24,9 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
+#include <array>
+#include <sstream>
+#include <set>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -468,20 +472,24 @@ namespace abrade::field
       {
         if (s.tonnes < 0)
           r.warnings.push_back("measured_depths.csv has no tonnage (pass --tonnes T to use it for calibration)");
-        std::ofstream m(out.file("measured_depths.csv"));
+        std::ostringstream m;
         m.precision(10);
         // the locations are the design points the scan points lie below: material points of the
         // fresh knife, as `abrade calibrate` reads them
         // (and worn_x, worn_y, worn_z: the scan point itself, registered)
         m << "x,y,z,tonnes,depth,worn_x,worn_y,worn_z\n";
+        std::set<std::array<double, 3>> written; // a point scanned twice (merged scans) is one measurement
         for (vtkIdType i = 0; i < vtkIdType(measured.size()); ++i)
           {
             const double *p = feet.data() + 3 * i, *q = scan_points.data() + 3 * i;
+            if (!written.insert({q[0], q[1], q[2]}).second)
+              continue;
             m << p[0] << ',' << p[1] << ',' << p[2] << ',';
             if (s.tonnes >= 0)
               m << s.tonnes;
             m << ',' << measured[i] << ',' << q[0] << ',' << q[1] << ',' << q[2] << '\n';
           }
+        io::write_file_atomically(out.file("measured_depths.csv"), m.str());
       }
     std::vector<double> emphasis = measured;
     if (emphasis.empty())
