@@ -6,6 +6,7 @@
 #     with Simulation/On error = stop the run fails (exit 3, summary.json status "failed: ..."),
 #     with continue it goes on and the faults are logged and counted;
 #  3. an analytic rate of 0 (no wear): no life is predicted, exit 3 (it was "0 t", exit 0);
+#     a rate that stops after 1000 t: no life either (it was extrapolated from the wear before);
 #     a negative rate is an input error naming the point (exit 2).
 #   check_dem_faults.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
@@ -40,4 +41,6 @@ $expect 3 "run failed: no life predicted: no wear on the knife" -- "${analytic[@
   --set "Lifetime/Analytic wear rate=0"
 $expect 2 "Lifetime/Analytic wear rate: the rate is -1e-06 at \(" -- "${analytic[@]}" --output negative \
   --set "Lifetime/Analytic wear rate=-1e-6"
+$expect 3 "run failed: no life predicted: the knife stopped wearing after 1500 t" -- "${analytic[@]}" --output stops \
+  --set "Lifetime/Analytic wear rate=1e-6*(t<1000)" --set "Lifetime/Maximum updates=5"
 echo "DEM faults and wear-free runs: reported"

@@ -678,6 +678,14 @@ namespace abrade::coupling::lifetime
     if (history.size() > 1) // nothing to plot before the first update
       plot_lifetime(ctx.output.root(), s.planes, frame);
     std::ostringstream line;
+    if (e.criterion != EndOfLife::none && !e.reached && end.rfind("no wear", 0) == 0)
+      {
+        // the wear stopped (a cycle that no longer touches the knife, a rate that ends): the
+        // life would be extrapolated from wear that no longer happens
+        ctx.log.line("Lifetime: " + end + " after " + std::to_string(cycles) + " cycles; no life predicted");
+        throw RunError("no life predicted: the knife stopped wearing after " + io::format_number(tonnes, 6) +
+                       " t (" + end + "); the end of life is not reached");
+      }
     if (e.criterion == EndOfLife::none)
       {
         // no criterion grew: there is no life to report, and a run that predicts none has failed
