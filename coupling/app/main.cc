@@ -280,6 +280,16 @@ int main(int argc, char **argv)
           std::cout << "abrade " << version_string << std::endl;
           return 0;
         }
+      // --help (or -h) anywhere: the usage of the command given, or of all
+      for (int k = 2; k < argc; ++k)
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h")
+          {
+            const std::string command = argv[1];
+            std::cout << (command == "compare"     ? std::string(field::compare_usage)
+                          : command == "calibrate" ? std::string(field::calibrate_usage)
+                                                   : std::string(usage));
+            return 0;
+          }
       if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" ||
                         std::string(argv[1]) == "help"))
         {
