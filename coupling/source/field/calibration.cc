@@ -1,6 +1,7 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/surface_distance.h>
 #include <abrade/common/json.h>
@@ -55,18 +56,9 @@ namespace abrade::field
       const std::string &cell  = c >= 0 && std::size_t(c) < t.rows[r].size() ? t.rows[r][c] : std::string();
       if (cell.empty())
         throw InputError(where, "no value in column '" + name + "'");
-      try
-        {
-          std::size_t  used = 0;
-          const double v    = std::stod(cell, &used);
-          if (used != cell.size() || !std::isfinite(v))
-            throw std::invalid_argument("");
-          return v;
-        }
-      catch (const std::exception &)
-        {
-          throw InputError(where, "'" + cell + "' in column '" + name + "' is not a number");
-        }
+      if (const auto v = io::finite_number(cell))
+        return *v;
+      throw InputError(where, "'" + cell + "' in column '" + name + "' is not a number");
     }
 
     std::string columns_of(const io::CsvTable &t)
@@ -270,10 +262,10 @@ namespace abrade::field
         if (!std::regex_search(attributes, m, timestep) || !std::regex_search(attributes, f, file_of) || f[1].str().empty())
           throw InputError(where, "a DataSet without its timestep or file");
         const std::string time = m[1].str();
-        char             *end   = nullptr;
-        const double      t     = std::strtod(time.c_str(), &end);
-        if (time.empty() || *end != '\0' || !std::isfinite(t) || t < 0)
+        const auto        number = io::finite_number(time);
+        if (!number || *number < 0)
           throw InputError(where, "timestep \"" + time.substr(0, 40) + "\" is not a number of tonnes");
+        const double t = *number;
         if (!run.tonnes.empty() && !(t > run.tonnes.back()))
           throw InputError(where, "timestep " + time + " t does not follow " + std::to_string(run.tonnes.back()) +
                                     " t: the outputs must come in increasing tonnes (edited?)");

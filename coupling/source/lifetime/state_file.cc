@@ -1,8 +1,8 @@
 #include <abrade/common/error.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/common/hash.h>
 #include <abrade/coupling/lifetime/state_file.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -126,13 +126,10 @@ namespace abrade::coupling
     std::istringstream  in(text(key));
     for (std::string word; in >> word;)
       {
-        char *end = nullptr;
-        errno     = 0;
-        const double x = std::strtod(word.c_str(), &end);
-        // (ERANGE with a finite result is an underflow to a subnormal or 0: kept, as written)
-        if (end == word.c_str() || *end != '\0' || !std::isfinite(x))
+        const auto x = io::finite_number(word); // (a subnormal reads back as written)
+        if (!x)
           throw InputError(where(key), "'" + key + "': '" + word.substr(0, 40) + "' is not a finite number");
-        out.push_back(x);
+        out.push_back(*x);
       }
     return out;
   }

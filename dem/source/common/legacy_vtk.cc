@@ -15,6 +15,7 @@
 //   POINT_DATA, CELL_DATA      (the end of the geometry)
 // BINARY data is big-endian and follows its section line directly.
 #include <abrade/common/error.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/common/legacy_vtk.h>
 
 #include <vtkCellArray.h>
@@ -101,10 +102,10 @@ namespace abrade::io
               token = a;
               at = std::min(text.find_first_of(" \t\r\n", a), text.size());
               const std::string word = text.substr(a, at - a);
-              char             *end  = nullptr;
-              v[k]                   = std::strtod(word.c_str(), &end);
-              if (*end != '\0' || !std::isfinite(v[k]))
+              const auto        x    = finite_number(word);
+              if (!x)
                 fail("'" + word.substr(0, 20) + "' is not a finite number");
+              v[k] = *x;
               if (type != "float" && type != "double" && v[k] != std::floor(v[k]))
                 fail("'" + word.substr(0, 20) + "' is not an integer");
             }

@@ -8,6 +8,7 @@
 // Other properties (normals, colours) are read past; the geometry is what walls
 // and scans need.
 #include <abrade/common/error.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/common/ply_file.h>
 
 #include <vtkCellArray.h>
@@ -154,14 +155,10 @@ namespace abrade::io
           std::string word;
           if (!(words >> word))
             fail("fewer values than the header declares");
-          std::size_t used = 0;
-          double      x    = 0;
-          char *end = nullptr;
-          x         = std::strtod(word.c_str(), &end); // (1e-320: subnormal, ERANGE, kept)
-          used      = std::size_t(end - word.c_str());
-          if (used != word.size() || !std::isfinite(x))
+          const auto x = finite_number(word);
+          if (!x)
             fail("'" + word.substr(0, 20) + "' is not a finite number");
-          return x;
+          return *x;
         }
       unsigned char bytes[8] = {};
       const int     size     = type_size(t);

@@ -1,0 +1,20 @@
+#pragma once
+// A number read from a word of a file: all of the word, a finite value. One rule for every
+// reader (state files, legacy VTK, PLY, CSV tables, .pvd times): "1.5e" and "nan" are not
+// numbers, a subnormal such as 1e-320 is (strtod's ERANGE on underflow is not an error here).
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+namespace abrade::io
+{
+  inline std::optional<double> finite_number(const std::string &word)
+  {
+    char        *end = nullptr;
+    const double x   = std::strtod(word.c_str(), &end);
+    if (word.empty() || end != word.c_str() + word.size() || !std::isfinite(x))
+      return std::nullopt;
+    return x;
+  }
+} // namespace abrade::io
