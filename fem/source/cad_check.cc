@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/file_extension.h>
 #include <abrade/common/format_number.h>
 #include <abrade/fem/cad_check.h>
 
@@ -24,8 +25,7 @@ namespace abrade::fem
 {
   void check_cad_file(const std::string &path)
   {
-    std::string ext = path.substr(std::min(path.size(), path.rfind('.')));
-    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    const std::string ext = io::lower_extension(path);
     // OpenCASCADE's reports go to its messenger's printers (the terminal): silenced here, the
     // error below says what matters
     const Handle(Message_Messenger) messenger = Message::DefaultMessenger();

@@ -1,6 +1,7 @@
 // Reading a user's part (solid_file.h): Gmsh for CAD, STL and the physical names of .msh files,
 // deal.II's GridIn for the volume mesh.
 #include <abrade/common/error.h>
+#include <abrade/common/file_extension.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/termination.h>
 #include <abrade/fem/cad_check.h>
@@ -32,16 +33,10 @@ namespace abrade::fem
 {
   using namespace dealii;
   using io::format_number;
+  using io::lower_extension;
 
   namespace
   {
-    std::string lower_extension(const std::string &path)
-    {
-      std::string ext = std::filesystem::path(path).extension().string();
-      std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-      return ext;
-    }
-
     void read_msh_file(const std::string &path, Triangulation<3> &tria)
     {
       std::ifstream file(path);

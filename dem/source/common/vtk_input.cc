@@ -89,13 +89,6 @@ namespace abrade::io
     };
   } // namespace
 
-  std::string lower_extension(const std::string &path)
-  {
-    std::string e = std::filesystem::path(path).extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), ::tolower);
-    return e;
-  }
-
   vtkSmartPointer<vtkPolyData> read_polydata(const std::string &path)
   {
     if (!std::filesystem::is_regular_file(path))

@@ -2,6 +2,8 @@
 // Reading geometry files through VTK into vtkPolyData: one dispatch on the file extension for
 // every reader of the project (wall meshes, knife solids' surfaces, field scans). Needs VTK's
 // include directories (the libraries that call it link VTK).
+#include <abrade/common/file_extension.h>
+
 #include <vtkSmartPointer.h>
 
 #include <string>
@@ -16,6 +18,4 @@ namespace abrade::io
   /// check what they need. VTK's own error messages are silenced while reading.
   vtkSmartPointer<vtkPolyData> read_polydata(const std::string &path);
 
-  /// The lower-case extension of @p path, with its dot (".stl").
-  std::string lower_extension(const std::string &path);
 } // namespace abrade::io
