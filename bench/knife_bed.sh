@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Throughput of abrade against LIGGGHTS on the knife-bed case, on this machine, in one run.
 #
-#   bench/knife_bed.sh [--knife-edge H] [--threads "1 2"] [--ranks "2"] [--repeat N] [--output DIR]
+#   bench/knife_bed.sh [--knife-edge H] [--threads "1 2"] [--ranks "2"] [--repeat N] [--busy N] [--output DIR]
 #
 # Shared machines are noisy (we have seen +-30 % between identical runs), so the codes run in
 # turn N times (default 3) and the medians are reported; abrade's runs share one settled bed.
@@ -16,10 +16,17 @@
 # --threads: abrade on one MPI rank with each of these OpenMP thread counts; --ranks: abrade and
 # LIGGGHTS under `mpirun -np N` (one thread per rank) for each N > 1, for the strong scaling.
 # Per core = rate / (ranks x threads); strong-scaling efficiency = rate(N) / (N rate(1)).
+# A thread count written "2fixed" runs with Simulation/Adapt threads = false (every thread works
+# on every step, as before the thread governor).
+#
+# --busy N: a busy machine. The script starts N processes that spin on a core each for the whole
+# benchmark (LIGGGHTS and abrade alike run beside them), as another user's job would; the
+# question is whether the default thread count keeps at least 0.8x the one-thread throughput:
+#   bench/knife_bed.sh --busy 1 --threads "1 2 2fixed" --ranks 1
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 abrade=$root/build/abrade
-edge=0 threads="1 2" ranks="2" out="" repeat=3
+edge=0 threads="1 2" ranks="2" out="" repeat=3 busy=0
 while (($#)); do
   case $1 in
     --knife-edge) edge=$2; shift 2 ;;
@@ -27,7 +34,8 @@ while (($#)); do
     --ranks) ranks=$2; shift 2 ;;
     --output) out=$2; shift 2 ;;
     --repeat) repeat=$2; shift 2 ;;
-    *) echo "usage: $0 [--knife-edge H] [--threads \"1 2\"] [--ranks \"2\"] [--repeat N] [--output DIR]" >&2; exit 2 ;;
+    --busy) busy=$2; shift 2 ;;
+    *) echo "usage: $0 [--knife-edge H] [--threads \"1 2\"] [--ranks \"2\"] [--repeat N] [--busy N] [--output DIR]" >&2; exit 2 ;;
   esac
 done
 [[ -x $abrade ]] || { echo "build abrade first: scripts/setup.sh" >&2; exit 2; }
@@ -57,10 +65,12 @@ liggghts_run() { # ranks, directory
   awk -v r="$1" '/^Loop time of/ { n++; if (n > 1) { s += $9; t += $4; a = $12 } } END { print "liggghts", r, 1, a, s, t }' \
     "$2/log.liggghts" >> "$out/runs.txt"
 }
-abrade_run() { # ranks, threads, directory
-  local launch=()
-  (($1 > 1)) && launch=("${mpi[@]}" -np "$1" -x OMP_NUM_THREADS="$2")
-  OMP_NUM_THREADS=$2 "${launch[@]}" "$abrade" run "$case" --quiet --output "$3" --set "Simulation/Threads=$2" \
+abrade_run() { # ranks, threads (N or Nfixed), directory
+  local launch=() n=${2%fixed} adapt=true
+  [[ $2 == *fixed ]] && adapt=false
+  (($1 > 1)) && launch=("${mpi[@]}" -np "$1" -x OMP_NUM_THREADS="$n")
+  OMP_NUM_THREADS=$n "${launch[@]}" "$abrade" run "$case" --quiet --output "$3" --set "Simulation/Threads=$n" \
+    --set "Simulation/Adapt threads=$adapt" \
     --set "$knife_set" --set "Output/Snapshot interval=0" --set "Output/Write particles=false" \
     --set "Particles/Settling/Bed file=$out/bed.bed" >/dev/null
   python3 - "$3/summary.json" "$1" "$2" >> "$out/runs.txt" <<'PY'
@@ -74,6 +84,12 @@ PY
 }
 "$abrade" run "$case" --quiet --output "$out/bed" --set Job=bed --set "$knife_set" \
   --set "Particles/Settling/Bed file=$out/bed.bed" >/dev/null # the shared settled bed
+busy_pids=()
+trap '((${#busy_pids[@]})) && kill "${busy_pids[@]}" 2>/dev/null' EXIT
+for ((b = 0; b < busy; ++b)); do
+  bash -c 'while :; do :; done' &
+  busy_pids+=($!)
+done
 for ((rep = 1; rep <= repeat; ++rep)); do
   liggghts_run 1 "$out/liggghts-1-$rep"
   for n in $ranks; do (( n > 1 )) && liggghts_run "$n" "$out/liggghts-$n-$rep"; done
@@ -98,17 +114,17 @@ print("code,ranks,threads,particles,steps,median_loop_seconds,median_particle_st
       "per_core_ratio_vs_liggghts_1_core,strong_scaling_efficiency,runs")
 for c in configs:
     r, rt, sec, k = med[c]
-    cores = int(c[1]) * int(c[2])
+    cores = int(c[1]) * int(c[2].replace("fixed", ""))
     base = med.get((c[0], "1", "1"))
     eff = rt / cores / base[1] if base else float("nan")
     print(f"{c[0]},{c[1]},{c[2]},{r[3]},{r[4]},{sec:.3f},{rt:.4g},{rt / cores / ref:.2f},{eff:.2f},{k}")
 PY
 )
 printf '%s\n' "${rows[@]}" > "$out/results.csv"
-cmd="bench/knife_bed.sh --knife-edge $edge --threads \"$threads\" --ranks \"$ranks\" --repeat $repeat"
+cmd="bench/knife_bed.sh --knife-edge $edge --threads \"$threads\" --ranks \"$ranks\" --repeat $repeat --busy $busy"
 {
   echo "Knife-bed throughput, knife phases (penetration + travel), knife mesh of $triangles triangles"
-  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%Y-%m-%d)"
+  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%Y-%m-%d)$( ((busy)) && echo ", $busy busy process(es) spinning beside every run")"
   echo
   echo "| code | MPI ranks | threads | particles | steps | median loop s | median particle-steps/s | per core vs LIGGGHTS on 1 core | strong-scaling efficiency | runs |"
   echo "|---|---|---|---|---|---|---|---|---|---|"

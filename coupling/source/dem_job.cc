@@ -14,6 +14,7 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/common/csv_writer.h>
+#include <abrade/dem/bed_import.h>
 #include <abrade/dem/generation.h>
 #include <abrade/dem/layer_probe.h>
 #include <abrade/dem/mesh_io.h>
@@ -63,6 +64,17 @@ namespace abrade::coupling
   bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
   {
     {
+      if (dem::is_imported_bed(bed)) // another code's bed, as it is (read_dem_case checked it is there)
+        {
+          io::ScopedTimer t(ctx.timers, "import bed");
+          const auto      imported = dem::import_bed(sim, bed, c.fill.material);
+          sim.setup();
+          ctx.log.line("Imported the bed " + bed + " (" + imported.format +
+                       (imported.timestep >= 0 ? ", timestep " + std::to_string(imported.timestep) : std::string()) +
+                       "): " + std::to_string(sim.n_particles()) + " particles, top at z = " + fmt(bed_top(sim), 4) +
+                       " m");
+          return true;
+        }
       if (!bed.empty() && std::filesystem::path(bed).is_relative())
         bed = ctx.output.shared_file(bed);
       // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes)
@@ -207,6 +219,12 @@ namespace abrade::coupling
         ph["steps"]           = steps;
         ph["particle_steps_per_second"] = rate;
         ph["particles"]       = static_cast<long>(sim.n_particles());
+        // the threads that worked on the steps (fewer than the shares on a busy machine)
+        const double mean_threads = sim.parallel().sum(double(after.thread_steps - before.thread_steps) /
+                                                       std::max(1.0, double(after.steps - before.steps))) /
+                                    sim.parallel().size();
+        ph["threads"]      = static_cast<long>(sim.threads());
+        ph["mean_threads"] = mean_threads;
         if (c.payload_height)
           {
             const double held = sim.mass_above(*c.payload_height);
@@ -225,7 +243,11 @@ namespace abrade::coupling
             wj["peak_torque"]    = peak_torque[w];
           }
         ctx.log.line("Phase " + name + ": " + std::to_string(steps) + " steps, " + fmt(rate, 3) +
-                     " particle-steps/s");
+                     " particle-steps/s" +
+                     (mean_threads < sim.threads() - 0.05
+                        ? ", on " + fmt(mean_threads, 2) + " of " + std::to_string(sim.threads()) +
+                            " threads on average: the machine was busy and fewer threads were faster"
+                        : std::string()));
       }
     progress.finish();
     if (snapshot_every && sim.step_number() % snapshot_every != 0)

@@ -2,6 +2,7 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/run_size.h>
+#include <abrade/dem/bed_import.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/fem/solid_file.h>
 
@@ -282,7 +283,15 @@ namespace abrade::coupling
                       "input restitution.");
     prm.declare_entry("Threads", "0", Integer(0, 1024),
                       "Number of threads; 0: all available (OMP_NUM_THREADS). Range: >= 0. Under "
-                      "mpirun: threads per MPI rank (0: the machine's share of each rank).");
+                      "mpirun: threads per MPI rank (0: the machine's share of each rank). The work "
+                      "is cut into this many shares, which fixes the arithmetic: a run's results "
+                      "depend on this number, not on how many threads end up working.");
+    prm.declare_entry("Adapt threads", "true", Bool(),
+                      "Work with fewer of the threads while that is faster: on a busy machine (another "
+                      "process on a core) a thread that shares a core holds the others up at every "
+                      "step. The run measures its steps and tries one thread fewer or more now and "
+                      "then (a few per cent of the time); the log says when it ran on fewer. The "
+                      "results are the same bits either way. false: always all threads.");
     prm.declare_entry("Rebalance threshold", "1.1", Double(1, huge),
                       "[-] Under mpirun the particles are spread over the ranks by recursive "
                       "coordinate bisection; the domains are cut again at a neighbour-list build "
@@ -348,7 +357,13 @@ namespace abrade::coupling
                       "Settled-bed file. If it exists, the bed is loaded from it and no particles "
                       "are generated; otherwise the bed is generated, settled and saved there, so "
                       "later runs (and every operating cycle) start from the same bed. A relative "
-                      "path is relative to the output directory. Empty: generate every time.");
+                      "path is relative to the output directory. Empty: generate every time. "
+                      "A file ending in .csv, .dump, .lammpstrj or .liggghts is a bed made elsewhere "
+                      "and is imported as it is (not settled again, never written; relative to the "
+                      "parameter file): a CSV table with columns x, y, z and radius or diameter [m] "
+                      "(optional: id, vx, vy, vz, wx, wy, wz), or a LIGGGHTS/LAMMPS text dump "
+                      "(dump custom with id x y z radius or diameter; its last snapshot). Every "
+                      "particle gets Particles/Material; masses follow from its density.");
     prm.leave_subsection();
     prm.leave_subsection();
 
@@ -625,6 +640,7 @@ namespace abrade::coupling
     s.skin                    = prm.get_double("Skin");
     s.damping   = prm.get("Damping model") == "edem" ? dem::DampingModel::edem : dem::DampingModel::calibrated;
     s.threads   = prm.get_integer("Threads");
+    s.adapt_threads = prm.get_bool("Adapt threads");
     s.rebalance_threshold = prm.get_double("Rebalance threshold");
     s.domain_min = get_vector(prm, "Domain min");
     s.domain_max = get_vector(prm, "Domain max");
@@ -694,6 +710,14 @@ namespace abrade::coupling
     c.settle_ke       = prm.get_double("Kinetic energy threshold");
     c.settle_max_time = prm.get_double("Maximum time");
     c.bed_file        = prm.get("Bed file");
+    if (dem::is_imported_bed(c.bed_file)) // another code's bed: an input, next to the parameter file
+      {
+        c.bed_file = resolve(f, c.bed_file);
+        if (!std::ifstream(c.bed_file))
+          f.fail({"Particles", "Settling"}, "Bed file",
+                 "no bed to import at '" + c.bed_file + "' (a .csv table or a LIGGGHTS/LAMMPS dump is read, never "
+                 "written; abrade's own beds end in .bed)");
+      }
     prm.leave_subsection();
     prm.leave_subsection();
     prm.enter_subsection("Simulation");

@@ -95,6 +95,59 @@ TEST(Engine, ResultsDoNotDependOnThreadsOrSkin)
   EXPECT_LT(d_ac, 1e-8);
 }
 
+TEST(Engine, TheSameBitsWithAnyNumberOfThreadsWorking)
+{
+  // The work is cut into Settings::threads shares; how many threads work on them (the team the
+  // governor picks on a busy machine) must not change a single bit: positions, spins, the
+  // walls' loads and the per-triangle impulses the wear laws are built from. A gas squeezed
+  // between a box of fine triangles and a plate pushed into it, rotating, frictional.
+  auto run = [](int team) {
+    Settings s = quiet_settings(5e-5, true);
+    s.threads  = 3;
+    Simulation sim(s);
+    const int  m = sim.add_material(pellet);
+    sim.set_interaction(m, m, {0.6, 0.5, 0.05});
+    Wall box;
+    box.name     = "box";
+    box.mesh     = primitives::box_container(Vec3(-0.01, -0.01, 0), Vec3(0.51, 0.51, 0.6));
+    box.mesh.refine(0.05);
+    box.material = m;
+    sim.add_wall(box);
+    Wall plate   = floor_wall(m, 0.4, 0.04);
+    plate.name   = "plate";
+    plate.mesh.translate(Vec3(0.25, 0.25, 0.41));
+    plate.motion.kind = WallMotion::Kind::prescribed;
+    plate.motion.phases["push"].velocity = Vec3(0.3, 0, -1.0);
+    sim.add_wall(plate);
+    FillRegion f;
+    f.box_min = Vec3::Zero(), f.box_max = Vec3(0.5, 0.5, 0.4);
+    f.sizes.kind = SizeDistribution::Kind::uniform, f.sizes.min = 0.02, f.sizes.max = 0.03;
+    f.count = 300, f.seed = 4;
+    fill_region(sim, f);
+    sim.setup();
+    sim.pin_thread_team(team);
+    sim.run_phase("push", 0.1);
+    std::vector<double> out = state_by_id(sim);
+    for (std::size_t w = 0; w < sim.n_walls(); ++w)
+      {
+        const Wall &wall = sim.wall(w);
+        out.insert(out.end(), {wall.force[0], wall.force[1], wall.force[2], wall.torque[0], wall.torque[1],
+                               wall.torque[2]});
+        out.insert(out.end(), wall.normal_impulse.begin(), wall.normal_impulse.end());
+        out.insert(out.end(), wall.tangential_impulse.begin(), wall.tangential_impulse.end());
+      }
+    return out;
+  };
+  const std::vector<double> three = run(3), two = run(2), one = run(1);
+  ASSERT_EQ(three.size(), two.size());
+  double impulse = 0;
+  for (std::size_t k = 6 * 300; k < three.size(); ++k)
+    impulse += std::abs(three[k]);
+  EXPECT_GT(impulse, 1.0); // the walls were hit
+  EXPECT_TRUE(one == three) << "one thread working on three shares differs from three threads";
+  EXPECT_TRUE(two == three) << "two threads working on three shares differ from three threads";
+}
+
 TEST(Engine, TangentialHistorySurvivesRebuilds)
 {
   // Two spheres pressed together and sheared slowly stick: the tangential force grows linearly

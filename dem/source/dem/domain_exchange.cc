@@ -133,7 +133,7 @@ namespace abrade::dem
       if (long(k - first) % m.parallel.size() == m.parallel.rank())
         order.push_back(k);
     m.resize_wall_histories(n);
-    store.permute(order, m.n_threads);
+    store.permute(order, m.team());
     permute_wall_histories(order);
     store.n_distributed = store.size();
     m.balanced          = false;
@@ -217,7 +217,7 @@ namespace abrade::dem
         offsets.push_back(partner.size());
       }
     stats.migrated += long(n - stay.size());
-    store.permute(stay, m.n_threads);
+    store.permute(stay, m.team());
     permute_wall_histories(stay);
     for (std::size_t p = 0; p < in.size();)
       {

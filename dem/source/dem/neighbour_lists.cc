@@ -91,7 +91,7 @@ namespace abrade::dem
     // 2. Sort particles by cell (counting sort), dropping lost ones.
     const std::vector<std::size_t> order = m.sort_by_cell(store, 0, n_old, &keep, m.cell_start);
     const std::size_t              n     = order.size();
-    store.permute(order, m.n_threads);
+    store.permute(order, m.team());
     permute_wall_histories(order);
     store.n_distributed = store.size();
 
@@ -155,7 +155,7 @@ namespace abrade::dem
     std::vector<std::size_t> length(m.n_threads, 0);
     if (m.thread_lists.size() < std::size_t(m.n_threads))
       m.thread_lists.resize(m.n_threads);
-#pragma omp parallel num_threads(m.n_threads)
+#pragma omp parallel num_threads(m.team())
     for (int t = omp_get_thread_num(); t < m.n_threads; t += omp_get_num_threads())
       {
         std::vector<int> &list = m.thread_lists[t]; // its size is its capacity; used: its length
@@ -198,7 +198,7 @@ namespace abrade::dem
     m.shear.assign(3 * m.offsets[n], 0.0);
     m.touching.assign(m.offsets[n], 0);
     const std::int64_t *ID = store.id.data();
-#pragma omp parallel num_threads(m.n_threads)
+#pragma omp parallel num_threads(m.team())
     for (int t = omp_get_thread_num(); t < m.n_threads; t += omp_get_num_threads())
       {
         std::copy_n(m.thread_lists[t].begin(), length[t], m.neighbours.begin() + m.offsets[block[t]]);
@@ -248,7 +248,9 @@ namespace abrade::dem
       {
         const Wall  &wall = walls[w];
         const double *V   = wall.current.data();
-#pragma omp parallel for schedule(dynamic, 16) num_threads(m.n_threads)
+        // (which thread finds a candidate changes the order of a particle's candidates, not its
+        // contacts: wall_forces sorts the hits by wall, distance, feature and triangle)
+#pragma omp parallel for schedule(dynamic, 16) num_threads(m.team())
         for (std::size_t t = 0; t < wall.mesh.n_triangles(); ++t)
           {
             const auto   &tri = wall.mesh.triangles[t];

@@ -207,22 +207,27 @@ namespace abrade::dem
 
     double worst = 0;
     long   wi = -1, wj = -1;
-#pragma omp parallel num_threads(m.n_threads)
+#pragma omp parallel num_threads(m.team())
     {
-      const int tid = omp_get_thread_num();
+      // Each share of the pairs adds its forces into its own buffer (share 0: the particle
+      // arrays), whichever thread works on it, so the sums do not depend on the team.
+      const int tid  = omp_get_thread_num();
+      const int team = omp_get_num_threads();
       double   *fx, *fy, *fz, *tx, *ty, *tz, *rl;
-      if (tid == 0)
-        fx = P.fx.data(), fy = P.fy.data(), fz = P.fz.data(), tx = P.tx.data(), ty = P.ty.data(),
-        tz = P.tz.data(), rl = P.rolling.data();
-      else
-        {
-          double *b = m.buffers[tid].data();
-          fx = b, fy = b + n, fz = b + 2 * n, tx = b + 3 * n, ty = b + 4 * n, tz = b + 5 * n, rl = b + 6 * n;
-        }
-      std::fill(fx, fx + n, 0.0), std::fill(fy, fy + n, 0.0), std::fill(fz, fz + n, 0.0);
-      if (rotation)
-        std::fill(tx, tx + n, 0.0), std::fill(ty, ty + n, 0.0), std::fill(tz, tz + n, 0.0),
-          std::fill(rl, rl + n, 0.0);
+      auto      use_buffer_of = [&](int range) {
+        if (range == 0)
+          fx = P.fx.data(), fy = P.fy.data(), fz = P.fz.data(), tx = P.tx.data(), ty = P.ty.data(),
+          tz = P.tz.data(), rl = P.rolling.data();
+        else
+          {
+            double *b = m.buffers[range].data();
+            fx = b, fy = b + n, fz = b + 2 * n, tx = b + 3 * n, ty = b + 4 * n, tz = b + 5 * n, rl = b + 6 * n;
+          }
+        std::fill(fx, fx + n, 0.0), std::fill(fy, fy + n, 0.0), std::fill(fz, fz + n, 0.0);
+        if (rotation)
+          std::fill(tx, tx + n, 0.0), std::fill(ty, ty + n, 0.0), std::fill(tz, tz + n, 0.0),
+            std::fill(rl, rl + n, 0.0);
+      };
       double my_worst = 0;
       long   my_i = -1, my_j = -1;
 
@@ -255,16 +260,16 @@ namespace abrade::dem
         B.n = 0;
       };
 
-      // every range is done, whatever the size of the team OpenMP gave us
-      const int team = omp_get_num_threads();
+      // every share is done, whatever the size of the team OpenMP gave us
       for (int range = tid; range < m.n_threads; range += team)
         {
+          use_buffer_of(range);
           std::size_t       k     = OFFSETS[m.thread_begin[range]];
           const std::size_t k_end = OFFSETS[m.thread_begin[range + 1]];
           while ((k = scan_pairs(B, in, list, k, k_end)) < k_end)
             flush();
+          flush();
         }
-      flush();
 #pragma omp critical
       if (my_worst > worst || (my_worst == worst && my_i >= 0 && (wi < 0 || my_i < wi)))
         worst = my_worst, wi = my_i, wj = my_j;

@@ -163,7 +163,12 @@ namespace abrade::dem
   {
     impl->parallel  = config.distribute ? Parallel::world() : Parallel();
     impl->n_threads = config.threads > 0 ? config.threads : default_thread_count(impl->parallel);
+    impl->governor  = ThreadGovernor(impl->n_threads, config.adapt_threads);
   }
+
+  int Simulation::threads() const { return impl->n_threads; }
+
+  void Simulation::pin_thread_team(int team) { impl->governor.pin(team); }
 
   Simulation::Simulation(Simulation &&) noexcept = default;
   Simulation &Simulation::operator=(Simulation &&) noexcept = default;
@@ -391,15 +396,12 @@ namespace abrade::dem
 
     double worst = 0;
     long   worst_i = -1;
-#pragma omp parallel num_threads(m.n_threads)
+#pragma omp parallel num_threads(m.team())
     {
-      const int tid   = omp_get_thread_num();
-      auto     &loads = m.wall_loads[tid];
-      std::fill(loads.begin(), loads.end(), 0.0);
-      auto &log = m.log.per_thread[tid];
-      log.clear();
-      double my_worst = 0;
-      long   my_i     = -1;
+      const int tid  = omp_get_thread_num();
+      const int team = omp_get_num_threads();
+      double    my_worst = 0;
+      long      my_i     = -1;
 
       struct Hit
       {
@@ -434,192 +436,200 @@ namespace abrade::dem
           FX[i] += MASS[i] * gx, FY[i] += MASS[i] * gy, FZ[i] += MASS[i] * gz;
       }
 
-      // the particles with wall candidates: particle-wall contacts
+      // the particles with wall candidates: particle-wall contacts, in m.n_threads shares
+      // (each with its own loads and contact list), whatever the team
       const std::size_t n_wall = m.wall_particles.size();
-#pragma omp for schedule(static)
-      for (std::size_t w_i = 0; w_i < n_wall; ++w_i)
+      for (int range = tid; range < m.n_threads; range += team)
         {
-          const std::size_t i  = m.wall_particles[w_i];
-          double            fx = P.fx[i], fy = P.fy[i], fz = P.fz[i];
-          double            tx = 0, ty = 0, tz = 0, rolling = 0;
-          if (rotation)
-            tx = P.tx[i], ty = P.ty[i], tz = P.tz[i], rolling = P.rolling[i];
-
-          const double q[3] = {P.x[i], P.y[i], P.z[i]};
-          const double ri   = P.radius[i];
-          int          n_hits = 0;
-          for (std::size_t k = m.wall_offsets[i]; k < m.wall_offsets[i + 1]; ++k)
+          auto &loads = m.wall_loads[range];
+          std::fill(loads.begin(), loads.end(), 0.0);
+          auto &log = m.log.per_thread[range];
+          log.clear();
+          const auto [w_begin, w_end] = share(n_wall, range, m.n_threads);
+          for (std::size_t w_i = w_begin; w_i < w_end; ++w_i)
             {
-              const Wall   &w   = walls[m.candidate_wall[k]];
-              const auto   &tri = w.mesh.triangles[m.candidate_triangle[k]];
-              const double *V   = w.current.data();
-              const auto    cp  = closest_point_on_triangle(q, V + 3 * tri[0], V + 3 * tri[1], V + 3 * tri[2]);
-              const double  dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
-              const double  d2 = dx * dx + dy * dy + dz * dz;
-              if (d2 < ri * ri && d2 > 0)
-                {
-                  int slot = n_hits < max_hits ? n_hits++ : -1;
-                  if (slot < 0) // full (never seen in practice): replace the farthest hit
-                    {
-                      slot = 0;
-                      for (int q = 1; q < max_hits; ++q)
-                        if (hits[q].d2 > hits[slot].d2)
-                          slot = q;
-                      if (hits[slot].d2 <= d2)
-                        continue;
-                    }
-                  Hit &h = hits[slot];
-                  h.wall = m.candidate_wall[k], h.tri = m.candidate_triangle[k], h.feature = cp.feature;
-                  h.p[0] = cp.p[0], h.p[1] = cp.p[1], h.p[2] = cp.p[2], h.d2 = d2;
-                }
-            }
-          for (int s = 0; s < K; ++s)
-            m.hist_used[K * i + s] = 0;
-          if (n_hits > 0)
-            {
-              // One contact per touching region of a wall. The closest point on a triangle
-              // is a real contact only if it is a local minimum of the distance over the whole
-              // surface: a point on an edge (vertex) is dropped when a triangle that shares that
-              // edge (vertex) is at least as close, and a point already accepted from a
-              // neighbouring triangle (an edge or vertex seen from both sides) is not counted
-              // again. Round-off ties (a centre above a shared edge) are broken consistently.
-              auto rank = [](Feature f) { return f == face ? 0 : f <= edge20 ? 1 : 2; };
-              std::sort(hits, hits + n_hits, [&](const Hit &a, const Hit &b) {
-                if (a.wall != b.wall) return a.wall < b.wall;
-                if (a.d2 != b.d2) return a.d2 < b.d2;
-                if (rank(a.feature) != rank(b.feature)) return rank(a.feature) < rank(b.feature);
-                return a.tri < b.tri;
-              });
-              int n_acc = 0;
-              for (int h = 0; h < n_hits; ++h)
-                {
-                  const auto   &tris = walls[hits[h].wall].mesh.triangles;
-                  const auto   &t    = tris[hits[h].tri];
-                  const Feature f    = hits[h].feature;
-                  bool          keep = true;
-                  // the same point (within 1e-6 R) as an accepted contact of this wall
-                  for (int a = 0; a < n_acc && keep; ++a)
-                    {
-                      const Hit   &acc = hits[accepted[a]];
-                      const double dx = acc.p[0] - hits[h].p[0], dy = acc.p[1] - hits[h].p[1],
-                                   dz = acc.p[2] - hits[h].p[2];
-                      keep = acc.wall != hits[h].wall || dx * dx + dy * dy + dz * dz >= 1e-12 * ri * ri;
-                    }
-                  // an edge (vertex) point with a triangle sharing that edge (vertex) at least as
-                  // close; ties go to faces, then to the hit sorted first
-                  if (keep && f != face)
-                    for (int o = 0; o < n_hits && keep; ++o)
-                      {
-                        if (o == h || hits[o].wall != hits[h].wall || !(hits[o].d2 <= hits[h].d2 * (1 + 1e-9)))
-                          continue;
-                        if (hits[o].feature != face && o > h)
-                          continue;
-                        const auto &to = tris[hits[o].tri];
-                        if (f <= edge20)
-                          keep = !(triangle_has(to, t[f - 1]) && triangle_has(to, t[f % 3]));
-                        else
-                          keep = !triangle_has(to, t[f - vertex0]);
-                      }
-                  if (keep)
-                    accepted[n_acc++] = h;
-                }
+              const std::size_t i  = m.wall_particles[w_i];
+              double            fx = P.fx[i], fy = P.fy[i], fz = P.fz[i];
+              double            tx = 0, ty = 0, tz = 0, rolling = 0;
+              if (rotation)
+                tx = P.tx[i], ty = P.ty[i], tz = P.tz[i], rolling = P.rolling[i];
 
-              for (int a = 0; a < n_acc; ++a)
+              const double q[3] = {P.x[i], P.y[i], P.z[i]};
+              const double ri   = P.radius[i];
+              int          n_hits = 0;
+              for (std::size_t k = m.wall_offsets[i]; k < m.wall_offsets[i + 1]; ++k)
                 {
-                  const Hit  &h    = hits[accepted[a]];
-                  Wall       &wall = walls[h.wall];
-                  const double d   = std::sqrt(h.d2);
-                  const double nv[3] = {(q[0] - h.p[0]) / d, (q[1] - h.p[1]) / d, (q[2] - h.p[2]) / d};
-                  const double overlap = ri - d;
-                  const Vec3   vw = wall.velocity_at(Vec3(h.p[0], h.p[1], h.p[2]));
-                  double vrel[3] = {P.vx[i] - vw[0], P.vy[i] - vw[1], P.vz[i] - vw[2]};
-                  if (rotation)
+                  const Wall   &w   = walls[m.candidate_wall[k]];
+                  const auto   &tri = w.mesh.triangles[m.candidate_triangle[k]];
+                  const double *V   = w.current.data();
+                  const auto    cp  = closest_point_on_triangle(q, V + 3 * tri[0], V + 3 * tri[1], V + 3 * tri[2]);
+                  const double  dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
+                  const double  d2 = dx * dx + dy * dy + dz * dz;
+                  if (d2 < ri * ri && d2 > 0)
                     {
-                      // w x (-r n)
-                      vrel[0] -= ri * (P.wy[i] * nv[2] - P.wz[i] * nv[1]);
-                      vrel[1] -= ri * (P.wz[i] * nv[0] - P.wx[i] * nv[2]);
-                      vrel[2] -= ri * (P.wx[i] * nv[1] - P.wy[i] * nv[0]);
-                    }
-                  // contact history: same wall and the same or an adjacent triangle
-                  int slot = -1, free_slot = -1;
-                  for (int s = 0; s < K; ++s)
-                    {
-                      const int ws = m.hist_wall[K * i + s];
-                      if (ws < 0)
+                      int slot = n_hits < max_hits ? n_hits++ : -1;
+                      if (slot < 0) // full (never seen in practice): replace the farthest hit
                         {
-                          if (free_slot < 0) free_slot = s;
-                          continue;
+                          slot = 0;
+                          for (int q = 1; q < max_hits; ++q)
+                            if (hits[q].d2 > hits[slot].d2)
+                              slot = q;
+                          if (hits[slot].d2 <= d2)
+                            continue;
                         }
-                      if (ws == h.wall && !m.hist_used[K * i + s] &&
-                          (m.hist_tri[K * i + s] == h.tri ||
-                           triangles_share_vertex(wall.mesh.triangles[m.hist_tri[K * i + s]],
-                                                  wall.mesh.triangles[h.tri])))
-                        {
-                          slot = s;
-                          break;
-                        }
+                      Hit &h = hits[slot];
+                      h.wall = m.candidate_wall[k], h.tri = m.candidate_triangle[k], h.feature = cp.feature;
+                      h.p[0] = cp.p[0], h.p[1] = cp.p[1], h.p[2] = cp.p[2], h.d2 = d2;
                     }
-                  double  scratch[3] = {0, 0, 0};
-                  double *shear      = scratch;
-                  if (slot < 0 && free_slot >= 0)
+                }
+              for (int s = 0; s < K; ++s)
+                m.hist_used[K * i + s] = 0;
+              if (n_hits > 0)
+                {
+                  // One contact per touching region of a wall. The closest point on a triangle
+                  // is a real contact only if it is a local minimum of the distance over the whole
+                  // surface: a point on an edge (vertex) is dropped when a triangle that shares that
+                  // edge (vertex) is at least as close, and a point already accepted from a
+                  // neighbouring triangle (an edge or vertex seen from both sides) is not counted
+                  // again. Round-off ties (a centre above a shared edge) are broken consistently.
+                  auto rank = [](Feature f) { return f == face ? 0 : f <= edge20 ? 1 : 2; };
+                  std::sort(hits, hits + n_hits, [&](const Hit &a, const Hit &b) {
+                    if (a.wall != b.wall) return a.wall < b.wall;
+                    if (a.d2 != b.d2) return a.d2 < b.d2;
+                    if (rank(a.feature) != rank(b.feature)) return rank(a.feature) < rank(b.feature);
+                    return a.tri < b.tri;
+                  });
+                  int n_acc = 0;
+                  for (int h = 0; h < n_hits; ++h)
                     {
-                      slot = free_slot;
-                      m.hist_wall[K * i + slot] = h.wall;
+                      const auto   &tris = walls[hits[h].wall].mesh.triangles;
+                      const auto   &t    = tris[hits[h].tri];
+                      const Feature f    = hits[h].feature;
+                      bool          keep = true;
+                      // the same point (within 1e-6 R) as an accepted contact of this wall
+                      for (int a = 0; a < n_acc && keep; ++a)
+                        {
+                          const Hit   &acc = hits[accepted[a]];
+                          const double dx = acc.p[0] - hits[h].p[0], dy = acc.p[1] - hits[h].p[1],
+                                       dz = acc.p[2] - hits[h].p[2];
+                          keep = acc.wall != hits[h].wall || dx * dx + dy * dy + dz * dz >= 1e-12 * ri * ri;
+                        }
+                      // an edge (vertex) point with a triangle sharing that edge (vertex) at least as
+                      // close; ties go to faces, then to the hit sorted first
+                      if (keep && f != face)
+                        for (int o = 0; o < n_hits && keep; ++o)
+                          {
+                            if (o == h || hits[o].wall != hits[h].wall || !(hits[o].d2 <= hits[h].d2 * (1 + 1e-9)))
+                              continue;
+                            if (hits[o].feature != face && o > h)
+                              continue;
+                            const auto &to = tris[hits[o].tri];
+                            if (f <= edge20)
+                              keep = !(triangle_has(to, t[f - 1]) && triangle_has(to, t[f % 3]));
+                            else
+                              keep = !triangle_has(to, t[f - vertex0]);
+                          }
+                      if (keep)
+                        accepted[n_acc++] = h;
+                    }
+
+                  for (int a = 0; a < n_acc; ++a)
+                    {
+                      const Hit  &h    = hits[accepted[a]];
+                      Wall       &wall = walls[h.wall];
+                      const double d   = std::sqrt(h.d2);
+                      const double nv[3] = {(q[0] - h.p[0]) / d, (q[1] - h.p[1]) / d, (q[2] - h.p[2]) / d};
+                      const double overlap = ri - d;
+                      const Vec3   vw = wall.velocity_at(Vec3(h.p[0], h.p[1], h.p[2]));
+                      double vrel[3] = {P.vx[i] - vw[0], P.vy[i] - vw[1], P.vz[i] - vw[2]};
+                      if (rotation)
+                        {
+                          // w x (-r n)
+                          vrel[0] -= ri * (P.wy[i] * nv[2] - P.wz[i] * nv[1]);
+                          vrel[1] -= ri * (P.wz[i] * nv[0] - P.wx[i] * nv[2]);
+                          vrel[2] -= ri * (P.wx[i] * nv[1] - P.wy[i] * nv[0]);
+                        }
+                      // contact history: same wall and the same or an adjacent triangle
+                      int slot = -1, free_slot = -1;
+                      for (int s = 0; s < K; ++s)
+                        {
+                          const int ws = m.hist_wall[K * i + s];
+                          if (ws < 0)
+                            {
+                              if (free_slot < 0) free_slot = s;
+                              continue;
+                            }
+                          if (ws == h.wall && !m.hist_used[K * i + s] &&
+                              (m.hist_tri[K * i + s] == h.tri ||
+                               triangles_share_vertex(wall.mesh.triangles[m.hist_tri[K * i + s]],
+                                                      wall.mesh.triangles[h.tri])))
+                            {
+                              slot = s;
+                              break;
+                            }
+                        }
+                      double  scratch[3] = {0, 0, 0};
+                      double *shear      = scratch;
+                      if (slot < 0 && free_slot >= 0)
+                        {
+                          slot = free_slot;
+                          m.hist_wall[K * i + slot] = h.wall;
+                          for (int dd = 0; dd < 3; ++dd)
+                            m.hist_shear[3 * (K * i + slot) + dd] = 0;
+                        }
+                      if (slot >= 0)
+                        {
+                          m.hist_tri[K * i + slot]  = h.tri;
+                          m.hist_used[K * i + slot] = 1;
+                          shear = &m.hist_shear[3 * (K * i + slot)];
+                        }
+                      const PairCoefficients &c = coefficients[P.material[i] * nm + wall.material];
+                      const ContactForce f = hertz_mindlin(nv, overlap, ri, P.mass[i], vrel, c, dt, shear);
+                      const double F[3] = {f.normal * nv[0] + f.ft[0], f.normal * nv[1] + f.ft[1],
+                                           f.normal * nv[2] + f.ft[2]};
+                      fx += F[0], fy += F[1], fz += F[2];
+                      if (rotation)
+                        {
+                          tx -= ri * (nv[1] * f.ft[2] - nv[2] * f.ft[1]);
+                          ty -= ri * (nv[2] * f.ft[0] - nv[0] * f.ft[2]);
+                          tz -= ri * (nv[0] * f.ft[1] - nv[1] * f.ft[0]);
+                          rolling += c.rolling_friction * std::abs(f.normal) * ri;
+                        }
+                      // load on the wall: -F at the contact point, torque about the wall centre
+                      const Vec3 arm = Vec3(h.p[0], h.p[1], h.p[2]) - wall.current_centre();
+                      double    *L   = &loads[6 * h.wall];
+                      L[0] -= F[0], L[1] -= F[1], L[2] -= F[2];
+                      L[3] -= arm[1] * F[2] - arm[2] * F[1];
+                      L[4] -= arm[2] * F[0] - arm[0] * F[2];
+                      L[5] -= arm[0] * F[1] - arm[1] * F[0];
+
+                      WallContactRecord &r = log.emplace_back(); // filled in place
+                      r.wall = h.wall, r.triangle = h.tri, r.feature = h.feature;
+                      r.particle = static_cast<int>(i), r.particle_id = P.id[i];
                       for (int dd = 0; dd < 3; ++dd)
-                        m.hist_shear[3 * (K * i + slot) + dd] = 0;
+                        {
+                          r.point[dd] = h.p[dd], r.normal[dd] = nv[dd];
+                          r.tangential_force[dd] = f.ft[dd], r.tangential_velocity[dd] = f.vt[dd];
+                        }
+                      r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
+                      r.centre_velocity[0] = P.vx[i] - vw[0], r.centre_velocity[1] = P.vy[i] - vw[1],
+                      r.centre_velocity[2] = P.vz[i] - vw[2];
+                      if (overlap / ri > my_worst)
+                        my_worst = overlap / ri, my_i = i;
                     }
-                  if (slot >= 0)
-                    {
-                      m.hist_tri[K * i + slot]  = h.tri;
-                      m.hist_used[K * i + slot] = 1;
-                      shear = &m.hist_shear[3 * (K * i + slot)];
-                    }
-                  const PairCoefficients &c = coefficients[P.material[i] * nm + wall.material];
-                  const ContactForce f = hertz_mindlin(nv, overlap, ri, P.mass[i], vrel, c, dt, shear);
-                  const double F[3] = {f.normal * nv[0] + f.ft[0], f.normal * nv[1] + f.ft[1],
-                                       f.normal * nv[2] + f.ft[2]};
-                  fx += F[0], fy += F[1], fz += F[2];
-                  if (rotation)
-                    {
-                      tx -= ri * (nv[1] * f.ft[2] - nv[2] * f.ft[1]);
-                      ty -= ri * (nv[2] * f.ft[0] - nv[0] * f.ft[2]);
-                      tz -= ri * (nv[0] * f.ft[1] - nv[1] * f.ft[0]);
-                      rolling += c.rolling_friction * std::abs(f.normal) * ri;
-                    }
-                  // load on the wall: -F at the contact point, torque about the wall centre
-                  const Vec3 arm = Vec3(h.p[0], h.p[1], h.p[2]) - wall.current_centre();
-                  double    *L   = &loads[6 * h.wall];
-                  L[0] -= F[0], L[1] -= F[1], L[2] -= F[2];
-                  L[3] -= arm[1] * F[2] - arm[2] * F[1];
-                  L[4] -= arm[2] * F[0] - arm[0] * F[2];
-                  L[5] -= arm[0] * F[1] - arm[1] * F[0];
-
-                  WallContactRecord &r = log.emplace_back(); // filled in place
-                  r.wall = h.wall, r.triangle = h.tri, r.feature = h.feature;
-                  r.particle = static_cast<int>(i), r.particle_id = P.id[i];
-                  for (int dd = 0; dd < 3; ++dd)
-                    {
-                      r.point[dd] = h.p[dd], r.normal[dd] = nv[dd];
-                      r.tangential_force[dd] = f.ft[dd], r.tangential_velocity[dd] = f.vt[dd];
-                    }
-                  r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
-                  r.centre_velocity[0] = P.vx[i] - vw[0], r.centre_velocity[1] = P.vy[i] - vw[1],
-                  r.centre_velocity[2] = P.vz[i] - vw[2];
-                  if (overlap / ri > my_worst)
-                    my_worst = overlap / ri, my_i = i;
                 }
-            }
-          // forget the histories of wall contacts that ended
-          for (int s = 0; s < K; ++s)
-            if (!m.hist_used[K * i + s])
-              m.hist_wall[K * i + s] = -1;
+              // forget the histories of wall contacts that ended
+              for (int s = 0; s < K; ++s)
+                if (!m.hist_used[K * i + s])
+                  m.hist_wall[K * i + s] = -1;
 
-          P.fx[i] = fx, P.fy[i] = fy, P.fz[i] = fz;
-          if (rotation)
-            P.tx[i] = tx, P.ty[i] = ty, P.tz[i] = tz, P.rolling[i] = rolling;
+              P.fx[i] = fx, P.fy[i] = fy, P.fz[i] = fz;
+              if (rotation)
+                P.tx[i] = tx, P.ty[i] = ty, P.tz[i] = tz, P.rolling[i] = rolling;
+            }
         }
 #pragma omp critical
-      if (my_worst > worst)
+      if (my_worst > worst || (my_worst == worst && my_i >= 0 && my_i < worst_i))
         worst = my_worst, worst_i = my_i;
     }
     if (worst > m.worst_overlap_ratio)
@@ -680,9 +690,9 @@ namespace abrade::dem
     double max_d2 = 0;
     long   bad    = std::numeric_limits<long>::max();
     if (any_rotation)
-      kick_and_drift<true>(P, m.x0.data(), m.y0.data(), m.z0.data(), dmin, dmax, h, dt, m.n_threads, max_d2, bad);
+      kick_and_drift<true>(P, m.x0.data(), m.y0.data(), m.z0.data(), dmin, dmax, h, dt, m.team(), max_d2, bad);
     else
-      kick_and_drift<false>(P, m.x0.data(), m.y0.data(), m.z0.data(), dmin, dmax, h, dt, m.n_threads, max_d2, bad);
+      kick_and_drift<false>(P, m.x0.data(), m.y0.data(), m.z0.data(), dmin, dmax, h, dt, m.team(), max_d2, bad);
     for (auto &w : walls)
       w.advance(dt);
     t += dt;
@@ -724,9 +734,9 @@ namespace abrade::dem
     // second half kick
     const std::size_t n2 = P.size();
     if (any_rotation)
-      half_kick<true>(P, h, m.n_threads);
+      half_kick<true>(P, h, m.team());
     else
-      half_kick<false>(P, h, m.n_threads);
+      half_kick<false>(P, h, m.team());
     accelerate_walls(dt);
 
     // built-in per-triangle impulses, then the plug-ins
@@ -741,7 +751,12 @@ namespace abrade::dem
       hook->after_step(*this, m.log);
     check_step();
 
-    stats.loop_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.loop_seconds += seconds;
+    stats.thread_steps += m.team();
+    const long kept_before = m.governor.changes();
+    m.governor.record_step(seconds);
+    stats.team_changes += m.governor.changes() - kept_before;
     stats.particle_steps += static_cast<long>(n2);
     stats.ghost_steps += static_cast<long>(P.n_ghost);
   }

@@ -6,6 +6,7 @@
 #include <abrade/dem/decomposition.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/dem/simulation.h>
+#include <abrade/dem/thread_governor.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -15,7 +16,13 @@ namespace abrade::dem
 {
   struct Simulation::Impl
   {
+    /// The shares each step's work is cut into (Settings::threads): they, not the number of
+    /// threads working on them, fix the arithmetic (partitions, buffers, summation order).
     int n_threads = 1;
+    /// How many threads work on the shares now (thread_governor.h); a share s is worked by
+    /// thread s % team.
+    ThreadGovernor governor;
+    int            team() const { return governor.team(); }
 
     // the ranks and who owns which part of space
     Parallel      parallel;
@@ -61,7 +68,7 @@ namespace abrade::dem
       hist_used.resize(K * n, 0);
     }
 
-    // per-thread ranges of the pair loop, balanced by pair count (deterministic, unlike a
+    // per-share ranges of the pair loop, balanced by pair count (deterministic, unlike a
     // dynamic schedule)
     std::vector<std::size_t> thread_begin;
 
@@ -98,9 +105,10 @@ namespace abrade::dem
     std::vector<std::vector<double>> send_buffer;
     std::vector<double>              receive_buffer;
 
-    // per-thread force buffers (thread 0 writes to the particle arrays) and wall loads
-    std::vector<std::vector<double>> buffers;    // 7 n_local per thread >= 1 (force, torque, rolling)
-    std::vector<std::vector<double>> wall_loads; // 6 per wall per thread
+    // per-share force buffers (share 0 writes to the particle arrays), wall loads and wall
+    // contacts (ContactLog::per_thread holds one list per share)
+    std::vector<std::vector<double>> buffers;    // 7 n_local per share >= 1 (force, torque, rolling)
+    std::vector<std::vector<double>> wall_loads; // 6 per wall per share
     ContactLog                       log;
 
     // problems found during a step

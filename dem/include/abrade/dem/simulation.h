@@ -12,7 +12,9 @@
 // (gravity, particle-particle, particle-wall Hertz-Mindlin), half kick, rigid-body walls, hooks,
 // checks. Neighbours come from a cell list with a Verlet skin, rebuilt when any particle (or
 // wall) has moved far enough to bring a new pair into contact; particles are sorted by cell at
-// each rebuild. Threads (OpenMP) work over particles; pair forces go to per-thread buffers.
+// each rebuild. Threads (OpenMP) work over particles; the work is cut into a fixed number of
+// shares with a force buffer each, so the results do not depend on how many threads work on the
+// shares; on a busy machine fewer of them may (thread_governor.h).
 //
 // Under `mpirun -np N` the particles are spread over the ranks by recursive coordinate bisection
 // (decomposition.h): each rank integrates the particles it owns and keeps ghost copies of the
@@ -46,6 +48,9 @@ namespace abrade::dem
     double skin = 0;                ///< Verlet skin [m]; 0: 0.2 x smallest radius
     DampingModel damping = DampingModel::edem;
     int    threads = 0;             ///< 0: all available
+    /// Work with fewer of the threads while that is faster (a busy machine; thread_governor.h).
+    /// The results do not depend on it: the work is cut into `threads` shares either way.
+    bool   adapt_threads = true;
     /// Particles outside this box are lost.
     Vec3   domain_min = Vec3::Constant(-1e3), domain_max = Vec3::Constant(1e3);
     /// Overlap beyond this fraction of the smaller radius is reported.
@@ -67,6 +72,8 @@ namespace abrade::dem
     long   ghost_steps = 0;              ///< sum over steps of this rank's ghost count
     double loop_seconds = 0;
     long   particle_steps = 0;
+    long   thread_steps = 0; ///< sum over steps of the threads that worked on them
+    long   team_changes = 0; ///< times the governor kept a different number of threads
   };
 
   /// Threads used when Settings::threads is 0: what OpenMP offered when the program started.
@@ -135,6 +142,10 @@ namespace abrade::dem
     const std::vector<Material> &materials() const { return mats; }
     const PairCoefficients &pair(int a, int b) const { return coefficients[a * mats.size() + b]; }
     const StepStatistics &statistics() const { return stats; }
+    /// The threads each step's work is cut into (Settings::threads, or the default).
+    int threads() const;
+    /// Works with @p team of threads() from now on, without adapting (tests, benchmarks).
+    void pin_thread_team(int team);
     const Settings       &settings() const { return config; }
     /// Messages (warnings) collected so far; the caller decides where they are printed.
     std::vector<std::string> take_warnings();

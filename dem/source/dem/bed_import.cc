@@ -1,0 +1,204 @@
+#include <abrade/common/csv_reader.h>
+#include <abrade/common/error.h>
+#include <abrade/common/file_extension.h>
+#include <abrade/common/finite_number.h>
+#include <abrade/dem/bed_import.h>
+#include <abrade/dem/simulation.h>
+#include "bed_columns.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+namespace abrade::dem
+{
+  namespace
+  {
+    std::string lower(std::string s)
+    {
+      std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+      return s;
+    }
+
+    /// The bed's columns from named columns: @p column(name) is the index of a column (-1:
+    /// none), @p value(row, index) the number in a cell (InputError naming it when not one).
+    /// Which names are read, and the scale of a diameter, is decided here once for both formats.
+    struct ColumnMap
+    {
+      int position[3] = {-1, -1, -1}, size = -1, id = -1, velocity[3] = {-1, -1, -1}, spin[3] = {-1, -1, -1};
+      double size_to_radius = 1;
+
+      ColumnMap(const std::string &path, const std::function<int(const std::string &)> &column,
+                const std::string &what)
+      {
+        const char *axes[3] = {"x", "y", "z"};
+        for (int d = 0; d < 3; ++d)
+          {
+            position[d] = column(axes[d]) >= 0 ? column(axes[d]) : column(std::string(axes[d]) + "u");
+            velocity[d] = column(std::string("v") + axes[d]);
+            spin[d]     = column(std::string("w") + axes[d]) >= 0 ? column(std::string("w") + axes[d])
+                                                                   : column(std::string("omega") + axes[d]);
+            if (position[d] < 0)
+              throw InputError(path, what + " has no column '" + axes[d] + "'" +
+                                       (column(std::string(axes[d]) + "s") >= 0
+                                          ? " (scaled coordinates '" + std::string(axes[d]) + "s': dump x y z instead)"
+                                          : std::string()));
+          }
+        size = column("radius");
+        if (size < 0 && (size = column("diameter")) >= 0)
+          size_to_radius = 0.5;
+        if (size < 0)
+          throw InputError(path, what + " has neither a 'radius' nor a 'diameter' column");
+        id = column("id");
+      }
+
+      /// Row @p k of the bed from the cells @p cell (index -> number); @p where names the row.
+      void fill(BedColumns &bed, std::size_t k, const std::function<double(int)> &cell, const std::string &where,
+                double density, int material) const
+      {
+        bed.x[k] = cell(position[0]), bed.y[k] = cell(position[1]), bed.z[k] = cell(position[2]);
+        bed.radius[k] = size_to_radius * cell(size);
+        double *v[3] = {&bed.vx[k], &bed.vy[k], &bed.vz[k]}, *w[3] = {&bed.wx[k], &bed.wy[k], &bed.wz[k]};
+        for (int d = 0; d < 3; ++d)
+          {
+            *v[d] = velocity[d] >= 0 ? cell(velocity[d]) : 0.0;
+            *w[d] = spin[d] >= 0 ? cell(spin[d]) : 0.0;
+          }
+        const double id_value = id >= 0 ? cell(id) : double(k);
+        if (id_value != std::floor(id_value) || std::abs(id_value) > 9e15)
+          throw InputError(where, "the id " + std::to_string(id_value) + " is not a whole number");
+        bed.id[k]       = std::int64_t(id_value);
+        bed.material[k] = material;
+        const double r  = bed.radius[k];
+        bed.mass[k]     = density * 4.0 / 3.0 * M_PI * r * r * r;
+      }
+    };
+
+    double number(const std::string &path, long line, const std::string &word, const std::string &column)
+    {
+      const auto x = io::finite_number(word);
+      if (!x)
+        throw InputError(path + ":" + std::to_string(line),
+                         "'" + word + "' in column '" + column + "' is not a finite number");
+      return *x;
+    }
+
+    ImportedBed import_csv(BedColumns &bed, std::vector<long> &lines, const std::string &path, double density,
+                           int material)
+    {
+      const io::CsvTable t = io::read_csv(path);
+      std::vector<std::string> names;
+      for (const auto &h : t.header)
+        names.push_back(lower(h));
+      const ColumnMap map(path, [&](const std::string &n) {
+        const auto it = std::find(names.begin(), names.end(), n);
+        return it == names.end() ? -1 : int(it - names.begin());
+      }, "the table");
+      bed.resize(t.rows.size());
+      lines = t.line;
+      for (std::size_t k = 0; k < t.rows.size(); ++k)
+        map.fill(bed, k, [&](int c) { return number(path, t.line[k], t.rows[k][c], t.header[c]); },
+                 path + ":" + std::to_string(t.line[k]), density, material);
+      return {bed.size(), "CSV table", -1};
+    }
+
+    ImportedBed import_dump(BedColumns &bed, std::vector<long> &lines, const std::string &path, double density,
+                            int material)
+    {
+      std::ifstream in(path);
+      if (!in)
+        throw InputError(path, "cannot open the bed to import");
+      std::string line;
+      long        no = 0;
+      auto        next = [&](const std::string &wanted) {
+        if (!std::getline(in, line))
+          throw InputError(path + ":" + std::to_string(no + 1), "the dump ends where " + wanted + " should follow (cut short?)");
+        ++no;
+        if (!line.empty() && line.back() == '\r')
+          line.pop_back();
+        return line;
+      };
+      auto whole = [&](const std::string &word, const std::string &what) {
+        const auto x = io::finite_number(word);
+        if (!x || *x != std::floor(*x) || *x < 0 || *x > 1e12)
+          throw InputError(path + ":" + std::to_string(no), "'" + word + "' is not a " + what);
+        return long(*x);
+      };
+      ImportedBed result{0, "LIGGGHTS/LAMMPS dump", -1};
+      bool        any = false;
+      while (std::getline(in, line))
+        {
+          ++no;
+          if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+          if (line.find_first_not_of(" \t") == std::string::npos)
+            continue;
+          if (line.rfind("ITEM: TIMESTEP", 0) != 0)
+            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: TIMESTEP' (a LIGGGHTS/LAMMPS text dump), "
+                                                               "found '" + line.substr(0, 40) + "'");
+          result.timestep = whole(next("the timestep"), "timestep");
+          if (next("ITEM: NUMBER OF ATOMS").rfind("ITEM: NUMBER OF ATOMS", 0) != 0)
+            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: NUMBER OF ATOMS'");
+          const long n = whole(next("the number of atoms"), "number of atoms");
+          if (next("ITEM: BOX BOUNDS").rfind("ITEM: BOX BOUNDS", 0) != 0)
+            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: BOX BOUNDS'");
+          for (int d = 0; d < 3; ++d)
+            next("the box bounds");
+          const std::string atoms = next("ITEM: ATOMS");
+          if (atoms.rfind("ITEM: ATOMS", 0) != 0)
+            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: ATOMS' and the column names");
+          std::istringstream       header(atoms.substr(11));
+          std::vector<std::string> names;
+          for (std::string w; header >> w;)
+            names.push_back(lower(w));
+          const long      header_line = no;
+          const ColumnMap map(path + ":" + std::to_string(header_line), [&](const std::string &c) {
+            const auto it = std::find(names.begin(), names.end(), c);
+            return it == names.end() ? -1 : int(it - names.begin());
+          }, "the dump's ITEM: ATOMS line");
+          bed.resize(std::size_t(n));
+          lines.assign(std::size_t(n), 0);
+          for (long k = 0; k < n; ++k)
+            {
+              next("atom " + std::to_string(k + 1) + " of " + std::to_string(n));
+              lines[std::size_t(k)] = no;
+              std::istringstream       row(line);
+              std::vector<std::string> cells;
+              for (std::string w; row >> w;)
+                cells.push_back(w);
+              if (cells.size() != names.size())
+                throw InputError(path + ":" + std::to_string(no), std::to_string(cells.size()) + " values where the "
+                                 "ITEM: ATOMS line names " + std::to_string(names.size()));
+              map.fill(bed, std::size_t(k), [&](int c) { return number(path, no, cells[c], names[c]); },
+                       path + ":" + std::to_string(no), density, material);
+            }
+          any = true;
+        }
+      if (!any)
+        throw InputError(path, "the dump holds no snapshot");
+      result.particles = bed.size();
+      return result;
+    }
+  } // namespace
+
+  bool is_imported_bed(const std::string &path)
+  {
+    const std::string e = io::lower_extension(path);
+    return e == ".csv" || e == ".dump" || e == ".lammpstrj" || e == ".liggghts";
+  }
+
+  ImportedBed import_bed(Simulation &sim, const std::string &path, int material)
+  {
+    const double density = sim.materials().at(material).density;
+    BedColumns        bed;
+    std::vector<long> lines; // of each particle in the file
+    const ImportedBed result = io::lower_extension(path) == ".csv" ? import_csv(bed, lines, path, density, material)
+                                                                   : import_dump(bed, lines, path, density, material);
+    replace_particles(sim, path, bed, [&](std::size_t k) {
+      return "the particle on line " + std::to_string(lines[k]) + " (id " + std::to_string(bed.id[k]) + ")";
+    });
+    return result;
+  }
+} // namespace abrade::dem
