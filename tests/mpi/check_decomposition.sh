@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Decomposition independence of the DEM under MPI, on the knife-bed case (10,000 pellets, the
+# Decomposition independence of the DEM under MPI, on the knife-bed case (10,496 pellets, the
 # knife entering the bed and travelling through it) from one settled bed:
 #  - 1, 2 and 3 ranks give the same knife wear per phase (relative 1e-6) and the same knife
 #    force history (relative 1e-4) over the first 0.2 s of the penetration (1,750 steps; the
@@ -28,7 +28,7 @@ sep=$', \n' # numdiff: compare CSV fields one by one
 value() { python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['results']; print(eval(sys.argv[2]))" "$1" "$2"; }
 for run in np1 np2 np3; do
   s=$out/$run/summary.json
-  [[ $(value "$s" "r['particles']") == 10000 ]] || { echo "$run: particles lost"; exit 1; }
+  [[ $(value "$s" "r['particles']") == 10496 ]] || { echo "$run: particles lost"; exit 1; }
   [[ $(value "$s" "r.get('ranks', 1)") == "${run#np}" ]] || { echo "$run: wrong number of ranks"; exit 1; }
 done
 for run in np2 np3; do

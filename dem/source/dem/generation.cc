@@ -158,11 +158,11 @@ namespace abrade::dem
     };
 
     // Near saturation random positions almost never fit (the free volume is a few per cent of
-    // the box), and plain addition stalls well below the packing LIGGGHTS' insert/pack reaches
-    // (10,150 against 10,496 pellets in the knife-bed region). Then the placement sweeps the
-    // box instead: the grid cells in a random order, in each a 4 x 4 x 4 set of points with a
-    // random offset each, every point that fits taken. Passes repeat with new offsets until one
-    // places nothing. Both stages draw from the seed: the same bed every time.
+    // the box): in the knife-bed's fill box random draws stall at 11,193 pellets of 27.5 mm.
+    // Then the placement sweeps the box instead: the grid cells in a random order, in each a
+    // 4 x 4 x 4 set of points with a random offset each, every point that fits taken. Passes
+    // repeat with new offsets until one places nothing (12,417 in that box, a solid fraction of
+    // 0.35). Both stages draw from the seed: the same bed every time.
     struct Sweep
     {
       bool              on = false;

@@ -1,9 +1,10 @@
 #pragma once
 // Filling a region with particles, reproducibly from a seed, by random sequential addition:
 // each particle goes to a uniformly random position (in a box, optionally inside a closed mesh,
-// clear of the walls) that overlaps no particle placed before it. A lattice would be quicker but
-// leaves non-rotating frictional spheres stacked in rigid columns; random placement reaches a
-// solid fraction of about 0.35. A pour-and-settle run then packs them (Simulation::settle).
+// clear of the walls) that overlaps no particle placed before it, as LIGGGHTS' insert/pack
+// does; when random draws stall, a sweep of the free space places the rest (a solid fraction of
+// up to about 0.35 of a box). A lattice would be quicker but leaves non-rotating frictional
+// spheres stacked in rigid columns. A pour-and-settle run then packs them (Simulation::settle).
 #include <abrade/dem/triangle_mesh.h>
 
 #include <cstdint>
