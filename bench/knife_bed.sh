@@ -25,7 +25,7 @@
 #   bench/knife_bed.sh --busy 1 --threads "1 2 2fixed" --ranks 1
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-abrade=$root/build/abrade
+abrade=${ABRADE:-$root/build/abrade} # (ABRADE: another build, e.g. a copy taken before rebuilding)
 edge=0 threads="1 2" ranks="2" out="" repeat=3 busy=0
 while (($#)); do
   case $1 in

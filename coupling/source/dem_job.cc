@@ -223,6 +223,7 @@ namespace abrade::coupling
         const double mean_threads = sim.parallel().sum(double(after.thread_steps - before.thread_steps) /
                                                        std::max(1.0, double(after.steps - before.steps))) /
                                     sim.parallel().size();
+        ph["centre_of_mass_z"] = sim.centre_of_mass_height();
         ph["threads"]      = static_cast<long>(sim.threads());
         ph["mean_threads"] = mean_threads;
         if (c.payload_height)

@@ -357,6 +357,16 @@ namespace abrade::dem
 
   double Simulation::mass_above(double z) const { return impl->parallel.sum(store.mass_above(z)); }
 
+  double Simulation::centre_of_mass_height() const
+  {
+    double mz = 0, m = 0;
+    for (std::size_t i = 0; i < store.size(); ++i)
+      mz += store.mass[i] * store.z[i], m += store.mass[i];
+    std::vector<double> sums{mz, m};
+    impl->parallel.sum(sums);
+    return sums[1] > 0 ? sums[0] / sums[1] : 0.0;
+  }
+
   double Simulation::largest_radius() const
   {
     double r = 0;

@@ -128,6 +128,8 @@ namespace abrade::dem
     std::size_t n_particles() const;
     /// Mass of all particles whose centre lies above @p z [kg] (a grab's payload).
     double mass_above(double z) const;
+    /// Height (z) of the particles' centre of mass [m] (0 without particles): how a bed packs.
+    double centre_of_mass_height() const;
     /// Radius of the largest particle on any rank [m] (0 without particles).
     double largest_radius() const;
     /// Particle-steps per second between two statistics: all ranks' particle-steps over the
