@@ -19,8 +19,8 @@ packages=(
   libopenmpi-dev openmpi-bin
   # tests
   libgtest-dev numdiff
-  # benchmarks: the peer code and the plots (matplotlib-free: gnuplot draws the PNGs)
-  liggghts python3 gnuplot-nox
+  # benchmarks: the peer codes and the plots (matplotlib-free: gnuplot draws the PNGs)
+  liggghts lammps python3 gnuplot-nox
 )
 
 missing=()
