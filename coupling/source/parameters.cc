@@ -342,7 +342,8 @@ namespace abrade::coupling
                       "Number of particles to generate; 0: use the solid fraction. Range: >= 0.");
     prm.declare_entry("Solid fraction", "0.35", Double(0, 0.5),
                       "[-] Particle volume over fill-region volume, used when Count = 0. "
-                      "Range: [0, 0.5] (the particles are placed on a lattice, then poured).");
+                      "Range: [0, 0.5]; random placement (then a sweep of the free space) reaches "
+                      "about 0.35 in a box, then the particles are poured.");
     prm.declare_entry("Seed", "1", Integer(0), "Random seed of the placement and sizes. Range: >= 0.");
     declare_vector(prm, "Initial velocity", "0, 0, -0.5", "[m/s] Velocity of the generated particles.");
     prm.leave_subsection();

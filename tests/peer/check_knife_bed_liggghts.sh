@@ -7,7 +7,9 @@
 # Until the pellets jam under the edge (step 2000 of 2327) the two runs follow one trajectory but
 # for the codes' differences: their mean knife force must agree within 0.3 %. After that the
 # trajectories part like any two chaotic ones (round-off grows tenfold every ~15 ms;
-# tests/mpi/check_decomposition.sh): the mean over the whole penetration within 5 %.
+# tests/mpi/check_decomposition.sh): the mean over those last steps within 10 %, over the whole
+# penetration within 5 %. (The dump holds no contact histories, and LIGGGHTS' insert/pack left a
+# pellet inside the knife: a 50 kN spike at the first step in both codes.)
 # And the packing: abrade's own bed of the case against LIGGGHTS' in count and height.
 #   check_knife_bed_liggghts.sh ABRADE CASE.prm LIGGGHTS_INPUT OUTDIR [KNIFE_FRICTION]
 set -euo pipefail
@@ -49,8 +51,12 @@ mean = lambda v: sum(v) / len(v)
 # before the pellets jam under the edge (steps 1-2000, t <= 0.229 s) the two trajectories are the
 # same but for the codes' differences (measured +0.11 %; a wall contact force 3 % too stiff gives
 # +0.57 %): 0.3 %; over the whole penetration the mean knife force: 5 %
-for label, n, tolerance in (("steps 1-2000 (before the jam)", 2000, 0.003), ("whole penetration", 2327, 0.05)):
-    a, l = mean(abrade[:n]), mean(liggghts[:n])
+# after the jam (steps 2001-2327, the deepest part, the largest forces) the runs part: measured
+# +7 %, bounded at 10 %
+for label, first, n, tolerance in (("steps 1-2000 (before the jam)", 0, 2000, 0.003),
+                                   ("steps 2001-2327 (after the jam)", 2000, 2327, 0.10),
+                                   ("whole penetration", 0, 2327, 0.05)):
+    a, l = mean(abrade[first:n]), mean(liggghts[first:n])
     good = l > 500 and abs(a / l - 1) < tolerance
     ok &= good
     print(f"  {label}: mean knife Fz abrade {a:.1f} N, LIGGGHTS {l:.1f} N, {100 * (a / l - 1):+.2f} % "
@@ -71,6 +77,8 @@ def tops_of_bed(path):
     z, r = (struct.unpack_from(f"<{n}d", b, 24 + 8 * n * k) for k in (2, 9))
     return sorted(a + c for a, c in zip(z, r))
 ours, theirs = tops_of_bed(f"{out}/abrade.bed"), tops_of_dump(f"{out}/liggghts/settled.dump")
+# (the count is the case's Count, set to what LIGGGHTS placed: compared only to catch a case and
+# an input that drift apart)
 good = len(ours) == len(theirs)
 print(f"packing: abrade's own bed {len(ours)} pellets, LIGGGHTS' {len(theirs)} {'OK' if good else 'FAIL'}")
 for q, tolerance in ((0.5, 0.01), (0.9, 0.02)):

@@ -500,4 +500,30 @@ TEST(Bed, ImportRefusesWhatItCannotRead)
   refused("short_row.dump", head + "ITEM: ATOMS id x y z radius\n1 0 0 0 0.01\n2 1 1 0.01\n", "short_row.dump:11");
   refused("nan.dump", head + "ITEM: ATOMS id x y z radius\n1 0 0 0 0.01\n2 1 nan 1 0.01\n", "not a finite number");
   refused("other.dump", "hello\n", "ITEM: TIMESTEP");
+  // a count the file cannot hold is refused before it is allocated (2e10 atoms: 2 TB)
+  refused("huge.dump", "ITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n20000000000\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\n"
+                       "ITEM: ATOMS id x y z radius\n1 0 0 0 0.01\n", "the rest of the file holds at most");
+  refused("coincident.csv", "x,y,z,radius\n0,0,0,0.01\n0.5,0,0,0.01\n0,0,0,0.01\n", "centres on one point");
+  refused("both.csv", "x,y,z,radius,diameter\n0,0,0,0.01,0.02\n", "both a 'radius' and a 'diameter'");
+  refused("case.csv", "x,y,z,X,radius\n0,0,0,0,0.01\n", "comes twice");
+}
+
+TEST(Bed, ImportReadsWhatLammpsAndSpreadsheetsWrite)
+{
+  // a LAMMPS dump with units and time items (dump_modify units yes time yes), a byte order
+  // mark, CRLF line ends; a CSV with a byte order mark before a comment line
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  std::ofstream(dir + "/abrade_lammps.dump")
+    << "\xEF\xBB\xBFITEM: UNITS\r\nsi\r\nITEM: TIME\r\n0.5\r\nITEM: TIMESTEP\r\n10000000000000\r\n"
+       "ITEM: NUMBER OF ATOMS\r\n2\r\nITEM: BOX BOUNDS ff ff ff\r\n0 1\r\n0 1\r\n0 1\r\n"
+       "ITEM: ATOMS id type xu yu zu diameter\r\n7 1 0.1 0.2 0.3 0.02\r\n9 1 0.5 0.2 0.3 0.04\r\n";
+  std::ofstream(dir + "/abrade_bom.csv") << "\xEF\xBB\xBF# exported\nx,y,z,radius\n0.1,0.2,0.3,0.01\n";
+  for (const std::string file : {"abrade_lammps.dump", "abrade_bom.csv"})
+    {
+      Simulation b(quiet_settings(5e-5));
+      b.add_material(pellet);
+      const ImportedBed r = import_bed(b, dir + "/" + file, 0);
+      ASSERT_EQ(r.particles, file.find("dump") != std::string::npos ? 2u : 1u) << file;
+      EXPECT_DOUBLE_EQ(b.particles().radius[index_of(b, file.find("dump") != std::string::npos ? 7 : 0)], 0.01);
+    }
 }

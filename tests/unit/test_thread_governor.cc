@@ -114,12 +114,17 @@ TEST(ThreadGovernor, NoisyStepsDoNotCostThroughput)
 TEST(ThreadGovernor, ManyCoresOneBusyDropsOneThread)
 {
   // 16 threads, one core held by another process: 16 threads wait for the one that shares a
-  // core, 15 do not. The governor finds 15 (or close to it) and not 1.
-  const Machine node = [](int team, double) { return 16e-3 / team * (team == 16 ? 3.0 : 1.0); };
+  // core. The step's work is 16 shares, worked share s by thread s % team: a team of 8 to 15
+  // takes two shares' time per step (so does 8 balanced threads), 16 on the busy machine
+  // three. The governor leaves 16 for a team that takes two shares and does not fall to 1.
+  const Machine node = [](int team, double) {
+    const int shares_per_thread = (16 + team - 1) / team;
+    return 1e-3 * shares_per_thread * (team == 16 ? 3.0 : 1.0);
+  };
   ThreadGovernor g(16);
   const Outcome  o = run(g, node, 20000, 15);
-  EXPECT_GE(g.team(), 13);
-  EXPECT_GT(relative_throughput(o, node, 15), 0.85);
+  EXPECT_GE(g.team(), 8);
+  EXPECT_GT(relative_throughput(o, node, 15), 0.9);
 }
 
 TEST(ThreadGovernor, PinnedOrSingleThreadNeverChanges)

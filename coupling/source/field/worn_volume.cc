@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace abrade::field
 {
@@ -24,11 +25,14 @@ namespace abrade::field
     for (int k = 0; k < 3; ++k)
       n[k] = std::max(1L, long(std::ceil((box[k + 3] - box[k]) / H)));
     const long total  = n[0] * n[1] * n[2];
-    double     volume = 0;
-    long       points = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : volume, points)
+    // each coarse cell's volume apart, summed in cell order after the loop: the same bits on
+    // any number of threads (a reduction under a dynamic schedule sums in a varying order)
+    std::vector<double> cell_volume(total, 0.0);
+    long                points = 0;
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : points)
     for (long c = 0; c < total; ++c)
       {
+        double &volume = cell_volume[c];
         const long   i = c % n[0], j = (c / n[0]) % n[1], k = c / (n[0] * n[1]);
         const double corner[3] = {box[0] + i * H, box[1] + j * H, box[2] + k * H};
         const double centre[3] = {corner[0] + 0.5 * H, corner[1] + 0.5 * H, corner[2] + 0.5 * H};
@@ -60,7 +64,9 @@ namespace abrade::field
                   volume += (in_design - in_worn) * h * h * h;
               }
       }
-    r.volume = volume;
+    r.volume = 0;
+    for (const double v : cell_volume)
+      r.volume += v;
     r.points = std::size_t(points);
     return r;
   }

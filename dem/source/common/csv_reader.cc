@@ -62,11 +62,11 @@ namespace abrade::io
     std::string text;
     for (long number = 1; std::getline(in, text); ++number)
       {
+        if (number == 1 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) // a UTF-8 byte order mark (Excel)
+          text.erase(0, 3);
         const auto first = text.find_first_not_of(" \t\r");
         if (first == std::string::npos || text[first] == '#')
           continue;
-        if (number == 1 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) // a UTF-8 byte order mark (Excel)
-          text.erase(0, 3);
         const std::vector<std::string> cells = split_cells(text, path + ":" + std::to_string(number));
         if (t.header.empty())
           {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -51,6 +52,8 @@ namespace abrade::dem
           size_to_radius = 0.5;
         if (size < 0)
           throw InputError(path, what + " has neither a 'radius' nor a 'diameter' column");
+        if (column("radius") >= 0 && column("diameter") >= 0)
+          throw InputError(path, what + " has both a 'radius' and a 'diameter' column: keep one");
         id = column("id");
       }
 
@@ -76,6 +79,20 @@ namespace abrade::dem
       }
     };
 
+    /// The column names of a table or dump in lower case; InputError when one comes twice
+    /// (X and x are one column here).
+    std::vector<std::string> column_names(const std::vector<std::string> &given, const std::string &where)
+    {
+      std::vector<std::string> names;
+      for (const auto &g : given)
+        {
+          names.push_back(lower(g));
+          if (std::count(names.begin(), names.end(), names.back()) > 1)
+            throw InputError(where, "the column '" + g + "' comes twice (names are read ignoring case)");
+        }
+      return names;
+    }
+
     double number(const std::string &path, long line, const std::string &word, const std::string &column)
     {
       const auto x = io::finite_number(word);
@@ -88,10 +105,8 @@ namespace abrade::dem
     ImportedBed import_csv(BedColumns &bed, std::vector<long> &lines, const std::string &path, double density,
                            int material)
     {
-      const io::CsvTable t = io::read_csv(path);
-      std::vector<std::string> names;
-      for (const auto &h : t.header)
-        names.push_back(lower(h));
+      const io::CsvTable             t     = io::read_csv(path);
+      const std::vector<std::string> names = column_names(t.header, path);
       const ColumnMap map(path, [&](const std::string &n) {
         const auto it = std::find(names.begin(), names.end(), n);
         return it == names.end() ? -1 : int(it - names.begin());
@@ -107,9 +122,13 @@ namespace abrade::dem
     ImportedBed import_dump(BedColumns &bed, std::vector<long> &lines, const std::string &path, double density,
                             int material)
     {
-      std::ifstream in(path);
+      std::ifstream in(path, std::ios::binary);
       if (!in)
         throw InputError(path, "cannot open the bed to import");
+      std::error_code       size_error;
+      const std::uintmax_t file_size = std::filesystem::file_size(path, size_error);
+      if (size_error)
+        throw InputError(path, "cannot read the size of the bed to import");
       std::string line;
       long        no = 0;
       auto        next = [&](const std::string &wanted) {
@@ -122,7 +141,7 @@ namespace abrade::dem
       };
       auto whole = [&](const std::string &word, const std::string &what) {
         const auto x = io::finite_number(word);
-        if (!x || *x != std::floor(*x) || *x < 0 || *x > 1e12)
+        if (!x || *x != std::floor(*x) || *x < 0 || *x > 9e15)
           throw InputError(path + ":" + std::to_string(no), "'" + word + "' is not a " + what);
         return long(*x);
       };
@@ -133,15 +152,23 @@ namespace abrade::dem
           ++no;
           if (!line.empty() && line.back() == '\r')
             line.pop_back();
+          if (no == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) // a UTF-8 byte order mark
+            line.erase(0, 3);
           if (line.find_first_not_of(" \t") == std::string::npos)
             continue;
+          if (line.rfind("ITEM: UNITS", 0) == 0 || (line.rfind("ITEM: TIME", 0) == 0 && line.rfind("ITEM: TIMESTEP", 0) != 0))
+            {
+              next("the value of " + line); // (dump_modify units yes, time yes: before the timestep)
+              continue;
+            }
           if (line.rfind("ITEM: TIMESTEP", 0) != 0)
             throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: TIMESTEP' (a LIGGGHTS/LAMMPS text dump), "
                                                                "found '" + line.substr(0, 40) + "'");
           result.timestep = whole(next("the timestep"), "timestep");
           if (next("ITEM: NUMBER OF ATOMS").rfind("ITEM: NUMBER OF ATOMS", 0) != 0)
             throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: NUMBER OF ATOMS'");
-          const long n = whole(next("the number of atoms"), "number of atoms");
+          const long n          = whole(next("the number of atoms"), "number of atoms");
+          const long count_line = no;
           if (next("ITEM: BOX BOUNDS").rfind("ITEM: BOX BOUNDS", 0) != 0)
             throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: BOX BOUNDS'");
           for (int d = 0; d < 3; ++d)
@@ -150,14 +177,23 @@ namespace abrade::dem
           if (atoms.rfind("ITEM: ATOMS", 0) != 0)
             throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: ATOMS' and the column names");
           std::istringstream       header(atoms.substr(11));
-          std::vector<std::string> names;
+          std::vector<std::string> given;
           for (std::string w; header >> w;)
-            names.push_back(lower(w));
+            given.push_back(w);
+          const std::vector<std::string> names = column_names(given, path + ":" + std::to_string(no));
           const long      header_line = no;
           const ColumnMap map(path + ":" + std::to_string(header_line), [&](const std::string &c) {
             const auto it = std::find(names.begin(), names.end(), c);
             return it == names.end() ? -1 : int(it - names.begin());
           }, "the dump's ITEM: ATOMS line");
+          // a row holds at least a character and a separator per column: a count the rest of
+          // the file cannot hold is refused before anything is allocated for it
+          const double at_most = double(file_size - std::min<std::uintmax_t>(file_size, std::uintmax_t(in.tellg()))) /
+                                 (2.0 * double(std::max<std::size_t>(1, names.size())));
+          if (double(n) > at_most)
+            throw InputError(path + ":" + std::to_string(count_line),
+                             "the dump announces " + std::to_string(n) + " atoms; the rest of the file holds at most " +
+                               std::to_string(long(at_most)) + " (cut short, or a wrong count)");
           bed.resize(std::size_t(n));
           lines.assign(std::size_t(n), 0);
           for (long k = 0; k < n; ++k)

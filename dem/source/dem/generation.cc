@@ -356,6 +356,24 @@ namespace abrade::dem
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
       throw InputError(path, "particle id " + std::to_string(*std::adjacent_find(sorted.begin(), sorted.end())) +
                                " comes twice");
+    // two centres (nearly) on one point: the contact between them has no direction and the
+    // first step gives NaN. By x, each against those within the tolerance of it.
+    std::vector<std::size_t> by_x(n);
+    for (std::size_t k = 0; k < n; ++k)
+      by_x[k] = k;
+    std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return bed.x[a] < bed.x[b]; });
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b)
+        {
+          const std::size_t i = by_x[a], j = by_x[b];
+          const double      tolerance = 1e-6 * std::min(bed.radius[i], bed.radius[j]);
+          if (bed.x[j] - bed.x[i] > 1e-6 * 10) // (radii <= 10 m)
+            break;
+          if (std::abs(bed.x[j] - bed.x[i]) <= tolerance && std::abs(bed.y[j] - bed.y[i]) <= tolerance &&
+              std::abs(bed.z[j] - bed.z[i]) <= tolerance)
+            throw InputError(path, name_of(std::min(i, j)) + " and " + name_of(std::max(i, j)) +
+                                     " have their centres on one point");
+        }
     auto &P = sim.particles();
     P.clear();
     for (std::size_t k = 0; k < n; ++k)
