@@ -12,9 +12,15 @@
 //
 // The governor measures the wall time per step over windows of about 50 ms. Every so often it
 // runs one window with one thread fewer (or more) and keeps that team when its steps were more
-// than 5 % faster than those of the window just before. A trial that loses doubles the wait
-// until the next one (up to 64 windows, about 3 s, so trials cost a few per cent at most); a
-// trial that wins is followed soon by another in the same direction. It has no clock of its
+// than 5 % faster than those of the window just before. The first trial comes after 8 windows;
+// a trial that loses doubles the wait until the next one (up to 64 windows, about 3 s, so
+// trials cost a few per cent at most); a trial that wins is followed soon by another in the
+// same direction.
+//
+// A team smaller than the shares works share s on thread s % team, so a team of T takes
+// ceil(S / T) shares' time per step: with 16 shares and one busy core the governor keeps 15
+// threads, which work at the speed of 8 (one share each would need more shares than threads, a
+// force buffer each; not done). It has no clock of its
 // own: the caller gives it each step's wall time, so it is tested with made-up timings.
 namespace abrade::dem
 {
@@ -41,6 +47,9 @@ namespace abrade::dem
     static constexpr long   window_min_steps = 4;
     static constexpr double margin           = 0.05;
     static constexpr int    longest_wait     = 64;
+    /// Windows before the first trial (0.4 s): a short run (a lifetime cycle's phase) pays for
+    /// no trials; a busy machine is found 0.4 s into a run.
+    static constexpr int    first_wait       = 8;
 
   private:
     int    max_team;
@@ -49,8 +58,8 @@ namespace abrade::dem
     int    kept_team;      ///< the team the trials are measured against
     bool   in_trial   = false;
     int    direction  = -1; ///< the next trial: one thread fewer (-1) or more (+1)
-    int    wait       = 1;  ///< windows between trials
-    int    until_trial = 1;
+    int    wait       = first_wait; ///< windows between trials
+    int    until_trial = first_wait;
     double reference  = 0;  ///< seconds per step of the kept team's last window
     long   steps      = 0;  ///< in the current window
     double seconds    = 0;
