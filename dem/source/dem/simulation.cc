@@ -638,7 +638,7 @@ namespace abrade::dem
         m.worst_overlap_i     = worst_i;
         m.worst_overlap_j     = -1;
       }
-    // One sum over the ranks for the walls' loads (from all threads) and every rank's worst
+    // One sum over the ranks for the walls' loads (from all shares) and every rank's worst
     // overlap (in its own slot, so the largest and its rank are known everywhere).
     std::vector<double> &total = m.wall_loads[0];
     total.resize(6 * nw + m.parallel.size());

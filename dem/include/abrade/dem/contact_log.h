@@ -27,7 +27,9 @@ namespace abrade::dem
     double       centre_velocity[3];   ///< particle centre relative to the wall's material point [m/s]
   };
 
-  /// One record vector per thread, filled without locks; read in thread order (deterministic).
+  /// One record vector per share of the step's work (Settings::threads; each filled by the one
+  /// thread that works that share, without locks); read in share order (deterministic, whatever
+  /// the number of threads).
   struct ContactLog
   {
     std::vector<std::vector<WallContactRecord>> per_thread;
