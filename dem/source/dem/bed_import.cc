@@ -23,9 +23,9 @@ namespace abrade::dem
       return s;
     }
 
-    /// The bed's columns from named columns: @p column(name) is the index of a column (-1:
-    /// none), @p value(row, index) the number in a cell (InputError naming it when not one).
-    /// Which names are read, and the scale of a diameter, is decided here once for both formats.
+    /// Where the bed's values are among a file's columns (@p column(name): the index of a column,
+    /// -1 for none): which names are read (x or xu, radius or diameter, vx, wx or omegax, id),
+    /// and the scale of a diameter, decided here once for both formats.
     struct ColumnMap
     {
       int position[3] = {-1, -1, -1}, size = -1, id = -1, velocity[3] = {-1, -1, -1}, spin[3] = {-1, -1, -1};
