@@ -43,6 +43,42 @@ namespace abrade::coupling
       return Vec3(std::stod(v[0]), std::stod(v[1]), std::stod(v[2]));
     }
 
+    /// The names a parameter may take and what each stands for, spelled once: the entry's
+    /// pattern (selection_of) and its value (get_choice) both come from the list.
+    template <typename T>
+    using Choices = std::vector<std::pair<std::string, T>>;
+
+    template <typename T>
+    Selection selection_of(const Choices<T> &choices)
+    {
+      std::string names;
+      for (const auto &c : choices)
+        names += (names.empty() ? "" : "|") + c.first;
+      return Selection(names);
+    }
+
+    /// The value of entry @p name (checked against selection_of(@p choices) when it was read).
+    template <typename T>
+    T get_choice(ParameterHandler &prm, const std::string &name, const Choices<T> &choices)
+    {
+      const std::string value = prm.get(name);
+      for (const auto &c : choices)
+        if (c.first == value)
+          return c.second;
+      throw RunError("parameter '" + name + "' = '" + value + "' passed its pattern but names no choice");
+    }
+
+    const Choices<dem::DampingModel> damping_models = {{"edem", dem::DampingModel::edem},
+                                                       {"calibrated", dem::DampingModel::calibrated}};
+    const Choices<bool> error_policies = {{"stop", true}, {"continue", false}}; // stop on error?
+    const Choices<dem::SizeDistribution::Kind> size_distributions = {
+      {"constant", dem::SizeDistribution::Kind::constant},
+      {"uniform", dem::SizeDistribution::Kind::uniform},
+      {"normal", dem::SizeDistribution::Kind::normal}};
+    const Choices<dem::WallMotion::Kind> motion_types = {{"fixed", dem::WallMotion::Kind::fixed},
+                                                         {"prescribed", dem::WallMotion::Kind::prescribed},
+                                                         {"rigid body", dem::WallMotion::Kind::rigid_body}};
+
     std::vector<std::string> get_list(ParameterHandler &prm, const std::string &name)
     {
       std::vector<std::string> out;
@@ -276,7 +312,7 @@ namespace abrade::coupling
                       "[m] Verlet skin of the neighbour lists; 0: 0.2 x the smallest radius. The "
                       "lists are rebuilt when a particle or wall has moved far enough to bring a new "
                       "pair into contact. Range: >= 0.");
-    prm.declare_entry("Damping model", "edem", Selection("edem|calibrated"),
+    prm.declare_entry("Damping model", "edem", selection_of(damping_models),
                       "edem: damping from the restitution as EDEM/LIGGGHTS document it (the "
                       "rebound restitution of a Hertz contact then differs slightly from the input); "
                       "calibrated: damping chosen so that a Hertz contact rebounds with exactly the "
@@ -303,7 +339,7 @@ namespace abrade::coupling
     prm.declare_entry("Maximum overlap fraction", "0.2", Double(0, 1),
                       "[-] An overlap larger than this fraction of the particle radius is reported "
                       "(usually a time step that is too large). Range: [0, 1].");
-    prm.declare_entry("On error", "stop", Selection("stop|continue"),
+    prm.declare_entry("On error", "stop", selection_of(error_policies),
                       "What a lost particle or an excessive overlap does: stop the run with an "
                       "error, or print a warning and continue (lost particles are removed). A NaN "
                       "always stops the run.");
@@ -328,7 +364,7 @@ namespace abrade::coupling
     prm.declare_entry("Region mesh", "", Anything(),
                       "Optional closed surface mesh (STL/OBJ/PLY/VTK/VTP); particles are placed only "
                       "inside it (and inside the fill box). Empty: the box alone.");
-    prm.declare_entry("Size distribution", "constant", Selection("constant|uniform|normal"),
+    prm.declare_entry("Size distribution", "constant", selection_of(size_distributions),
                       "Particle radius distribution: constant (Radius), uniform in [Minimum radius, "
                       "Maximum radius], or normal (mean Radius, Standard deviation) truncated to "
                       "[Minimum radius, Maximum radius].");
@@ -472,7 +508,7 @@ namespace abrade::coupling
         prm.leave_subsection();
         prm.enter_subsection("Motion");
         prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed",
-                          Selection("fixed|prescribed|rigid body"),
+                          selection_of(motion_types),
                           "fixed; prescribed: velocities per phase; rigid body: the degrees of "
                           "freedom listed in 'Free degrees of freedom' move under gravity and particle "
                           "forces, the others follow the prescribed velocities.");
@@ -639,14 +675,14 @@ namespace abrade::coupling
     s.gravity                 = get_vector(prm, "Gravity");
     s.characteristic_velocity = prm.get_double("Characteristic velocity");
     s.skin                    = prm.get_double("Skin");
-    s.damping   = prm.get("Damping model") == "edem" ? dem::DampingModel::edem : dem::DampingModel::calibrated;
+    s.damping   = get_choice(prm, "Damping model", damping_models);
     s.threads   = prm.get_integer("Threads");
     s.adapt_threads = prm.get_bool("Adapt threads");
     s.rebalance_threshold = prm.get_double("Rebalance threshold");
     s.domain_min = get_vector(prm, "Domain min");
     s.domain_max = get_vector(prm, "Domain max");
     s.max_overlap_fraction = prm.get_double("Maximum overlap fraction");
-    s.stop_on_error        = prm.get("On error") == "stop";
+    s.stop_on_error        = get_choice(prm, "On error", error_policies);
     for (const auto &item : split_string_list(prm.get("Phases")))
       {
         const auto colon = item.find(':');
@@ -685,9 +721,7 @@ namespace abrade::coupling
     fill.box_max                     = get_vector(prm, "Region max");
     c.region_mesh_file               = resolve(f, prm.get("Region mesh"));
     const std::string dist           = prm.get("Size distribution");
-    fill.sizes.kind   = dist == "constant" ? dem::SizeDistribution::Kind::constant
-                        : dist == "uniform" ? dem::SizeDistribution::Kind::uniform
-                                            : dem::SizeDistribution::Kind::normal;
+    fill.sizes.kind   = get_choice(prm, "Size distribution", size_distributions);
     fill.sizes.radius = prm.get_double("Radius");
     fill.sizes.min    = prm.get_double("Minimum radius");
     fill.sizes.max    = prm.get_double("Maximum radius");
@@ -877,11 +911,8 @@ namespace abrade::coupling
         prm.enter_subsection("Motion");
         auto              mp   = wp;
         mp.push_back("Motion");
-        const std::string type = prm.get("Type");
         auto             &m    = w.motion;
-        m.kind   = type == "fixed" ? dem::WallMotion::Kind::fixed
-                   : type == "prescribed" ? dem::WallMotion::Kind::prescribed
-                                          : dem::WallMotion::Kind::rigid_body;
+        m.kind   = get_choice(prm, "Type", motion_types);
         m.centre = rotation * get_vector(prm, "Centre") + offset;
         for (const auto &[phase, v] : read_phase_vectors(f, mp, "Velocities", c.phases))
           m.phases[phase].velocity = v;
