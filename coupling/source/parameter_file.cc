@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/file_extension.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
 
@@ -222,9 +223,7 @@ namespace abrade::coupling
       {
         if (const std::string why = bad_name(name); !why.empty())
           throw InputError(where, "Walls: " + why);
-        std::string lower = name;
-        std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
-        if (!seen.insert(lower).second)
+        if (!seen.insert(io::lower_case(name)).second)
           throw InputError(where, "Walls: '" + name + "' is listed twice (names are compared ignoring case)");
       }
     // a wall the file lists without its subsection would be a default 2 m box, silently

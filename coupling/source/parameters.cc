@@ -57,15 +57,22 @@ namespace abrade::coupling
       return Selection(names);
     }
 
-    /// The value of entry @p name (checked against selection_of(@p choices) when it was read).
+    /// What @p value stands for among @p choices (@p name: the entry it was read from, whose
+    /// pattern, selection_of(@p choices), checked it).
     template <typename T>
-    T get_choice(ParameterHandler &prm, const std::string &name, const Choices<T> &choices)
+    T choice_named(const std::string &value, const std::string &name, const Choices<T> &choices)
     {
-      const std::string value = prm.get(name);
       for (const auto &c : choices)
         if (c.first == value)
           return c.second;
       throw RunError("parameter '" + name + "' = '" + value + "' passed its pattern but names no choice");
+    }
+
+    /// The value of entry @p name.
+    template <typename T>
+    T get_choice(ParameterHandler &prm, const std::string &name, const Choices<T> &choices)
+    {
+      return choice_named(prm.get(name), name, choices);
     }
 
     const Choices<dem::DampingModel> damping_models = {{"edem", dem::DampingModel::edem},
@@ -78,6 +85,9 @@ namespace abrade::coupling
     const Choices<dem::WallMotion::Kind> motion_types = {{"fixed", dem::WallMotion::Kind::fixed},
                                                          {"prescribed", dem::WallMotion::Kind::prescribed},
                                                          {"rigid body", dem::WallMotion::Kind::rigid_body}};
+    const Choices<bool dem::WearLaws::*> wear_laws = {{"archard", &dem::WearLaws::archard},
+                                                      {"relative", &dem::WearLaws::relative},
+                                                      {"finnie", &dem::WearLaws::finnie}};
 
     std::vector<std::string> get_list(ParameterHandler &prm, const std::string &name)
     {
@@ -480,7 +490,7 @@ namespace abrade::coupling
         declare_material(prm, 7e10, 0.3, 7800, false);
         declare_interaction(prm, 0.6, name == "knife" ? 0.4 : 0.5, "particle-wall");
         prm.enter_subsection("Wear");
-        prm.declare_entry("Laws", name == "knife" ? "archard" : "", List(Selection("archard|relative|finnie")),
+        prm.declare_entry("Laws", name == "knife" ? "archard" : "", List(selection_of(wear_laws)),
                           "Wear laws evaluated per triangle of this wall (any of archard, relative, "
                           "finnie; empty: none). archard: volume W F_n d_t (EDEM); relative: "
                           "cumulative normal and tangential contact energy; finnie: LIGGGHTS' "
@@ -895,7 +905,7 @@ namespace abrade::coupling
         prm.enter_subsection("Wear");
         wc.wear.archard = wc.wear.relative = wc.wear.finnie = false;
         for (const auto &law : get_list(prm, "Laws"))
-          (law == "archard" ? wc.wear.archard : law == "relative" ? wc.wear.relative : wc.wear.finnie) = true;
+          wc.wear.*choice_named(law, "Laws", wear_laws) = true;
         wc.wear.archard_coefficient = prm.get_double("Archard coefficient");
         wc.wear.finnie_coefficient  = prm.get_double("Finnie coefficient");
         prm.leave_subsection();

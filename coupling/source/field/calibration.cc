@@ -1,5 +1,6 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/csv_reader.h>
+#include <abrade/common/file_extension.h>
 #include <abrade/common/error.h>
 #include <abrade/common/finite_number.h>
 #include <abrade/common/format_number.h>
@@ -44,7 +45,7 @@ namespace abrade::field
       if (t.header.empty())
         throw InputError(path, "empty table (a header line and at least one row expected)");
       for (auto &name : t.header)
-        std::transform(name.begin(), name.end(), name.begin(), ::tolower);
+        name = io::lower_case(name);
       return t;
     }
 

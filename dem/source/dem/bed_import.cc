@@ -17,12 +17,6 @@ namespace abrade::dem
 {
   namespace
   {
-    std::string lower(std::string s)
-    {
-      std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-      return s;
-    }
-
     /// Where the bed's values are among a file's columns (@p column(name): the index of a column,
     /// -1 for none): which names are read (x or xu, radius or diameter, vx, wx or omegax, id),
     /// and the scale of a diameter, decided here once for both formats.
@@ -86,7 +80,7 @@ namespace abrade::dem
       std::vector<std::string> names;
       for (const auto &g : given)
         {
-          names.push_back(lower(g));
+          names.push_back(io::lower_case(g));
           if (std::count(names.begin(), names.end(), names.back()) > 1)
             throw InputError(where, "the column '" + g + "' comes twice (names are read ignoring case)");
         }

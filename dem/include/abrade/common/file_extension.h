@@ -1,5 +1,6 @@
 #pragma once
-// A file's extension in lower case, with its dot (".stl"): what the readers dispatch on.
+// Names compared ignoring case: a string in lower case, and a file's extension in lower case
+// with its dot (".stl"), what the readers dispatch on.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -7,10 +8,14 @@
 
 namespace abrade::io
 {
+  inline std::string lower_case(std::string s)
+  {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+  }
+
   inline std::string lower_extension(const std::string &path)
   {
-    std::string e = std::filesystem::path(path).extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return e;
+    return lower_case(std::filesystem::path(path).extension().string());
   }
 } // namespace abrade::io
