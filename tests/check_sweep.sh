@@ -1,18 +1,46 @@
 #!/usr/bin/env bash
-# Runs a small sweep (2 values x 2 seeds of the regression case) and checks its products:
-# the study table has one row per value with finite means, the plots and surfaces exist, and
-# the beds were made once per seed.
+# Runs a small sweep of the regression case over a grid (knife friction x coarse-graining
+# factor, 2 seeds: 8 runs) and checks its products: one row per combination with finite means;
+# the plots and surfaces exist; one bed per seed and particle size (the friction reuses them);
+# the per-metre wear against the prescribed motion (the knife moves 1.5 m/s x 0.1 s = 0.15 m in
+# penetration: wear / wear per metre must give that path, from the job's wall positions); the
+# wear shares of the height bands and of the faces each sum to one.
 #   check_sweep.sh ABRADE PRM OUTDIR
 set -euo pipefail
 abrade=$1 prm=$2 out=$3
 rm -rf "$out"
-"$abrade" sweep "$prm" --vary "Wall knife/Interaction/Friction=0,0.4" --seeds 1,2 --output "$out" --quiet
+"$abrade" sweep "$prm" --vary "Wall knife/Interaction/Friction=0,0.4" --vary "Particles/Coarse graining/Factor=1,1.25" \
+  --seeds 1,2 --output "$out" --quiet
 rows=$(tail -n +2 "$out/study.csv" | wc -l)
-[[ $rows -eq 2 ]] || { echo "study.csv has $rows rows, expected 2"; exit 1; }
-cut -d, -f1 "$out/study.csv" | tail -n +2 | tr '\n' ' ' | grep -q "^0 0.4 $" || { echo "unexpected values"; cat "$out/study.csv"; exit 1; }
+[[ $rows -eq 4 ]] || { echo "study.csv has $rows rows, expected 4"; exit 1; }
+cut -d, -f1,2 "$out/study.csv" | tail -n +2 | tr '\n' ' ' | grep -q "^0,1 0,1.25 0.4,1 0.4,1.25 $" || { echo "unexpected values"; cat "$out/study.csv"; exit 1; }
 if grep -qiE "nan|inf" "$out/study.csv"; then echo "non-finite values:"; cat "$out/study.csv"; exit 1; fi
-for f in plots/wear.png plots/force.png plots/layer_velocity.png surfaces/knife_0_seed1.vtp surfaces/knife_0.4_seed2.vtp study.md; do
+for f in plots/wear_total.png plots/edge_share.png plots/contacts_travel.png plots/wear_by_height.png plots/force.png \
+         plots/layer_velocity.png surfaces/knife_0_1_seed1.vtp surfaces/knife_0.4_1.25_seed2.vtp study.md; do
   [[ -s "$out/$f" ]] || { echo "missing $f"; exit 1; }
 done
-[[ $(ls "$out/beds" | wc -l) -eq 2 ]] || { echo "expected one bed per seed"; ls "$out/beds"; exit 1; }
-echo "ok: sweep wrote study.csv (2 values), plots, surfaces and 2 beds"
+[[ $(ls "$out/beds" | wc -l) -eq 4 ]] || { echo "expected one bed per seed and factor"; ls "$out/beds"; exit 1; }
+python3 - "$out" <<'PY'
+import csv, glob, os, sys
+out = sys.argv[1]
+import json
+for d in [d for d in glob.glob(os.path.join(out, "runs", "*")) if os.path.isdir(d)]:
+    # the path from the summed wall positions against the prescribed speed x the steps taken
+    res = json.load(open(os.path.join(d, "summary.json")))["results"]
+    prescribed = 1.5 * res["phases"]["penetration"]["steps"] * res["time_step"]
+    w = {r["phase"]: r for r in csv.DictReader(open(os.path.join(d, "walls", "knife_wear.csv")))}
+    path = float(w["penetration"]["path_length"])
+    assert abs(path - prescribed) < 1e-9, f"{d}: penetration path {path} m, the motion prescribes {prescribed} m"
+    assert abs(prescribed - 0.15) < 1.5 * res["time_step"] * 1.5, prescribed
+    rows = list(csv.DictReader(open(os.path.join(d, "walls", "knife_wear_profile.csv"))))
+    total = [float(w["archard_volume"]) for w in csv.DictReader(open(os.path.join(d, "walls", "knife_wear.csv"))) if w["phase"] == "total"][0]
+    for kind in ("height", "face"):
+        s = sum(float(w["archard_volume"]) for w in rows if w["kind"] == kind)
+        assert abs(s - total) <= 1e-9 * total, f"{d}: the {kind} rows sum to {s}, the wear table says {total}"
+    peaks = [float(w["archard_volume"]) for w in rows if w["kind"] == "filtered_peak"]
+    assert len(peaks) == 2 and all(p > 0 for p in peaks), f"{d}: filtered peaks {peaks}"
+for r in csv.DictReader(open(os.path.join(out, "study.csv"))):
+    assert abs(float(r["wear_penetration_mean"]) / float(r["wear_per_m_penetration_mean"]) - 0.15) < 1e-3
+print("ok: per-metre wear over the prescribed path, profile rows sum to the total")
+PY
+echo "ok: sweep wrote study.csv (2 x 2 combinations), plots, surfaces and 4 beds"

@@ -29,6 +29,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <utility>
@@ -47,10 +48,11 @@ namespace
       run the job the parameter file describes (no file: the embedded small default case)
   abrade params [--format text|prm]
       print every parameter with its documentation, unit, allowed range and default
-  abrade sweep FILE.prm --vary "Section/Key=v1,v2,..." [--seeds 1,2,3] [--wall knife]
-               [--jobs N] [--set ...]... --output DIR
-      run the case for every value and seed (one settled bed per seed, reused), in parallel,
-      and write study.csv/.md (mean and std over seeds), plots/*.png and surfaces/*.vtp
+  abrade sweep FILE.prm --vary "Section/Key=v1,v2,..." [--vary "Key2=..."]... [--seeds 1,2,3]
+               [--wall knife] [--edge-height 0.04] [--jobs N] [--set ...]... --output DIR
+      run the case for every value (several --vary: every combination) and seed (one settled
+      bed per seed and particle parameters, reused), in parallel, and write study.csv/.md (mean
+      and std over seeds), plots/*.png and surfaces/*.vtp
   abrade concepts BASELINE.prm CONCEPT.prm... [--seeds 1,2] [--knives right_knife,left_knife]
                   [--lifetime-updates N] [--jobs N] [--set ...]... --output DIR
       run every knife concept's cycle per bed seed (the same beds for all), and write the
@@ -72,7 +74,9 @@ namespace
     std::vector<std::string> sets;
     std::string              output;
     std::string              format = "text";
-    std::string              vary, seeds, wall = "knife"; ///< seeds: each command has its default
+    std::vector<std::string> varies;
+    std::string              seeds, wall = "knife"; ///< seeds: each command has its default
+    double                   edge_height = 0.04;
     int                      jobs = 0;
     bool                     quiet  = false;
     bool                     resume = false;
@@ -114,6 +118,21 @@ namespace
     throw InputError("command line", flag + " needs a whole number, got '" + v + "'");
   }
 
+  double number(const std::string &flag, const std::string &v)
+  {
+    try
+      {
+        std::size_t  used = 0;
+        const double x    = std::stod(v, &used);
+        if (used == v.size() && std::isfinite(x))
+          return x;
+      }
+    catch (const std::exception &)
+      {
+      }
+    throw InputError("command line", flag + " needs a number, got '" + v + "'");
+  }
+
   std::vector<int> seed_list(const std::string &text)
   {
     std::vector<int>  seeds;
@@ -148,7 +167,9 @@ namespace
         else if (a[k] == "--format")
           cl.format = value("--format");
         else if (a[k] == "--vary")
-          cl.vary = value("--vary");
+          cl.varies.push_back(value("--vary"));
+        else if (a[k] == "--edge-height")
+          cl.edge_height = number("--edge-height", value("--edge-height"));
         else if (a[k] == "--seeds")
           cl.seeds = value("--seeds");
         else if (a[k] == "--wall")
@@ -325,7 +346,9 @@ int main(int argc, char **argv)
           coupling::ParameterFile check(cl.file, cl.sets); // fail early on a bad file
           coupling::SweepOptions  o;
           o.parameter_file = std::filesystem::absolute(cl.file).string();
-          coupling::parse_vary(cl.vary.empty() ? "" : cl.vary, o);
+          for (const auto &v : cl.varies)
+            coupling::parse_vary(v, o);
+          o.edge_height = cl.edge_height;
           o.seeds = seed_list(cl.seeds.empty() ? "1,2,3" : cl.seeds);
           o.sets = cl.sets, o.output = cl.output, o.wall = cl.wall, o.jobs = cl.jobs, o.quiet = cl.quiet;
           io::ProgressLine::set_quiet(cl.quiet);

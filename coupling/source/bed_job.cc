@@ -14,6 +14,7 @@ namespace abrade::coupling
   void run_bed_job(JobContext &ctx)
   {
     DemCase c = read_dem_case(ctx.parameters);
+    report_coarse_graining(c, ctx);
     if (c.bed_file.empty())
       throw InputError(ctx.parameters.file_name(), "Job = bed needs Particles/Settling/Bed file (where the bed goes)");
     fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"), ctx.log); // the particles avoid them

@@ -13,6 +13,7 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/coupling/wear_profile.h>
 #include <abrade/common/csv_writer.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/generation.h>
@@ -129,9 +130,25 @@ namespace abrade::coupling
     }
   }
 
+  void report_coarse_graining(const DemCase &c, JobContext &ctx)
+  {
+    for (const auto &w : c.warnings)
+      ctx.log.warning(w);
+    if (c.coarse_graining == 1)
+      return;
+    const double r = c.fill.sizes.kind == dem::SizeDistribution::Kind::constant ? c.fill.sizes.radius : c.fill.sizes.max;
+    ctx.log.line("Coarse graining: the particles are " + fmt(c.coarse_graining) + " times the real ones (largest radius " +
+                 fmt(r) + " m for " + fmt(r / c.coarse_graining) + " m)");
+    io::Json &j             = ctx.results["coarse_graining"];
+    j["factor"]             = c.coarse_graining;
+    j["largest_radius"]     = r;
+    j["real_largest_radius"] = r / c.coarse_graining;
+  }
+
   void run_dem_job(JobContext &ctx)
   {
     DemCase c = read_dem_case(ctx.parameters);
+    report_coarse_graining(c, ctx);
     fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"), ctx.log);
     dem::Simulation sim(c.settings);
     build_simulation(c, sim);
@@ -182,6 +199,9 @@ namespace abrade::coupling
       total += p.second;
     io::ProgressLine progress("dem", total);
     io::Json        &phases = ctx.results["phases"];
+    std::map<std::string, std::vector<double>> path_length; // per phase and wall: how far its centre moved [m]
+    for (const auto &p : c.phases)
+      path_length[p.first].assign(sim.n_walls(), 0.0);
     const auto       stats0 = sim.statistics();
     std::unique_ptr<io::CsvWriter> payload_table; // payload.csv: phase, mass above the payload height
     if (c.payload_height)
@@ -193,11 +213,16 @@ namespace abrade::coupling
         const auto        before = sim.statistics();
         std::vector<dem::Vec3> force_sum(sim.n_walls(), dem::Vec3::Zero()), torque_sum = force_sum;
         std::vector<double>    peak(sim.n_walls(), 0.0), peak_torque = peak;
+        std::vector<dem::Vec3> centre(sim.n_walls());
+        for (std::size_t w = 0; w < sim.n_walls(); ++w)
+          centre[w] = sim.wall(w).current_centre();
         long                   steps = 0;
         sim.run_phase(name, duration, [&](const dem::Simulation &s) {
           ++steps;
           for (std::size_t w = 0; w < s.n_walls(); ++w)
             {
+              path_length[name][w] += (s.wall(w).current_centre() - centre[w]).norm();
+              centre[w] = s.wall(w).current_centre();
               force_sum[w] += s.wall(w).force;
               peak[w] = std::max(peak[w], s.wall(w).force.norm());
               torque_sum[w] += s.wall(w).torque; // about the wall's rotation centre (a hinge)
@@ -265,7 +290,7 @@ namespace abrade::coupling
           continue;
         io::CsvWriter csv(ctx.output.file("walls/" + name + "_wear.csv"),
                           {"phase", "archard_volume", "archard_max_depth", "relative_normal_energy",
-                           "relative_tangential_energy", "finnie_wear"});
+                           "relative_tangential_energy", "finnie_wear", "path_length"});
         std::vector<std::string> rows;
         for (const auto &p : c.phases)
           rows.push_back(p.first);
@@ -273,34 +298,44 @@ namespace abrade::coupling
         for (const auto &phase : rows)
           {
             const auto   depth = wear->archard_depth(w, phase);
+            double path = 0; // the wall's centre's path in the phase (all phases: the sum)
+            for (const auto &[p, lengths] : path_length)
+              if (phase.empty() || p == phase)
+                path += lengths[w];
             const double row[] = {wear->total(w, Field::archard_volume, phase),
                                   depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end()),
                                   wear->total(w, Field::relative_normal_energy, phase),
                                   wear->total(w, Field::relative_tangential_energy, phase),
-                                  wear->total(w, Field::finnie, phase)};
-            csv.row(phase.empty() ? "total" : phase, std::vector<double>(row, row + 5));
+                                  wear->total(w, Field::finnie, phase),
+                                  path};
+            csv.row(phase.empty() ? "total" : phase, std::vector<double>(row, row + 6));
             io::Json &j = ctx.results["wear"][name][phase.empty() ? "total" : phase];
             j["archard_volume"]    = row[0];
             j["archard_max_depth"] = row[1];
+            j["path_length"]       = row[5];
             if (laws[w].relative)
               j["relative_normal_energy"] = row[2], j["relative_tangential_energy"] = row[3];
             if (laws[w].finnie)
               j["finnie_wear"] = row[4];
           }
         csv.close();
+        if (laws[w].archard)
+          write_wear_profile(ctx.output.file("walls/" + name + "_wear_profile.csv"), sim.wall(w).mesh,
+                             wear->values(w, Field::archard_volume), wear->vertex_values(w, Field::archard_volume),
+                             {c.wear_profile_band, c.wear_filter_length, sim.largest_radius()});
       }
     // contact-layer probes: walls/NAME_layer.csv, and the mean slip of the layer per phase
     for (const auto &probe : probes)
       {
         const std::string &name = sim.wall(probe->wall_index()).name;
         io::CsvWriter      csv(ctx.output.file("walls/" + name + "_layer.csv"),
-                               {"phase", "time", "count", "mean_velocity", "wall_velocity"});
-        std::map<std::string, std::array<double, 3>> per_phase; // samples, sum velocity, sum count
+                               {"phase", "time", "count", "mean_velocity", "wall_velocity", "contacts"});
+        std::map<std::string, std::array<double, 4>> per_phase; // samples, sums of velocity, count, contacts
         for (const auto &smp : probe->samples())
           {
-            csv.row(smp.phase, {smp.time, double(smp.count), smp.mean_velocity, smp.wall_velocity});
+            csv.row(smp.phase, {smp.time, double(smp.count), smp.mean_velocity, smp.wall_velocity, double(smp.contacts)});
             auto &a = per_phase[smp.phase];
-            a[0] += 1, a[1] += smp.mean_velocity, a[2] += smp.count;
+            a[0] += 1, a[1] += smp.mean_velocity, a[2] += smp.count, a[3] += smp.contacts;
           }
         csv.close();
         for (const auto &[phase, a] : per_phase)
@@ -308,6 +343,7 @@ namespace abrade::coupling
             io::Json &j            = ctx.results["layer"][name][phase];
             j["mean_velocity"]     = a[1] / a[0];
             j["mean_count"]        = a[2] / a[0];
+            j["mean_contacts"]     = a[3] / a[0];
           }
       }
     const auto stats = sim.statistics();

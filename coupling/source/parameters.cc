@@ -1,8 +1,10 @@
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/run_size.h>
 #include <abrade/dem/bed_import.h>
+#include <abrade/dem/coarse_graining.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/fem/solid_file.h>
 
@@ -299,6 +301,16 @@ namespace abrade::coupling
     prm.declare_entry("Force interval", "0.001", Double(0, huge),
                       "[s] Simulated time between rows of the wall force files "
                       "(walls/NAME_forces.csv); 0: every time step. Range: >= 0.");
+    prm.declare_entry("Wear profile band", "0.01", Double(1e-6, huge),
+                      "[m] Height of the bands of walls/NAME_wear_profile.csv (the wear by height "
+                      "above a wall's lowest point, by face direction, and its filtered peak "
+                      "depth). Range: > 0.");
+    prm.declare_entry("Wear filter length", "0.0275", Double(0, huge),
+                      "[m] A fixed length of the surface filter for the filtered peak depth of "
+                      "walls/NAME_wear_profile.csv (next to the filter over the largest particle "
+                      "radius, the lifetime loop's default); the default is the thesis' "
+                      "coarse-grained pellet radius, so that runs at several particle sizes "
+                      "compare at one length. 0: none. Range: >= 0.");
     prm.declare_entry("Write particles", "true", Bool(),
                       "Whether snapshots include the particles (they dominate the output size).");
     prm.leave_subsection();
@@ -392,6 +404,20 @@ namespace abrade::coupling
                       "about 0.35 in a box, then the particles are poured.");
     prm.declare_entry("Seed", "1", Integer(0), "Random seed of the placement and sizes. Range: >= 0.");
     declare_vector(prm, "Initial velocity", "0, 0, -0.5", "[m/s] Velocity of the generated particles.");
+    prm.leave_subsection();
+    prm.enter_subsection("Coarse graining");
+    prm.declare_entry("Factor", "1", Double(1e-3, 1e3),
+                      "[-] Coarse-graining ratio f: every simulated particle is f times the size of "
+                      "the real one and stands for f^3 of them. Particles/Generation describes the "
+                      "real particles: its radii are multiplied by f and its Count (of real "
+                      "particles) divided by f^3, so the bulk mass stays; Simulation/Skin is "
+                      "multiplied by f and Particles/Settling/Kinetic energy threshold by f^3; "
+                      "density, moduli, restitution and friction stay (Hertz-Mindlin contacts of "
+                      "scaled spheres keep the bulk's stresses, bulk density and angle of repose); "
+                      "the time step follows from the scaled radius. Parameters that stay in "
+                      "absolute units (a fixed Time step, a Layer probe Thickness, Lifetime/"
+                      "Smoothing radius, an imported bed) are named in a warning. What coarse "
+                      "graining does to wear: docs/coarse-graining.md. Range: [0.001, 1000].");
     prm.leave_subsection();
     prm.enter_subsection("Settling");
     prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, huge),
@@ -667,6 +693,39 @@ namespace abrade::coupling
     }
   } // namespace
 
+  namespace
+  {
+    /// Particles/Coarse graining: the rules of dem/coarse_graining.h on the generation, the
+    /// skin and the settling threshold, and a warning for each parameter that stays in absolute
+    /// units (those of the walls: read_dem_case, with the walls).
+    void apply_coarse_graining(ParameterFile &f, DemCase &c)
+    {
+      const double g = c.coarse_graining;
+      if (g == 1)
+        return;
+      const std::vector<std::string> gp = {"Particles", "Generation"};
+      const long   real_count           = c.fill.count;
+      const double count                = dem::coarse_grain(g, c.fill, c.settings);
+      c.settle_ke *= g * g * g; // a kinetic energy per particle
+      if (real_count > 0 && count < 1)
+        f.fail(gp, "Count", std::to_string(real_count) + " real particles make " + io::format_number(count) +
+                              " particles coarse-grained by " + io::format_number(g) + ": too few for a bed");
+      c.warnings = dem::coarse_graining_warnings(g, c.settings);
+      if (g < 1)
+        c.warnings.push_back("Particles/Coarse graining/Factor = " + io::format_number(g) +
+                             " is below 1: the simulated particles are smaller than the real ones");
+      if (dem::is_imported_bed(c.bed_file))
+        c.warnings.push_back("the imported bed " + c.bed_file + " is used as it is: its radii are not scaled by "
+                             "Particles/Coarse graining/Factor");
+      auto &prm = f.handler();
+      prm.enter_subsection("Lifetime");
+      if (const double r = prm.get_double("Smoothing radius"); r > 0)
+        c.warnings.push_back("Lifetime/Smoothing radius is fixed (" + io::format_number(r) + " m) while the particles "
+                             "are coarse-grained: 0 ties the wear filter to the simulated radius");
+      prm.leave_subsection();
+    }
+  } // namespace
+
   DemCase read_dem_case(ParameterFile &f)
   {
     ParameterHandler &prm = f.handler();
@@ -676,6 +735,8 @@ namespace abrade::coupling
     c.snapshot_interval = prm.get_double("Snapshot interval");
     c.force_interval    = prm.get_double("Force interval");
     c.write_particles   = prm.get_bool("Write particles");
+    c.wear_profile_band   = prm.get_double("Wear profile band");
+    c.wear_filter_length  = prm.get_double("Wear filter length");
     prm.leave_subsection();
 
     prm.enter_subsection("Simulation");
@@ -751,6 +812,9 @@ namespace abrade::coupling
       f.fail(gp, "Maximum radius", "a " + dist + " distribution needs 0 < Minimum radius < Maximum radius");
     if (dist == "normal" && !(fill.sizes.std > 0))
       f.fail(gp, "Standard deviation", "must be positive for a normal distribution");
+    prm.enter_subsection("Coarse graining");
+    c.coarse_graining = prm.get_double("Factor");
+    prm.leave_subsection();
     prm.enter_subsection("Settling");
     c.settle_ke       = prm.get_double("Kinetic energy threshold");
     c.settle_max_time = prm.get_double("Maximum time");
@@ -765,6 +829,7 @@ namespace abrade::coupling
       }
     prm.leave_subsection();
     prm.leave_subsection();
+    apply_coarse_graining(f, c);
     prm.enter_subsection("Simulation");
     c.max_particle_steps = prm.get_double("Maximum particle-steps");
     prm.leave_subsection();
@@ -917,6 +982,9 @@ namespace abrade::coupling
         prm.leave_subsection();
         if (wc.probe && !(wc.probe_axis.norm() > 0))
           f.fail({wp[0], "Layer probe"}, "Axis", "must not be zero");
+        if (wc.probe && wc.probe_thickness > 0 && c.coarse_graining != 1)
+          c.warnings.push_back("Wall " + name + "/Layer probe/Thickness is fixed (" + io::format_number(wc.probe_thickness) +
+                               " m) while the particles are coarse-grained: 0 ties it to the simulated radius");
 
         prm.enter_subsection("Motion");
         auto              mp   = wp;

@@ -1,15 +1,23 @@
 // `abrade sweep`: the thesis' study design (a parameter varied, three beds per value, averages)
-// as one command.
+// as one command; several varied parameters make a grid (the coarse-graining study: particle
+// size x knife friction, docs/coarse-graining.md).
 //
-// 1. Make the settled bed of every seed (one run per seed, first value), in parallel.
-// 2. Run every other (value, seed) pair from those beds, in parallel, one thread per run.
-// 3. Reduce: per run, from walls/WALL_wear.csv, WALL_forces.csv and WALL_layer.csv, the total
-//    and per-phase Archard wear, the peak force in the first phase, the mean force magnitude
-//    over the second half of the last phase (steady state), and the contact layer's velocity
-//    and slip over the second half of the last phase; then mean and standard deviation over
-//    the seeds per value -> study.csv, study.md.
-// 4. Plots (gnuplot, PNG): wear vs value, force vs time per value, layer velocity vs time per
-//    value (each averaged over the seeds); the final wear-coloured wall surface of every run.
+// 1. Make the settled bed of every seed and combination of varied particle parameters (one run
+//    each, the first such combination), in parallel.
+// 2. Run every other (combination, seed) from those beds, in parallel, one thread per run.
+// 3. Reduce: per run, from walls/WALL_wear.csv, WALL_forces.csv, WALL_layer.csv and
+//    WALL_wear_profile.csv: the total and per-phase Archard wear and per metre of the wall's
+//    path in each phase; the share of the wear below --edge-height (the edge) and on each face
+//    direction; the peak wear depth after the surface filter (over the particle radius and over
+//    a fixed length); the mean force magnitude per phase, the peak force in the first phase and
+//    the mean force over the second half of the last (steady state); the contact layer's
+//    velocity and slip over the second half of the last phase; the mean number of particles
+//    touching the wall per phase. Then mean and standard deviation over the seeds per
+//    combination -> study.csv, study.md.
+// 4. Plots (gnuplot, PNG): every metric against the first varied parameter (one line per
+//    combination of the others, error bars: the seeds' standard deviation), the wear by height
+//    above the edge, force and layer velocity against time (each averaged over the seeds); the
+//    final wear-coloured wall surface of every run.
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
@@ -25,6 +33,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace abrade::coupling
@@ -35,58 +44,100 @@ namespace abrade::coupling
     {
       std::map<std::string, double> value; // metric name -> value
       std::vector<double>           time, force, layer_time, layer_velocity;
+      std::vector<double>           height_share; // wear share per height band
+      double                        band = 0;
     };
 
+    double number(const std::string &text) { return std::stod(text); }
+
     /// The metrics of one finished run (see the file comment).
-    RunMetrics reduce_run(const std::string &dir, const std::string &wall, const std::vector<std::string> &phases)
+    RunMetrics reduce_run(const std::string &dir, const std::string &wall, const std::vector<std::string> &phases,
+                          double edge_height)
     {
       RunMetrics m;
-      const std::string wear_file = dir + "/walls/" + wall + "_wear.csv";
-      const CsvTable    wear      = read_csv_table(wear_file);
-      const int         vol       = wear.column("archard_volume");
+      const CsvTable wear = read_csv_table(dir + "/walls/" + wall + "_wear.csv");
+      const int      vol  = wear.column("archard_volume"), path = wear.column("path_length");
       for (const auto &r : wear.rows)
-        m.value["wear_" + r[0]] = std::stod(r[vol]);
+        {
+          m.value["wear_" + r[0]] = number(r[vol]);
+          if (r[0] != "total")
+            m.value["wear_per_m_" + r[0]] = number(r[path]) > 0 ? number(r[vol]) / number(r[path]) : 0.0;
+        }
 
-      const std::string force_file = dir + "/walls/" + wall + "_forces.csv";
-      const CsvTable       f          = read_csv_table(force_file);
-      const int         t = f.column("time"), fx = f.column("fx"),
-              fy = f.column("fy"), fz = f.column("fz");
-      double peak = 0, steady = 0, t_last_start = 1e300, t_end = 0;
+      // forces: per phase the mean magnitude
+      const CsvTable f = read_csv_table(dir + "/walls/" + wall + "_forces.csv");
+      const int      t = f.column("time"), fx = f.column("fx"), fy = f.column("fy"), fz = f.column("fz");
+      double         t_last_start = 1e300, t_end = 0;
       for (const auto &r : f.rows)
         if (r[0] == phases.back())
-          t_last_start = std::min(t_last_start, std::stod(r[t])), t_end = std::max(t_end, std::stod(r[t]));
-      int n_steady = 0;
+          t_last_start = std::min(t_last_start, number(r[t])), t_end = std::max(t_end, number(r[t]));
+      std::map<std::string, double> force_sum;
+      std::map<std::string, int>    rows;
+      double                        peak = 0, steady = 0;
+      int                           n_steady = 0;
       for (const auto &r : f.rows)
         {
-          const double time = std::stod(r[t]);
-          const double mag  = std::sqrt(std::pow(std::stod(r[fx]), 2) + std::pow(std::stod(r[fy]), 2) +
-                                       std::pow(std::stod(r[fz]), 2));
+          const double time = number(r[t]);
+          const double mag  = std::sqrt(std::pow(number(r[fx]), 2) + std::pow(number(r[fy]), 2) + std::pow(number(r[fz]), 2));
           m.time.push_back(time), m.force.push_back(mag);
+          force_sum[r[0]] += mag, ++rows[r[0]];
           if (r[0] == phases.front())
             peak = std::max(peak, mag);
           if (r[0] == phases.back() && time >= 0.5 * (t_last_start + t_end))
             steady += mag, ++n_steady;
         }
-      m.value["peak_force_" + phases.front()] = peak;
+      for (const auto &p : phases)
+        m.value["mean_force_" + p] = rows[p] ? force_sum[p] / rows[p] : 0.0;
+      m.value["peak_force_" + phases.front()]  = peak;
       m.value["steady_force_" + phases.back()] = n_steady ? steady / n_steady : 0.0;
 
       const std::string layer_file = dir + "/walls/" + wall + "_layer.csv";
       if (std::filesystem::exists(layer_file))
         {
-          const CsvTable l = read_csv_table(layer_file);
-          const int   lt = l.column("time"), lv = l.column("mean_velocity"),
-                    lw = l.column("wall_velocity");
+          const CsvTable l  = read_csv_table(layer_file);
+          const int      lt = l.column("time"), lv = l.column("mean_velocity"), lw = l.column("wall_velocity"),
+                    lc = l.column("contacts");
           double sum_v = 0, sum_slip = 0;
           int    n     = 0;
+          std::map<std::string, double> contacts;
+          std::map<std::string, int>    samples;
           for (const auto &r : l.rows)
             {
-              m.layer_time.push_back(std::stod(r[lt]));
-              m.layer_velocity.push_back(std::stod(r[lv]));
-              if (r[0] == phases.back() && std::stod(r[lt]) >= 0.5 * (t_last_start + t_end))
-                sum_v += std::stod(r[lv]), sum_slip += std::stod(r[lw]) - std::stod(r[lv]), ++n;
+              m.layer_time.push_back(number(r[lt]));
+              m.layer_velocity.push_back(number(r[lv]));
+              contacts[r[0]] += number(r[lc]), ++samples[r[0]];
+              if (r[0] == phases.back() && number(r[lt]) >= 0.5 * (t_last_start + t_end))
+                sum_v += number(r[lv]), sum_slip += number(r[lw]) - number(r[lv]), ++n;
             }
           m.value["layer_velocity_" + phases.back()] = n ? sum_v / n : 0.0;
           m.value["layer_slip_" + phases.back()]     = n ? sum_slip / n : 0.0;
+          for (const auto &p : phases)
+            m.value["contacts_" + p] = samples[p] ? contacts[p] / samples[p] : 0.0;
+        }
+
+      const std::string profile_file = dir + "/walls/" + wall + "_wear_profile.csv";
+      if (std::filesystem::exists(profile_file))
+        {
+          const CsvTable pr    = read_csv_table(profile_file);
+          const int      label = pr.column("label"), lo = pr.column("lower"), hi = pr.column("upper"),
+                    v = pr.column("archard_volume"), area = pr.column("area");
+          const double total = m.value["wear_total"];
+          double       edge  = 0;
+          for (const auto &r : pr.rows)
+            {
+              const double share = total > 0 ? number(r[v]) / total : 0.0;
+              if (r[0] == "height")
+                {
+                  m.height_share.push_back(share), m.band = number(r[hi]) - number(r[lo]);
+                  if (number(r[hi]) <= edge_height * (1 + 1e-9))
+                    edge += share;
+                }
+              else if (r[0] == "face" && number(r[area]) > 0)
+                m.value["share_face_" + r[label]] = share;
+              else if (r[0] == "filtered_peak")
+                m.value["peak_depth_filter_" + r[label]] = number(r[v]);
+            }
+          m.value["edge_share"] = edge;
         }
       return m;
     }
@@ -115,6 +166,18 @@ namespace abrade::coupling
           out[k] += c[k] / curves.size();
       return out;
     }
+
+    /// A value as a file-name part.
+    std::string label(const std::string &v)
+    {
+      std::string l;
+      for (char c : v)
+        if (c == '+')
+          l += "plus";
+        else
+          l += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+      return l;
+    }
   } // namespace
 
   void parse_vary(const std::string &text, SweepOptions &o)
@@ -122,8 +185,8 @@ namespace abrade::coupling
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
       throw InputError("--vary '" + text + "'", "expected \"Section/Key=v1,v2,...\"");
-    o.key = text.substr(0, eq);
-    o.values.clear();
+    SweepOptions::Vary vary;
+    vary.key = text.substr(0, eq);
     std::stringstream ss(text.substr(eq + 1));
     std::string       v;
     while (std::getline(ss, v, ','))
@@ -131,52 +194,78 @@ namespace abrade::coupling
         v.erase(0, v.find_first_not_of(' '));
         v.erase(v.find_last_not_of(' ') + 1);
         if (!v.empty())
-          o.values.push_back(v);
+          vary.values.push_back(v);
       }
-    if (o.values.empty())
+    if (vary.values.empty())
       throw InputError("--vary '" + text + "'", "no values given");
+    o.varies.push_back(vary);
   }
 
   int run_sweep(const SweepOptions &o, const std::string &abrade)
   {
-    if (o.values.empty())
+    if (o.varies.empty())
       throw InputError("command line", "sweep needs --vary \"Section/Key=v1,v2,...\"");
     if (o.output.empty())
       throw InputError("command line", "sweep needs --output DIR");
+    for (std::size_t a = 0; a < o.varies.size(); ++a)
+      for (std::size_t b = 0; b < a; ++b)
+        if (o.varies[a].key == o.varies[b].key)
+          throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice");
     const io::OutputDirectory out(o.output);
     const std::string         root = std::filesystem::absolute(o.output).string();
     out.subdirectory("plots");
     out.subdirectory("surfaces");
-    const bool reuse_beds = o.key.rfind("Particles/", 0) != 0; // a particle parameter changes the bed
     out.subdirectory("beds");
     out.subdirectory("runs");
 
+    // the grid: every combination of the varied values, the first parameter varying slowest
+    std::vector<std::vector<std::string>> combos(1);
+    for (const auto &v : o.varies)
+      {
+        std::vector<std::vector<std::string>> next;
+        for (const auto &c : combos)
+          for (const auto &x : v.values)
+            next.push_back(c), next.back().push_back(x);
+        combos = next;
+      }
+    auto name_of = [](const std::vector<std::string> &c) { // one value: itself
+      std::string n;
+      for (const auto &x : c)
+        n += (n.empty() ? "" : "_") + label(x);
+      return n;
+    };
+    // a particle parameter changes the bed: one bed per seed and particle values
+    auto bed_key = [&](const std::vector<std::string> &c, int seed) {
+      std::string k = "bed-seed" + std::to_string(seed);
+      for (std::size_t i = 0; i < o.varies.size(); ++i)
+        if (o.varies[i].key.rfind("Particles/", 0) == 0)
+          k += "-" + label(c[i]);
+      return k;
+    };
+
     struct Run
     {
-      std::string value, dir;
+      std::size_t combo;
+      std::string dir, bed;
       int         seed;
     };
-    auto label = [](const std::string &v) {
-      std::string l = v;
-      for (char &c : l)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-')
-          c = '_';
-      return l;
-    };
-    std::vector<Run> first, rest;
+    std::vector<Run>      first, rest;
+    std::set<std::string> beds;
     for (int seed : o.seeds)
-      for (std::size_t k = 0; k < o.values.size(); ++k)
+      for (std::size_t k = 0; k < combos.size(); ++k)
         {
-          Run r{o.values[k], root + "/runs/" + label(o.values[k]) + "-seed" + std::to_string(seed), seed};
-          (k == 0 || !reuse_beds ? first : rest).push_back(r);
+          const std::string bed = bed_key(combos[k], seed);
+          Run r{k, root + "/runs/" + name_of(combos[k]) + "-seed" + std::to_string(seed), root + "/beds/" + bed + ".bed",
+                seed};
+          (beds.insert(bed).second ? first : rest).push_back(r);
         }
 
     auto child = [&](const Run &r) {
       std::vector<std::string> sets = o.sets;
-      sets.push_back(o.key + "=" + r.value);
+      for (std::size_t i = 0; i < o.varies.size(); ++i)
+        sets.push_back(o.varies[i].key + "=" + combos[r.combo][i]);
       sets.push_back("Particles/Generation/Seed=" + std::to_string(r.seed));
-      sets.push_back("Particles/Settling/Bed file=" +
-                     (reuse_beds ? root + "/beds/bed-seed" + std::to_string(r.seed) + ".bed" : std::string()));
+      sets.push_back("Particles/Settling/Bed file=" + r.bed);
       sets.push_back("Simulation/Threads=1");
       sets.push_back("Output/Write particles=false");
       sets.push_back("Output/Snapshot interval=0");
@@ -187,9 +276,12 @@ namespace abrade::coupling
       makes_beds.push_back(child(r));
     for (const auto &r : rest)
       uses_beds.push_back(child(r));
+    std::string keys;
+    for (const auto &v : o.varies)
+      keys += (keys.empty() ? "" : " x ") + v.key + " (" + std::to_string(v.values.size()) + ")";
     if (!o.quiet)
-      std::cout << "sweep: " << o.key << " over " << o.values.size() << " values x " << o.seeds.size()
-                << " seeds = " << first.size() + rest.size() << " runs, output in " << root << std::endl;
+      std::cout << "sweep: " << keys << " x " << o.seeds.size() << " seeds = " << first.size() + rest.size()
+                << " runs (" << first.size() << " settle their beds), output in " << root << std::endl;
     run_children(makes_beds, o.jobs, "sweep (first runs, which settle the beds)");
     run_children(uses_beds, o.jobs, "sweep");
 
@@ -203,95 +295,167 @@ namespace abrade::coupling
     }
     if (phases.empty())
       throw RunError("sweep: no phases in the runs' wear tables (is wear enabled for wall '" + o.wall + "'?)");
-    std::map<std::string, std::vector<RunMetrics>> by_value;
+    std::vector<std::vector<RunMetrics>> by_combo(combos.size());
     for (const auto &list : {first, rest})
       for (const auto &r : list)
-        by_value[r.value].push_back(reduce_run(r.dir, o.wall, phases));
+        by_combo[r.combo].push_back(reduce_run(r.dir, o.wall, phases, o.edge_height));
 
+    // the metrics, in the table's order (those every run has)
     std::vector<std::string> metrics = {"wear_total"};
     for (const auto &p : phases)
       metrics.push_back("wear_" + p);
+    for (const auto &p : phases)
+      metrics.push_back("wear_per_m_" + p);
+    for (const std::string m : {"edge_share", "share_face_+x", "share_face_-x", "share_face_+y", "share_face_-y",
+                                "share_face_+z", "share_face_-z", "peak_depth_filter_radius", "peak_depth_filter_fixed"})
+      metrics.push_back(m);
+    for (const auto &p : phases)
+      metrics.push_back("mean_force_" + p);
     metrics.push_back("peak_force_" + phases.front());
     metrics.push_back("steady_force_" + phases.back());
-    if (by_value[o.values[0]][0].value.count("layer_velocity_" + phases.back()))
-      {
-        metrics.push_back("layer_velocity_" + phases.back());
-        metrics.push_back("layer_slip_" + phases.back());
-      }
+    metrics.push_back("layer_velocity_" + phases.back());
+    metrics.push_back("layer_slip_" + phases.back());
+    for (const auto &p : phases)
+      metrics.push_back("contacts_" + p);
+    metrics.erase(std::remove_if(metrics.begin(), metrics.end(),
+                                 [&](const std::string &m) {
+                                   for (const auto &runs : by_combo)
+                                     for (const auto &r : runs)
+                                       if (!r.value.count(m))
+                                         return true;
+                                   return false;
+                                 }),
+                  metrics.end());
 
-    std::vector<std::string> header = {"value"};
+    std::vector<std::string> header;
+    for (const auto &v : o.varies)
+      header.push_back(v.key);
     for (const auto &m : metrics)
       header.push_back(m + "_mean"), header.push_back(m + "_std");
-    io::CsvWriter csv(out.file("study.csv"), header);
+    std::ofstream csv(out.file("study.csv"));
     std::ofstream md(out.file("study.md"));
-    md << "Sweep of `" << o.key << "` (" << o.parameter_file << "), wall `" << o.wall << "`, mean +- standard deviation over seeds";
+    for (std::size_t k = 0; k < header.size(); ++k)
+      csv << (k ? "," : "") << header[k];
+    csv << "\n";
+    csv.precision(10);
+    md << "Sweep of " << keys << " (" << o.parameter_file << "), wall `" << o.wall
+       << "`, mean +- standard deviation over seeds";
     for (int s : o.seeds)
       md << " " << s;
-    md << ".\n\n| " << o.key;
+    md << ".\n\n|";
+    for (const auto &v : o.varies)
+      md << " " << v.key << " |";
     for (const auto &m : metrics)
-      md << " | " << m;
-    md << " |\n|---";
-    for (std::size_t k = 0; k < metrics.size(); ++k)
-      md << "|---";
-    md << "|\n";
-    for (const auto &v : o.values)
+      md << " " << m << " |";
+    md << "\n|";
+    for (std::size_t k = 0; k < o.varies.size() + metrics.size(); ++k)
+      md << "---|";
+    md << "\n";
+    std::vector<std::map<std::string, std::pair<double, double>>> stats(combos.size());
+    for (std::size_t c = 0; c < combos.size(); ++c)
       {
-        std::vector<double> row;
-        md << "| " << v;
+        md << "|";
+        for (std::size_t i = 0; i < combos[c].size(); ++i)
+          md << " " << combos[c][i] << " |", csv << (i ? "," : "") << combos[c][i];
         for (const auto &m : metrics)
           {
             std::vector<double> xs;
-            for (const auto &r : by_value[v])
+            for (const auto &r : by_combo[c])
               xs.push_back(r.value.at(m));
-            const auto [mean, sd] = mean_std(xs);
-            row.push_back(mean), row.push_back(sd);
+            stats[c][m] = mean_std(xs);
             char buf[64];
-            std::snprintf(buf, sizeof buf, "%.4g +- %.2g", mean, sd);
-            md << " | " << buf;
+            std::snprintf(buf, sizeof buf, "%.4g +- %.2g", stats[c][m].first, stats[c][m].second);
+            md << " " << buf << " |";
+            csv << "," << stats[c][m].first << "," << stats[c][m].second;
           }
-        md << " |\n";
-        csv.row(v, row);
+        md << "\n", csv << "\n";
       }
-    md << "\nForces in N, velocities in m/s along the probe axis; slip = wall velocity - layer velocity; "
-          "wear is the Archard volume (W as in the parameter file). Steady-state and layer values are "
-          "averages over the second half of phase '" << phases.back() << "'; the peak force is over phase '"
-       << phases.front() << "'.\n";
+    md << "\nWear is the Archard volume (W as in the parameter file); per metre: over the distance the wall's "
+          "centre moved in the phase. edge_share: the share of the total wear on triangles within "
+       << o.edge_height
+       << " m of the wall's lowest point; share_face_D: on the triangles whose normal is closest to direction D. "
+          "peak_depth_filter_radius/fixed: the largest wear depth after the surface filter over the largest "
+          "particle radius / over Output/Wear filter length. Forces in N (magnitude); steady-state and layer "
+          "values are averages over the second half of phase '"
+       << phases.back() << "'; the peak force is over phase '" << phases.front()
+       << "'. Layer velocity in m/s along the probe axis; slip = wall velocity - layer velocity; contacts: "
+          "particles touching the wall (mean over the probe's samples).\n";
     md.close();
+    if (!csv)
+      throw RunError("sweep: could not write " + out.file("study.csv"));
 
     // --- plots (gnuplot) and surfaces ---
+    // lines: one per combination of the parameters after the first
+    std::map<std::string, std::vector<std::size_t>> lines;
+    for (std::size_t c = 0; c < combos.size(); ++c)
+      {
+        std::string rest_name;
+        for (std::size_t i = 1; i < combos[c].size(); ++i)
+          rest_name += (rest_name.empty() ? "" : ", ") + o.varies[i].key + " = " + combos[c][i];
+        lines[rest_name].push_back(c);
+      }
     {
-      std::ofstream wear_data(out.file("plots/wear.dat"));
-      std::ofstream force_data(out.file("plots/force.dat"));
-      std::ofstream layer_data(out.file("plots/layer.dat"));
-      for (const auto &v : o.values)
-        {
-          std::vector<double> xs;
-          std::vector<std::vector<double>> forces, layers;
-          for (const auto &r : by_value[v])
-            xs.push_back(r.value.at("wear_total")), forces.push_back(r.force), layers.push_back(r.layer_velocity);
-          const auto [mean, sd] = mean_std(xs);
-          wear_data << v << " " << mean << " " << sd << "\n";
-          const auto f = average(forces), l = average(layers);
-          force_data << "# " << v << "\n";
-          for (std::size_t k = 0; k < f.size(); ++k)
-            force_data << by_value[v][0].time[k] << " " << f[k] << "\n";
-          force_data << "\n\n";
-          layer_data << "# " << v << "\n";
-          for (std::size_t k = 0; k < l.size(); ++k)
-            layer_data << by_value[v][0].layer_time[k] << " " << l[k] << "\n";
-          layer_data << "\n\n";
-        }
       std::ofstream gp(out.file("plots/plots.gp"));
       gp << "set terminal pngcairo size 900,600\nset grid\nset key outside right\n";
-      gp << "set output 'wear.png'\nset xlabel '" << o.key << "'\nset ylabel 'Archard wear volume'\n"
-         << "plot 'wear.dat' using 1:2:3 with yerrorlines title 'mean +- std over seeds'\n";
-      gp << "set output 'force.png'\nset xlabel 'time [s]'\nset ylabel '|F| on " << o.wall << " [N]'\nplot ";
-      for (std::size_t k = 0; k < o.values.size(); ++k)
-        gp << (k ? ", " : "") << "'force.dat' index " << k << " using 1:2 with lines title '" << o.values[k] << "'";
-      gp << "\nset output 'layer_velocity.png'\nset ylabel 'contact-layer velocity along the axis [m/s]'\nplot ";
-      for (std::size_t k = 0; k < o.values.size(); ++k)
-        gp << (k ? ", " : "") << "'layer.dat' index " << k << " using 1:2 with lines title '" << o.values[k] << "'";
-      gp << "\n";
+      for (const auto &m : metrics)
+        {
+          const std::string file = label(m);
+          std::ofstream     data(out.file("plots/" + file + ".dat"));
+          for (const auto &[line, cs] : lines)
+            {
+              data << "# " << line << "\n";
+              for (std::size_t c : cs)
+                data << combos[c][0] << " " << stats[c][m].first << " " << stats[c][m].second << "\n";
+              data << "\n\n";
+            }
+          gp << "set output '" << file << ".png'\nset xlabel '" << o.varies[0].key << "'\nset ylabel '" << m
+             << "'\nplot ";
+          std::size_t k = 0;
+          for (const auto &[line, cs] : lines)
+            gp << (k ? ", " : "") << "'" << file << ".dat' index " << k << " using 1:2:3 with yerrorlines title '"
+               << (line.empty() ? "mean +- std over seeds" : line) << "'", ++k;
+          gp << "\n";
+        }
+      // the wear by height above the edge, and force and layer velocity over time, per combination
+      std::ofstream height(out.file("plots/wear_by_height.dat")), force(out.file("plots/force.dat")),
+        layer(out.file("plots/layer.dat"));
+      for (std::size_t c = 0; c < combos.size(); ++c)
+        {
+          std::vector<std::vector<double>> shares, forces, layers;
+          for (const auto &r : by_combo[c])
+            shares.push_back(r.height_share), forces.push_back(r.force), layers.push_back(r.layer_velocity);
+          const auto h = average(shares), f = average(forces), l = average(layers);
+          const auto &r0 = by_combo[c][0];
+          height << "# " << name_of(combos[c]) << "\n";
+          for (std::size_t k = 0; k < h.size(); ++k)
+            height << (k + 0.5) * r0.band << " " << h[k] << "\n";
+          force << "# " << name_of(combos[c]) << "\n";
+          for (std::size_t k = 0; k < f.size(); ++k)
+            force << r0.time[k] << " " << f[k] << "\n";
+          layer << "# " << name_of(combos[c]) << "\n";
+          for (std::size_t k = 0; k < l.size(); ++k)
+            layer << r0.layer_time[k] << " " << l[k] << "\n";
+          height << "\n\n", force << "\n\n", layer << "\n\n";
+        }
+      auto per_combo = [&](const std::string &data, const std::string &using_) {
+        for (std::size_t c = 0; c < combos.size(); ++c)
+          {
+            std::string title;
+            for (std::size_t i = 0; i < combos[c].size(); ++i)
+              title += (i ? ", " : "") + combos[c][i];
+            gp << (c ? ", " : "") << "'" << data << "' index " << c << " using " << using_ << " with lines title '"
+               << title << "'";
+          }
+        gp << "\n";
+      };
+      gp << "set output 'wear_by_height.png'\nset xlabel 'share of the wear on " << o.wall
+         << "'\nset ylabel 'height above the lowest point [m]'\nset yrange [0:0.3]\nplot ";
+      per_combo("wear_by_height.dat", "2:1");
+      gp << "set autoscale y\nset output 'force.png'\nset xlabel 'time [s]'\nset ylabel '|F| on " << o.wall
+         << " [N]'\nplot ";
+      per_combo("force.dat", "1:2");
+      gp << "set output 'layer_velocity.png'\nset ylabel 'contact-layer velocity along the axis [m/s]'\nplot ";
+      per_combo("layer.dat", "1:2");
     }
     io::run_gnuplot(root + "/plots", "plots.gp", o.quiet);
     for (const auto &list : {first, rest})
@@ -307,7 +471,7 @@ namespace abrade::coupling
             }
           if (!last.empty())
             std::filesystem::copy_file(r.dir + "/walls/" + last,
-                                       root + "/surfaces/" + o.wall + "_" + label(r.value) + "_seed" +
+                                       root + "/surfaces/" + o.wall + "_" + name_of(combos[r.combo]) + "_seed" +
                                          std::to_string(r.seed) + ".vtp",
                                        std::filesystem::copy_options::overwrite_existing);
         }

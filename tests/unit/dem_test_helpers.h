@@ -2,7 +2,9 @@
 // Small set-ups shared by the DEM verification tests: one or two spheres, an optional flat wall.
 #include <abrade/dem/simulation.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace abrade::dem::testing
 {
@@ -42,6 +44,39 @@ namespace abrade::dem::testing
   {
     return 1 / ((1 - a.poisson_ratio * a.poisson_ratio) / a.youngs_modulus +
                 (1 - b.poisson_ratio * b.poisson_ratio) / b.youngs_modulus);
+  }
+
+  /// Slope (degrees) of a heap's flank: the highest particle in rings around the heap's axis,
+  /// fitted by a straight line between 20 % and 80 % of the heap's radius (the distance from
+  /// the axis within which 97 % of the particles lie: a few that rolled away do not stretch it).
+  inline double heap_angle(const ParticleStore &P)
+  {
+    double cx = 0, cy = 0;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      cx += P.x[i], cy += P.y[i];
+    cx /= P.size(), cy /= P.size();
+    std::vector<double> d(P.size());
+    for (std::size_t i = 0; i < P.size(); ++i)
+      d[i] = std::hypot(P.x[i] - cx, P.y[i] - cy);
+    std::nth_element(d.begin(), d.begin() + long(0.97 * (d.size() - 1)), d.end());
+    const double r_max = d[long(0.97 * (d.size() - 1))];
+    const int           bins = 12;
+    std::vector<double> top(bins, 0.0);
+    for (std::size_t i = 0; i < P.size(); ++i)
+      {
+        const int b = int(std::hypot(P.x[i] - cx, P.y[i] - cy) / r_max * bins);
+        if (b < bins)
+          top[b] = std::max(top[b], P.z[i]);
+      }
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int    n  = 0;
+    for (int b = bins / 5; b < 4 * bins / 5; ++b)
+      {
+        const double r = (b + 0.5) * r_max / bins;
+        sx += r, sy += top[b], sxx += r * r, sxy += r * top[b], ++n;
+      }
+    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    return std::atan(-slope) * 180 / M_PI;
   }
 
   inline double sphere_mass(double r, double rho) { return rho * 4.0 / 3.0 * M_PI * r * r * r; }

@@ -9,38 +9,6 @@
 using namespace abrade::dem;
 using namespace abrade::dem::testing;
 
-namespace
-{
-  /// Slope (degrees) of the heap's flank: the highest particle in rings around the heap's axis,
-  /// fitted by a straight line between 20 % and 80 % of the heap's radius.
-  double heap_angle(const ParticleStore &P)
-  {
-    double cx = 0, cy = 0;
-    for (std::size_t i = 0; i < P.size(); ++i)
-      cx += P.x[i], cy += P.y[i];
-    cx /= P.size(), cy /= P.size();
-    double r_max = 0;
-    for (std::size_t i = 0; i < P.size(); ++i)
-      r_max = std::max(r_max, std::hypot(P.x[i] - cx, P.y[i] - cy));
-    const int           bins = 12;
-    std::vector<double> top(bins, 0.0);
-    for (std::size_t i = 0; i < P.size(); ++i)
-      {
-        const int b = std::min(bins - 1, int(std::hypot(P.x[i] - cx, P.y[i] - cy) / r_max * bins));
-        top[b]      = std::max(top[b], P.z[i]);
-      }
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int    n  = 0;
-    for (int b = bins / 5; b < 4 * bins / 5; ++b)
-      {
-        const double r = (b + 0.5) * r_max / bins;
-        sx += r, sy += top[b], sxx += r * r, sxy += r * top[b], ++n;
-      }
-    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    return std::atan(-slope) * 180 / M_PI;
-  }
-} // namespace
-
 TEST(AngleOfRepose, PouredHeapIsStableAndFinite)
 {
   const Material grain = Material::from_shear_modulus("grain", 1e7, 0.25, 2500, false);

@@ -138,6 +138,7 @@ namespace abrade::coupling::lifetime
   {
     init_mpi_once();
     dem_case         = read_dem_case(ctx.parameters);
+    report_coarse_graining(dem_case, ctx);
     knife_parameters = read_knife_parameters(ctx.parameters);
     read_settings();
     build_knife();

@@ -51,7 +51,7 @@ namespace abrade::dem
     return best;
   }
 
-  void LayerProbe::after_step(const Simulation &sim, const ContactLog &)
+  void LayerProbe::after_step(const Simulation &sim, const ContactLog &log)
   {
     if (sim.step_number() % every != 0)
       return;
@@ -80,11 +80,14 @@ namespace abrade::dem
             sum += axis.dot(Vec3(P.vx[i], P.vy[i], P.vz[i]));
           }
       }
-    // every rank sees its own particles: one reduction for both (a count below 2^53 is exact)
-    std::vector<double> totals{double(count), sum};
+    long contacts = 0; // this step's contacts with the wall (one per particle and wall)
+    log.for_each([&](const WallContactRecord &r) { contacts += r.wall == int(wall); });
+    // every rank sees its own particles: one reduction for all (a count below 2^53 is exact)
+    std::vector<double> totals{double(count), sum, double(contacts)};
     sim.parallel().sum(totals);
     count = static_cast<long>(totals[0]);
     sum   = totals[1];
-    taken.push_back({sim.time(), current, count, count ? sum / count : 0.0, axis.dot(w.velocity)});
+    taken.push_back({sim.time(), current, count, count ? sum / count : 0.0, axis.dot(w.velocity),
+                     static_cast<long>(totals[2])});
   }
 } // namespace abrade::dem

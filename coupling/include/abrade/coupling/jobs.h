@@ -39,6 +39,9 @@ namespace abrade::coupling
   /// otherwise generates, settles and saves it there (empty: generate, save nothing); sets the
   /// simulation up. Returns true when the bed was loaded.
   bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed_file);
+  /// Logs the case's coarse graining (and records it in summary.json) and the parameters that
+  /// do not follow it.
+  void report_coarse_graining(const DemCase &c, JobContext &ctx);
 
   // the jobs
   void run_dem_job(JobContext &ctx);

@@ -1,9 +1,10 @@
 #pragma once
-// Parameter sweeps with replicate beds: `abrade sweep FILE.prm --vary "Key=v1,v2,..." --seeds
-// 1,2,3`. Every (value, seed) pair is one `abrade run` (single-threaded, as many at a time as
-// there are cores); the settled bed of each seed is made once and reused by all values (unless
-// the varied parameter is a particle parameter, which would change the bed). The runs' tables
-// are then reduced to mean and standard deviation over the seeds, per value, for one wall.
+// Parameter sweeps with replicate beds: `abrade sweep FILE.prm --vary "Key=v1,v2,..." [--vary
+// "Key2=..."] --seeds 1,2,3`. Several --vary make a grid (every combination). Every
+// (combination, seed) is one `abrade run` (single-threaded, as many at a time as there are
+// cores); the settled bed of each seed is made once per combination of the varied particle
+// parameters (Particles/...) and reused by the others. The runs' tables are then reduced to
+// mean and standard deviation over the seeds, per combination, for one wall.
 #include <string>
 #include <vector>
 
@@ -12,8 +13,13 @@ namespace abrade::coupling
   struct SweepOptions
   {
     std::string              parameter_file;
-    std::string              key;    ///< "Section/Sub/Key"
-    std::vector<std::string> values;
+    struct Vary
+    {
+      std::string              key; ///< "Section/Sub/Key"
+      std::vector<std::string> values;
+    };
+    std::vector<Vary>        varies; ///< the grid: the first varies slowest
+    double                   edge_height = 0.04; ///< [m] the wall's "edge": wear below it
     std::vector<int>         seeds = {1, 2, 3};
     std::vector<std::string> sets;   ///< extra overrides for every run
     std::string              output;
@@ -22,7 +28,7 @@ namespace abrade::coupling
     bool                     quiet = false;
   };
 
-  /// Parses "Key=v1,v2,v3" into key and values; throws InputError.
+  /// Parses "Key=v1,v2,v3" and appends it to the options' varies; throws InputError.
   void parse_vary(const std::string &text, SweepOptions &options);
 
   /// Runs the sweep and writes DIR/study.csv, DIR/study.md, DIR/plots/*.png,

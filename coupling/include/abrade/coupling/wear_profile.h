@@ -1,0 +1,32 @@
+#pragma once
+// Where on a wall the Archard wear went, for studies that compare wear patterns (docs/
+// coarse-graining.md): walls/NAME_wear_profile.csv of the `dem` job, with columns
+// kind, label, lower, upper, archard_volume, area and rows
+//  - kind "height": the volume on the triangles whose centroid is between lower and upper [m]
+//    above the wall's lowest point (bands of Output/Wear profile band; a knife's edge first);
+//  - kind "face": per direction of the triangles' outward normal in the reference pose (label
+//    +x, -x, +y, -y, +z, -z: the axis the normal is closest to), their volume and area;
+//  - kind "filtered_peak": the largest wear depth after the lifetime loop's surface filter
+//    (fem/surface_filter.h, volume conserving) with length lower = upper [m]; label "radius"
+//    for the largest particle radius (the loop's default), "fixed" for Output/Wear filter
+//    length; archard_volume holds the depth [m].
+#include <abrade/dem/triangle_mesh.h>
+
+#include <string>
+#include <vector>
+
+namespace abrade::coupling
+{
+  struct WearProfileSettings
+  {
+    double band         = 0.01;   ///< height band [m]
+    double fixed_filter = 0.0275; ///< [m]; 0: no "fixed" row
+    double radius       = 0;      ///< the largest particle radius [m]
+  };
+
+  /// Writes @p file from the wall's reference @p mesh and its Archard volumes per triangle and
+  /// per vertex (which have the same sum).
+  void write_wear_profile(const std::string &file, const dem::TriangleMesh &mesh,
+                          const std::vector<double> &triangle_volume, const std::vector<double> &vertex_volume,
+                          const WearProfileSettings &settings);
+} // namespace abrade::coupling

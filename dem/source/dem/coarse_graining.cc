@@ -1,0 +1,33 @@
+#include <abrade/common/format_number.h>
+#include <abrade/dem/coarse_graining.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace abrade::dem
+{
+  double coarse_grain(const double f, FillRegion &fill, Settings &settings)
+  {
+    if (!(f > 0) || !std::isfinite(f))
+      throw std::invalid_argument("coarse-graining ratio must be positive and finite");
+    auto &s  = fill.sizes;
+    s.radius *= f, s.min *= f, s.max *= f, s.std *= f;
+    settings.skin *= f; // 0 (automatic: a fraction of the smallest radius) stays 0
+    const double count = double(fill.count) / (f * f * f);
+    if (fill.count > 0)
+      fill.count = std::max(1L, std::lround(count));
+    return count;
+  }
+
+  std::vector<std::string> coarse_graining_warnings(const double f, const Settings &settings)
+  {
+    std::vector<std::string> out;
+    if (f == 1)
+      return out;
+    if (settings.time_step > 0)
+      out.push_back("Simulation/Time step is fixed (" + io::format_number(settings.time_step) +
+                    " s) while the particles are coarse-grained by " + io::format_number(f) +
+                    ": the stable step scales with the radius; 0 (a fraction of the Rayleigh time) follows it");
+    return out;
+  }
+} // namespace abrade::dem
