@@ -62,6 +62,33 @@ namespace abrade::coupling
     }
   } // namespace
 
+  namespace
+  {
+    /// A saved bed must hold the particles the parameters describe: a bed made at another
+    /// radius or coarse-graining factor (the same Bed file, rerun with another Factor) would
+    /// otherwise run silently with the old particles.
+    void check_bed_sizes(const DemCase &c, const dem::Simulation &sim, const std::string &bed) // collective
+    {
+      const auto &P  = sim.particles();
+      double      lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (std::size_t i = 0; i < P.size(); ++i)
+        lo = std::min(lo, P.radius[i]), hi = std::max(hi, P.radius[i]);
+      lo = -sim.parallel().max(-lo), hi = sim.parallel().max(hi);
+      const auto  &d        = c.fill.sizes;
+      const bool   constant = d.kind == dem::SizeDistribution::Kind::constant;
+      const double want_lo = constant ? d.radius : d.min, want_hi = constant ? d.radius : d.max;
+      const double tol = 1e-9 * want_hi;
+      if (lo < want_lo - tol || hi > want_hi + tol || (constant && lo < want_hi - tol))
+        throw InputError(bed, "the bed's radii are " + fmt(lo) + (hi > lo ? ".." + fmt(hi) : std::string()) +
+                                " m, the parameters give " + fmt(want_lo) +
+                                (want_hi > want_lo ? ".." + fmt(want_hi) : std::string()) +
+                                " m (Particles/Generation, x Particles/Coarse graining/Factor " +
+                                fmt(c.coarse_graining) +
+                                "): it was made for other particles; name another Particles/Settling/Bed file or "
+                                "delete this one");
+    }
+  } // namespace
+
   bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
   {
     {
@@ -84,6 +111,7 @@ namespace abrade::coupling
         {
           io::ScopedTimer t(ctx.timers, "load bed");
           dem::load_bed(sim, bed);
+          check_bed_sizes(c, sim, bed);
           sim.setup();
           ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.n_particles()) +
                        " particles, top at z = " + fmt(bed_top(sim), 4) + " m");
@@ -199,7 +227,7 @@ namespace abrade::coupling
       total += p.second;
     io::ProgressLine progress("dem", total);
     io::Json        &phases = ctx.results["phases"];
-    std::map<std::string, std::vector<double>> path_length; // per phase and wall: how far its centre moved [m]
+    std::map<std::string, std::vector<double>> path_length; // per phase and wall: how far its centroid moved [m]
     for (const auto &p : c.phases)
       path_length[p.first].assign(sim.n_walls(), 0.0);
     const auto       stats0 = sim.statistics();
@@ -213,16 +241,27 @@ namespace abrade::coupling
         const auto        before = sim.statistics();
         std::vector<dem::Vec3> force_sum(sim.n_walls(), dem::Vec3::Zero()), torque_sum = force_sum;
         std::vector<double>    peak(sim.n_walls(), 0.0), peak_torque = peak;
+        // the path of each wall's centroid (the mean of its vertices: a hinge's rotation moves it)
+        auto centroid = [](const dem::Wall &w) {
+          dem::Vec3 c = dem::Vec3::Zero();
+          for (std::size_t v = 0; v < w.current.size(); v += 3)
+            c += dem::Vec3(&w.current[v]);
+          return dem::Vec3(c / std::max<std::size_t>(1, w.current.size() / 3));
+        };
         std::vector<dem::Vec3> centre(sim.n_walls());
         for (std::size_t w = 0; w < sim.n_walls(); ++w)
-          centre[w] = sim.wall(w).current_centre();
+          centre[w] = centroid(sim.wall(w));
         long                   steps = 0;
         sim.run_phase(name, duration, [&](const dem::Simulation &s) {
           ++steps;
           for (std::size_t w = 0; w < s.n_walls(); ++w)
             {
-              path_length[name][w] += (s.wall(w).current_centre() - centre[w]).norm();
-              centre[w] = s.wall(w).current_centre();
+              if (s.wall(w).motion.kind != dem::WallMotion::Kind::fixed)
+                {
+                  const dem::Vec3 now = centroid(s.wall(w));
+                  path_length[name][w] += (now - centre[w]).norm();
+                  centre[w] = now;
+                }
               force_sum[w] += s.wall(w).force;
               peak[w] = std::max(peak[w], s.wall(w).force.norm());
               torque_sum[w] += s.wall(w).torque; // about the wall's rotation centre (a hinge)
@@ -298,7 +337,7 @@ namespace abrade::coupling
         for (const auto &phase : rows)
           {
             const auto   depth = wear->archard_depth(w, phase);
-            double path = 0; // the wall's centre's path in the phase (all phases: the sum)
+            double path = 0; // the wall's centroid's path in the phase (all phases: the sum)
             for (const auto &[p, lengths] : path_length)
               if (phase.empty() || p == phase)
                 path += lengths[w];

@@ -706,7 +706,7 @@ namespace abrade::coupling
       const std::vector<std::string> gp = {"Particles", "Generation"};
       const long   real_count           = c.fill.count;
       const double count                = dem::coarse_grain(g, c.fill, c.settings);
-      c.settle_ke *= g * g * g; // a kinetic energy per particle
+      c.settle_ke = dem::coarse_grain_energy(g, c.settle_ke); // a kinetic energy per particle
       if (real_count > 0 && count < 1)
         f.fail(gp, "Count", std::to_string(real_count) + " real particles make " + io::format_number(count) +
                               " particles coarse-grained by " + io::format_number(g) + ": too few for a bed");
@@ -982,6 +982,19 @@ namespace abrade::coupling
         prm.leave_subsection();
         if (wc.probe && !(wc.probe_axis.norm() > 0))
           f.fail({wp[0], "Layer probe"}, "Axis", "must not be zero");
+        if (c.coarse_graining != 1 && (wc.wear.archard || wc.wear.relative || wc.wear.finnie))
+          {
+            // a wear pattern is resolved by the triangles: they should stay smaller than a particle
+            double longest = 0;
+            for (const auto &t : w.mesh.triangles)
+              for (int k = 0; k < 3; ++k)
+                longest = std::max(longest, (w.mesh.vertices[t[k]] - w.mesh.vertices[t[(k + 1) % 3]]).norm());
+            if (longest > c.fill.sizes.largest())
+              c.warnings.push_back("Wall " + name + ": its triangles (edges up to " + io::format_number(longest) +
+                                   " m) are larger than the coarse-grained particles (radius " +
+                                   io::format_number(c.fill.sizes.largest()) +
+                                   " m): the wear pattern is resolved only to the triangles (Maximum edge length)");
+          }
         if (wc.probe && wc.probe_thickness > 0 && c.coarse_graining != 1)
           c.warnings.push_back("Wall " + name + "/Layer probe/Thickness is fixed (" + io::format_number(wc.probe_thickness) +
                                " m) while the particles are coarse-grained: 0 ties it to the simulated radius");

@@ -60,8 +60,8 @@ namespace abrade::coupling
       for (const auto &r : wear.rows)
         {
           m.value["wear_" + r[0]] = number(r[vol]);
-          if (r[0] != "total")
-            m.value["wear_per_m_" + r[0]] = number(r[path]) > 0 ? number(r[vol]) / number(r[path]) : 0.0;
+          if (r[0] != "total" && number(r[path]) > 0) // (a wall at rest in a phase has no wear per metre)
+            m.value["wear_per_m_" + r[0]] = number(r[vol]) / number(r[path]);
         }
 
       // forces: per phase the mean magnitude
@@ -128,9 +128,10 @@ namespace abrade::coupling
               const double share = total > 0 ? number(r[v]) / total : 0.0;
               if (r[0] == "height")
                 {
-                  m.height_share.push_back(share), m.band = number(r[hi]) - number(r[lo]);
-                  if (number(r[hi]) <= edge_height * (1 + 1e-9))
-                    edge += share;
+                  const double a = number(r[lo]), b = number(r[hi]);
+                  m.height_share.push_back(share), m.band = b - a;
+                  // the bands below the edge height, a band it cuts in proportion
+                  edge += share * std::clamp((edge_height - a) / (b - a), 0.0, 1.0);
                 }
               else if (r[0] == "face" && number(r[area]) > 0)
                 m.value["share_face_" + r[label]] = share;
@@ -234,6 +235,14 @@ namespace abrade::coupling
         n += (n.empty() ? "" : "_") + label(x);
       return n;
     };
+    {
+      std::set<std::string> names; // the runs' directories: one per combination
+      for (const auto &c : combos)
+        if (!names.insert(name_of(c)).second)
+          throw InputError("command line", "--vary: the combination '" + name_of(c) +
+                                             "' comes twice (a value repeated, or values that differ only in "
+                                             "characters a directory name cannot hold)");
+    }
     // a particle parameter changes the bed: one bed per seed and particle values
     auto bed_key = [&](const std::vector<std::string> &c, int seed) {
       std::string k = "bed-seed" + std::to_string(seed);
@@ -371,7 +380,7 @@ namespace abrade::coupling
         md << "\n", csv << "\n";
       }
     md << "\nWear is the Archard volume (W as in the parameter file); per metre: over the distance the wall's "
-          "centre moved in the phase. edge_share: the share of the total wear on triangles within "
+          "centroid moved in the phase. edge_share: the share of the total wear on triangles within "
        << o.edge_height
        << " m of the wall's lowest point; share_face_D: on the triangles whose normal is closest to direction D. "
           "peak_depth_filter_radius/fixed: the largest wear depth after the surface filter over the largest "
@@ -379,7 +388,7 @@ namespace abrade::coupling
           "values are averages over the second half of phase '"
        << phases.back() << "'; the peak force is over phase '" << phases.front()
        << "'. Layer velocity in m/s along the probe axis; slip = wall velocity - layer velocity; contacts: "
-          "particles touching the wall (mean over the probe's samples).\n";
+          "contacts with the wall, a particle on two faces counting twice (mean over the probe's samples).\n";
     md.close();
     if (!csv)
       throw RunError("sweep: could not write " + out.file("study.csv"));

@@ -39,7 +39,7 @@ namespace abrade::coupling
     double z0 = 1e300, z1 = -1e300;
     for (const auto &v : mesh.vertices)
       z0 = std::min(z0, v[2]), z1 = std::max(z1, v[2]);
-    const int           n_bands = std::max(1, int(std::ceil((z1 - z0) / p.band)));
+    const int           n_bands = std::max(1, int(std::ceil((z1 - z0) / p.band - 1e-9)));
     std::vector<double> band(n_bands, 0.0), face(6, 0.0), face_area(6, 0.0);
     for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
       {

@@ -3,7 +3,7 @@
 //  - settle in a 0.24 m box (f = 24/7 and 12/7: particles of 12 and 6 mm, 700 and 5,600 of
 //    them) to the same bulk density inside the bed (within 2 %; measured: 0.1 %) and nearly the
 //    same height: the layer next to a wall is looser over about a particle radius, and in a box
-//    10 coarse particles wide that makes the coarse bed about 6 % taller (limit 8 %);
+//    10 coarse particles wide that makes the coarse bed about 6 % taller (limit 10 %);
 //  - pour from a column onto a floor to the same angle of repose (f = 12/7 and 12/7 / sqrt 2:
 //    6 and 4.2 mm, heaps of 3,472 and 9,819 particles; within 2 degrees, measured 0.2). A heap
 //    of the 434 particles of 12 mm stands about 6 degrees flatter: the angle is kept only once
@@ -132,6 +132,7 @@ TEST(CoarseGraining, RulesScaleSizesCountAndSkin)
   EXPECT_DOUBLE_EQ(f.sizes.max, 0.0077);
   EXPECT_EQ(f.count, 1000);
   EXPECT_DOUBLE_EQ(s.skin, 0.002);
+  EXPECT_DOUBLE_EQ(coarse_grain_energy(2, 1e-4), 8e-4); // kinetic energy per particle, as the mass
   EXPECT_TRUE(coarse_graining_warnings(2, s).empty());
   s.time_step = 1e-5; // a fixed step does not follow the radius
   EXPECT_EQ(coarse_graining_warnings(2, s).size(), 1u);
@@ -145,7 +146,7 @@ TEST(CoarseGraining, KeepsBedHeightAndBulkDensity)
               "%.1f kg/m^3\n",
               coarse.particles, coarse.height, coarse.bulk_density, fine.particles, fine.height, fine.bulk_density);
   EXPECT_NEAR(coarse.particles * 8, fine.particles, 8);
-  EXPECT_NEAR(coarse.height / fine.height, 1.0, 0.08);
+  EXPECT_NEAR(coarse.height / fine.height, 1.0, 0.10);
   EXPECT_NEAR(coarse.bulk_density / fine.bulk_density, 1.0, 0.02);
 }
 

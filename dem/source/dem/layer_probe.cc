@@ -80,7 +80,7 @@ namespace abrade::dem
             sum += axis.dot(Vec3(P.vx[i], P.vy[i], P.vz[i]));
           }
       }
-    long contacts = 0; // this step's contacts with the wall (one per particle and wall)
+    long contacts = 0; // this step's contacts with the wall (a particle on two faces of an edge: two)
     log.for_each([&](const WallContactRecord &r) { contacts += r.wall == int(wall); });
     // every rank sees its own particles: one reduction for all (a count below 2^53 is exact)
     std::vector<double> totals{double(count), sum, double(contacts)};

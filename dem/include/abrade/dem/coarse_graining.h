@@ -1,9 +1,9 @@
 #pragma once
 // Coarse graining: a simulated particle f times the size of the real one stands for f^3 real
 // particles (f, the coarse-graining ratio, >= 1 as a rule). The rules that keep the bulk's
-// behaviour (Bierwisch et al. 2009, "Particle-based simulation of granular flows with scaled
-// particles", J. Mech. Phys. Solids 57; the scaling Aspherix and Rocky document for their
-// coarse-graining models):
+// behaviour (Bierwisch, Kraft, Riedel and Moseler 2009, "Three-dimensional discrete element
+// models for the granular statics and dynamics of powders in cavity filling", J. Mech. Phys.
+// Solids 57, 10-31; the scaling Aspherix and Rocky document for their coarse-graining models):
 //
 //  - lengths of the particle scale by f: radius, the size distribution's bounds and spread;
 //  - the number of particles in a given region scales by f^-3, so the bulk mass stays;
@@ -31,6 +31,10 @@ namespace abrade::dem
   /// settings' skin (when it is given). Returns the count before rounding (a bed of a few
   /// particles is the caller's to refuse). Throws std::invalid_argument for f <= 0.
   double coarse_grain(double f, FillRegion &fill, Settings &settings);
+
+  /// An energy per particle (the settling threshold) for particles coarse-grained by @p f:
+  /// x f^3, as the particle's mass.
+  inline double coarse_grain_energy(double f, double energy) { return energy * f * f * f; }
 
   /// Parameters that stay in absolute units while the particles scale by @p f: a fixed time
   /// step (the Rayleigh time moves with f). One warning per such parameter; none for f = 1.

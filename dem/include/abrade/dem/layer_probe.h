@@ -3,7 +3,8 @@
 // particles in direct contact with it. Every few steps it counts the particles whose centre is
 // within `thickness` of the wall's surface and their mean velocity along an axis, next to the
 // wall's own velocity along that axis: the difference is how fast the contact layer slides
-// along the wall. It also counts the particles that touch the wall in that step.
+// along the wall. It also counts the contacts with the wall in that step (a particle that
+// touches two faces of an edge or a corner makes two).
 #include <abrade/dem/contact_log.h>
 #include <abrade/dem/triangle_mesh.h>
 
@@ -22,7 +23,7 @@ namespace abrade::dem
       long        count;
       double      mean_velocity; ///< of the particles in the layer, along the axis [m/s]
       double      wall_velocity; ///< of the wall's centre along the axis [m/s]
-      long        contacts;      ///< particles touching the wall in that step
+      long        contacts;      ///< contacts with the wall in that step (per particle and face it touches)
     };
 
     /// @p thickness: from the surface to a particle centre [m]; @p every: sample interval in steps.
