@@ -59,5 +59,6 @@ for d in sorted(os.listdir(out)):
               f"{r.get('smoothing_radius', float('nan')):.3g} |")
 PY
 
+python3 "$root/bench/coarse_graining_analysis.py" "$out/sizes" "$out/friction" | tee "$out/answers.md"
 cat "$out/runtimes.md"
-echo "results: $out/sizes/study.md, $out/friction/study.md, $out/lifetime-*/summary.json"
+echo "results: $out/answers.md, $out/lifetime.md, $out/sizes/study.md, $out/friction/study.md, $out/sizes/plots/"

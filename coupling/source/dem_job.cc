@@ -76,9 +76,12 @@ namespace abrade::coupling
       lo = -sim.parallel().max(-lo), hi = sim.parallel().max(hi);
       const auto  &d        = c.fill.sizes;
       const bool   constant = d.kind == dem::SizeDistribution::Kind::constant;
-      const double want_lo = constant ? d.radius : d.min, want_hi = constant ? d.radius : d.max;
+      double       want_lo = constant ? d.radius : d.min, want_hi = constant ? d.radius : d.max;
+      const bool   two     = bool(c.fine_fill); // a fine region: its radii too
+      if (two)
+        want_lo = std::min(want_lo, constant ? c.fine_fill->sizes.radius : c.fine_fill->sizes.min);
       const double tol = 1e-9 * want_hi;
-      if (lo < want_lo - tol || hi > want_hi + tol || (constant && lo < want_hi - tol))
+      if (lo < want_lo - tol || hi > want_hi + tol || (constant && !two && lo < want_hi - tol))
         throw InputError(bed, "the bed's radii are " + fmt(lo) + (hi > lo ? ".." + fmt(hi) : std::string()) +
                                 " m, the parameters give " + fmt(want_lo) +
                                 (want_hi > want_lo ? ".." + fmt(want_hi) : std::string()) +
@@ -129,7 +132,15 @@ namespace abrade::coupling
         fill.avoid.push_back(sim.wall(w).current_mesh());
       {
         io::ScopedTimer t(ctx.timers, "generate");
-        const long      n = dem::fill_region(sim, fill);
+        if (c.fine_fill) // multi-level coarse graining: the finer particles first, in their box
+          {
+            dem::FillRegion fine = *c.fine_fill;
+            fine.avoid           = fill.avoid;
+            const long n         = dem::fill_region(sim, fine);
+            ctx.log.line("Generated " + std::to_string(n) + " particles of radius " + fmt(fine.sizes.largest()) +
+                         " m in the fine region (seed " + std::to_string(fine.seed) + ")");
+          }
+        const long n = dem::fill_region(sim, fill);
         ctx.log.line("Generated " + std::to_string(n) + " particles (seed " + std::to_string(fill.seed) + ")");
       }
       sim.setup();

@@ -418,6 +418,15 @@ namespace abrade::coupling
                       "absolute units (a fixed Time step, a Layer probe Thickness, Lifetime/"
                       "Smoothing radius, an imported bed) are named in a warning. What coarse "
                       "graining does to wear: docs/coarse-graining.md. Range: [0.001, 1000].");
+    declare_vector(prm, "Fine region min", "0, 0, 0",
+                   "[m] Multi-level coarse graining (a prototype): a box of the fill region that is "
+                   "filled with particles coarse-grained by Fine region factor instead (its share of "
+                   "the real Count by volume), say around a tool's path. Equal corners: none.");
+    declare_vector(prm, "Fine region max", "0, 0, 0", "[m] Upper corner of the fine region.");
+    prm.declare_entry("Fine region factor", "1", Double(1e-3, 1e3),
+                      "[-] Coarse-graining ratio inside the fine region (smaller than Factor). The time "
+                      "step follows the finer particles; a wall's contact layer and the wear filter "
+                      "follow the largest radius unless set. Range: [0.001, 1000].");
     prm.leave_subsection();
     prm.enter_subsection("Settling");
     prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, huge),
@@ -710,7 +719,8 @@ namespace abrade::coupling
       if (real_count > 0 && count < 1)
         f.fail(gp, "Count", std::to_string(real_count) + " real particles make " + io::format_number(count) +
                               " particles coarse-grained by " + io::format_number(g) + ": too few for a bed");
-      c.warnings = dem::coarse_graining_warnings(g, c.settings);
+      for (const auto &w : dem::coarse_graining_warnings(g, c.settings))
+        c.warnings.push_back(w);
       if (g < 1)
         c.warnings.push_back("Particles/Coarse graining/Factor = " + io::format_number(g) +
                              " is below 1: the simulated particles are smaller than the real ones");
@@ -814,7 +824,27 @@ namespace abrade::coupling
       f.fail(gp, "Standard deviation", "must be positive for a normal distribution");
     prm.enter_subsection("Coarse graining");
     c.coarse_graining = prm.get_double("Factor");
+    const Vec3   fine_lo = get_vector(prm, "Fine region min"), fine_hi = get_vector(prm, "Fine region max");
+    const double fine_factor = prm.get_double("Fine region factor");
     prm.leave_subsection();
+    if (fine_lo != fine_hi)
+      {
+        const std::vector<std::string> cg = {"Particles", "Coarse graining"};
+        if (!(fine_factor < c.coarse_graining))
+          f.fail(cg, "Fine region factor", "must be smaller than Factor (" + io::format_number(c.coarse_graining) + ")");
+        if (!c.region_mesh_file.empty())
+          f.fail(cg, "Fine region max", "a fine region needs a fill box without Region mesh");
+        if (!(fine_lo.array() < fine_hi.array()).all() || !(fine_lo.array() < fill.box_max.array()).all() ||
+            !(fine_hi.array() > fill.box_min.array()).all())
+          f.fail(cg, "Fine region max", "must exceed Fine region min and overlap the fill box");
+        c.fine_fill         = dem::split_off_region(fill, fine_lo, fine_hi);
+        dem::Settings unused = c.settings; // (the skin follows Factor)
+        dem::coarse_grain(fine_factor, *c.fine_fill, unused);
+        c.warnings.push_back("multi-level coarse graining (a prototype): particles coarse-grained by " +
+                             io::format_number(fine_factor) + " in the fine region, by " +
+                             io::format_number(c.coarse_graining) +
+                             " elsewhere; contact layers and the wear filter follow the largest radius unless set");
+      }
     prm.enter_subsection("Settling");
     c.settle_ke       = prm.get_double("Kinetic energy threshold");
     c.settle_max_time = prm.get_double("Maximum time");

@@ -156,3 +156,25 @@ TEST(CoarseGraining, KeepsTheAngleOfRepose)
   EXPECT_GT(fine, 20);
   EXPECT_NEAR(coarse, fine, 2.0);
 }
+
+TEST(CoarseGraining, FineRegionHoldsTheFinerParticles)
+{
+  // multi-level coarse graining: a box of the fill region with particles coarse-grained by 1.5,
+  // the rest by 3; the real count split by volume, every particle of its own size in its own part
+  FillRegion coarse = real_particles(Vec3(0, 0, 0), Vec3(0.4, 0.2, 0.2), 20000);
+  FillRegion fine   = split_off_region(coarse, Vec3(0.1, -1, -1), Vec3(0.2, 1, 1));
+  EXPECT_EQ(fine.count, 5000);
+  EXPECT_EQ(coarse.count, 15000);
+  Settings s;
+  coarse_grain(1.5, fine, s), coarse_grain(3, coarse, s);
+  Simulation sim(s);
+  sim.add_material(pellet);
+  EXPECT_EQ(fill_region(sim, fine), std::lround(5000 / 3.375));
+  EXPECT_EQ(fill_region(sim, coarse), std::lround(15000 / 27.0));
+  const auto &P = sim.particles();
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.radius[i] <= fine.sizes.max)
+      EXPECT_TRUE(P.x[i] >= 0.1 + P.radius[i] - 1e-12 && P.x[i] <= 0.2 - P.radius[i] + 1e-12) << P.x[i];
+    else
+      EXPECT_TRUE(P.x[i] <= 0.1 - P.radius[i] + 1e-12 || P.x[i] >= 0.2 + P.radius[i] - 1e-12) << P.x[i];
+}

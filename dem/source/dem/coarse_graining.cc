@@ -19,6 +19,20 @@ namespace abrade::dem
     return count;
   }
 
+  FillRegion split_off_region(FillRegion &fill, const Vec3 &lo, const Vec3 &hi)
+  {
+    FillRegion part = fill;
+    part.box_min    = lo.cwiseMax(fill.box_min), part.box_max = hi.cwiseMin(fill.box_max);
+    if (fill.inside || !(part.box_min.array() < part.box_max.array()).all())
+      throw std::invalid_argument("the fine region must overlap the fill box (and the fill have no region mesh)");
+    const double share = (part.box_max - part.box_min).prod() / (fill.box_max - fill.box_min).prod();
+    part.count         = std::lround(double(fill.count) * share);
+    part.seed          = fill.seed + 1000003; // its own draws
+    fill.count -= part.count;
+    fill.exclude.emplace_back(part.box_min, part.box_max);
+    return part;
+  }
+
   std::vector<std::string> coarse_graining_warnings(const double f, const Settings &settings)
   {
     std::vector<std::string> out;

@@ -120,7 +120,9 @@ namespace abrade::dem
       return true;
     };
 
-    const double region_volume = f.inside ? std::abs(f.inside->volume()) : extent.prod();
+    double region_volume = f.inside ? std::abs(f.inside->volume()) : extent.prod();
+    for (const auto &[lo, hi] : f.exclude) // (the solid fraction is of the region left)
+      region_volume -= (hi.cwiseMin(f.box_max) - lo.cwiseMax(f.box_min)).cwiseMax(0.0).prod();
     const long   wanted = f.count > 0 ? f.count : std::lround(f.solid_fraction * region_volume / f.sizes.mean_volume());
 
     // Random sequential addition: each particle at a uniformly random position that overlaps
@@ -147,6 +149,9 @@ namespace abrade::dem
           return false;
       if (f.inside && !inside_mesh(*f.inside, p))
         return false;
+      for (const auto &[lo, hi] : f.exclude)
+        if ((p.array() > lo.array() - r).all() && (p.array() < hi.array() + r).all())
+          return false;
       const long ci = cell_of(p, 0, nx), cj = cell_of(p, 1, ny), ck = cell_of(p, 2, nz);
       for (long c = std::max(0L, ck - 1); c <= std::min(nz - 1, ck + 1); ++c)
         for (long b = std::max(0L, cj - 1); b <= std::min(ny - 1, cj + 1); ++b)

@@ -46,6 +46,7 @@ namespace abrade::coupling
     double                   settle_ke = 1e-4, settle_max_time = 1;
     double                   max_particle_steps = 1e12; ///< of one run (0: no limit)
     double                   coarse_graining = 1; ///< Particles/Coarse graining/Factor (applied)
+    std::optional<dem::FillRegion> fine_fill; ///< multi-level coarse graining: the fine region's fill
     double                   wear_profile_band = 0.01, wear_filter_length = 0.0275; ///< Output/...
     std::vector<std::string> warnings;            ///< parameters that do not follow it, ...
     std::string              bed_file;

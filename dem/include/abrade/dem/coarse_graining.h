@@ -32,6 +32,12 @@ namespace abrade::dem
   /// particles is the caller's to refuse). Throws std::invalid_argument for f <= 0.
   double coarse_grain(double f, FillRegion &fill, Settings &settings);
 
+  /// Multi-level coarse graining (a prototype): the part of @p fill (described with the real
+  /// particles, a fill box without a region mesh) inside the box [@p lo, @p hi] becomes a fill
+  /// of its own, which the caller coarse-grains by a smaller factor; @p fill keeps the rest
+  /// (it excludes the box). The real count is split by volume. Returns the box's fill.
+  FillRegion split_off_region(FillRegion &fill, const Vec3 &lo, const Vec3 &hi);
+
   /// An energy per particle (the settling threshold) for particles coarse-grained by @p f:
   /// x f^3, as the particle's mass.
   inline double coarse_grain_energy(double f, double energy) { return energy * f * f * f; }

@@ -40,6 +40,8 @@ namespace abrade::dem
     const TriangleMesh *inside  = nullptr; ///< optional closed mesh: keep sites inside it
     /// Meshes (walls) the particles must not touch.
     std::vector<TriangleMesh> avoid;
+    /// Boxes (lower, upper corner) the particles stay out of, whole (another fill's region).
+    std::vector<std::pair<Vec3, Vec3>> exclude;
     SizeDistribution    sizes;
     long                count          = 0;   ///< particles to place; 0: use solid_fraction
     double              solid_fraction = 0.3; ///< of the region volume
