@@ -52,7 +52,7 @@ print("| run | predicted life [t] | 95 % interval [t] | cycles | tonnes simulate
 print("|---|---|---|---|---|---|---|")
 for d in sorted(os.listdir(out)):
     if d.startswith("lifetime-"):
-        r = json.load(open(os.path.join(out, d, "summary.json")))["results"]
+        r = json.load(open(os.path.join(out, d, "summary.json")))["results"]["lifetime"]
         print(f"| {d} | {r.get('predicted_tonnes_to_end_of_life', float('nan')):.3g} | "
               f"{r.get('predicted_tonnes_low', float('nan')):.3g}-{r.get('predicted_tonnes_high', float('nan')):.3g} | "
               f"{r.get('cycles', '')} | {r.get('tonnes', float('nan')):.3g} | {r.get('max_depth', float('nan')):.3g} | "

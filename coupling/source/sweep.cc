@@ -405,7 +405,8 @@ namespace abrade::coupling
       }
     {
       std::ofstream gp(out.file("plots/plots.gp"));
-      gp << "set terminal pngcairo size 900,600\nset grid\nset key outside right\n";
+      gp << "set terminal pngcairo size 900,600 noenhanced\nset grid\nset key below\n"
+            "set offsets graph 0.05, graph 0.05, 0, 0\n";
       for (const auto &m : metrics)
         {
           const std::string file = label(m);
