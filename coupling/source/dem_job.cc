@@ -175,7 +175,7 @@ namespace abrade::coupling
       ctx.log.warning(w);
     if (c.coarse_graining == 1)
       return;
-    const double r = c.fill.sizes.kind == dem::SizeDistribution::Kind::constant ? c.fill.sizes.radius : c.fill.sizes.max;
+    const double r = c.fill.sizes.largest();
     ctx.log.line("Coarse graining: the particles are " + fmt(c.coarse_graining) + " times the real ones (largest radius " +
                  fmt(r) + " m for " + fmt(r / c.coarse_graining) + " m)");
     io::Json &j             = ctx.results["coarse_graining"];
