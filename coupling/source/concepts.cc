@@ -43,8 +43,10 @@ namespace abrade::coupling
       Sample s;
       for (const auto &k : knives)
         {
+          const std::string field =
+            io::summary_string(dir + "/summary.json", "wear_field").value_or("archard_volume"); // Output/Wear field
           const CsvTable t   = read_csv_table(dir + "/walls/" + k + "_wear.csv");
-          const int      vol = t.column("archard_volume");
+          const int      vol = t.column(field);
           for (const auto &row : t.rows)
             {
               if (k == knives.front() && row[0] != "total")

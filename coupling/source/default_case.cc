@@ -59,7 +59,9 @@ subsection Wall knife
   subsection Wear
     set Laws = archard
     # W = K / H for a wear-resistant steel against iron ore: K = 1e-4, H = 5e9 Pa (calibrate!)
-    set Archard coefficient = 2e-14
+    subsection Archard
+      set Coefficient = 2e-14
+    end
   end
   subsection Motion
     set Type = prescribed

@@ -14,6 +14,7 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/wear_profile.h>
+#include <abrade/coupling/wear_tables.h>
 #include <abrade/common/csv_writer.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/generation.h>
@@ -199,7 +200,7 @@ namespace abrade::coupling
                  " s (" + fmt(sim.dt() / sim.rayleigh_time_step()) + " x Rayleigh)");
 
     // wear laws and contact-layer probes
-    std::vector<dem::WearLaws> laws;
+    std::vector<dem::WallWearLaws> laws;
     for (const auto &wc : c.walls)
       laws.push_back(wc.wear);
     auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
@@ -216,19 +217,7 @@ namespace abrade::coupling
         }
 
     dem::DemOutput output(ctx.output.root(), sim, c.write_particles);
-    using Field = dem::WearRecorder::Field;
-    output.add_triangle_field("archard_depth", [wear](const dem::Simulation &s, std::size_t w) {
-      return wear->tracks(w, Field::archard_volume) ? wear->archard_depth(w) : std::vector<double>(s.wall(w).mesh.n_triangles(), 0.0);
-    });
-    for (const auto &[phase, duration] : c.phases)
-      output.add_triangle_field("archard_depth_" + phase, [wear, phase = phase](const dem::Simulation &s, std::size_t w) {
-        return wear->tracks(w, Field::archard_volume) ? wear->archard_depth(w, phase)
-                                                     : std::vector<double>(s.wall(w).mesh.n_triangles(), 0.0);
-      });
-    for (Field f : {Field::relative_normal_energy, Field::relative_tangential_energy, Field::finnie})
-      output.add_triangle_field(dem::WearRecorder::field_name(f), [wear, f](const dem::Simulation &s, std::size_t w) {
-        return wear->tracks(w, f) ? wear->values(w, f) : std::vector<double>(s.wall(w).mesh.n_triangles(), 0.0);
-      });
+    add_wear_fields(output, wear, c);
     output.write_snapshot(sim);
     const long snapshot_every = c.snapshot_interval > 0 ? std::max(1L, std::lround(c.snapshot_interval / sim.dt())) : 0;
     const long force_every    = std::max(1L, std::lround(c.force_interval / sim.dt()));
@@ -333,45 +322,15 @@ namespace abrade::coupling
       payload_table->close();
 
     // wear per wall and phase: walls/NAME_wear.csv and summary.json
+    ctx.results["wear_field"] = c.wear_field;
     for (std::size_t w = 0; w < sim.n_walls(); ++w)
       {
-        const std::string &name = sim.wall(w).name;
-        if (!(laws[w].archard || laws[w].relative || laws[w].finnie))
+        if (laws[w].empty())
           continue;
-        io::CsvWriter csv(ctx.output.file("walls/" + name + "_wear.csv"),
-                          {"phase", "archard_volume", "archard_max_depth", "relative_normal_energy",
-                           "relative_tangential_energy", "finnie_wear", "path_length"});
-        std::vector<std::string> rows;
-        for (const auto &p : c.phases)
-          rows.push_back(p.first);
-        rows.push_back("");
-        for (const auto &phase : rows)
-          {
-            const auto   depth = wear->archard_depth(w, phase);
-            double path = 0; // the wall's centroid's path in the phase (all phases: the sum)
-            for (const auto &[p, lengths] : path_length)
-              if (phase.empty() || p == phase)
-                path += lengths[w];
-            const double row[] = {wear->total(w, Field::archard_volume, phase),
-                                  depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end()),
-                                  wear->total(w, Field::relative_normal_energy, phase),
-                                  wear->total(w, Field::relative_tangential_energy, phase),
-                                  wear->total(w, Field::finnie, phase),
-                                  path};
-            csv.row(phase.empty() ? "total" : phase, std::vector<double>(row, row + 6));
-            io::Json &j = ctx.results["wear"][name][phase.empty() ? "total" : phase];
-            j["archard_volume"]    = row[0];
-            j["archard_max_depth"] = row[1];
-            j["path_length"]       = row[5];
-            if (laws[w].relative)
-              j["relative_normal_energy"] = row[2], j["relative_tangential_energy"] = row[3];
-            if (laws[w].finnie)
-              j["finnie_wear"] = row[4];
-          }
-        csv.close();
-        if (laws[w].archard)
-          write_wear_profile(ctx.output.file("walls/" + name + "_wear_profile.csv"), sim.wall(w).mesh,
-                             wear->values(w, Field::archard_volume), wear->vertex_values(w, Field::archard_volume),
+        write_wear_table(ctx, sim, *wear, w, c.phases, path_length);
+        if (wear->tracks(w, c.wear_field))
+          write_wear_profile(ctx.output.file("walls/" + sim.wall(w).name + "_wear_profile.csv"), sim.wall(w).mesh,
+                             c.wear_field, wear->values(w, c.wear_field), wear->vertex_values(w, c.wear_field),
                              {c.wear_profile_band, c.wear_filter_length, sim.largest_radius()});
       }
     // contact-layer probes: walls/NAME_layer.csv, and the mean slip of the layer per phase

@@ -116,6 +116,20 @@ namespace abrade::coupling
 
   namespace
   {
+    /// Entries that moved, with where they are now: appended to deal.II's "No entry with name
+    /// <NAME> was declared" so that an older file says what to write instead.
+    std::string with_rename_hint(std::string msg)
+    {
+      static const std::pair<const char *, const char *> moved[] = {
+        {"Archard coefficient", "subsection Archard, set Coefficient (inside Wear: each wear law has its subsection)"},
+        {"Finnie coefficient", "subsection Finnie, set Coefficient (inside Wear: each wear law has its subsection)"}};
+      for (const auto &[old_name, now] : moved)
+        if (msg.find("<" + std::string(old_name) + ">") != std::string::npos &&
+            (msg.find("was declared") != std::string::npos || msg.find("not yet declared") != std::string::npos))
+          return msg + " '" + old_name + "' moved: " + now + ".";
+      return msg;
+    }
+
     void apply_override(dealii::ParameterHandler &prm, const Override &o, bool lenient)
     {
       std::size_t entered = 0;
@@ -134,7 +148,7 @@ namespace abrade::coupling
             prm.leave_subsection();
           if (lenient)
             return;
-          throw InputError("--set '" + o.text + "'", one_line(e));
+          throw InputError("--set '" + o.text + "'", with_rename_hint(one_line(e)));
         }
       for (; entered > 0; --entered)
         prm.leave_subsection();
@@ -170,7 +184,7 @@ namespace abrade::coupling
               if (colon != std::string::npos && used == colon && n >= 1 && std::size_t(n) <= origin.size())
                 msg = origin[n - 1].first + ":" + std::to_string(origin[n - 1].second) + rest.substr(colon);
             }
-          throw InputError("", msg);
+          throw InputError("", with_rename_hint(msg));
         }
     }
   } // namespace

@@ -1,6 +1,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/parameter_section.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/run_size.h>
 #include <abrade/dem/bed_import.h>
@@ -87,9 +88,38 @@ namespace abrade::coupling
     const Choices<dem::WallMotion::Kind> motion_types = {{"fixed", dem::WallMotion::Kind::fixed},
                                                          {"prescribed", dem::WallMotion::Kind::prescribed},
                                                          {"rigid body", dem::WallMotion::Kind::rigid_body}};
-    const Choices<bool dem::WearLaws::*> wear_laws = {{"archard", &dem::WearLaws::archard},
-                                                      {"relative", &dem::WearLaws::relative},
-                                                      {"finnie", &dem::WearLaws::finnie}};
+
+    /// The registered wear laws' names, as a pattern and as documentation.
+    Selection wear_law_selection()
+    {
+      std::string names;
+      for (const auto &law : dem::registered_wear_laws())
+        names += (names.empty() ? "" : "|") + law->name();
+      return Selection(names);
+    }
+
+    /// The volume fields of the registered laws ("archard_volume|oka_volume").
+    std::string volume_field_names(const std::string &separator = ", ")
+    {
+      std::string names;
+      for (const auto &law : dem::registered_wear_laws())
+        for (const auto &field : law->fields())
+          if (field.volume)
+            names += (names.empty() ? "" : separator) + field.name;
+      return names;
+    }
+
+    Selection volume_field_selection() { return Selection(volume_field_names("|")); }
+
+    std::string wear_law_documentation()
+    {
+      std::string doc = "Wear laws evaluated per triangle of this wall (any of " + dem::wear_law_names() +
+                        "; empty: none), each with its parameters in the subsection of its name; all are "
+                        "reported per phase (docs/physics.md).";
+      for (const auto &law : dem::registered_wear_laws())
+        doc += " " + law->name() + ": " + law->documentation();
+      return doc;
+    }
 
     std::vector<std::string> get_list(ParameterHandler &prm, const std::string &name)
     {
@@ -305,6 +335,11 @@ namespace abrade::coupling
                       "[m] Height of the bands of walls/NAME_wear_profile.csv (the wear by height "
                       "above a wall's lowest point, by face direction, and its filtered peak "
                       "depth). Range: > 0.");
+    prm.declare_entry("Wear field", "archard_volume", volume_field_selection(),
+                      "The worn-volume field that the wear profile (walls/NAME_wear_profile.csv), the "
+                      "lifetime loop (the knife's wear depth), sweep, concepts and calibrate use: a "
+                      "volume field of a wear law (" + volume_field_names() + "); the knife's "
+                      "Wear/Laws must include its law.");
     prm.declare_entry("Wear filter length", "0.0275", Double(0, huge),
                       "[m] A fixed length of the surface filter for the filtered peak depth of "
                       "walls/NAME_wear_profile.csv (next to the filter over the largest particle "
@@ -525,19 +560,15 @@ namespace abrade::coupling
         declare_material(prm, 7e10, 0.3, 7800, false);
         declare_interaction(prm, 0.6, name == "knife" ? 0.4 : 0.5, "particle-wall");
         prm.enter_subsection("Wear");
-        prm.declare_entry("Laws", name == "knife" ? "archard" : "", List(selection_of(wear_laws)),
-                          "Wear laws evaluated per triangle of this wall (any of archard, relative, "
-                          "finnie; empty: none). archard: volume W F_n d_t (EDEM); relative: "
-                          "cumulative normal and tangential contact energy; finnie: LIGGGHTS' "
-                          "impact wear. All are reported per phase (docs/physics.md).");
-        prm.declare_entry("Archard coefficient", "2e-14", Double(0, huge),
-                          "[1/Pa] W = K / H of this wall against the particles. Default: K = 1e-4 "
-                          "(dimensionless wear coefficient of iron ore on steel, within the 1e-5..1e-3 "
-                          "of the literature) over H = 5e9 Pa (a wear-resistant steel, ~500 HB): an "
-                          "order of magnitude only, to be calibrated against measured wear (abrade "
-                          "calibrate). The thesis' SFC study uses W = 1 (relative values). Range: >= 0.");
-        prm.declare_entry("Finnie coefficient", "1", Double(0, huge),
-                          "[-] k_finnie of the Finnie law (LIGGGHTS' peratomtypepair value). Range: >= 0.");
+        prm.declare_entry("Laws", name == "knife" ? "archard" : "", List(wear_law_selection()),
+                          wear_law_documentation());
+        for (const auto &law : dem::registered_wear_laws())
+          {
+            prm.enter_subsection(law->section());
+            PluginSection section(prm);
+            law->declare_parameters(section);
+            prm.leave_subsection();
+          }
         prm.leave_subsection();
         prm.enter_subsection("Layer probe");
         prm.declare_entry("Enabled", name == "knife" ? "true" : "false", Bool(),
@@ -747,6 +778,7 @@ namespace abrade::coupling
     c.write_particles   = prm.get_bool("Write particles");
     c.wear_profile_band   = prm.get_double("Wear profile band");
     c.wear_filter_length  = prm.get_double("Wear filter length");
+    c.wear_field          = prm.get("Wear field");
     prm.leave_subsection();
 
     prm.enter_subsection("Simulation");
@@ -998,11 +1030,17 @@ namespace abrade::coupling
         wc.interaction = read_interaction(prm);
 
         prm.enter_subsection("Wear");
-        wc.wear.archard = wc.wear.relative = wc.wear.finnie = false;
-        for (const auto &law : get_list(prm, "Laws"))
-          wc.wear.*choice_named(law, "Laws", wear_laws) = true;
-        wc.wear.archard_coefficient = prm.get_double("Archard coefficient");
-        wc.wear.finnie_coefficient  = prm.get_double("Finnie coefficient");
+        dem::WearContext context;
+        context.coarse_graining = c.coarse_graining;
+        for (const auto &law_name : get_list(prm, "Laws"))
+          {
+            auto law = dem::make_wear_law(law_name); // (the pattern checked the name)
+            prm.enter_subsection(law->section());
+            PluginSection section(f, {wp[0], "Wear", law->section()});
+            law->parse_parameters(section, context);
+            prm.leave_subsection();
+            wc.wear.push_back(std::move(law));
+          }
         prm.leave_subsection();
         prm.enter_subsection("Layer probe");
         wc.probe           = prm.get_bool("Enabled");
@@ -1012,7 +1050,7 @@ namespace abrade::coupling
         prm.leave_subsection();
         if (wc.probe && !(wc.probe_axis.norm() > 0))
           f.fail({wp[0], "Layer probe"}, "Axis", "must not be zero");
-        if (c.coarse_graining != 1 && (wc.wear.archard || wc.wear.relative || wc.wear.finnie))
+        if (c.coarse_graining != 1 && !wc.wear.empty())
           {
             // a wear pattern is resolved by the triangles: they should stay smaller than a particle
             double longest = 0;

@@ -19,6 +19,7 @@
 //    above the edge, force and layer velocity against time (each averaged over the seeds); the
 //    final wear-coloured wall surface of every run.
 #include <abrade/common/csv_writer.h>
+#include <abrade/common/json.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/common/output_directory.h>
@@ -55,8 +56,10 @@ namespace abrade::coupling
                           double edge_height)
     {
       RunMetrics m;
-      const CsvTable wear = read_csv_table(dir + "/walls/" + wall + "_wear.csv");
-      const int      vol  = wear.column("archard_volume"), path = wear.column("path_length");
+      // the run's wear field (Output/Wear field; Archard's volume by default)
+      const std::string field = io::summary_string(dir + "/summary.json", "wear_field").value_or("archard_volume");
+      const CsvTable    wear  = read_csv_table(dir + "/walls/" + wall + "_wear.csv");
+      const int         vol = wear.column(field), path = wear.column("path_length");
       for (const auto &r : wear.rows)
         {
           m.value["wear_" + r[0]] = number(r[vol]);
@@ -120,7 +123,7 @@ namespace abrade::coupling
         {
           const CsvTable pr    = read_csv_table(profile_file);
           const int      label = pr.column("label"), lo = pr.column("lower"), hi = pr.column("upper"),
-                    v = pr.column("archard_volume"), area = pr.column("area");
+                    v = pr.column(field), area = pr.column("area");
           const double total = m.value["wear_total"];
           double       edge  = 0;
           for (const auto &r : pr.rows)

@@ -32,7 +32,7 @@ namespace abrade::coupling
     }
   } // namespace
 
-  void write_wear_profile(const std::string &file, const dem::TriangleMesh &mesh,
+  void write_wear_profile(const std::string &file, const dem::TriangleMesh &mesh, const std::string &field,
                           const std::vector<double> &triangle_volume, const std::vector<double> &vertex_volume,
                           const WearProfileSettings &p)
   {
@@ -53,7 +53,7 @@ namespace abrade::coupling
         const int k = 2 * axis + (n[axis] < 0);
         face[k] += triangle_volume[t], face_area[k] += 0.5 * n.norm();
       }
-    io::CsvWriter csv(file, {"kind", "label", "lower", "upper", "archard_volume", "area"});
+    io::CsvWriter csv(file, {"kind", "label", "lower", "upper", field, "area"});
     auto row = [&](const std::string &kind, const std::string &label, double lower, double upper, double value,
                    double area) {
       char b[160];

@@ -16,7 +16,7 @@ abrade=$(realpath "$1") src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 points="0.075, 0, 0; 0.05, 0.0075, 0.02; 0.1, -0.0075, 0.02; 0.075, 0.015, 0.06"
 dem() { "$abrade" run "$src/cases/lifetime/small.prm" --quiet --output "$out/$1" --set "Lifetime/Maximum updates=4" \
-          --set "Lifetime/Recession points=$points" --set "Wall knife/Wear/Archard coefficient=$2" > /dev/null; }
+          --set "Lifetime/Recession points=$points" --set "Wall knife/Wear/Archard/Coefficient=$2" > /dev/null; }
 dem truth_w 3e-14
 dem run_w 2e-14
 analytic() { "$abrade" run "$src/tests/lifetime/analytic_edge.prm" --quiet --output "$out/$1" \

@@ -108,10 +108,10 @@ run 1000
     sim.particles().add(0, 0.03, -0.05, 0.028, 0.0275, 3700, mp);
     sim.particles().vx[0] = vx, sim.particles().vz[0] = vz;
     sim.setup();
-    auto wear = std::make_shared<WearRecorder>(sim, std::vector<WearLaws>{{false, 0, false, true, 1.0}});
+    auto wear = std::make_shared<WearRecorder>(sim, std::vector<WallWearLaws>{{make_wear_law("finnie", {{"Coefficient", 1.0}})}});
     sim.add_hook(wear);
     sim.run_phase("impact", 1000 * 1e-5);
-    return wear->values(0, WearRecorder::finnie);
+    return wear->values(0, "finnie_wear");
   }
 } // namespace
 

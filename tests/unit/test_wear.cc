@@ -38,7 +38,8 @@ namespace
 
   /// A sphere resting (at its equilibrium overlap) on @p mesh, moving at v0 along x.
   std::unique_ptr<Setup> sliding(const TriangleMesh &mesh, double friction, double v0, const Vec3 &start,
-                                 WearLaws laws = WearLaws{true, W, true, false, 1.0})
+                                 WallWearLaws laws = {make_wear_law("archard", {{"Coefficient", W}}),
+                                                      make_wear_law("relative", {})})
   {
     auto s = std::make_unique<Setup>(Setup{Simulation(quiet_settings(1e-4, true)), nullptr});
     const Material b  = block_material();
@@ -52,7 +53,7 @@ namespace
     s->sim.particles().add(0, start[0], start[1], R - delta, R, b.density, mb);
     s->sim.particles().vx[0] = v0;
     s->sim.setup();
-    s->wear = std::make_shared<WearRecorder>(s->sim, std::vector<WearLaws>{laws});
+    s->wear = std::make_shared<WearRecorder>(s->sim, std::vector<WallWearLaws>{laws});
     s->sim.add_hook(s->wear);
     return s;
   }
@@ -74,8 +75,8 @@ TEST(Archard, ConstantSpeedSlidingOnOneTriangleIsExact)
   const double m = s->sim.particles().mass[0];
   EXPECT_NEAR(m, 1.0, 1e-12);
   const double expected = W * m * g * 1.0 * T; // 9.81e-12 m^3
-  EXPECT_NEAR(s->wear->total(0, WearRecorder::archard_volume) / expected, 1, 1e-9);
-  EXPECT_NEAR(s->wear->archard_depth(0)[0] / (expected / 200.0), 1, 1e-9); // area 200 m^2
+  EXPECT_NEAR(s->wear->total(0, "archard_volume") / expected, 1, 1e-9);
+  EXPECT_NEAR(s->wear->depth(0, "archard_volume")[0] / (expected / 200.0), 1, 1e-9); // area 200 m^2
 }
 
 TEST(Archard, ConstantSpeedSlidingOverManyTrianglesConservesVolume)
@@ -86,9 +87,9 @@ TEST(Archard, ConstantSpeedSlidingOverManyTrianglesConservesVolume)
       auto s = sliding(primitives::plate(Vec3::Zero(), 2, 4, 4, 0.05), 0.0, 1.0, Vec3(-1, y, 0));
       s->sim.run_phase("slide", 1.0);
       const double expected = W * s->sim.particles().mass[0] * g;
-      EXPECT_NEAR(s->wear->total(0, WearRecorder::archard_volume) / expected, 1, 1e-9) << "y = " << y;
+      EXPECT_NEAR(s->wear->total(0, "archard_volume") / expected, 1, 1e-9) << "y = " << y;
       int touched = 0;
-      for (double q : s->wear->values(0, WearRecorder::archard_volume))
+      for (double q : s->wear->values(0, "archard_volume"))
         touched += q > 0;
       EXPECT_GT(touched, 20);
     }
@@ -103,7 +104,7 @@ TEST(Archard, VertexValuesAreTheBarycentricWeightsOfTheContactPoints)
   const double l2 = (-1.0 + 10) / 20;            // weight of (0, 10): y from -10 to 10
   const double l1 = (-1.5 + 10 - 10 * l2) / 20;  // x = -10 + 20 l1 + 10 l2
   const double l0 = 1 - l1 - l2;
-  const auto   q  = s->wear->vertex_values(0, WearRecorder::archard_volume);
+  const auto   q  = s->wear->vertex_values(0, "archard_volume");
   ASSERT_EQ(q.size(), 3u);
   // (the contact point is sampled once per step: the samples' mean lies up to half a step's
   // travel, 5e-5 m, from the midpoint, 1.3e-5 of l1)
@@ -119,9 +120,9 @@ TEST(Archard, VertexValuesConserveTheVolumeOverManyTriangles)
   auto s = sliding(primitives::plate(Vec3::Zero(), 2, 4, 4, 0.05), 0.0, 1.0, Vec3(-1, 0.0123, 0));
   s->sim.run_phase("slide", 1.0);
   double sum = 0;
-  for (double q : s->wear->vertex_values(0, WearRecorder::archard_volume))
+  for (double q : s->wear->vertex_values(0, "archard_volume"))
     sum += q;
-  EXPECT_NEAR(sum / s->wear->total(0, WearRecorder::archard_volume), 1, 1e-12);
+  EXPECT_NEAR(sum / s->wear->total(0, "archard_volume"), 1, 1e-12);
 }
 
 TEST(Archard, EdgeContactIsSplitEqually)
@@ -132,7 +133,7 @@ TEST(Archard, EdgeContactIsSplitEqually)
   plate.triangles = {{0, 1, 2}, {0, 2, 3}};
   auto s          = sliding(plate, 0.0, 1.0, Vec3(-1, 0, 0));
   s->sim.run_phase("slide", 1.0);
-  const auto q = s->wear->values(0, WearRecorder::archard_volume);
+  const auto q = s->wear->values(0, "archard_volume");
   EXPECT_NEAR(q[0] + q[1], W * g, 1e-9 * W * g);
   EXPECT_NEAR(q[0] / q[1], 1, 1e-6);
 }
@@ -144,9 +145,9 @@ TEST(Archard, DeceleratingSphereAndFrictionEnergy)
   s->sim.run_phase("slide", v0 / (mu * g) + 0.2); // stops after v0 / (mu g) = 0.68 s
   const double m = s->sim.particles().mass[0];
   EXPECT_NEAR(s->sim.particles().vx[0], 0, 1e-4);
-  EXPECT_NEAR(s->wear->total(0, WearRecorder::archard_volume) / (W * m * v0 * v0 / (2 * mu)), 1, 1e-3);
-  EXPECT_NEAR(s->wear->total(0, WearRecorder::relative_tangential_energy) / (0.5 * m * v0 * v0), 1, 1e-3);
-  EXPECT_LT(s->wear->total(0, WearRecorder::relative_normal_energy), 1e-6 * 0.5 * m * v0 * v0);
+  EXPECT_NEAR(s->wear->total(0, "archard_volume") / (W * m * v0 * v0 / (2 * mu)), 1, 1e-3);
+  EXPECT_NEAR(s->wear->total(0, "relative_tangential_energy") / (0.5 * m * v0 * v0), 1, 1e-3);
+  EXPECT_LT(s->wear->total(0, "relative_normal_energy"), 1e-6 * 0.5 * m * v0 * v0);
 }
 
 TEST(Archard, PhasesAddUpToTheTotal)
@@ -154,11 +155,11 @@ TEST(Archard, PhasesAddUpToTheTotal)
   auto s = sliding(one_triangle(10), 0.0, 1.0, Vec3(-2, -1, 0));
   s->sim.run_phase("first", 0.3);
   s->sim.run_phase("second", 0.5);
-  const double a = s->wear->total(0, WearRecorder::archard_volume, "first");
-  const double b = s->wear->total(0, WearRecorder::archard_volume, "second");
+  const double a = s->wear->total(0, "archard_volume", "first");
+  const double b = s->wear->total(0, "archard_volume", "second");
   EXPECT_NEAR(a / (W * g * 0.3), 1, 1e-9);
   EXPECT_NEAR(b / (W * g * 0.5), 1, 1e-9);
-  EXPECT_NEAR(s->wear->total(0, WearRecorder::archard_volume), a + b, 1e-20);
+  EXPECT_NEAR(s->wear->total(0, "archard_volume"), a + b, 1e-20);
   EXPECT_EQ(s->wear->phases(), (std::vector<std::string>{"first", "second"}));
 }
 
@@ -176,10 +177,10 @@ TEST(Finnie, ZeroAtNormalIncidenceAndForRecedingParticlesLinearInK)
     const double th = angle_deg * M_PI / 180;
     sim.particles().vx[0] = 2 * std::sin(th), sim.particles().vz[0] = -2 * std::cos(th);
     sim.setup();
-    auto wear = std::make_shared<WearRecorder>(sim, std::vector<WearLaws>{{false, 0, false, true, k}});
+    auto wear = std::make_shared<WearRecorder>(sim, std::vector<WallWearLaws>{{make_wear_law("finnie", {{"Coefficient", k}})}});
     sim.add_hook(wear);
     sim.run_phase("impact", 0.01);
-    return wear->total(0, WearRecorder::finnie);
+    return wear->total(0, "finnie_wear");
   };
   const double a = impact(70, 1), b = impact(70, 2.5);
   EXPECT_GT(a, 0);

@@ -248,7 +248,9 @@ namespace abrade::field
     std::ifstream     in(pvd);
     if (!in)
       throw InputError(pvd, "not found: is " + directory + " the output folder of a lifetime run?");
-    run.archard_coefficient = io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0);
+    // the coefficient of the run's wear law (Output/Wear field; older runs wrote Archard's only)
+    run.archard_coefficient = io::summary_number(directory + "/summary.json", "wear_coefficient")
+                                .value_or(io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0));
     run.seeds                 = long(io::summary_number(directory + "/summary.json", "seeds").value_or(1));
     run.replicate_relative_sd = io::summary_number(directory + "/summary.json", "worn_volume_relative_spread").value_or(0);
     const std::regex data_set("<DataSet\\b([^>]*)>"), timestep("timestep=\"([^\"]*)\""), file_of("file=\"([^\"]*)\"");

@@ -43,11 +43,14 @@ namespace abrade::coupling::lifetime
         return names;
       }
 
-      double archard_coefficient() const override
+      double wear_coefficient() const override
       {
         for (const auto &wc : c.walls)
           if (wc.solid_model)
-            return wc.wear.archard_coefficient;
+            for (const auto &law : wc.wear)
+              for (const auto &f : law->fields())
+                if (f.name == c.wear_field)
+                  return law->coefficient();
         return 0;
       }
 
@@ -78,7 +81,7 @@ namespace abrade::coupling::lifetime
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
         prepare_bed(run, sim, cycle_ctx, "beds/bed-seed" + std::to_string(seed) + ".bed");
         sim.set_time(0);
-        std::vector<dem::WearLaws> laws;
+        std::vector<dem::WallWearLaws> laws;
         for (const auto &wc : run.walls)
           laws.push_back(wc.wear);
         auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
@@ -98,11 +101,11 @@ namespace abrade::coupling::lifetime
         std::vector<double> volume(surface.vertices.size(), 0.0);
         for (std::size_t k : knives)
           {
-            const auto v = wear->vertex_values(k, dem::WearRecorder::archard_volume);
+            const auto v = wear->vertex_values(k, run.wear_field);
             for (std::size_t i = 0; i < v.size(); ++i)
               volume[i] += v[i] / knives.size();
             for (std::size_t p = 0; p < run.phases.size(); ++p)
-              w.phase_volume[p] += wear->total(k, dem::WearRecorder::archard_volume, run.phases[p].first) /
+              w.phase_volume[p] += wear->total(k, run.wear_field, run.phases[p].first) /
                                    (knives.size() * seeds.size());
           }
         w.seed_volume.push_back(std::move(volume));

@@ -127,6 +127,19 @@ namespace abrade::coupling::lifetime
     if (!s.analytic &&
         std::none_of(dem_case.walls.begin(), dem_case.walls.end(), [](const auto &w) { return w.solid_model; }))
       ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
+    if (!s.analytic)
+      for (const auto &w : dem_case.walls)
+        if (w.solid_model && std::none_of(w.wear.begin(), w.wear.end(), [&](const auto &law) {
+              const auto fields = law->fields();
+              return std::any_of(fields.begin(), fields.end(), [&](const auto &f) { return f.name == dem_case.wear_field; });
+            }))
+          {
+            const dem::WearLaw *law = dem::wear_law_of_field(dem_case.wear_field);
+            ctx.parameters.fail({"Wall " + w.wall.name, "Wear"}, "Laws",
+                                "the knife's wear laws do not record Output/Wear field = " + dem_case.wear_field +
+                                  ", the field the lifetime loop wears the knife by: add " +
+                                  (law ? law->name() : std::string("its law")));
+          }
     if (s.analytic && s.tonnes_per_cycle <= 0)
       ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle", "the analytic wear rate is per tonne: set Tonnes per cycle > 0");
     if (s.max_depth <= 0 && s.max_recession <= 0 && s.max_worn_mass <= 0)
@@ -639,8 +652,13 @@ namespace abrade::coupling::lifetime
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
     r["remeshes_inside_worn_surface"] = surfaces_kept;
     r["smoothing_radius"] = s.smoothing;
-    if (source->archard_coefficient() > 0) // the W the depths scale with (abrade calibrate rescales it)
-      r["archard_coefficient"] = source->archard_coefficient();
+    r["wear_field"] = dem_case.wear_field;
+    if (source->wear_coefficient() > 0) // the coefficient the depths scale with (abrade calibrate rescales it)
+      {
+        r["wear_coefficient"] = source->wear_coefficient();
+        if (dem_case.wear_field == "archard_volume")
+          r["archard_coefficient"] = source->wear_coefficient();
+      }
     if (e.criterion != EndOfLife::none)
       r["predicted_tonnes_to_end_of_life"] = e.tonnes;
     r["end_of_life_criterion"]           = criterion;

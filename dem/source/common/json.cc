@@ -125,4 +125,14 @@ namespace abrade::io
       return std::stod(m[1]);
     return std::nullopt;
   }
+
+  std::optional<std::string> summary_string(const std::string &path, const std::string &key)
+  {
+    std::ifstream     in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::smatch       m;
+    if (std::regex_search(text, m, std::regex("\"" + key + "\": *\"([^\"]*)\"")))
+      return m[1].str();
+    return std::nullopt;
+  }
 } // namespace abrade::io

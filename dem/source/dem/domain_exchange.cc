@@ -52,8 +52,9 @@ namespace abrade::dem
       return;
     const std::size_t n = m.offsets.size() - 1, n_own = std::min(n, store.size());
     std::vector<std::size_t> count(n_own + 1, 0);
-    auto has_history = [&m](std::size_t q) { // (the flag first: a slot not touching has no history)
-      return m.touching[q] && (m.shear[3 * q] != 0 || m.shear[3 * q + 1] != 0 || m.shear[3 * q + 2] != 0);
+    const int H           = m.history;
+    auto      has_history = [&m, H](std::size_t q) { // (the flag first: a slot not touching has no history)
+      return m.touching[q] && std::any_of(&m.shear[H * q], &m.shear[H * q] + H, [](double x) { return x != 0; });
     };
     for (std::size_t i = 0; i < n_own; ++i)
       for (std::size_t q = m.offsets[i]; q < m.offsets[i + 1]; ++q)
@@ -66,7 +67,7 @@ namespace abrade::dem
     std::partial_sum(count.begin(), count.end(), count.begin());
     m.carried_offsets = count;
     m.carried_partner.resize(count[n_own]);
-    m.carried_shear.resize(3 * count[n_own]);
+    m.carried_shear.resize(H * count[n_own]);
     m.carried_owner.assign(store.id.begin(), store.id.begin() + n_own);
     std::vector<std::size_t> fill(count.begin(), count.end() - 1);
     for (std::size_t i = 0; i < n_own; ++i)
@@ -76,14 +77,14 @@ namespace abrade::dem
             const std::size_t j = m.neighbours[q];
             std::size_t       a = fill[i]++;
             m.carried_partner[a] = store.id[j];
-            for (int d = 0; d < 3; ++d)
-              m.carried_shear[3 * a + d] = m.shear[3 * q + d];
+            for (int d = 0; d < H; ++d)
+              m.carried_shear[H * a + d] = m.shear[H * q + d];
             if (j < n_own)
               {
                 a = fill[j]++;
                 m.carried_partner[a] = store.id[i];
-                for (int d = 0; d < 3; ++d)
-                  m.carried_shear[3 * a + d] = -m.shear[3 * q + d];
+                for (int d = 0; d < H; ++d) // (every history is antisymmetric: j's is minus i's)
+                  m.carried_shear[H * a + d] = -m.shear[H * q + d];
               }
           }
     m.offsets.clear(); // the list is stale from here on
@@ -102,7 +103,7 @@ namespace abrade::dem
     };
     permute_slots(m.hist_wall, Impl::K);
     permute_slots(m.hist_tri, Impl::K);
-    permute_slots(m.hist_shear, 3 * Impl::K);
+    permute_slots(m.hist_shear, m.history * Impl::K);
     permute_slots(m.hist_used, Impl::K);
   }
 
@@ -176,8 +177,8 @@ namespace abrade::dem
           {
             b.push_back(m.hist_wall[K * i + s]), b.push_back(m.hist_tri[K * i + s]),
               b.push_back(m.hist_used[K * i + s]);
-            for (int d = 0; d < 3; ++d)
-              b.push_back(m.hist_shear[3 * (K * i + s) + d]);
+            for (int d = 0; d < m.history; ++d)
+              b.push_back(m.hist_shear[m.history * (K * i + s) + d]);
           }
         const bool        carried = m.carries(i, store.id[i]);
         const std::size_t c0 = carried ? m.carried_offsets[i] : 0, c1 = carried ? m.carried_offsets[i + 1] : 0;
@@ -185,8 +186,8 @@ namespace abrade::dem
         for (std::size_t c = c0; c < c1; ++c)
           {
             b.push_back(pack_integer(m.carried_partner[c]));
-            for (int d = 0; d < 3; ++d)
-              b.push_back(m.carried_shear[3 * c + d]);
+            for (int d = 0; d < m.history; ++d)
+              b.push_back(m.carried_shear[m.history * c + d]);
           }
       }
     // Between two cuts a particle moves less than a skin from one list build to the next (the
@@ -212,7 +213,7 @@ namespace abrade::dem
           for (std::size_t c = m.carried_offsets[i]; c < m.carried_offsets[i + 1]; ++c)
             {
               partner.push_back(m.carried_partner[c]);
-              shear.insert(shear.end(), &m.carried_shear[3 * c], &m.carried_shear[3 * c] + 3);
+              shear.insert(shear.end(), &m.carried_shear[m.history * c], &m.carried_shear[m.history * c] + m.history);
             }
         offsets.push_back(partner.size());
       }
@@ -223,17 +224,18 @@ namespace abrade::dem
       {
         const std::size_t i = store.unpack(&in[p]);
         p += ParticleStore::record_size;
-        for (int s = 0; s < K; ++s, p += 6)
+        const int H = m.history;
+        for (int s = 0; s < K; ++s, p += 3 + H)
           {
             m.hist_wall.push_back(int(in[p])), m.hist_tri.push_back(int(in[p + 1]));
             m.hist_used.push_back(static_cast<unsigned char>(in[p + 2]));
-            m.hist_shear.insert(m.hist_shear.end(), &in[p + 3], &in[p + 6]);
+            m.hist_shear.insert(m.hist_shear.end(), &in[p + 3], &in[p + 3 + H]);
           }
         const std::size_t count = std::size_t(in[p++]);
-        for (std::size_t c = 0; c < count; ++c, p += 4)
+        for (std::size_t c = 0; c < count; ++c, p += 1 + H)
           {
             partner.push_back(unpack_integer(in[p]));
-            shear.insert(shear.end(), &in[p + 1], &in[p + 4]);
+            shear.insert(shear.end(), &in[p + 1], &in[p + 1 + H]);
           }
         owner.push_back(store.id[i]);
         offsets.push_back(partner.size());

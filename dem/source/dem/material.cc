@@ -97,6 +97,8 @@ namespace abrade::dem
     c.friction         = i.friction;
     c.rolling_friction = i.rolling_friction;
     c.restitution      = i.restitution;
+    c.cohesion_energy_density = i.cohesion_energy_density;
+    c.rolling_damping         = i.rolling_damping;
     return c;
   }
 } // namespace abrade::dem

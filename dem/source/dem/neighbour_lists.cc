@@ -195,7 +195,7 @@ namespace abrade::dem
       throw RunError("the neighbour list of one process has more than 2^32 pairs: run on more MPI ranks");
     m.neighbours.resize(m.offsets[n]);
     m.row_of.resize(m.offsets[n]);
-    m.shear.assign(3 * m.offsets[n], 0.0);
+    m.shear.assign(m.history * m.offsets[n], 0.0);
     m.touching.assign(m.offsets[n], 0);
     const std::int64_t *ID = store.id.data();
 #pragma omp parallel num_threads(m.team())
@@ -217,8 +217,8 @@ namespace abrade::dem
                 for (std::size_t c = c0; c < c1; ++c)
                   if (m.carried_partner[c] == partner)
                     {
-                      for (int d = 0; d < 3; ++d)
-                        m.shear[3 * q + d] = m.carried_shear[3 * c + d];
+                      for (int d = 0; d < m.history; ++d)
+                        m.shear[m.history * q + d] = m.carried_shear[m.history * c + d];
                       m.touching[q] = 1;
                       break;
                     }

@@ -11,12 +11,13 @@
 //  3. add the forces, torques and rolling resistances to both particles and the histories to
 //     their slots (scalar: two pairs may share a particle).
 //
-// The arithmetic is that of hertz_mindlin() (hertz_mindlin.h, used for the wall contacts),
-// written out for the batch with its branches as selects; the particle-particle verification
-// tests (Hertz impact, Chung & Ooi oblique impacts, rolling) run through this kernel.
+// The contact law is the one the wall contacts use (ContactLaw::evaluate, contact_law.h), with
+// the sub-models chosen at run time compiled in (one instantiation per combination); it is
+// branch-free, so the batch loop vectorises. The particle-particle verification tests (Hertz
+// impact, Chung & Ooi oblique impacts, rolling, cohesion) run through this kernel.
 #include "simulation_impl.h"
 
-#include <abrade/dem/hertz_mindlin.h>
+#include <abrade/dem/contact_law.h>
 
 #include <omp.h>
 
@@ -31,16 +32,19 @@ namespace abrade::dem
     /// stores three integers per listed pair; the force pass gathers the rest).
     struct PairBatch
     {
-      static constexpr int capacity = 256;
+      static constexpr int capacity    = 256;
+      static constexpr int max_history = 6;
       int                  n = 0;
       int                  i[capacity], j[capacity];
       unsigned             slot[capacity];
-      double               s0[capacity], s1[capacity], s2[capacity]; // the pair's history, out
-      // results: force on i (j gets the opposite), n x ft for the torques, rolling-resistance
-      // torques mu_r |F_n| r of i and j, overlap / smaller radius
+      double               h[max_history][capacity]; // the pair's history, out
+      // results: force on i (j gets the opposite), n x ft for the torques, constant-torque
+      // rolling resistances mu_r |F_n| r of i and j or the rolling model's torque on i (j gets
+      // the opposite), overlap / smaller radius
       double fx[capacity], fy[capacity], fz[capacity];
       double cx[capacity], cy[capacity], cz[capacity];
       double roll_i[capacity], roll_j[capacity];
+      double mx[capacity], my[capacity], mz[capacity];
       double ratio[capacity];
     };
 
@@ -49,7 +53,7 @@ namespace abrade::dem
     {
       const double *X, *Y, *Z, *R, *M, *VX, *VY, *VZ, *WX, *WY, *WZ;
       const int    *MAT;
-      const double *SHEAR; // 3 per list slot
+      const double *SHEAR; // history per list slot
     };
 
     /// The neighbour list as the scan reads it: per pair (list slot) its row and column
@@ -59,13 +63,14 @@ namespace abrade::dem
       const int *__restrict ROW, *__restrict NEIGHBOURS;
       unsigned char *__restrict TOUCHING;
       double *__restrict SHEAR;
+      int H; ///< history doubles per slot
 
       /// Slot @p k's contact began or ended: flag it; an ended contact forgets its history.
       void contact_changed(std::size_t k, bool touching) const
       {
         TOUCHING[k] = touching;
         if (!touching)
-          SHEAR[3 * k] = SHEAR[3 * k + 1] = SHEAR[3 * k + 2] = 0;
+          std::fill(SHEAR + H * k, SHEAR + H * (k + 1), 0.0);
       }
     };
 
@@ -98,17 +103,18 @@ namespace abrade::dem
     }
 
     // 2. the batch's contact forces (uniform: all pairs have the coefficients *COEF)
-    template <bool rotation, bool uniform>
+    template <bool rotation, bool uniform, class Law>
     void batch_forces(PairBatch &B, const ParticleArrays &in, const PairCoefficients *__restrict COEF,
                       std::size_t nm, double dt)
     {
+      constexpr int          H  = Law::history;
       const PairCoefficients c0 = COEF[0];
       const double *__restrict X = in.X, *__restrict Y = in.Y, *__restrict Z = in.Z, *__restrict S = in.SHEAR;
       const double *__restrict R = in.R, *__restrict M = in.M, *__restrict VX = in.VX, *__restrict VY = in.VY,
                                *__restrict VZ = in.VZ, *__restrict WX = in.WX, *__restrict WY = in.WY,
                                *__restrict WZ = in.WZ;
       const int *__restrict MAT = in.MAT;
-        const int nb = B.n;
+      const int nb = B.n;
 #pragma omp simd
       for (int b = 0; b < nb; ++b)
         {
@@ -116,78 +122,75 @@ namespace abrade::dem
           const double ri = R[i], rj = R[j], mi = M[i], mj = M[j];
           // one division for 1/d, R* = ri rj / sr and m* = mi mj / (mi + mj)
           const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
-          const double d       = std::sqrt(dx * dx + dy * dy + dz * dz);
-          const double sr      = ri + rj;
+          const double d  = std::sqrt(dx * dx + dy * dy + dz * dz);
+          const double sr = ri + rj;
           // (the scan's contact test summed r2 in scalar code: a pair at the edge of contact may
           // come out a rounding error apart here)
-          const double overlap = std::max(sr - d, 0.0);
-          const double msum    = mi + mj;
-          const double q       = 1 / (d * sr * msum);
-          const double inv_d   = sr * msum * q;
-          const double nx = dx * inv_d, ny = dy * inv_d, nz = dz * inv_d;
-          const double r_eff = ri * rj * (d * msum * q);
-          const double m_eff = mi * mj * (d * sr * q);
-          double       vx = VX[i] - VX[j], vy = VY[i] - VY[j], vz = VZ[i] - VZ[j];
+          const double msum  = mi + mj;
+          const double q     = 1 / (d * sr * msum);
+          const double inv_d = sr * msum * q;
+          ContactState cs;
+          cs.overlap = std::max(sr - d, 0.0);
+          cs.nx = dx * inv_d, cs.ny = dy * inv_d, cs.nz = dz * inv_d;
+          cs.r_eff = ri * rj * (d * msum * q);
+          cs.m_eff = mi * mj * (d * sr * q);
+          double vx = VX[i] - VX[j], vy = VY[i] - VY[j], vz = VZ[i] - VZ[j];
           if (rotation)
             {
               // - (ri w_i + rj w_j) x n
               const double ax = ri * WX[i] + rj * WX[j], ay = ri * WY[i] + rj * WY[j], az = ri * WZ[i] + rj * WZ[j];
-              vx -= ay * nz - az * ny;
-              vy -= az * nx - ax * nz;
-              vz -= ax * ny - ay * nx;
+              vx -= ay * cs.nz - az * cs.ny;
+              vy -= az * cs.nx - ax * cs.nz;
+              vz -= ax * cs.ny - ay * cs.nx;
             }
+          cs.vx = vx, cs.vy = vy, cs.vz = vz;
+          if constexpr (Law::needs_rotation)
+            {
+              cs.wx = WX[i] - WX[j], cs.wy = WY[i] - WY[j], cs.wz = WZ[i] - WZ[j];
+              const double ii = 1.4 * mi * ri * ri, ij = 1.4 * mj * rj * rj; // I + m r^2 of solid spheres
+              cs.rolling_inertia = ii * ij / (ii + ij);
+            }
+          if constexpr (Law::needs_area) // the circle the two spheres intersect in
+            cs.area = -M_PI / 4 * (d - ri - rj) * (d + ri - rj) * (d - ri + rj) * (d + ri + rj) / (d * d);
           const PairCoefficients &c = uniform ? c0 : COEF[MAT[i] * nm + MAT[j]];
 
-          // hertz_mindlin(), branch-free
-          const double vn  = vx * nx + vy * ny + vz * nz;
-          const double vtx = vx - vn * nx, vty = vy - vn * ny, vtz = vz - vn * nz;
-          const double sqrt_rd = std::sqrt(r_eff * overlap);
-          const double s_t     = 8 * c.g_star * sqrt_rd;
-          const double f_el    = (4.0 / 3.0) * c.e_star * sqrt_rd * overlap;
-          const double w       = c.damping > 0 ? c.damping * std::sqrt(sqrt_rd * m_eff) : 0.0;
-          const double normal  = f_el - w * c.sqrt_2e * vn;
+          const unsigned k = B.slot[b];
+          double         h[H];
+          for (int e = 0; e < H; ++e)
+            h[e] = S[H * k + e];
+          const ContactResponse f = Law::evaluate(cs, c, dt, h);
+          for (int e = 0; e < H; ++e)
+            B.h[e][b] = h[e];
 
-          const unsigned k  = B.slot[b];
-          double         s0 = S[3 * k], s1 = S[3 * k + 1], s2 = S[3 * k + 2];
-          const double sn = s0 * nx + s1 * ny + s2 * nz;
-          const double m0 = s0 * s0 + s1 * s1 + s2 * s2;
-          const double m1 = m0 - sn * sn;
-          const double rr = m1 > 0 ? sn * sn / m1 : 0.0;
-          const double scale = rr < 1e-5 ? 1 + rr * (0.5 - 0.125 * rr) : std::sqrt(1 + rr);
-          const bool   lost  = sn != 0 && !(m1 > 0);
-          s0 = lost ? 0.0 : (s0 - sn * nx) * scale;
-          s1 = lost ? 0.0 : (s1 - sn * ny) * scale;
-          s2 = lost ? 0.0 : (s2 - sn * nz) * scale;
-          s0 += vtx * dt, s1 += vty * dt, s2 += vtz * dt;
-
-          const double fs0 = -s_t * s0, fs1 = -s_t * s1, fs2 = -s_t * s2;
-          const double fsq       = fs0 * fs0 + fs1 * fs1 + fs2 * fs2;
-          const double f_coulomb = c.friction * std::abs(normal);
-          const bool   sliding   = fsq > f_coulomb * f_coulomb;
-          const double ratio     = sliding ? f_coulomb / std::sqrt(fsq) : 1.0;
-          const double ct        = w * c.sqrt_8g;
-          const double ftx = sliding ? fs0 * ratio : fs0 - ct * vtx;
-          const double fty = sliding ? fs1 * ratio : fs1 - ct * vty;
-          const double ftz = sliding ? fs2 * ratio : fs2 - ct * vtz;
-          B.s0[b] = sliding ? s0 * ratio : s0;
-          B.s1[b] = sliding ? s1 * ratio : s1;
-          B.s2[b] = sliding ? s2 * ratio : s2;
-
-          B.fx[b] = normal * nx + ftx, B.fy[b] = normal * ny + fty, B.fz[b] = normal * nz + ftz;
+          B.fx[b] = f.normal * cs.nx + f.ftx, B.fy[b] = f.normal * cs.ny + f.fty, B.fz[b] = f.normal * cs.nz + f.ftz;
           if (rotation)
             {
-              B.cx[b] = ny * ftz - nz * fty, B.cy[b] = nz * ftx - nx * ftz, B.cz[b] = nx * fty - ny * ftx;
-              const double fr = c.rolling_friction * std::abs(normal);
-              B.roll_i[b] = fr * ri, B.roll_j[b] = fr * rj;
+              B.cx[b] = cs.ny * f.ftz - cs.nz * f.fty, B.cy[b] = cs.nz * f.ftx - cs.nx * f.ftz,
+              B.cz[b] = cs.nx * f.fty - cs.ny * f.ftx;
+              B.roll_i[b] = f.rolling_limit * ri, B.roll_j[b] = f.rolling_limit * rj;
+              B.mx[b] = f.mx, B.my[b] = f.my, B.mz[b] = f.mz;
             }
-          B.ratio[b] = overlap / (ri < rj ? ri : rj);
+          B.ratio[b] = cs.overlap / (ri < rj ? ri : rj);
         }
     }
   } // namespace
 
-  template <bool rotation>
   void Simulation::pair_forces()
   {
+    with_contact_law(config.contact, [&](auto law) {
+      using Law = decltype(law);
+      if (any_rotation)
+        pair_forces_with<true, Law>();
+      else
+        pair_forces_with<false, Law>();
+    });
+  }
+
+  template <bool rotation, class Law>
+  void Simulation::pair_forces_with()
+  {
+    static_assert(Law::history <= PairBatch::max_history);
+    constexpr int     H  = Law::history;
     Impl             &m  = *impl;
     const std::size_t n  = store.n_local(); // owned and ghosts (forces on ghosts are dropped)
     const std::size_t nm = mats.size();
@@ -203,7 +206,7 @@ namespace abrade::dem
     const ParticleArrays    in{X, Y, Z, R, P.mass.data(), P.vx.data(), P.vy.data(), P.vz.data(), WX, WY, WZ,
                             P.material.data(), SHEAR};
     const PairCoefficients *COEF = coefficients.data();
-    const ListArrays        list{m.row_of.data(), NEIGHBOURS, TOUCHING, SHEAR};
+    const ListArrays        list{m.row_of.data(), NEIGHBOURS, TOUCHING, SHEAR, H};
 
     double worst = 0;
     long   wi = -1, wj = -1;
@@ -236,14 +239,15 @@ namespace abrade::dem
       // 2. the batch's forces, 3. onto both particles and the histories back to their slots
       auto flush = [&]() {
         if (m.one_material >= 0)
-          batch_forces<rotation, true>(B, in, COEF + m.one_material * (nm + 1), nm, dt);
+          batch_forces<rotation, true, Law>(B, in, COEF + m.one_material * (nm + 1), nm, dt);
         else
-          batch_forces<rotation, false>(B, in, COEF, nm, dt);
+          batch_forces<rotation, false, Law>(B, in, COEF, nm, dt);
         for (int b = 0; b < B.n; ++b)
           {
             const int i = B.i[b], j = B.j[b];
-            double   *s = SHEAR + 3 * std::size_t(B.slot[b]);
-            s[0] = B.s0[b], s[1] = B.s1[b], s[2] = B.s2[b];
+            double   *s = SHEAR + H * std::size_t(B.slot[b]);
+            for (int e = 0; e < H; ++e)
+              s[e] = B.h[e][b];
             fx[i] += B.fx[b], fy[i] += B.fy[b], fz[i] += B.fz[b];
             fx[j] -= B.fx[b], fy[j] -= B.fy[b], fz[j] -= B.fz[b];
             if (rotation)
@@ -252,7 +256,11 @@ namespace abrade::dem
                 const double ri = R[i], rj = R[j];
                 tx[i] -= ri * B.cx[b], ty[i] -= ri * B.cy[b], tz[i] -= ri * B.cz[b];
                 tx[j] -= rj * B.cx[b], ty[j] -= rj * B.cy[b], tz[j] -= rj * B.cz[b];
-                rl[i] += B.roll_i[b], rl[j] += B.roll_j[b];
+                if constexpr (Law::constant_torque)
+                  rl[i] += B.roll_i[b], rl[j] += B.roll_j[b];
+                else
+                  tx[i] += B.mx[b], ty[i] += B.my[b], tz[i] += B.mz[b], tx[j] -= B.mx[b], ty[j] -= B.my[b],
+                    tz[j] -= B.mz[b];
               }
             if (B.ratio[b] > my_worst)
               my_worst = B.ratio[b], my_i = i, my_j = j;
@@ -279,6 +287,4 @@ namespace abrade::dem
     m.worst_overlap_j     = wj;
   }
 
-  template void Simulation::pair_forces<true>();
-  template void Simulation::pair_forces<false>();
 } // namespace abrade::dem

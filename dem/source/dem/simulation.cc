@@ -1,6 +1,6 @@
 #include <abrade/common/error.h>
 #include <abrade/common/closest_point.h>
-#include <abrade/dem/hertz_mindlin.h>
+#include <abrade/dem/contact_law.h>
 #include "simulation_impl.h"
 
 #include <omp.h>
@@ -164,6 +164,7 @@ namespace abrade::dem
     impl->parallel  = config.distribute ? Parallel::world() : Parallel();
     impl->n_threads = config.threads > 0 ? config.threads : default_thread_count(impl->parallel);
     impl->governor  = ThreadGovernor(impl->n_threads, config.adapt_threads);
+    with_contact_law(config.contact, [&](auto law) { impl->history = decltype(law)::history; });
   }
 
   int Simulation::threads() const { return impl->n_threads; }
@@ -380,10 +381,11 @@ namespace abrade::dem
   // Forces
   // ---------------------------------------------------------------------------------------------
 
-  template <bool rotation>
-  void Simulation::wall_forces()
+  template <bool rotation, class Law>
+  void Simulation::wall_forces_with()
   {
     Impl             &m  = *impl;
+    constexpr int     H  = Law::history;
     const std::size_t n  = store.size();
     const std::size_t nl = store.n_local(); // the per-thread buffers hold owned and ghosts
     const std::size_t nm = mats.size();
@@ -568,32 +570,49 @@ namespace abrade::dem
                               break;
                             }
                         }
-                      double  scratch[3] = {0, 0, 0};
-                      double *shear      = scratch;
+                      double  scratch[H] = {};
+                      double *history    = scratch;
+                      const bool began   = slot < 0;
                       if (slot < 0 && free_slot >= 0)
                         {
                           slot = free_slot;
                           m.hist_wall[K * i + slot] = h.wall;
-                          for (int dd = 0; dd < 3; ++dd)
-                            m.hist_shear[3 * (K * i + slot) + dd] = 0;
+                          for (int dd = 0; dd < H; ++dd)
+                            m.hist_shear[H * (K * i + slot) + dd] = 0;
                         }
                       if (slot >= 0)
                         {
                           m.hist_tri[K * i + slot]  = h.tri;
                           m.hist_used[K * i + slot] = 1;
-                          shear = &m.hist_shear[3 * (K * i + slot)];
+                          history = &m.hist_shear[H * (K * i + slot)];
                         }
                       const PairCoefficients &c = coefficients[P.material[i] * nm + wall.material];
-                      const ContactForce f = hertz_mindlin(nv, overlap, ri, P.mass[i], vrel, c, dt, shear);
-                      const double F[3] = {f.normal * nv[0] + f.ft[0], f.normal * nv[1] + f.ft[1],
-                                           f.normal * nv[2] + f.ft[2]};
+                      ContactState            cs;
+                      cs.nx = nv[0], cs.ny = nv[1], cs.nz = nv[2], cs.overlap = overlap;
+                      cs.r_eff = ri, cs.m_eff = P.mass[i];
+                      cs.vx = vrel[0], cs.vy = vrel[1], cs.vz = vrel[2];
+                      if constexpr (Law::needs_rotation)
+                        {
+                          const Vec3 &ww = wall.angular_velocity;
+                          cs.wx = P.wx[i] - ww[0], cs.wy = P.wy[i] - ww[1], cs.wz = P.wz[i] - ww[2];
+                          cs.rolling_inertia = 1.4 * P.mass[i] * ri * ri; // I + m r^2 of a solid sphere
+                        }
+                      if constexpr (Law::needs_area)
+                        cs.area = M_PI * (ri * ri - d * d);
+                      const ContactResponse f = Law::evaluate(cs, c, dt, history);
+                      const double ft[3] = {f.ftx, f.fty, f.ftz};
+                      const double F[3] = {f.normal * nv[0] + f.ftx, f.normal * nv[1] + f.fty,
+                                           f.normal * nv[2] + f.ftz};
                       fx += F[0], fy += F[1], fz += F[2];
                       if (rotation)
                         {
-                          tx -= ri * (nv[1] * f.ft[2] - nv[2] * f.ft[1]);
-                          ty -= ri * (nv[2] * f.ft[0] - nv[0] * f.ft[2]);
-                          tz -= ri * (nv[0] * f.ft[1] - nv[1] * f.ft[0]);
-                          rolling += c.rolling_friction * std::abs(f.normal) * ri;
+                          tx -= ri * (nv[1] * ft[2] - nv[2] * ft[1]);
+                          ty -= ri * (nv[2] * ft[0] - nv[0] * ft[2]);
+                          tz -= ri * (nv[0] * ft[1] - nv[1] * ft[0]);
+                          if constexpr (Law::constant_torque)
+                            rolling += f.rolling_limit * ri;
+                          else
+                            tx += f.mx, ty += f.my, tz += f.mz;
                         }
                       // load on the wall: -F at the contact point, torque about the wall centre
                       const Vec3 arm = Vec3(h.p[0], h.p[1], h.p[2]) - wall.current_centre();
@@ -602,18 +621,23 @@ namespace abrade::dem
                       L[3] -= arm[1] * F[2] - arm[2] * F[1];
                       L[4] -= arm[2] * F[0] - arm[0] * F[2];
                       L[5] -= arm[0] * F[1] - arm[1] * F[0];
+                      if constexpr (!Law::constant_torque) // a rolling torque on the particle acts back
+                        if (rotation)
+                          L[3] -= f.mx, L[4] -= f.my, L[5] -= f.mz;
 
                       WallContactRecord &r = log.emplace_back(); // filled in place
                       r.wall = h.wall, r.triangle = h.tri, r.feature = h.feature;
                       r.particle = static_cast<int>(i), r.particle_id = P.id[i];
+                      const double vt[3] = {f.vtx, f.vty, f.vtz};
                       for (int dd = 0; dd < 3; ++dd)
                         {
                           r.point[dd] = h.p[dd], r.normal[dd] = nv[dd];
-                          r.tangential_force[dd] = f.ft[dd], r.tangential_velocity[dd] = f.vt[dd];
+                          r.tangential_force[dd] = ft[dd], r.tangential_velocity[dd] = vt[dd];
                         }
                       r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
                       r.centre_velocity[0] = P.vx[i] - vw[0], r.centre_velocity[1] = P.vy[i] - vw[1],
                       r.centre_velocity[2] = P.vz[i] - vw[2];
+                      r.began = began;
                       if (overlap / ri > my_worst)
                         my_worst = overlap / ri, my_i = i;
                     }
@@ -658,18 +682,21 @@ namespace abrade::dem
     total.resize(6 * nw);
   }
 
+  void Simulation::wall_forces()
+  {
+    with_contact_law(config.contact, [&](auto law) {
+      using Law = decltype(law);
+      if (any_rotation)
+        wall_forces_with<true, Law>();
+      else
+        wall_forces_with<false, Law>();
+    });
+  }
+
   void Simulation::compute_forces()
   {
-    if (any_rotation)
-      {
-        pair_forces<true>();
-        wall_forces<true>();
-      }
-    else
-      {
-        pair_forces<false>();
-        wall_forces<false>();
-      }
+    pair_forces();
+    wall_forces();
   }
 
   // ---------------------------------------------------------------------------------------------

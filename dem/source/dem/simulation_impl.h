@@ -34,7 +34,10 @@ namespace abrade::dem
     std::vector<std::size_t> offsets;
     std::vector<int>         neighbours;
     std::vector<int>         row_of; // per pair: its row (the pair scan streams over pairs)
-    std::vector<double>      shear; // 3 per pair, for the row particle relative to the column
+    /// Doubles of history per contact (ContactLaw::history: the tangential spring's 3, and the
+    /// rolling spring's 3 with the epsd model), for pairs and walls alike.
+    int                      history = 3;
+    std::vector<double>      shear; // history per pair, for the row particle relative to the column
     /// per pair: in contact at the last step (0: its shear history is zero)
     std::vector<unsigned char> touching;
     int one_material = -1; ///< the material of all owned particles and ghosts, if they share one
@@ -58,13 +61,13 @@ namespace abrade::dem
     std::vector<int>            candidate_wall, candidate_triangle;
     std::vector<int>            wall_particles; // owned particles with wall candidates
     std::vector<int>            hist_wall, hist_tri; // K per particle, -1: free slot
-    std::vector<double>         hist_shear;          // 3 K per particle
+    std::vector<double>         hist_shear;          // history x K per particle
     std::vector<unsigned char>  hist_used;           // K per particle
     /// Wall histories for @p n particles (new ones free).
     void resize_wall_histories(std::size_t n)
     {
       hist_wall.resize(K * n, -1), hist_tri.resize(K * n, -1);
-      hist_shear.resize(3 * K * n, 0.0);
+      hist_shear.resize(std::size_t(history) * K * n, 0.0);
       hist_used.resize(K * n, 0);
     }
 

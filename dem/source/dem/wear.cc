@@ -6,14 +6,25 @@
 
 namespace abrade::dem
 {
-  const char *WearRecorder::field_name(Field f)
+  /// Where one law's increments go: into its fields of one wall.
+  class WearRecorder::Deposit : public WearDeposit
   {
-    static const char *names[] = {"archard_volume", "relative_normal_energy", "relative_tangential_energy",
-                                  "finnie_wear"};
-    return names[f];
-  }
+  public:
+    Deposit(WearRecorder &recorder, const Simulation &sim, int wall) : recorder(recorder), sim(sim), w(wall) {}
+    void add(const WallContactRecord &contact, int field, double amount) override
+    {
+      recorder.deposit(sim, contact, first + field, amount);
+    }
+    int wall() const override { return w; }
+    int first = 0; ///< the law's first field in the wall's fields
 
-  WearRecorder::WearRecorder(const Simulation &sim, std::vector<WearLaws> laws) : ranks(sim.parallel())
+  private:
+    WearRecorder     &recorder;
+    const Simulation &sim;
+    int               w;
+  };
+
+  WearRecorder::WearRecorder(const Simulation &sim, std::vector<WallWearLaws> laws) : ranks(sim.parallel())
   {
     walls.resize(sim.n_walls());
     for (std::size_t w = 0; w < sim.n_walls(); ++w)
@@ -22,8 +33,12 @@ namespace abrade::dem
         const TriangleMesh &mesh = sim.wall(w).mesh;
         if (w < laws.size())
           d.laws = laws[w];
-        else
-          d.laws.archard = false;
+        for (const auto &law : d.laws)
+          {
+            d.first_field.push_back(int(d.fields.size()));
+            for (const auto &f : law->fields())
+              d.fields.push_back(f);
+          }
         d.area.resize(mesh.n_triangles());
         d.n_vertices = mesh.vertices.size();
         for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
@@ -42,17 +57,17 @@ namespace abrade::dem
       }
   }
 
-  bool WearRecorder::tracks(std::size_t wall, Field f) const
+  int WearRecorder::WallData::field_index(const std::string &name) const
   {
-    const WearLaws &l = walls[wall].laws;
-    switch (f)
-      {
-        case archard_volume: return l.archard;
-        case relative_normal_energy:
-        case relative_tangential_energy: return l.relative;
-        case finnie: return l.finnie;
-        default: return false;
-      }
+    for (std::size_t f = 0; f < fields.size(); ++f)
+      if (fields[f].name == name)
+        return int(f);
+    return -1;
+  }
+
+  bool WearRecorder::tracks(std::size_t wall, const std::string &field) const
+  {
+    return walls[wall].field_index(field) >= 0;
   }
 
   void WearRecorder::phase_changed(const Simulation &, const std::string &phase)
@@ -62,13 +77,13 @@ namespace abrade::dem
       phase_order.push_back(phase);
   }
 
-  void WearRecorder::deposit(const Simulation &sim, const WallContactRecord &r, Field f, double amount,
-                             bool per_area)
+  void WearRecorder::deposit(const Simulation &sim, const WallContactRecord &r, int f, double amount)
   {
-    WallData &d   = walls[r.wall];
-    auto     &per = d.data[current];
+    WallData  &d        = walls[r.wall];
+    const bool per_area = d.fields[f].per_area;
+    auto      &per      = d.data[current];
     if (per.empty())
-      per.assign(n_fields, std::vector<double>(d.area.size(), 0.0));
+      per.assign(d.fields.size(), std::vector<double>(d.area.size(), 0.0));
     // triangles that share the contact point: from its barycentric coordinates in the carrying
     // triangle (robust where round-off calls a point on an edge interior): none ~ 0 -> this
     // triangle; one ~ 0 -> the edge opposite that corner; two ~ 0 -> the remaining corner
@@ -112,7 +127,7 @@ namespace abrade::dem
     // triangle, against round-off), normalised so that the whole increment is deposited
     auto &at_vertices = d.vertex_data[current];
     if (at_vertices.empty())
-      at_vertices.assign(n_fields, std::vector<double>(d.n_vertices, 0.0));
+      at_vertices.assign(d.fields.size(), std::vector<double>(d.n_vertices, 0.0));
     double w[3], sum = 0;
     for (int k = 0; k < 3; ++k)
       sum += (w[k] = std::max(0.0, bary[k]));
@@ -123,84 +138,58 @@ namespace abrade::dem
 
   void WearRecorder::after_step(const Simulation &sim, const ContactLog &log)
   {
-    const double dt = sim.dt();
-    log.for_each([&](const WallContactRecord &r) {
-      const WearLaws &l = walls[r.wall].laws;
-      if (!(l.archard || l.relative || l.finnie))
-        return;
-      const double vt = std::sqrt(r.tangential_velocity[0] * r.tangential_velocity[0] +
-                                  r.tangential_velocity[1] * r.tangential_velocity[1] +
-                                  r.tangential_velocity[2] * r.tangential_velocity[2]);
-      if (l.archard)
-        deposit(sim, r, archard_volume, l.archard_coefficient * std::max(r.normal_force, 0.0) * vt * dt, false);
-      if (l.relative)
-        {
-          const double ftvt = r.tangential_force[0] * r.tangential_velocity[0] +
-                              r.tangential_force[1] * r.tangential_velocity[1] +
-                              r.tangential_force[2] * r.tangential_velocity[2];
-          deposit(sim, r, relative_normal_energy, std::abs(r.normal_force * r.normal_velocity) * dt, false);
-          deposit(sim, r, relative_tangential_energy, std::abs(ftvt) * dt, false);
-        }
-      if (l.finnie)
-        {
-          const double *v  = r.centre_velocity;
-          const double  vm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-          // the contact point lies at -normal from the centre: only approaching particles wear
-          const double approach = -(v[0] * r.normal[0] + v[1] * r.normal[1] + v[2] * r.normal[2]);
-          if (vm > 1e-7 && approach >= 0)
-            {
-              const Vec3   n  = sim.wall(r.wall).current_normal(r.triangle);
-              const double vn = std::abs(v[0] * n[0] + v[1] * n[1] + v[2] * n[2]);
-              const double sin_g = std::min(1.0, vn / vm);
-              const double cos_g = std::min(1.0, std::sqrt(std::max(0.0, vm * vm - vn * vn)) / vm);
-              const double fg = (cos_g < 1e-3 || 3 * sin_g > cos_g) ? cos_g * cos_g / 3
-                                                                      : 2 * sin_g * cos_g - 3 * sin_g * sin_g;
-              const double fmag = std::sqrt(r.normal_force * r.normal_force +
-                                            r.tangential_force[0] * r.tangential_force[0] +
-                                            r.tangential_force[1] * r.tangential_force[1] +
-                                            r.tangential_force[2] * r.tangential_force[2]);
-              deposit(sim, r, finnie, 2 * l.finnie_coefficient * vm * fmag * fg * dt, true);
-            }
-        }
-    });
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      {
+        Deposit deposit(*this, sim, int(w));
+        for (std::size_t k = 0; k < walls[w].laws.size(); ++k)
+          {
+            deposit.first = walls[w].first_field[k];
+            walls[w].laws[k]->record(sim, log, deposit);
+          }
+      }
   }
 
-  std::vector<double> WearRecorder::values(std::size_t wall, Field f, const std::string &phase) const
+  std::vector<double> WearRecorder::values(std::size_t wall, const std::string &field, const std::string &phase) const
   {
     const WallData     &d = walls[wall];
+    const int           f = d.field_index(field);
     std::vector<double> out(d.area.size(), 0.0);
-    for (const auto &[name, per] : d.data)
-      if (phase.empty() || name == phase)
-        for (std::size_t t = 0; t < out.size(); ++t)
-          out[t] += per[f][t];
+    if (f >= 0)
+      for (const auto &[name, per] : d.data)
+        if (phase.empty() || name == phase)
+          for (std::size_t t = 0; t < out.size(); ++t)
+            out[t] += per[f][t];
     ranks.sum(out);
     return out;
   }
 
-  std::vector<double> WearRecorder::vertex_values(std::size_t wall, Field f, const std::string &phase) const
+  std::vector<double> WearRecorder::vertex_values(std::size_t wall, const std::string &field,
+                                                  const std::string &phase) const
   {
     const WallData     &d = walls[wall];
+    const int           f = d.field_index(field);
     std::vector<double> out(d.n_vertices, 0.0);
-    for (const auto &[name, per] : d.vertex_data)
-      if (phase.empty() || name == phase)
-        for (std::size_t v = 0; v < out.size(); ++v)
-          out[v] += per[f][v];
+    if (f >= 0)
+      for (const auto &[name, per] : d.vertex_data)
+        if (phase.empty() || name == phase)
+          for (std::size_t v = 0; v < out.size(); ++v)
+            out[v] += per[f][v];
     ranks.sum(out);
     return out;
   }
 
-  std::vector<double> WearRecorder::archard_depth(std::size_t wall, const std::string &phase) const
+  std::vector<double> WearRecorder::depth(std::size_t wall, const std::string &field, const std::string &phase) const
   {
-    std::vector<double> v = values(wall, archard_volume, phase);
+    std::vector<double> v = values(wall, field, phase);
     for (std::size_t t = 0; t < v.size(); ++t)
       v[t] /= walls[wall].area[t];
     return v;
   }
 
-  double WearRecorder::total(std::size_t wall, Field f, const std::string &phase) const
+  double WearRecorder::total(std::size_t wall, const std::string &field, const std::string &phase) const
   {
     double s = 0;
-    for (double x : values(wall, f, phase))
+    for (double x : values(wall, field, phase))
       s += x;
     return s;
   }

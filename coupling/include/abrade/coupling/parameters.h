@@ -48,6 +48,7 @@ namespace abrade::coupling
     double                   coarse_graining = 1; ///< Particles/Coarse graining/Factor (applied)
     std::optional<dem::FillRegion> fine_fill; ///< multi-level coarse graining: the fine region's fill
     double                   wear_profile_band = 0.01, wear_filter_length = 0.0275; ///< Output/...
+    std::string              wear_field = "archard_volume"; ///< Output/Wear field
     std::vector<std::string> warnings;            ///< parameters that do not follow it, ...
     std::string              bed_file;
     std::vector<Phase>       phases;
@@ -57,7 +58,7 @@ namespace abrade::coupling
       dem::Wall        wall;
       dem::Material    material;
       dem::Interaction interaction;
-      dem::WearLaws    wear;
+      dem::WallWearLaws wear; ///< its wear laws (none: not tracked)
       bool             probe = false;          ///< the contact-layer probe (geometry bin)
       dem::Vec3        probe_axis = dem::Vec3::UnitX();
       double           probe_thickness = 0;    ///< 0: 1.5 x the largest particle radius

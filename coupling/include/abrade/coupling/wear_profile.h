@@ -1,7 +1,7 @@
 #pragma once
-// Where on a wall the Archard wear went, for studies that compare wear patterns (docs/
+// Where on a wall the wear of a volume field (Output/Wear field, Archard's by default) went, for studies that compare wear patterns (docs/
 // coarse-graining.md): walls/NAME_wear_profile.csv of the `dem` job, with columns
-// kind, label, lower, upper, archard_volume, area and rows
+// kind, label, lower, upper, FIELD (the field's name: archard_volume), area and rows
 //  - kind "height": the volume on the triangles whose centroid is between lower and upper [m]
 //    above the wall's lowest point (bands of Output/Wear profile band; a knife's edge first);
 //  - kind "face": per direction of the triangles' outward normal in the reference pose (label
@@ -9,7 +9,7 @@
 //  - kind "filtered_peak": the largest wear depth after the lifetime loop's surface filter
 //    (fem/surface_filter.h, volume conserving) with length lower = upper [m]; label "radius"
 //    for the largest particle radius (the loop's default), "fixed" for Output/Wear filter
-//    length; archard_volume holds the depth [m].
+//    length; the field's column holds the depth [m].
 #include <abrade/dem/triangle_mesh.h>
 
 #include <string>
@@ -24,9 +24,9 @@ namespace abrade::coupling
     double radius       = 0;      ///< the largest particle radius [m]
   };
 
-  /// Writes @p file from the wall's reference @p mesh and its Archard volumes per triangle and
-  /// per vertex (which have the same sum).
-  void write_wear_profile(const std::string &file, const dem::TriangleMesh &mesh,
+  /// Writes @p file from the wall's reference @p mesh and the volumes of field @p field per
+  /// triangle and per vertex (which have the same sum).
+  void write_wear_profile(const std::string &file, const dem::TriangleMesh &mesh, const std::string &field,
                           const std::vector<double> &triangle_volume, const std::vector<double> &vertex_volume,
                           const WearProfileSettings &settings);
 } // namespace abrade::coupling

@@ -50,4 +50,6 @@ namespace abrade::io
   /// The first number stored under @p key in the summary.json file @p path (keys are unique in
   /// a run's results); nothing when the file or the key is missing.
   std::optional<double> summary_number(const std::string &path, const std::string &key);
+  /// The first string value of @p key in the JSON file @p path, if any.
+  std::optional<std::string> summary_string(const std::string &path, const std::string &key);
 } // namespace abrade::io

@@ -25,6 +25,7 @@ namespace abrade::dem
     double       tangential_velocity[3]; ///< sliding velocity of the contact point [m/s]
     double       overlap;              ///< [m]
     double       centre_velocity[3];   ///< particle centre relative to the wall's material point [m/s]
+    bool         began;                ///< the contact began this step (its history is new): an impact
   };
 
   /// One record vector per share of the step's work (Settings::threads; each filled by the one

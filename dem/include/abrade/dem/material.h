@@ -24,7 +24,18 @@ namespace abrade::dem
   {
     double restitution      = 0.6; ///< e in (0, 1]
     double friction         = 0.5; ///< static friction coefficient mu_s
-    double rolling_friction = 0.0; ///< mu_r, EDEM constant directional torque
+    double rolling_friction = 0.0; ///< mu_r (the rolling model's limit torque mu_r |F_n| r)
+    // parameters of the optional contact sub-models (contact_law.h; each declares and reads its own)
+    double cohesion_energy_density = 0.0; ///< k_c [J/m^3] of the sjkr cohesion model
+    double rolling_damping         = 0.3; ///< eta_r [-] of the epsd rolling model
+  };
+
+  /// The run-time choice of contact sub-models (contact_law.h; Simulation/Rolling model,
+  /// Simulation/Cohesion model).
+  struct ContactModel
+  {
+    std::string rolling  = "constant torque";
+    std::string cohesion = "none";
   };
 
   /// How the normal/tangential damping follows from the restitution coefficient.
@@ -45,6 +56,8 @@ namespace abrade::dem
     double friction         = 0;
     double rolling_friction = 0;
     double restitution      = 1;
+    double cohesion_energy_density = 0;
+    double rolling_damping         = 0;
   };
 
   PairCoefficients make_pair_coefficients(const Material &a, const Material &b,

@@ -47,6 +47,7 @@ namespace abrade::dem
     double characteristic_velocity = 1.5;
     double skin = 0;                ///< Verlet skin [m]; 0: 0.2 x smallest radius
     DampingModel damping = DampingModel::edem;
+    ContactModel contact; ///< rolling and cohesion sub-models (contact_law.h)
     int    threads = 0;             ///< 0: all available
     /// Work with fewer of the threads while that is faster (a busy machine; thread_governor.h).
     /// The results do not depend on it: the work is cut into `threads` shares either way.
@@ -191,10 +192,13 @@ namespace abrade::dem
     void accelerate_walls(double dt);
     bool needs_rebuild() const;
     void compute_forces();
-    template <bool rotation>
+    /// Pair and wall forces with the contact law of Settings::contact (contact_law.h).
     void pair_forces();
-    template <bool rotation>
     void wall_forces();
+    template <bool rotation, class Law>
+    void pair_forces_with();
+    template <bool rotation, class Law>
+    void wall_forces_with();
     void check_step();
     void warn(const std::string &w);
   };

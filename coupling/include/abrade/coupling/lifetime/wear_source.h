@@ -36,8 +36,9 @@ namespace abrade::coupling::lifetime
     virtual CycleWear cycle(const fem::SolidSurface &surface, double tonnes) = 0;
     /// The phases of the cycle (trajectory columns archard_volume_<phase>).
     virtual std::vector<std::string> phases() const = 0;
-    /// The Archard coefficient W the wear scales with (0: not the DEM's).
-    virtual double archard_coefficient() const { return 0; }
+    /// The coefficient the wear scales with (the knife's law of Output/Wear field: Archard's W;
+    /// 0: none, or not the DEM's).
+    virtual double wear_coefficient() const { return 0; }
   };
 
   /// A known wear rate: @p expression, depth per tonne [m/t] as a function of x, y, z [m] (the

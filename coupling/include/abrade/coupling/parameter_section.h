@@ -1,0 +1,34 @@
+#pragma once
+// A subsection of the parameter file as the DEM's plugins see it (dem::ParameterSection): their
+// declarations become deal.II ParameterHandler entries, their reads come from it, and their
+// refusals are input errors that name the file, the line and the entry.
+#include <abrade/coupling/parameter_file.h>
+#include <abrade/dem/wear_law.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace abrade::coupling
+{
+  class PluginSection : public dem::ParameterSection
+  {
+  public:
+    /// For declaring only (`abrade params`, the second pass of a file's reading): reads fail.
+    explicit PluginSection(dealii::ParameterHandler &prm) : prm(prm) {}
+    /// For reading the entries of the subsection @p path, which the caller has entered.
+    PluginSection(ParameterFile &file, std::vector<std::string> path)
+      : prm(file.handler()), file(&file), path(std::move(path))
+    {}
+
+    void   declare_number(const std::string &name, double value, double lo, double hi, const std::string &doc) override;
+    double number(const std::string &name) const override;
+    [[noreturn]] void fail(const std::string &name, const std::string &why) const override;
+
+  private:
+    dealii::ParameterHandler &prm;
+    ParameterFile            *file = nullptr;
+    std::vector<std::string>  path;
+  };
+} // namespace abrade::coupling

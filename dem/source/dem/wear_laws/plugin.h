@@ -1,0 +1,22 @@
+#pragma once
+// What a wear law's file needs (wear_law.h): the interface, the simulation it reads and the
+// macro that makes its factory, which registered.h names.
+#include <abrade/dem/simulation.h>
+#include <abrade/dem/wear_law.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+/// Defines the factory of wear law @p Class (in namespace abrade::dem::wear_laws).
+#define ABRADE_WEAR_LAW_FACTORY(Class)                                                                                \
+  std::unique_ptr<::abrade::dem::WearLaw> make_##Class() { return std::make_unique<Class>(); }
+
+namespace abrade::dem::wear_laws
+{
+  /// The largest double, the upper end of unbounded parameter ranges.
+  inline constexpr double unbounded = std::numeric_limits<double>::max();
+
+  /// |v| of a 3-vector.
+  inline double length(const double *v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+} // namespace abrade::dem::wear_laws
