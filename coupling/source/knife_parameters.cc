@@ -49,10 +49,7 @@ namespace abrade::coupling
     k.height     = prm.get_double("Height");
     k.thickness  = prm.get_double("Thickness");
     k.bevel      = prm.get_double("Bevel height");
-    const std::string side = prm.get("Bevel side");
-    k.bevel_side = side == "both" ? fem::KnifeGeometry::BevelSide::both
-                   : side == "plus" ? fem::KnifeGeometry::BevelSide::plus
-                                    : fem::KnifeGeometry::BevelSide::minus;
+    k.bevel_side = get_choice(prm, "Bevel side", bevel_sides);
     k.tip_radius = prm.get_double("Tip radius");
     k.lip_height = prm.get_double("Lip height");
     k.lip_width  = prm.get_double("Lip width");

@@ -1,7 +1,9 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_section.h>
+#include <abrade/dem/contact_law.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/run_size.h>
 #include <abrade/dem/bed_import.h>
@@ -40,42 +42,30 @@ namespace abrade::coupling
       prm.declare_entry(name, def, List(Double(-huge, huge), 3, 3), doc + " Three numbers: x, y, z.");
     }
 
+    /// The names of a list of contact sub-models as an entry pattern, and their documentation.
+    template <class Models>
+    Selection model_selection()
+    {
+      std::string names;
+      for (const auto &n : dem::model_names<Models>())
+        names += (names.empty() ? "" : "|") + n;
+      return Selection(names);
+    }
+
+    template <class Models>
+    std::string model_documentation()
+    {
+      std::string doc;
+      dem::for_each_model<Models>([&](auto m) {
+        doc += (doc.empty() ? "" : "; ") + std::string(m.name) + ": " + m.documentation;
+      });
+      return doc;
+    }
+
     Vec3 get_vector(ParameterHandler &prm, const std::string &name)
     {
       const auto v = split_string_list(prm.get(name));
       return Vec3(std::stod(v[0]), std::stod(v[1]), std::stod(v[2]));
-    }
-
-    /// The names a parameter may take and what each stands for, spelled once: the entry's
-    /// pattern (selection_of) and its value (get_choice) both come from the list.
-    template <typename T>
-    using Choices = std::vector<std::pair<std::string, T>>;
-
-    template <typename T>
-    Selection selection_of(const Choices<T> &choices)
-    {
-      std::string names;
-      for (const auto &c : choices)
-        names += (names.empty() ? "" : "|") + c.first;
-      return Selection(names);
-    }
-
-    /// What @p value stands for among @p choices (@p name: the entry it was read from, whose
-    /// pattern, selection_of(@p choices), checked it).
-    template <typename T>
-    T choice_named(const std::string &value, const std::string &name, const Choices<T> &choices)
-    {
-      for (const auto &c : choices)
-        if (c.first == value)
-          return c.second;
-      throw RunError("parameter '" + name + "' = '" + value + "' passed its pattern but names no choice");
-    }
-
-    /// The value of entry @p name.
-    template <typename T>
-    T get_choice(ParameterHandler &prm, const std::string &name, const Choices<T> &choices)
-    {
-      return choice_named(prm.get(name), name, choices);
     }
 
     const Choices<dem::DampingModel> damping_models = {{"edem", dem::DampingModel::edem},
@@ -160,7 +150,12 @@ namespace abrade::coupling
                         "the tangential force). Range: >= 0.");
       prm.declare_entry("Rolling friction", "0", Double(0, huge),
                         "[-] Rolling friction coefficient of " + with + " contacts (EDEM constant "
-                        "directional torque; acts only on rotating particles). Range: >= 0.");
+                        "directional torque, or the epsd spring's limit mu_r R* |F_n|: Simulation/Rolling "
+                        "model; acts only on rotating particles). Range: >= 0.");
+      // the optional sub-models' own entries (contact_law.h)
+      PluginSection section(prm);
+      dem::for_each_model<dem::RollingModels>([&](auto m) { m.declare_parameters(section); });
+      dem::for_each_model<dem::CohesionModels>([&](auto m) { m.declare_parameters(section); });
       prm.leave_subsection();
     }
   } // namespace
@@ -217,7 +212,7 @@ namespace abrade::coupling
     prm.declare_entry("Bevel height", "0.04", Double(1e-6, huge),
                       "[m] Height of the bevel that forms the edge; with the thickness it sets the "
                       "edge angle. Range: (0, Height).");
-    prm.declare_entry("Bevel side", "both", Selection("both|plus|minus"),
+    prm.declare_entry("Bevel side", "both", selection_of(bevel_sides),
                       "both: chisel edge in the middle; plus / minus: bevel on the +y / -y face only.");
     prm.declare_entry("Tip radius", "0", Double(0, huge), "[m] Rounding of the edge; 0: sharp. Range: [0, Thickness/2).");
     prm.declare_entry("Lip height", "0", Double(0, huge),
@@ -374,6 +369,13 @@ namespace abrade::coupling
                       "rebound restitution of a Hertz contact then differs slightly from the input); "
                       "calibrated: damping chosen so that a Hertz contact rebounds with exactly the "
                       "input restitution.");
+    prm.declare_entry("Rolling model", dem::model_names<dem::RollingModels>()[0], model_selection<dem::RollingModels>(),
+                      "The contact law's rolling resistance (docs/physics.md): " +
+                        model_documentation<dem::RollingModels>() +
+                        ". Its limit comes from each Interaction's Rolling friction.");
+    prm.declare_entry("Cohesion model", dem::model_names<dem::CohesionModels>()[0], model_selection<dem::CohesionModels>(),
+                      "The contact law's cohesion (docs/physics.md): " + model_documentation<dem::CohesionModels>() +
+                        ". Its strength comes from each Interaction's entries.");
     prm.declare_entry("Threads", "0", Integer(0, 1024),
                       "Number of threads; 0: all available (OMP_NUM_THREADS). Range: >= 0. Under "
                       "mpirun: threads per MPI rank (0: the machine's share of each rank). The work "
@@ -637,10 +639,16 @@ namespace abrade::coupling
       return m;
     }
 
-    dem::Interaction read_interaction(ParameterHandler &prm)
+    dem::Interaction read_interaction(ParameterFile &f, const std::vector<std::string> &path)
     {
+      auto &prm = f.handler();
       prm.enter_subsection("Interaction");
       dem::Interaction i{prm.get_double("Restitution"), prm.get_double("Friction"), prm.get_double("Rolling friction")};
+      auto             ip = path;
+      ip.push_back("Interaction");
+      PluginSection section(f, ip);
+      dem::for_each_model<dem::RollingModels>([&](auto m) { m.parse_parameters(section, i); });
+      dem::for_each_model<dem::CohesionModels>([&](auto m) { m.parse_parameters(section, i); });
       prm.leave_subsection();
       return i;
     }
@@ -789,6 +797,8 @@ namespace abrade::coupling
     s.characteristic_velocity = prm.get_double("Characteristic velocity");
     s.skin                    = prm.get_double("Skin");
     s.damping   = get_choice(prm, "Damping model", damping_models);
+    s.contact.rolling  = prm.get("Rolling model");
+    s.contact.cohesion = prm.get("Cohesion model");
     s.threads   = prm.get_integer("Threads");
     s.adapt_threads = prm.get_bool("Adapt threads");
     s.rebalance_threshold = prm.get_double("Rebalance threshold");
@@ -826,7 +836,7 @@ namespace abrade::coupling
 
     prm.enter_subsection("Particles");
     c.particle_material    = read_material(f, {"Particles"}, "particles");
-    c.particle_interaction = read_interaction(prm);
+    c.particle_interaction = read_interaction(f, {"Particles"});
     prm.enter_subsection("Generation");
     const std::vector<std::string> gp = {"Particles", "Generation"};
     auto &fill                       = c.fill;
@@ -1027,7 +1037,7 @@ namespace abrade::coupling
         if (prm.get_bool("Flip normals"))
           w.mesh.flip();
         wc.material    = read_material(f, wp, name);
-        wc.interaction = read_interaction(prm);
+        wc.interaction = read_interaction(f, wp);
 
         prm.enter_subsection("Wear");
         dem::WearContext context;

@@ -2,6 +2,7 @@
 // The knife's solid model as the parameter file describes it (subsection Knife), shared by the
 // knife and lifetime jobs.
 #include <abrade/common/log.h>
+#include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/fem/knife_geometry.h>
@@ -15,6 +16,11 @@
 
 namespace abrade::coupling
 {
+  /// Knife/Bevel side.
+  inline const Choices<fem::KnifeGeometry::BevelSide> bevel_sides = {{"both", fem::KnifeGeometry::BevelSide::both},
+                                                                     {"plus", fem::KnifeGeometry::BevelSide::plus},
+                                                                     {"minus", fem::KnifeGeometry::BevelSide::minus}};
+
   struct KnifeParameters
   {
     fem::KnifeGeometry geometry;
