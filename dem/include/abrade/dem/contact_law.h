@@ -42,7 +42,7 @@ namespace abrade::dem
 
       static void declare_parameters(ParameterSection &) {}
       static void parse_parameters(const ParameterSection &, Interaction &) {}
-      static inline void evaluate(const ContactState &, const PairCoefficients &, ContactResponse &) {}
+      [[gnu::always_inline]] static inline void evaluate(const ContactState &, const PairCoefficients &, ContactResponse &) {}
     };
   } // namespace contact_models
 
@@ -61,7 +61,7 @@ namespace abrade::dem
     static constexpr bool constant_torque   = std::is_same_v<Rolling, contact_models::ConstantTorqueRolling>;
 
     /// The force on body i of contact @p s; @p h: its history (history doubles), updated.
-    static inline ContactResponse evaluate(const ContactState &s, const PairCoefficients &c, double dt, double *h)
+    [[gnu::always_inline]] static inline ContactResponse evaluate(const ContactState &s, const PairCoefficients &c, double dt, double *h)
     {
       ContactResponse r;
       Base::evaluate(s, c, dt, h, r);

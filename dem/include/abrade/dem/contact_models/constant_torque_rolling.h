@@ -23,7 +23,7 @@ namespace abrade::dem::contact_models
     static void declare_parameters(ParameterSection &) {}
     static void parse_parameters(const ParameterSection &, Interaction &) {}
 
-    static inline void evaluate(const ContactState &, const PairCoefficients &c, double, double *, ContactResponse &r)
+    [[gnu::always_inline]] static inline void evaluate(const ContactState &, const PairCoefficients &c, double, double *, ContactResponse &r)
     {
       r.rolling_limit = c.rolling_friction * std::abs(r.repulsion);
       r.mx = r.my = r.mz = 0;

@@ -27,7 +27,6 @@ namespace abrade::dem
     double ftx, fty, ftz;   ///< tangential force on i [N]
     double vn;              ///< normal relative velocity (negative when approaching) [m/s]
     double vtx, vty, vtz;   ///< sliding velocity of the contact point [m/s]
-    bool   sliding;         ///< Coulomb limit reached
     double rolling_limit;   ///< constant-torque rolling: mu_r |F_n|, times each body's radius [N]
     double mx, my, mz;      ///< torque rolling models put on i (j gets the opposite) [N m]
   };
@@ -36,7 +35,7 @@ namespace abrade::dem
   /// magnitude: project, then rescale by sqrt(|s|^2 / |s_projected|^2) = sqrt(1 + r) with
   /// r = sn^2 / |s_projected|^2. The normal turns little in one step, so r is tiny and the series
   /// is exact to round-off. A history along n alone is lost. Branch-free.
-  inline void rotate_into_tangent_plane(double &s0, double &s1, double &s2, double nx, double ny, double nz)
+  [[gnu::always_inline]] inline void rotate_into_tangent_plane(double &s0, double &s1, double &s2, double nx, double ny, double nz)
   {
     const double sn    = s0 * nx + s1 * ny + s2 * nz;
     const double m0    = s0 * s0 + s1 * s1 + s2 * s2;

@@ -42,7 +42,7 @@ namespace abrade::dem::contact_models
       i.rolling_damping = p.number("Rolling damping ratio");
     }
 
-    static inline void evaluate(const ContactState &s, const PairCoefficients &c, double dt, double *h,
+    [[gnu::always_inline]] static inline void evaluate(const ContactState &s, const PairCoefficients &c, double dt, double *h,
                                 ContactResponse &r)
     {
       const double wn  = s.wx * s.nx + s.wy * s.ny + s.wz * s.nz;

@@ -23,38 +23,41 @@ namespace abrade::dem::contact_models
     static constexpr int history = 3; ///< the tangential spring's displacement
 
     /// Normal (elastic + damping) and tangential force of @p s into @p r; @p h: the history.
-    static inline void evaluate(const ContactState &s, const PairCoefficients &c, double dt, double *h,
+    [[gnu::always_inline]] static inline void evaluate(const ContactState &s, const PairCoefficients &c, double dt, double *h,
                                 ContactResponse &r)
     {
-      r.vn  = s.vx * s.nx + s.vy * s.ny + s.vz * s.nz;
-      r.vtx = s.vx - r.vn * s.nx, r.vty = s.vy - r.vn * s.ny, r.vtz = s.vz - r.vn * s.nz;
+      // (locals throughout, stored into r at the end: a select on a value read back from r
+      // keeps GCC from if-converting, and the pair loop from vectorising)
+      const double vn  = s.vx * s.nx + s.vy * s.ny + s.vz * s.nz;
+      const double vtx = s.vx - vn * s.nx, vty = s.vy - vn * s.ny, vtz = s.vz - vn * s.nz;
 
       // S_n = 2 E* sqrt(R* d), S_t = 8 G* sqrt(R* d); the damping needs sqrt(S m*), computed as
       // sqrt(2 E*) (resp. sqrt(8 G*)) times one common sqrt(sqrt(R* d) m*)
-      const double sqrt_rd = std::sqrt(s.r_eff * s.overlap);
-      const double s_t     = 8 * c.g_star * sqrt_rd;
-      const double f_el    = (4.0 / 3.0) * c.e_star * sqrt_rd * s.overlap;
-      const double w       = c.damping > 0 ? c.damping * std::sqrt(sqrt_rd * s.m_eff) : 0.0;
-      r.repulsion          = f_el - w * c.sqrt_2e * r.vn;
-      r.normal             = r.repulsion;
+      const double sqrt_rd   = std::sqrt(s.r_eff * s.overlap);
+      const double s_t       = 8 * c.g_star * sqrt_rd;
+      const double f_el      = (4.0 / 3.0) * c.e_star * sqrt_rd * s.overlap;
+      const double w         = c.damping > 0 ? c.damping * std::sqrt(sqrt_rd * s.m_eff) : 0.0;
+      const double repulsion = f_el - w * c.sqrt_2e * vn;
 
       double s0 = h[0], s1 = h[1], s2 = h[2];
       rotate_into_tangent_plane(s0, s1, s2, s.nx, s.ny, s.nz);
-      s0 += r.vtx * dt, s1 += r.vty * dt, s2 += r.vtz * dt;
+      s0 += vtx * dt, s1 += vty * dt, s2 += vtz * dt;
 
       // spring force, Coulomb-limited; damping only while sticking
       const double fs0 = -s_t * s0, fs1 = -s_t * s1, fs2 = -s_t * s2;
       const double fsq       = fs0 * fs0 + fs1 * fs1 + fs2 * fs2;
-      const double f_coulomb = c.friction * std::abs(r.repulsion);
-      r.sliding              = fsq > f_coulomb * f_coulomb;
-      const double ratio     = r.sliding ? f_coulomb / std::sqrt(fsq) : 1.0;
+      const double f_coulomb = c.friction * std::abs(repulsion);
+      const bool   sliding   = fsq > f_coulomb * f_coulomb;
+      const double ratio     = sliding ? f_coulomb / std::sqrt(fsq) : 1.0;
       const double ct        = w * c.sqrt_8g;
-      r.ftx = r.sliding ? fs0 * ratio : fs0 - ct * r.vtx;
-      r.fty = r.sliding ? fs1 * ratio : fs1 - ct * r.vty;
-      r.ftz = r.sliding ? fs2 * ratio : fs2 - ct * r.vtz;
-      h[0]  = r.sliding ? s0 * ratio : s0;
-      h[1]  = r.sliding ? s1 * ratio : s1;
-      h[2]  = r.sliding ? s2 * ratio : s2;
+      r.ftx = sliding ? fs0 * ratio : fs0 - ct * vtx;
+      r.fty = sliding ? fs1 * ratio : fs1 - ct * vty;
+      r.ftz = sliding ? fs2 * ratio : fs2 - ct * vtz;
+      h[0]  = sliding ? s0 * ratio : s0;
+      h[1]  = sliding ? s1 * ratio : s1;
+      h[2]  = sliding ? s2 * ratio : s2;
+      r.vn = vn, r.vtx = vtx, r.vty = vty, r.vtz = vtz;
+      r.repulsion = r.normal = repulsion;
     }
   };
 } // namespace abrade::dem::contact_models

@@ -36,7 +36,7 @@ namespace abrade::dem::contact_models
       i.cohesion_energy_density = p.number("Cohesion energy density");
     }
 
-    static inline void evaluate(const ContactState &s, const PairCoefficients &c, ContactResponse &r)
+    [[gnu::always_inline]] static inline void evaluate(const ContactState &s, const PairCoefficients &c, ContactResponse &r)
     {
       r.normal = r.repulsion - c.cohesion_energy_density * s.area;
     }
