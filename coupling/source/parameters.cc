@@ -1045,6 +1045,10 @@ namespace abrade::coupling
         for (const auto &law_name : get_list(prm, "Laws"))
           {
             auto law = dem::make_wear_law(law_name); // (the pattern checked the name)
+            if (law->uses_particle_size() && c.fine_fill)
+              f.fail({wp[0], "Wear"}, "Laws",
+                     "wear law " + law_name + " uses the real particle size, which a multi-level coarse graining "
+                     "(Particles/Coarse graining/Fine region) gives two of: not supported");
             prm.enter_subsection(law->section());
             PluginSection section(f, {wp[0], "Wear", law->section()});
             law->parse_parameters(section, context);

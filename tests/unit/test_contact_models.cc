@@ -268,3 +268,64 @@ TEST(EpsdRolling, SpinningPairStopsRollingAndKeepsItsAngularMomentum)
   const std::size_t a = index_of(sim, 0), b = index_of(sim, 1);
   EXPECT_LT(std::abs(P.wz[a] - P.wz[b]), 0.01 * 5) << "still rolling: " << P.wz[a] << " vs " << P.wz[b];
 }
+
+// The epsd spring and dashpot themselves: a sphere resting on a plane, given a small rolling
+// spin below the limit, rocks about its contact point. With the tangential spring k_t and the
+// rolling spring k_r (I = 0.4 m R^2, x the centre, phi the rotation):
+//   m x'' = -k_t (x - R phi),   I phi'' = k_t R (x - R phi) - k_r phi,
+// whose slow mode has omega^2 = the smaller root of m I l^2 - (m (k_t R^2 + k_r) + I k_t) l + k_t k_r
+// (about k_r / (1.4 m R^2)); the dashpot at eta_r of 2 sqrt(I_r k_r) damps it with the
+// logarithmic decrement 2 pi eta_r / sqrt(1 - eta_r^2).
+TEST(EpsdRolling, RockingSphereOscillatesWithTheSpringsPeriodAndDecrement)
+{
+  auto rock = [](double eta, std::vector<double> &spin) {
+    Settings s        = quiet_settings(1e-6, true);
+    s.contact.rolling = "epsd";
+    Simulation  sim(s);
+    const int   ms = sim.add_material(glass), mw = sim.add_material(glass);
+    Interaction i{0.9, 0.5, mu_r};
+    i.rolling_damping = eta;
+    sim.set_interaction(ms, mw, i);
+    sim.add_wall(floor_wall(mw, 1.0));
+    auto &P = sim.particles();
+    P.add(0, 0.013, 0.017, R, R, glass.density, ms);
+    sim.setup();
+    sim.run_phase("rest", 0.05);
+    P.vx[0] = P.vy[0] = P.vz[0] = P.wx[0] = P.wz[0] = 0;
+    P.wy[0] = 0.01, P.vx[0] = 0.01 * R; // rolling, well below the limit (about 0.03 rad/s here)
+    for (int k = 0; k < 30000; ++k)
+      {
+        sim.step();
+        spin.push_back(P.wy[0]);
+      }
+  };
+  // the springs at the static overlap under the sphere's weight
+  const double m = sphere_mass(R, glass.density), I = 0.4 * m * R * R, es = e_star(glass, glass);
+  const double g_star = 1 / (2 * (2 - glass.poisson_ratio) / glass.shear_modulus());
+  const double delta  = std::pow(m * g / (4.0 / 3.0 * es * std::sqrt(R)), 2.0 / 3.0);
+  const double k_n = 4.0 / 3.0 * es * std::sqrt(R * delta), k_t = 8 * g_star * std::sqrt(R * delta);
+  const double k_r = 2.25 * k_n * mu_r * mu_r * R * R;
+  const double b = m * (k_t * R * R + k_r) + I * k_t, lambda = (b - std::sqrt(b * b - 4 * m * I * k_t * k_r)) / (2 * m * I);
+  const double period = 2 * M_PI / std::sqrt(lambda);
+
+  std::vector<double> spin;
+  rock(0, spin);
+  std::vector<double> crossings; // upward zero crossings [steps], interpolated
+  for (std::size_t k = 1; k < spin.size(); ++k)
+    if (spin[k - 1] < 0 && spin[k] >= 0)
+      crossings.push_back(k - 1 + spin[k - 1] / (spin[k - 1] - spin[k]));
+  ASSERT_GE(crossings.size(), 4u) << "no oscillation";
+  const double measured = (crossings.back() - crossings.front()) / (crossings.size() - 1) * 1e-6;
+  EXPECT_NEAR(measured / period, 1, 0.02) << "period " << measured << " s, springs " << period << " s";
+
+  spin.clear();
+  const double eta = 0.3;
+  rock(eta, spin);
+  std::vector<double> peaks; // successive maxima of the spin
+  for (std::size_t k = 1; k + 1 < spin.size() && peaks.size() < 3; ++k)
+    if (spin[k] > spin[k - 1] && spin[k] >= spin[k + 1] && spin[k] > 0)
+      peaks.push_back(spin[k]);
+  ASSERT_GE(peaks.size(), 3u);
+  const double decrement = std::log(peaks[1] / peaks[2]);
+  EXPECT_NEAR(decrement / (2 * M_PI * eta / std::sqrt(1 - eta * eta)), 1, 0.1) << "peaks " << peaks[1] << ", " << peaks[2];
+}

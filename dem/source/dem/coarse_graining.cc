@@ -42,6 +42,10 @@ namespace abrade::dem
       out.push_back("Simulation/Time step is fixed (" + io::format_number(settings.time_step) +
                     " s) while the particles are coarse-grained by " + io::format_number(f) +
                     ": the stable step scales with the radius; 0 (a fraction of the Rayleigh time) follows it");
+    if (settings.contact.cohesion != "none")
+      out.push_back("Simulation/Cohesion model = " + settings.contact.cohesion + " with particles coarse-grained by " +
+                    io::format_number(f) + ": the attraction grows as the contact area (f^2) and the weight as f^3, "
+                    "so the bed is 1/f as cohesive as the real material unless Cohesion energy density is scaled by f");
     return out;
   }
 } // namespace abrade::dem

@@ -551,28 +551,33 @@ namespace abrade::dem
                           vrel[1] -= ri * (P.wz[i] * nv[0] - P.wx[i] * nv[2]);
                           vrel[2] -= ri * (P.wx[i] * nv[1] - P.wy[i] * nv[0]);
                         }
-                      // contact history: same wall and the same or an adjacent triangle
+                      // contact history: same wall and the same triangle, else an adjacent one
+                      // (two passes: in a concave fold a new contact on the next face must not
+                      // take the history of the contact on this one)
                       int slot = -1, free_slot = -1;
-                      for (int s = 0; s < K; ++s)
-                        {
-                          const int ws = m.hist_wall[K * i + s];
-                          if (ws < 0)
-                            {
-                              if (free_slot < 0) free_slot = s;
-                              continue;
-                            }
-                          if (ws == h.wall && !m.hist_used[K * i + s] &&
-                              (m.hist_tri[K * i + s] == h.tri ||
-                               triangles_share_vertex(wall.mesh.triangles[m.hist_tri[K * i + s]],
-                                                      wall.mesh.triangles[h.tri])))
-                            {
-                              slot = s;
-                              break;
-                            }
-                        }
+                      for (int pass = 0; pass < 2 && slot < 0; ++pass)
+                        for (int s = 0; s < K; ++s)
+                          {
+                            const int ws = m.hist_wall[K * i + s];
+                            if (ws < 0)
+                              {
+                                if (free_slot < 0) free_slot = s;
+                                continue;
+                              }
+                            if (ws == h.wall && !m.hist_used[K * i + s] &&
+                                (pass == 0 ? m.hist_tri[K * i + s] == h.tri
+                                           : triangles_share_vertex(wall.mesh.triangles[m.hist_tri[K * i + s]],
+                                                                    wall.mesh.triangles[h.tri])))
+                              {
+                                slot = s;
+                                break;
+                              }
+                          }
                       double  scratch[H] = {};
                       double *history    = scratch;
-                      const bool began   = slot < 0;
+                      // an impact: a history begins (with every slot taken, none is kept and
+                      // the contact is not counted as one, rather than as one every step)
+                      const bool began   = slot < 0 && free_slot >= 0;
                       if (slot < 0 && free_slot >= 0)
                         {
                           slot = free_slot;

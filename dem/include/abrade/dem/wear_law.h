@@ -88,6 +88,10 @@ namespace abrade::dem
     /// Reads (and checks) the parameters of one wall.
     virtual void parse_parameters(const ParameterSection &, const WearContext &) {}
 
+    /// Whether the law uses the real particle size (WearContext::coarse_graining): such a law
+    /// cannot be used with a multi-level coarse graining, whose particles have two factors.
+    virtual bool uses_particle_size() const { return false; }
+
     /// The parameter every field is proportional to (Archard's W), which calibration against
     /// measured wear rescales; 0: none. Its entry's name in section().
     virtual double      coefficient() const { return 0; }

@@ -60,6 +60,7 @@ namespace abrade::dem::wear_laws
       v_ref = p.number("Reference velocity"), d_ref = p.number("Reference diameter");
       coarse_graining = context.coarse_graining;
     }
+    bool        uses_particle_size() const override { return true; }
     double      coefficient() const override { return e90; }
     std::string coefficient_name() const override { return "Coefficient"; }
 

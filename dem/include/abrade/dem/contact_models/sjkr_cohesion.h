@@ -1,6 +1,6 @@
 #pragma once
-// Cohesion as the simplified JKR model (LIGGGHTS' `cohesion sjkr`; EDEM's "Hertz-Mindlin with
-// JKR" in its simplified form): an attraction k_c A along the normal while the bodies overlap,
+// Cohesion as the simplified JKR model (LIGGGHTS' `cohesion sjkr`, the same law as EDEM's
+// "Linear Cohesion"; not EDEM's full "Hertz-Mindlin with JKR"): an attraction k_c A along the normal while the bodies overlap,
 // with k_c the cohesion energy density of the interaction [J/m^3] and A = pi a^2 the area of the
 // circle in which the two spheres (a sphere and a plane) intersect,
 //
@@ -22,7 +22,8 @@ namespace abrade::dem::contact_models
   {
     static constexpr const char *name = "sjkr";
     static constexpr const char *documentation =
-      "simplified JKR (LIGGGHTS' sjkr): an attraction Cohesion energy density x the contact area pi a^2";
+      "simplified JKR (LIGGGHTS' sjkr, EDEM's linear cohesion): an attraction Cohesion energy density x the "
+      "contact area pi a^2";
     static constexpr bool needs_area = true; ///< reads ContactState::area
 
     static void declare_parameters(ParameterSection &p)
