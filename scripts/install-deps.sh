@@ -17,8 +17,8 @@ packages=(
   libeigen3-dev libvtk9-dev
   # parallel
   libopenmpi-dev openmpi-bin
-  # tests
-  libgtest-dev numdiff
+  # tests (chromium: the run report opened in a headless browser)
+  libgtest-dev numdiff chromium
   # benchmarks: the peer codes and the plots (matplotlib-free: gnuplot draws the PNGs)
   liggghts lammps python3 gnuplot-nox
 )

@@ -2,6 +2,7 @@
 //
 //   abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
 //   abrade params [--format text|prm]
+//   abrade report RUN_DIR
 //   abrade export-walls [FILE.prm] --output DIR
 //   abrade convert SCRIPT.geo|CAD --output FILE.step
 //   abrade compare --predicted WORN --scan SCAN [--reference DESIGN] --output DIR [...]
@@ -11,6 +12,7 @@
 // Exit codes: 0 success, 2 bad input (command line, parameter file, mesh), 3 run-time failure
 // (NaN, lost particle, inverted element), 1 anything else.
 #include <abrade/common/error.h>
+#include <abrade/common/external.h>
 #include <abrade/common/termination.h>
 #include <abrade/common/hash.h>
 #include <abrade/common/json.h>
@@ -26,6 +28,7 @@
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/field/commands.h>
+#include <abrade/report/report.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -59,6 +62,9 @@ namespace
       knives' wear per phase, payload, wear per tonne and the change against the baseline with
       its uncertainty (concepts.md/.csv, wear.png); with --lifetime-updates, each concept's
       knife life too (lifetime/NAME/, lifetime.png)
+  abrade report RUN_DIR
+      write RUN_DIR/report.html, one self-contained page (pictures inlined) for a lifetime,
+      sweep, concepts, compare or calibrate run; those runs write it themselves when they end
   abrade export-walls [FILE.prm] [--set ...]... --output DIR
       write every wall of the case, as the simulation sees it at t = 0, as DIR/NAME.stl
   abrade convert SCRIPT.geo|FILE.step|FILE.brep --output FILE.step
@@ -83,6 +89,7 @@ namespace
     std::vector<std::string> more_files;             ///< concepts: the files after the first
     std::string              knives = "right_knife,left_knife";
     int                      lifetime_updates = 0;
+    std::string              command_line; ///< as typed (summary.json's provenance)
   };
 
   /// What mpirun (Open MPI, or a PMI launcher) told this process, known before MPI_Init.
@@ -142,9 +149,37 @@ namespace
     return seeds;
   }
 
+  /// The value after @p option on the command line ("" if none).
+  std::string option_value(int argc, char **argv, const std::string &option)
+  {
+    for (int k = 1; k + 1 < argc; ++k)
+      if (argv[k] == option)
+        return argv[k + 1];
+    return "";
+  }
+
+  /// After a run that ended with @p rc: its report in @p directory (a failed report is a warning,
+  /// not a failed run). Returns @p rc.
+  int with_report(int rc, const std::string &directory)
+  {
+    if (rc != 0 || directory.empty())
+      return rc;
+    try
+      {
+        std::cout << "Report: " << report::write_report(directory) << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "warning: no report written: " << e.what() << std::endl;
+      }
+    return rc;
+  }
+
   CommandLine parse(int argc, char **argv)
   {
     CommandLine cl;
+    for (int k = 0; k < argc; ++k)
+      cl.command_line += (k ? " " : "") + io::shell_quote(argv[k]);
     std::vector<std::string> a(argv + 1, argv + argc);
     if (a.empty())
       throw InputError("command line", "no command given\n" + std::string(usage));
@@ -246,6 +281,7 @@ namespace
       std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
       summary["started"] = buf;
     }
+    summary["command"] = cl.command_line;
     summary["threads"] = threads;
     summary["mpi_ranks"] = static_cast<long>(ranks.size());
     summary["status"]    = "interrupted (SIGTERM, SIGINT or SIGHUP); a lifetime run continues with --resume";
@@ -276,6 +312,16 @@ namespace
       }
     finish("completed");
     log.line("Done: " + out.file("summary.json"));
+    if (root && job_name == "lifetime")
+      try
+        {
+          report::write_paraview_script(dir);
+          log.line("Report: " + report::write_report(dir));
+        }
+      catch (const std::exception &e) // the run is done: a report that fails is a warning
+        {
+          log.line(std::string("warning: no report written: ") + e.what());
+        }
     return 0;
   }
 } // namespace
@@ -284,7 +330,7 @@ namespace
 {
   /// The final error line. Under mpirun the ranks fail together with the same message (the
   /// DEM's errors are agreed on), so only rank 0 prints it; every rank's log.txt has it.
-  void report(const char *what, const std::string &message)
+  void print_error(const char *what, const std::string &message)
   {
     if (dem::Parallel::world().rank() == 0 && launch().rank == 0) // the latter also before MPI_Init
       std::cerr << what << message << std::endl;
@@ -317,10 +363,19 @@ int main(int argc, char **argv)
           std::cout << usage << field::compare_usage << field::calibrate_usage;
           return 0;
         }
+      if (argc >= 2 && std::string(argv[1]) == "report")
+        {
+          if (argc != 3)
+            throw InputError("command line", "usage: abrade report RUN_DIR");
+          std::cout << report::write_report(argv[2]) << std::endl;
+          return 0;
+        }
       if (argc >= 2 && std::string(argv[1]) == "compare")
-        return field::run_compare_command(std::vector<std::string>(argv + 2, argv + argc));
+        return with_report(field::run_compare_command(std::vector<std::string>(argv + 2, argv + argc)),
+                           option_value(argc, argv, "--output"));
       if (argc >= 2 && std::string(argv[1]) == "calibrate")
-        return field::run_calibrate_command(std::vector<std::string>(argv + 2, argv + argc));
+        return with_report(field::run_calibrate_command(std::vector<std::string>(argv + 2, argv + argc)),
+                           option_value(argc, argv, "--output"));
       const CommandLine cl = parse(argc, argv);
       if (cl.command == "run")
         return run(cl);
@@ -352,7 +407,7 @@ int main(int argc, char **argv)
           o.seeds = seed_list(cl.seeds.empty() ? "1,2,3" : cl.seeds);
           o.sets = cl.sets, o.output = cl.output, o.wall = cl.wall, o.jobs = cl.jobs, o.quiet = cl.quiet;
           io::ProgressLine::set_quiet(cl.quiet);
-          return coupling::run_sweep(o, std::filesystem::canonical("/proc/self/exe").string());
+          return with_report(coupling::run_sweep(o, std::filesystem::canonical("/proc/self/exe").string()), o.output);
         }
       if (cl.command == "concepts")
         {
@@ -369,7 +424,7 @@ int main(int argc, char **argv)
           o.sets = cl.sets, o.output = cl.output, o.jobs = cl.jobs, o.quiet = cl.quiet;
           o.lifetime_updates = cl.lifetime_updates;
           io::ProgressLine::set_quiet(cl.quiet);
-          return coupling::run_concepts(o, std::filesystem::canonical("/proc/self/exe").string());
+          return with_report(coupling::run_concepts(o, std::filesystem::canonical("/proc/self/exe").string()), o.output);
         }
       if (cl.command == "convert")
         {
@@ -400,25 +455,25 @@ int main(int argc, char **argv)
     }
   catch (const InputError &e)
     {
-      report("abrade: error: ", e.what());
+      print_error("abrade: error: ", e.what());
       return 2;
     }
   catch (const RunError &e)
     {
-      report("abrade: run failed: ", e.what());
+      print_error("abrade: run failed: ", e.what());
       return 3;
     }
   catch (const std::exception &e)
     {
       // not an input problem (those are InputErrors): a bug, and what to report
-      report("abrade: internal error: ", std::string(e.what()) + " (a bug in abrade " + version_string +
+      print_error("abrade: internal error: ", std::string(e.what()) + " (a bug in abrade " + version_string +
                                            ", not in the input: please report it with the command line, the "
                                            "parameter file and this line)");
       return 1;
     }
   catch (...)
     {
-      report("abrade: internal error: ", std::string("an exception of unknown type (a bug in abrade ") +
+      print_error("abrade: internal error: ", std::string("an exception of unknown type (a bug in abrade ") +
                                            version_string + ": please report it with the command line and the "
                                                             "parameter file)");
       return 1;

@@ -121,15 +121,20 @@ namespace abrade::coupling::lifetime
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame)
   {
     std::ofstream gp(dir + "/lifetime.gp");
-    gp << "set terminal pngcairo size 900,600\nset grid\nset datafile separator ','\nset datafile columnheaders\n"
-          "set output 'trajectory.png'\nset xlabel 'handled material [t]'\n"
-          "set ylabel 'wear depth, recession [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset key left top\n"
-          "plot 'trajectory.csv' using (column('tonnes')):(column('max_depth')*1000*(1-column('wear_rate_spread'))):"
+    // tonnes in t, kt or Mt (whichever the largest needs), the key below the plot, off the data
+    gp << "set terminal pngcairo size 900,650\nset grid\nset datafile separator ','\nset datafile columnheaders\n"
+          "stats 'trajectory.csv' using (column('tonnes')) nooutput\n"
+          "T = STATS_max >= 1e6 ? 1e6 : (STATS_max >= 1e3 ? 1e3 : 1)\n"
+          "set output 'trajectory.png'\nset xlabel sprintf('handled material [%s]', T == 1e6 ? 'Mt' : (T == 1e3 ? 'kt' : 't'))\n"
+          "set ylabel 'wear depth, recession [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset ytics nomirror\n"
+          "set xrange [0:*]\nset yrange [0:*]\nset y2range [0:*]\nset key outside below maxrows 2\n"
+          "plot 'trajectory.csv' using (column('tonnes')/T):(column('max_depth')*1000*(1-column('wear_rate_spread'))):"
           "(column('max_depth')*1000*(1+column('wear_rate_spread'))) with filledcurves "
           "fs transparent solid 0.25 noborder title 'largest depth +- spread of the beds', "
-          "'' using (column('tonnes')):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
-          "'' using (column('tonnes')):(column('point_recession')*1000) with linespoints title 'recession of the followed point', "
-          "'' using (column('tonnes')):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'\n"
+          "'' using (column('tonnes')/T):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
+          "'' using (column('tonnes')/T):(column('point_recession')*1000) with linespoints title 'recession of the followed point', "
+          "'' using (column('tonnes')/T):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'\n"
+          "unset xrange\nunset yrange\nunset y2range\n"
           "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
     for (double f : planes)
       {

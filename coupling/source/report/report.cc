@@ -1,0 +1,457 @@
+// The run report (report.h): which run it is, and its page.
+#include "html_page.h"
+#include "surface_views.h"
+
+#include <abrade/common/atomic_file.h>
+#include <abrade/common/error.h>
+#include <abrade/report/report.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace abrade::report
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+    using Tree   = boost::property_tree::ptree;
+
+    std::string read_text(const std::string &file)
+    {
+      std::ifstream in(file);
+      return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    }
+
+    /// summary.json (an empty tree if there is none or it is not JSON).
+    Tree read_json(const std::string &file)
+    {
+      Tree t;
+      try
+        {
+          if (fs::exists(file))
+            boost::property_tree::read_json(file, t);
+        }
+      catch (const std::exception &)
+        {}
+      return t;
+    }
+
+    /// The text at @p key ("" if none).
+    std::string text_at(const Tree &t, const std::string &key)
+    {
+      const auto v = t.get_optional<std::string>(key);
+      return v ? *v : std::string();
+    }
+
+    std::string number(double x, int digits = 4)
+    {
+      char b[40];
+      std::snprintf(b, sizeof b, "%.*g", digits, x);
+      return b;
+    }
+
+    /// Tonnes in t, kt or Mt.
+    std::string tonnes(double t)
+    {
+      if (std::abs(t) >= 1e6)
+        return number(t / 1e6, 3) + " Mt";
+      if (std::abs(t) >= 1e3)
+        return number(t / 1e3, 3) + " kt";
+      return number(t, 3) + " t";
+    }
+
+    /// A CSV file as rows of cells (the first row: the header).
+    std::vector<std::vector<std::string>> read_csv(const std::string &file)
+    {
+      std::vector<std::vector<std::string>> rows;
+      std::ifstream                         in(file);
+      for (std::string line; std::getline(in, line);)
+        {
+          if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+          std::vector<std::string> cells;
+          std::stringstream        s(line);
+          for (std::string c; std::getline(s, c, ',');)
+            cells.push_back(c);
+          rows.push_back(cells);
+        }
+      return rows;
+    }
+
+    int column(const std::vector<std::string> &header, const std::string &name)
+    {
+      const auto it = std::find(header.begin(), header.end(), name);
+      return it == header.end() ? -1 : int(it - header.begin());
+    }
+
+    /// Every "warnings" list anywhere in @p t.
+    void collect_warnings(const Tree &t, std::vector<std::string> &out)
+    {
+      for (const auto &[key, child] : t)
+        {
+          if (key == "warnings")
+            for (const auto &[k, w] : child)
+              out.push_back(w.get_value<std::string>());
+          else
+            collect_warnings(child, out);
+        }
+    }
+
+    /// The files of a .pvd collection in order, with their times.
+    std::vector<std::pair<double, std::string>> pvd_files(const std::string &pvd)
+    {
+      std::vector<std::pair<double, std::string>> files;
+      const std::string                           text = read_text(pvd);
+      const std::regex re("timestep=\"([^\"]*)\"[^>]*file=\"([^\"]*)\"");
+      for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator(); ++it)
+        files.emplace_back(std::atof((*it)[1].str().c_str()), (fs::path(pvd).parent_path() / (*it)[2].str()).string());
+      return files;
+    }
+
+    /// Provenance and parameters: the end of every report.
+    void provenance(HtmlPage &page, const std::string &dir, const Tree &summary)
+    {
+      page.heading("Run and parameters");
+      std::vector<std::vector<std::string>> rows;
+      for (const char *key : {"abrade_version", "job", "command", "parameter_file", "parameters_hash", "started",
+                              "threads", "mpi_ranks", "status"})
+        if (const auto v = summary.get_optional<std::string>(key))
+          rows.push_back({key, *v});
+      if (const auto t = summary.get_optional<double>("timings.total"))
+        rows.push_back({"runtime", number(*t, 4) + " s"});
+      rows.push_back({"directory", fs::absolute(dir).string()});
+      page.table({"", ""}, rows);
+      if (fs::exists(dir + "/parameters.prm"))
+        page.details("Parameter file as run (parameters.prm)", read_text(dir + "/parameters.prm"));
+    }
+
+    // ---------------------------------------------------------------------------------------
+
+    std::string lifetime_page(const std::string &dir, const Tree &summary)
+    {
+      const Tree &r = summary.get_child("results.lifetime");
+      HtmlPage    page("Knife lifetime prediction");
+
+      const auto predicted = r.get_optional<double>("predicted_tonnes_to_end_of_life");
+      const std::string criterion = text_at(r, "end_of_life_criterion");
+      std::ostringstream headline;
+      if (predicted)
+        {
+          char value[40];
+          std::snprintf(value, sizeof value, "%.17g", *predicted);
+          headline << "End of life after <span id=\"headline-tonnes\" data-value=\"" << value << "\"><b>"
+                   << tonnes(*predicted) << "</b></span> of handled material";
+          const double low = r.get<double>("predicted_tonnes_low", 0), high = r.get<double>("predicted_tonnes_high", 0);
+          // (summary.json writes an unbounded end of the interval as 0)
+          if (r.get<int>("seeds", 1) < 2)
+            headline << " (no interval: one bed)";
+          else
+            headline << " (" << number(100 * r.get<double>("confidence", 0.95), 3) << " % interval "
+                     << (low > 0 ? tonnes(low) : std::string("0")) << " to "
+                     << (high > 0 ? tonnes(high) : std::string("unbounded")) << " over " << r.get<int>("seeds", 1)
+                     << " beds)";
+          headline << ", by " << escape_html(criterion);
+          std::vector<double> where;
+          if (const auto w = r.get_child_optional("end_of_life_where"))
+            for (const auto &[k, v] : *w)
+              where.push_back(v.get_value<double>());
+          if (where.size() == 3)
+            headline << " at x = " << number(1000 * where[0], 4) << " mm, y = " << number(1000 * where[1], 4)
+                     << " mm, z = " << number(1000 * where[2], 4) << " mm";
+          std::string method = text_at(r, "end_of_life_method");
+          if (!method.empty())
+            method[0] = char(std::toupper(static_cast<unsigned char>(method[0])));
+          headline << ". " << escape_html(method) << ".";
+        }
+      else
+        headline << "<span id=\"headline-tonnes\" data-value=\"none\"><b>No end of life reached</b></span> after "
+                 << tonnes(r.get<double>("tonnes", 0)) << " (" << escape_html(text_at(r, "end")) << ")";
+      page.headline(headline.str());
+      page.paragraph("Run ended: " + escape_html(text_at(r, "end")) + "; " +
+                     number(r.get<double>("tonnes", 0), 4) + " t handled in " +
+                     number(r.get<double>("cycles", 0), 6) + " cycles; largest wear depth " +
+                     number(1000 * r.get<double>("max_depth", 0), 4) + " mm; worn mass " +
+                     number(r.get<double>("worn_mass", 0), 4) + " kg; " +
+                     std::to_string(r.get<int>("seeds", 1)) + " bed(s).");
+
+      page.heading("Trajectory");
+      page.png(dir + "/trajectory.png", "Wear against handled material: the largest depth with the spread of the beds, "
+                                        "the followed point's recession and the worn volume.");
+
+      page.heading("The worn knife");
+      const auto files = pvd_files(dir + "/knife/knife.pvd");
+      if (!files.empty())
+        {
+          std::vector<SurfacePicture> stages;
+          stages.push_back({files.front().second, "wear_depth", "design"});
+          if (files.size() > 2)
+            stages.push_back({files[files.size() / 2].second, "wear_depth", "after " + tonnes(files[files.size() / 2].first)});
+          stages.push_back({files.back().second, "wear_depth", "after " + tonnes(files.back().first)});
+          if (render_surfaces(dir + "/report", "knife_wear.png", stages))
+            page.png(dir + "/report/knife_wear.png",
+                     "The knife coloured by wear depth (mm below the design surface) at the design, mid-life and the last "
+                     "update, from the front and the back; one colour range for all.");
+          else
+            page.paragraph("(the knife's pictures could not be drawn: gnuplot, or the knife's VTU files, are missing)");
+        }
+      for (const auto &entry : fs::directory_iterator(dir + "/knife"))
+        if (entry.path().extension() == ".png" && entry.path().stem().string().rfind("profile_", 0) == 0)
+          page.png(entry.path().string(), "Cross-section " + entry.path().stem().string() +
+                                            " (fraction of the knife's length): the profile after every update, mm.");
+
+      page.heading("Updates");
+      const auto csv = read_csv(dir + "/trajectory.csv");
+      if (csv.size() > 1)
+        {
+          const auto &h = csv[0];
+          const std::vector<std::pair<std::string, std::string>> shown = {
+            {"update", "update"}, {"tonnes", "handled"}, {"max_depth", "largest depth [mm]"},
+            {"point_recession", "recession [mm]"}, {"worn_mass", "worn mass [kg]"},
+            {"min_scaled_jacobian", "worst cell quality"}, {"remeshed", "remeshed"}, {"dem_warnings", "DEM warnings"}};
+          std::vector<std::string>              header;
+          std::vector<std::vector<std::string>> rows;
+          for (const auto &[c, title] : shown)
+            if (column(h, c) >= 0)
+              header.push_back(title);
+          for (std::size_t k = 1; k < csv.size(); ++k)
+            {
+              std::vector<std::string> row;
+              for (const auto &[c, title] : shown)
+                {
+                  const int i = column(h, c);
+                  if (i < 0 || i >= int(csv[k].size()))
+                    continue;
+                  const double v = std::atof(csv[k][i].c_str());
+                  row.push_back(c == "tonnes" ? tonnes(v)
+                                : (c == "max_depth" || c == "point_recession") ? number(1000 * v, 4)
+                                                                                : number(v, 4));
+                }
+              rows.push_back(row);
+            }
+          page.table(header, rows);
+        }
+
+      page.heading("Warnings");
+      std::vector<std::string> warnings;
+      collect_warnings(summary, warnings);
+      page.warnings(warnings);
+      provenance(page, dir, summary);
+      return page.html();
+    }
+
+    /// The first wall of a run that has a wear table, and its last snapshot.
+    std::string worn_wall_snapshot(const std::string &run)
+    {
+      if (!fs::exists(run + "/walls"))
+        return "";
+      std::vector<std::string> walls;
+      for (const auto &e : fs::directory_iterator(run + "/walls"))
+        {
+          const std::string name = e.path().filename().string();
+          if (name.size() > 9 && name.compare(name.size() - 9, 9, "_wear.csv") == 0)
+            walls.push_back(name.substr(0, name.size() - 9));
+        }
+      std::sort(walls.begin(), walls.end());
+      if (walls.empty())
+        return "";
+      // a knife first: the part the comparison is about
+      std::stable_partition(walls.begin(), walls.end(), [](const std::string &w) { return w.find("knife") != std::string::npos; });
+      const auto files = pvd_files(run + "/walls/" + walls.front() + ".pvd");
+      return files.empty() ? "" : files.back().second;
+    }
+
+    std::string table_page(const std::string &dir, const std::string &title, const std::string &csv_file,
+                           const std::vector<std::string> &pngs)
+    {
+      HtmlPage   page(title);
+      const auto csv = read_csv(dir + "/" + csv_file);
+      page.headline("<span id=\"headline-count\" data-value=\"" + std::to_string(csv.empty() ? 0 : csv.size() - 1) +
+                    "\"><b>" + std::to_string(csv.empty() ? 0 : csv.size() - 1) + "</b></span> variants compared (" +
+                    escape_html(csv_file) + ")");
+      page.heading("Comparison");
+      if (csv.size() > 1)
+        {
+          std::vector<std::vector<std::string>> rows;
+          for (std::size_t k = 1; k < csv.size(); ++k)
+            {
+              std::vector<std::string> row;
+              for (std::size_t c = 0; c < csv[k].size(); ++c)
+                {
+                  char *end = nullptr;
+                  const double v = std::strtod(csv[k][c].c_str(), &end);
+                  row.push_back(end && *end == '\0' && !csv[k][c].empty() ? number(v, 4) : csv[k][c]);
+                }
+              rows.push_back(row);
+            }
+          page.table(csv[0], rows);
+          page.paragraph("Columns ending in _std are the standard deviations over the bed seeds; _uncertainty the "
+                         "uncertainty of a change (docs/user-guide.md).");
+        }
+      page.heading("Plots");
+      for (const auto &p : pngs)
+        if (fs::exists(dir + "/" + p))
+          page.png(dir + "/" + p, p);
+      // the worn shapes side by side: each variant's first seed
+      if (fs::exists(dir + "/runs"))
+        {
+          std::vector<SurfacePicture> shapes;
+          std::vector<std::string>    runs;
+          for (const auto &e : fs::directory_iterator(dir + "/runs"))
+            if (e.is_directory())
+              runs.push_back(e.path().string());
+          std::sort(runs.begin(), runs.end());
+          std::vector<std::string> seen;
+          for (const auto &run : runs)
+            {
+              std::string name = fs::path(run).filename().string();
+              name             = name.substr(0, name.rfind("-seed"));
+              if (std::find(seen.begin(), seen.end(), name) != seen.end())
+                continue;
+              const std::string snapshot = worn_wall_snapshot(run);
+              if (snapshot.empty())
+                continue;
+              seen.push_back(name);
+              std::string clean = name;
+              std::replace(clean.begin(), clean.end(), '\'', ' ');
+              shapes.push_back({snapshot, "archard_depth", clean});
+            }
+          if (!shapes.empty())
+            {
+              page.heading("Worn shapes");
+              RenderOptions o;
+              o.align = true, o.top_percentile = 0.99;
+              if (render_surfaces(dir + "/report", "worn_shapes.png", shapes, o))
+                page.png(dir + "/report/worn_shapes.png",
+                         "Each variant's worn knife (a knife first, else the first wall with wear) coloured by Archard wear "
+                         "depth after the run (first bed seed), seen along its principal axes; one colour range, whose top "
+                         "is the 99th percentile (the deepest 1 % share its colour).");
+            }
+        }
+      page.heading("Warnings");
+      std::vector<std::string> warnings;
+      for (const auto &p : {"study.md", "concepts.md"})
+        if (fs::exists(dir + "/" + p))
+          {
+            std::istringstream in(read_text(dir + "/" + p));
+            for (std::string line; std::getline(in, line);)
+              if (line.find("warning") != std::string::npos)
+                warnings.push_back(line);
+          }
+      page.warnings(warnings);
+      if (fs::exists(dir + "/concepts.md"))
+        page.details("concepts.md", read_text(dir + "/concepts.md"));
+      if (fs::exists(dir + "/study.md"))
+        page.details("study.md", read_text(dir + "/study.md"));
+      return page.html();
+    }
+
+    std::string field_page(const std::string &dir)
+    {
+      const bool  calibration = fs::exists(dir + "/calibration.json");
+      const Tree  j           = read_json(dir + (calibration ? "/calibration.json" : "/comparison.json"));
+      HtmlPage    page(calibration ? "Calibration against measured wear" : "Comparison with a field scan");
+      if (calibration)
+        {
+          const Tree &best = j.get_child("runs").begin()->second;
+          const double w = best.get<double>("archard_coefficient", 0), lo = best.get<double>("archard_coefficient_low", 0),
+                       hi = best.get<double>("archard_coefficient_high", 0);
+          char value[40];
+          std::snprintf(value, sizeof value, "%.17g", w);
+          page.headline("Fitted wear coefficient W = <span id=\"headline-w\" data-value=\"" + std::string(value) +
+                        "\"><b>" + number(w, 4) + " 1/Pa</b></span> (interval " + number(lo, 4) + " to " + number(hi, 4) +
+                        "), scale " + number(best.get<double>("scale", 0), 4) + " of the run's W, correlation " +
+                        number(best.get<double>("correlation", 0), 4));
+          page.png(dir + "/calibration.png", "Predicted against measured wear depths with the fitted scale.");
+          if (fs::exists(dir + "/calibration.md"))
+            page.details("calibration.md", read_text(dir + "/calibration.md"));
+        }
+      else
+        {
+          char value[40];
+          std::snprintf(value, sizeof value, "%.17g", j.get<double>("registration.rms_distance", 0));
+          page.headline("Scan registered with an RMS distance of <span id=\"headline-rms\" data-value=\"" +
+                        std::string(value) + "\"><b>" + number(1000 * j.get<double>("registration.rms_distance", 0), 4) +
+                        " mm</b></span> (" +
+                        std::to_string(j.get<int>("registration.points_used", 0)) + " points)");
+          RenderOptions o;
+          o.label = "deviation [mm]", o.signed_range = true;
+          if (render_surfaces(dir + "/report", "deviation.png", {{dir + "/deviation.vtp", "deviation", "scan against prediction"}}, o))
+            page.png(dir + "/report/deviation.png",
+                     "The scan's points coloured by their signed distance from the predicted surface (mm; red: outside "
+                     "it, the part less worn than predicted; blue: more worn).");
+          for (const auto &e : fs::directory_iterator(dir))
+            if (e.path().extension() == ".png")
+              page.png(e.path().string(), e.path().filename().string());
+          page.details("comparison.json", read_text(dir + "/comparison.json"));
+        }
+      std::vector<std::string> warnings;
+      collect_warnings(j, warnings);
+      page.heading("Warnings");
+      page.warnings(warnings);
+      return page.html();
+    }
+  } // namespace
+
+  std::string write_report(const std::string &dir)
+  {
+    if (!fs::is_directory(dir))
+      throw InputError(dir, "not a directory");
+    const Tree  summary = read_json(dir + "/summary.json");
+    std::string html;
+    if (summary.get_child_optional("results.lifetime"))
+      html = lifetime_page(dir, summary);
+    else if (fs::exists(dir + "/concepts.csv"))
+      html = table_page(dir, "Knife concepts compared", "concepts.csv", {"wear.png", "lifetime.png"});
+    else if (fs::exists(dir + "/study.csv"))
+      {
+        std::vector<std::string> pngs;
+        for (const auto &e : fs::directory_iterator(dir))
+          if (e.path().extension() == ".png")
+            pngs.push_back(e.path().filename().string());
+        std::sort(pngs.begin(), pngs.end());
+        html = table_page(dir, "Parameter sweep", "study.csv", pngs);
+      }
+    else if (fs::exists(dir + "/calibration.json") || fs::exists(dir + "/comparison.json"))
+      html = field_page(dir);
+    else
+      throw InputError(dir, "no lifetime, concepts, sweep, compare or calibrate run here (summary.json, concepts.csv, "
+                            "study.csv, comparison.json or calibration.json)");
+    const std::string file = dir + "/report.html";
+    io::write_file_atomically(file, html);
+    return file;
+  }
+
+  void write_paraview_script(const std::string &dir)
+  {
+    std::ofstream py(dir + "/knife/open_in_paraview.py");
+    py << "# Opens the knife's worn shapes of this lifetime run in ParaView, coloured by wear depth:\n"
+          "#   paraview --script=open_in_paraview.py    or    pvpython open_in_paraview.py\n"
+          "# (run from this folder; the time slider steps through the updates).\n"
+          "import os\n"
+          "from paraview.simple import *\n"
+          "here = os.path.dirname(os.path.abspath(__file__))\n"
+          "knife = PVDReader(FileName=os.path.join(here, 'knife.pvd'))\n"
+          "view = GetActiveViewOrCreate('RenderView')\n"
+          "display = Show(knife, view)\n"
+          "ColorBy(display, ('POINTS', 'wear_depth'))\n"
+          "lut = GetColorTransferFunction('wear_depth')\n"
+          "lut.ApplyPreset('Viridis (matplotlib)', True)\n"
+          "animation = GetAnimationScene()\n"
+          "animation.UpdateAnimationUsingDataTimeSteps()\n"
+          "animation.AnimationTime = knife.TimestepValues[-1]\n"
+          "display.RescaleTransferFunctionToDataRange(False, True)\n"
+          "display.SetScalarBarVisibility(view, True)\n"
+          "bar = GetScalarBar(lut, view)\n"
+          "bar.Title = 'wear depth [m]'\n"
+          "view.ResetCamera()\n"
+          "Render()\n";
+  }
+} // namespace abrade::report

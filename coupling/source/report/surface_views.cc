@@ -1,0 +1,175 @@
+#include "surface_views.h"
+
+#include <abrade/common/external.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace abrade::report
+{
+  namespace
+  {
+    /// @p text without the quotes that would end a gnuplot string.
+    std::string quote_free(std::string text)
+    {
+      std::replace(text.begin(), text.end(), '\'', ' ');
+      return text;
+    }
+
+    /// Writes the triangles of @p file's surface as pm3d quadrangles (each triangle a 2 x 2
+    /// patch with its third corner doubled) in mm, the field in mm as the colour; returns the
+    /// field's range (or false when the file or the field is missing).
+    /// The rotation that takes @p poly's points into their principal axes (largest spread along
+    /// x, middle along z, smallest along y), about their mean.
+    std::pair<Eigen::Matrix3d, Eigen::Vector3d> principal_frame(vtkPolyData *poly)
+    {
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      const vtkIdType n    = poly->GetNumberOfPoints();
+      for (vtkIdType k = 0; k < n; ++k)
+        mean += Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(k)) / double(n);
+      Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+      for (vtkIdType k = 0; k < n; ++k)
+        {
+          const Eigen::Vector3d d = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(k)) - mean;
+          c += d * d.transpose();
+        }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> e(c); // eigenvalues ascending
+      Eigen::Matrix3d                                r;
+      r.row(0) = e.eigenvectors().col(2).transpose(); // x: largest
+      r.row(1) = e.eigenvectors().col(0).transpose(); // y: smallest
+      r.row(2) = r.row(0).cross(r.row(1));            // z: the middle one, right-handed
+      return {r, mean};
+    }
+
+    bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, std::vector<double> &values,
+                         bool &as_points)
+    {
+      if (!std::filesystem::exists(s.file))
+        return false;
+      auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
+      reader->SetFileName(s.file.c_str());
+      reader->Update();
+      auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+      surface->SetInputConnection(reader->GetOutputPort());
+      auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
+      triangles->SetInputConnection(surface->GetOutputPort());
+      triangles->Update();
+      vtkPolyData *poly = triangles->GetOutput();
+      if (!poly || poly->GetNumberOfPoints() == 0)
+        return false;
+      vtkDataArray *at_points = poly->GetPointData()->GetArray(s.field.c_str());
+      vtkDataArray *at_cells  = poly->GetCellData()->GetArray(s.field.c_str());
+      if (!at_points && !at_cells)
+        return false;
+      const auto [rotation, centre] = align ? principal_frame(poly)
+                                            : std::pair{Eigen::Matrix3d(Eigen::Matrix3d::Identity()), Eigen::Vector3d(Eigen::Vector3d::Zero())};
+      auto place = [&, rotation = rotation, centre = centre](double *p) {
+        const Eigen::Vector3d q = rotation * (Eigen::Map<const Eigen::Vector3d>(p) - centre);
+        p[0] = q[0], p[1] = q[1], p[2] = q[2];
+      };
+      std::ofstream data(out);
+      as_points = poly->GetNumberOfPolys() == 0; // a point cloud (a scan's deviations): coloured points
+      if (as_points && at_points)
+        for (vtkIdType k = 0; k < poly->GetNumberOfPoints(); ++k)
+          {
+            double p[3];
+            poly->GetPoint(k, p);
+            place(p);
+            const double v = 1000 * at_points->GetComponent(k, 0);
+            if (!std::isfinite(v))
+              continue;
+            data << 1000 * p[0] << ' ' << 1000 * p[1] << ' ' << 1000 * p[2] << ' ' << v << '\n';
+            values.push_back(v);
+          }
+      for (vtkIdType c = 0; c < poly->GetNumberOfCells() && !as_points; ++c)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          poly->GetCellPoints(c, n, ids);
+          if (n != 3)
+            continue;
+          double x[3][4];
+          for (int k = 0; k < 3; ++k)
+            {
+              double p[3];
+              poly->GetPoint(ids[k], p);
+              place(p);
+              const double v = 1000 * (at_points ? at_points->GetComponent(ids[k], 0) : at_cells->GetComponent(c, 0));
+              x[k][0] = 1000 * p[0], x[k][1] = 1000 * p[1], x[k][2] = 1000 * p[2], x[k][3] = std::isfinite(v) ? v : 0.0;
+              values.push_back(x[k][3]);
+            }
+          auto line = [&](int k) { data << x[k][0] << ' ' << x[k][1] << ' ' << x[k][2] << ' ' << x[k][3] << '\n'; };
+          line(0), line(1), data << '\n', line(2), line(2), data << "\n\n";
+        }
+      return bool(data);
+    }
+  } // namespace
+
+  bool render_surfaces(const std::string &directory, const std::string &png, const std::vector<SurfacePicture> &surfaces,
+                       const RenderOptions &options)
+  {
+    const bool signed_range = options.signed_range;
+    std::filesystem::create_directories(directory);
+    const std::string stem = std::filesystem::path(png).stem().string();
+    std::vector<double> values;
+    std::vector<char>   as_points(surfaces.size(), 0);
+    for (std::size_t k = 0; k < surfaces.size(); ++k)
+      {
+        bool points = false;
+        if (!write_triangles(surfaces[k], directory + "/" + stem + "_" + std::to_string(k) + ".dat", options.align,
+                             values, points))
+          return false;
+        as_points[k] = points;
+      }
+    if (values.empty())
+      return false;
+    std::sort(values.begin(), values.end());
+    double lo = values.front();
+    double hi = values[std::min(values.size() - 1, std::size_t(options.top_percentile * (values.size() - 1)))];
+    if (surfaces.empty())
+      return false;
+    if (signed_range)
+      hi = std::max(std::abs(lo), std::abs(hi)), lo = -hi;
+    else
+      lo = std::min(lo, 0.0);
+    if (!(hi > lo))
+      hi = lo + 1e-3;
+
+    // one column per surface, the front view above the back view
+    const int     columns = int(surfaces.size());
+    std::ofstream gp(directory + "/" + stem + ".gp");
+    gp << "set terminal pngcairo size " << std::max(700, 380 * columns) << ",900 font 'DejaVu Sans,10'\n"
+       << "set output '" << png << "'\nset termoption noenhanced\n"
+       << "set multiplot layout 2," << columns << " rowsfirst\n"
+       << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
+       << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n"
+       << "set cbrange [" << lo << ":" << hi << "]\nset cblabel '" << options.label << "'\nset cbtics\n"
+       << (signed_range ? "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
+                        : "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n");
+    for (int v = 0; v < 2; ++v)
+      for (std::size_t k = 0; k < surfaces.size(); ++k)
+        {
+          // two sides of the part: from the front and above, and from the back
+          gp << "set view " << (v == 0 ? "70, 25" : "70, 205") << ", 1.25\n"
+             << "set title '" << quote_free(surfaces[k].title) << (v == 0 ? " (front)" : " (back)") << "'\n"
+             << "splot '" << stem << "_" << k << ".dat' using 1:2:3:4 "
+             << (as_points[k] ? "with points pointtype 7 pointsize 0.35 palette\n" : "with pm3d\n");
+        }
+    gp << "unset multiplot\n";
+    gp.close();
+    return io::run_gnuplot(directory, stem + ".gp", true) && std::filesystem::exists(directory + "/" + png);
+  }
+} // namespace abrade::report

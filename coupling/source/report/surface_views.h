@@ -1,0 +1,35 @@
+#pragma once
+// Pictures of worn parts without a display: the surface of a VTK file (a knife's .vtu, a wall's
+// .vtp, a deviation map) coloured by one of its fields, drawn by gnuplot's pm3d from two views,
+// with a colour bar in mm. Several surfaces share one colour range, so that the design, mid-life
+// and end-of-life pictures (or concepts side by side) compare at a glance.
+#include <string>
+#include <vector>
+
+namespace abrade::report
+{
+  struct SurfacePicture
+  {
+    std::string file;  ///< a VTK XML file (.vtu, .vtp)
+    std::string field; ///< point or cell data [m], shown in mm
+    std::string title; ///< above the picture
+  };
+
+  struct RenderOptions
+  {
+    std::string label = "wear depth [mm]"; ///< the colour bar's label, with its unit
+    bool        signed_range = false;      ///< a range symmetric about 0 (deviations)
+    /// Turn each surface into its principal axes (longest along x, shortest along y) before
+    /// drawing: parts mounted at any angle (a grab's knives) are seen face on.
+    bool align = false;
+    /// The top of the colour range: this percentile of the values (1: the largest), so that a
+    /// few hot triangles do not leave the rest in one colour.
+    double top_percentile = 1;
+  };
+
+  /// Draws @p surfaces, one column each with two views (front above back), into
+  /// @p directory/@p png (the data and the gnuplot script stay beside it). Returns false (and
+  /// leaves no picture) when a file cannot be read or gnuplot fails.
+  bool render_surfaces(const std::string &directory, const std::string &png, const std::vector<SurfacePicture> &surfaces,
+                       const RenderOptions &options = {});
+} // namespace abrade::report
