@@ -149,12 +149,18 @@ namespace
     return seeds;
   }
 
-  /// The value after @p option on the command line ("" if none).
-  std::string option_value(int argc, char **argv, const std::string &option)
+  /// The output directory given on the command line: after --output or -o, or --output=DIR
+  /// ("" if none).
+  std::string output_option(int argc, char **argv)
   {
-    for (int k = 1; k + 1 < argc; ++k)
-      if (argv[k] == option)
-        return argv[k + 1];
+    for (int k = 1; k < argc; ++k)
+      {
+        const std::string a = argv[k];
+        if ((a == "--output" || a == "-o") && k + 1 < argc)
+          return argv[k + 1];
+        if (a.rfind("--output=", 0) == 0)
+          return a.substr(9);
+      }
     return "";
   }
 
@@ -308,6 +314,13 @@ namespace
         // keep what is known about the failed run, then report it as usual
         finish(std::string("failed: ") + e.what());
         log.file_only(std::string("error: ") + e.what());
+        if (root && job_name == "lifetime")
+          try // the report of what was done before it failed
+            {
+              log.file_only("Report: " + report::write_report(dir));
+            }
+          catch (const std::exception &)
+            {}
         throw;
       }
     finish("completed");
@@ -372,10 +385,10 @@ int main(int argc, char **argv)
         }
       if (argc >= 2 && std::string(argv[1]) == "compare")
         return with_report(field::run_compare_command(std::vector<std::string>(argv + 2, argv + argc)),
-                           option_value(argc, argv, "--output"));
+                           output_option(argc, argv));
       if (argc >= 2 && std::string(argv[1]) == "calibrate")
         return with_report(field::run_calibrate_command(std::vector<std::string>(argv + 2, argv + argc)),
-                           option_value(argc, argv, "--output"));
+                           output_option(argc, argv));
       const CommandLine cl = parse(argc, argv);
       if (cl.command == "run")
         return run(cl);

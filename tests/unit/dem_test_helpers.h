@@ -1,5 +1,6 @@
 #pragma once
 // Small set-ups shared by the DEM verification tests: one or two spheres, an optional flat wall.
+#include <abrade/dem/generation.h>
 #include <abrade/dem/simulation.h>
 
 #include <algorithm>
@@ -81,6 +82,15 @@ namespace abrade::dem::testing
 
   inline double sphere_mass(double r, double rho) { return rho * 4.0 / 3.0 * M_PI * r * r * r; }
 
+  /// A poured heap (the angle-of-repose tests): 800 grains of 9-11 mm radius dropped from a
+  /// column 16 cm wide onto a floor of the same material, interaction @p i between all; its
+  /// angle after 1.5 s of pouring and after 0.5 s more, and its kinetic energy at the end.
+  struct PouredHeap
+  {
+    double after_pour, after_rest, kinetic_energy;
+  };
+  inline PouredHeap pour_heap(Settings s, const Material &grain, const Interaction &i);
+
   /// A large flat wall (the plane z = 0, normal +z) made of triangles no longer than @p h.
   inline Wall floor_wall(int material, double size = 1.0, double h = 0)
   {
@@ -109,4 +119,26 @@ namespace abrade::dem::testing
     }
     double contact_time() const { return t_end - t_start; }
   };
+
+  inline PouredHeap pour_heap(Settings s, const Material &grain, const Interaction &i)
+  {
+    Simulation sim(s);
+    const int  mg = sim.add_material(grain), mw = sim.add_material(grain);
+    sim.set_interaction(mg, mg, i);
+    sim.set_interaction(mg, mw, i);
+    sim.add_wall(floor_wall(mw, 2.0));
+    FillRegion f;
+    f.box_min = Vec3(-0.08, -0.08, 0.02), f.box_max = Vec3(0.08, 0.08, 0.6);
+    f.sizes.kind = SizeDistribution::Kind::uniform, f.sizes.min = 0.009, f.sizes.max = 0.011;
+    f.count = 800, f.seed = 11;
+    fill_region(sim, f);
+    sim.setup();
+    sim.run_phase("pour", 1.5);
+    PouredHeap h;
+    h.after_pour = heap_angle(sim.particles());
+    sim.run_phase("rest", 0.5);
+    h.after_rest     = heap_angle(sim.particles());
+    h.kinetic_energy = sim.kinetic_energy();
+    return h;
+  }
 } // namespace abrade::dem::testing

@@ -12,8 +12,6 @@
 //  - a heap of cohesive grains stands steeper than a cohesionless one and stays as it is.
 #include "dem_test_helpers.h"
 
-#include <abrade/dem/generation.h>
-
 #include <gtest/gtest.h>
 
 using namespace abrade::dem;
@@ -197,28 +195,14 @@ TEST(SjkrCohesion, CohesiveHeapIsSteeperAndStable)
     Settings       s;
     s.threads          = 2;
     s.contact.cohesion = "sjkr";
-    Simulation  sim(s);
-    const int   mg = sim.add_material(grain), mw = sim.add_material(grain);
     Interaction i{0.5, 0.5, 0.0};
     i.cohesion_energy_density = k;
-    sim.set_interaction(mg, mg, i);
-    sim.set_interaction(mg, mw, i);
-    sim.add_wall(floor_wall(mw, 2.0));
-    FillRegion f;
-    f.box_min = Vec3(-0.08, -0.08, 0.02), f.box_max = Vec3(0.08, 0.08, 0.6);
-    f.sizes.kind = SizeDistribution::Kind::uniform, f.sizes.min = 0.009, f.sizes.max = 0.011;
-    f.count = 800, f.seed = 11;
-    fill_region(sim, f);
-    sim.setup();
-    sim.run_phase("pour", 1.5);
-    const double a1 = heap_angle(sim.particles());
-    sim.run_phase("rest", 0.5);
-    const double a2 = heap_angle(sim.particles());
+    const PouredHeap h        = pour_heap(s, grain, i);
     std::printf("cohesion %g J/m^3: angle of repose %.1f deg after 1.5 s, %.1f deg after 2.0 s; kinetic energy %.3g J\n",
-                k, a1, a2, sim.kinetic_energy());
-    EXPECT_NEAR(a2, a1, 1.0);
-    EXPECT_LT(sim.kinetic_energy(), 1e-3);
-    return a2;
+                k, h.after_pour, h.after_rest, h.kinetic_energy);
+    EXPECT_NEAR(h.after_rest, h.after_pour, 1.0);
+    EXPECT_LT(h.kinetic_energy, 1e-3);
+    return h.after_rest;
   };
   // k_c = 1e5 J/m^3: under its own weight a grain's contacts carry an attraction of a few
   // per cent of it (k_c pi a^2 against m g)

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/external.h>
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
@@ -172,26 +173,33 @@ namespace abrade::field
     std::ofstream                  residuals(out.file("residuals.csv"));
     residuals.precision(10);
     residuals << "run,x,y,z,tonnes,measured_depth,predicted_depth\n";
-    for (const auto &dir : runs)
+    // each run's warnings: on the terminal, and in calibration.json (the run report shows them)
+    std::vector<std::vector<std::string>> warnings(runs.size());
+    auto warn = [&](std::size_t i, const std::string &text) {
+      std::cerr << "warning: " << runs[i] << ": " << text << "\n";
+      warnings[i].push_back(text);
+    };
+    for (std::size_t i = 0; i < runs.size(); ++i)
       {
-        const RunSeries run = read_run(dir, ms);
+        const std::string &dir = runs[i];
+        const RunSeries    run = read_run(dir, ms);
         results.push_back(calibrate(run, ms, block));
         const auto &r = results.back();
         if (run.seeds < 2 && run.archard_coefficient > 0)
-          std::cerr << "warning: " << dir << ": one bed per update: the DEM's run-to-run noise (a few per cent to "
-                    << "tens of per cent) is not in the interval; run the prediction with Lifetime/Seeds = 1, 2, 3\n";
+          warn(i, "one bed per update: the DEM's run-to-run noise (a few per cent to tens of per cent) is not in the "
+                  "interval; run the prediction with Lifetime/Seeds = 1, 2, 3");
         if (r.correlation < 0.99)
-          std::cerr << "warning: " << dir << ": the predicted pattern does not match the measured one well "
-                    << "(correlation " << r.correlation << "): W's interval assumes the run's pattern is right\n";
+          warn(i, "the predicted pattern does not match the measured one well (correlation " +
+                    io::format_number(r.correlation) + "): W's interval assumes the run's pattern is right");
         if (r.blocks < 3)
-          std::cerr << "warning: " << dir << ": the measurements fall into " << r.blocks << " block(s) of "
-                    << block << " m: too few for an interval (--block sets the size)\n";
-        for (std::size_t i = 0; i < ms.size(); ++i)
-          residuals << dir << ',' << ms[i].point[0] << ',' << ms[i].point[1] << ',' << ms[i].point[2] << ','
-                    << ms[i].tonnes << ',' << ms[i].depth << ',' << run.at(i, r.scale * ms[i].tonnes) << '\n';
+          warn(i, "the measurements fall into " + std::to_string(r.blocks) + " block(s) of " + io::format_number(block) +
+                    " m: too few for an interval (--block sets the size)");
+        for (std::size_t k = 0; k < ms.size(); ++k)
+          residuals << dir << ',' << ms[k].point[0] << ',' << ms[k].point[1] << ',' << ms[k].point[2] << ','
+                    << ms[k].tonnes << ',' << ms[k].depth << ',' << run.at(k, r.scale * ms[k].tonnes) << '\n';
         if (r.extrapolated)
-          std::cerr << "warning: " << dir << ": at the fitted W the measurements lie beyond the run's last update "
-                    << "(the depths there are extrapolated linearly); run it further\n";
+          warn(i, "at the fitted W the measurements lie beyond the run's last update (the depths there are "
+                  "extrapolated linearly); run it further");
       }
     residuals.close();
     std::vector<std::size_t> order(results.size());
@@ -242,6 +250,8 @@ namespace abrade::field
                         ci.first, ci.second, best_interval.first, best_interval.second);
         j["archard_coefficient"] = r.archard_coefficient, j["archard_coefficient_low"] = r.low;
         j["archard_coefficient_high"] = r.high, j["extrapolated"] = r.extrapolated;
+        for (const auto &w : warnings[order[k]])
+          j["warnings"].push_back(w);
         json["runs"].push_back(j);
         char line[512];
         std::snprintf(line, sizeof line,

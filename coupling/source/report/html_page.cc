@@ -2,6 +2,7 @@
 
 #include <vtkBase64Utilities.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -10,15 +11,30 @@ namespace abrade::report
   std::string escape_html(const std::string &text)
   {
     std::string out;
-    for (char c : text)
-      switch (c)
-        {
-          case '&': out += "&amp;"; break;
-          case '<': out += "&lt;"; break;
-          case '>': out += "&gt;"; break;
-          case '"': out += "&quot;"; break;
-          default: out += c;
-        }
+    for (std::size_t i = 0; i < text.size();)
+      {
+        const auto c = static_cast<unsigned char>(text[i]);
+        // the length of a UTF-8 sequence starting here (0: not a valid start)
+        const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+        bool valid = n > 0 && i + n <= text.size();
+        for (std::size_t k = 1; valid && k < n; ++k)
+          valid = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+        if (!valid)
+          {
+            out += "\xEF\xBF\xBD"; // U+FFFD
+            ++i;
+            continue;
+          }
+        switch (text[i])
+          {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out.append(text, i, n);
+          }
+        i += n;
+      }
     return out;
   }
 
@@ -69,7 +85,7 @@ pre { font-size: .8em; background: #f7f7f7; padding: .5em; overflow-x: auto; }
 
   void HtmlPage::headline(const std::string &html) { body << "<div class=\"headline\">" << html << "</div>\n"; }
 
-  void HtmlPage::png(const std::string &file, const std::string &caption)
+  void HtmlPage::png(const std::string &file, const std::string &caption, const std::string &figure)
   {
     std::ifstream     in(file, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -84,17 +100,22 @@ pre { font-size: .8em; background: #f7f7f7; padding: .5em; overflow-x: auto; }
                                               static_cast<unsigned long>(bytes.size()),
                                               reinterpret_cast<unsigned char *>(encoded.data()));
     encoded.resize(n);
-    body << "<figure><img src=\"data:image/png;base64," << encoded << "\" width=\"" << w << "\" height=\"" << h
+    body << "<figure data-figure=\"" << escape_html(figure) << "\"><img src=\"data:image/png;base64," << encoded << "\" width=\"" << w << "\" height=\"" << h
          << "\" data-width=\"" << w << "\" data-height=\"" << h << "\" alt=\"" << escape_html(caption)
          << "\"><figcaption>" << escape_html(caption) << "</figcaption></figure>\n";
   }
 
   void HtmlPage::table(const std::vector<std::string> &header, const std::vector<std::vector<std::string>> &rows)
   {
-    body << "<div class=\"scroll\"><table><thead><tr>";
-    for (const auto &h : header)
-      body << "<th>" << escape_html(h) << "</th>";
-    body << "</tr></thead><tbody>\n";
+    body << "<div class=\"scroll\"><table>";
+    if (std::any_of(header.begin(), header.end(), [](const std::string &h) { return !h.empty(); }))
+      {
+        body << "<thead><tr>";
+        for (const auto &h : header)
+          body << "<th>" << escape_html(h) << "</th>";
+        body << "</tr></thead>";
+      }
+    body << "<tbody>\n";
     for (const auto &r : rows)
       {
         body << "<tr>";

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace abrade::report
 {
@@ -58,14 +59,31 @@ namespace abrade::report
       return b;
     }
 
-    /// Tonnes in t, kt or Mt.
+    /// The unit tonnes are shown in (t, kt, Mt: the largest that keeps the number, rounded to
+    /// three digits, at 1 or more), and its size.
+    std::pair<const char *, double> tonnes_unit(double t)
+    {
+      const double a = std::abs(t);
+      if (a >= 999.5e3)
+        return {"Mt", 1e6};
+      if (a >= 999.5)
+        return {"kt", 1e3};
+      return {"t", 1};
+    }
+
+    /// Tonnes in t, kt or Mt, three digits.
     std::string tonnes(double t)
     {
-      if (std::abs(t) >= 1e6)
-        return number(t / 1e6, 3) + " Mt";
-      if (std::abs(t) >= 1e3)
-        return number(t / 1e3, 3) + " kt";
-      return number(t, 3) + " t";
+      const auto [unit, size] = tonnes_unit(t);
+      return number(t / size, 3) + " " + unit;
+    }
+
+    /// A length [m] in mm, to 0.01 mm.
+    std::string mm(double metres)
+    {
+      char b[40];
+      std::snprintf(b, sizeof b, "%.2f", std::abs(metres) < 5e-6 ? 0.0 : 1000 * metres);
+      return b;
     }
 
     /// A CSV file as rows of cells (the first row: the header).
@@ -137,8 +155,14 @@ namespace abrade::report
 
     std::string lifetime_page(const std::string &dir, const Tree &summary)
     {
-      const Tree &r = summary.get_child("results.lifetime");
-      HtmlPage    page("Knife lifetime prediction");
+      const Tree        none;
+      const auto        results = summary.get_child_optional("results.lifetime");
+      const Tree       &r       = results ? *results : none;
+      HtmlPage          page("Knife lifetime prediction");
+      const std::string status  = text_at(summary, "status");
+      if (!status.empty() && status != "completed")
+        page.headline("<span id=\"headline-status\"><b>This run did not complete</b></span>: " + escape_html(status) +
+                      ". What it wrote before it stopped is shown below; resume it with abrade run ... --resume.");
 
       const auto predicted = r.get_optional<double>("predicted_tonnes_to_end_of_life");
       const std::string criterion = text_at(r, "end_of_life_criterion");
@@ -164,30 +188,35 @@ namespace abrade::report
             for (const auto &[k, v] : *w)
               where.push_back(v.get_value<double>());
           if (where.size() == 3)
-            headline << " at x = " << number(1000 * where[0], 4) << " mm, y = " << number(1000 * where[1], 4)
-                     << " mm, z = " << number(1000 * where[2], 4) << " mm";
+            headline << " at x = " << mm(where[0]) << " mm, y = " << mm(where[1]) << " mm, z = " << mm(where[2])
+                     << " mm (the knife's frame)";
           std::string method = text_at(r, "end_of_life_method");
           if (!method.empty())
             method[0] = char(std::toupper(static_cast<unsigned char>(method[0])));
           headline << ". " << escape_html(method) << ".";
         }
-      else
+      else if (results)
         headline << "<span id=\"headline-tonnes\" data-value=\"none\"><b>No end of life reached</b></span> after "
                  << tonnes(r.get<double>("tonnes", 0)) << " (" << escape_html(text_at(r, "end")) << ")";
-      page.headline(headline.str());
-      page.paragraph("Run ended: " + escape_html(text_at(r, "end")) + "; " +
-                     number(r.get<double>("tonnes", 0), 4) + " t handled in " +
-                     number(r.get<double>("cycles", 0), 6) + " cycles; largest wear depth " +
+      if (results)
+        page.headline(headline.str());
+      char cycles[40];
+      std::snprintf(cycles, sizeof cycles, "%.0f", r.get<double>("cycles", 0));
+      page.paragraph("Run ended: " + escape_html(text_at(r, "end")) + "; " + tonnes(r.get<double>("tonnes", 0)) +
+                     " handled in " + cycles + " cycles; largest wear depth " +
                      number(1000 * r.get<double>("max_depth", 0), 4) + " mm; worn mass " +
                      number(r.get<double>("worn_mass", 0), 4) + " kg; " +
                      std::to_string(r.get<int>("seeds", 1)) + " bed(s).");
 
       page.heading("Trajectory");
-      page.png(dir + "/trajectory.png", "Wear against handled material: the largest depth with the spread of the beds, "
-                                        "the followed point's recession and the worn volume.");
+      page.png(dir + "/trajectory.png",
+               "Wear against handled material: the largest depth with the spread of the beds, the followed point's "
+               "recession and the worn volume.",
+               "trajectory");
 
       page.heading("The worn knife");
-      const auto files = pvd_files(dir + "/knife/knife.pvd");
+      const auto files = fs::exists(dir + "/knife/knife.pvd") ? pvd_files(dir + "/knife/knife.pvd")
+                                                              : std::vector<std::pair<double, std::string>>();
       if (!files.empty())
         {
           std::vector<SurfacePicture> stages;
@@ -197,15 +226,22 @@ namespace abrade::report
           stages.push_back({files.back().second, "wear_depth", "after " + tonnes(files.back().first)});
           if (render_surfaces(dir + "/report", "knife_wear.png", stages))
             page.png(dir + "/report/knife_wear.png",
-                     "The knife coloured by wear depth (mm below the design surface) at the design, mid-life and the last "
-                     "update, from the front and the back; one colour range for all.");
+                     "The knife coloured by wear depth (mm below the design surface) at the design, the middle update and "
+                     "the last update of the run, seen from two opposite sides (top row: from +x, -y; bottom row: from "
+                     "-x, +y); one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
+                     "knife");
           else
             page.paragraph("(the knife's pictures could not be drawn: gnuplot, or the knife's VTU files, are missing)");
         }
-      for (const auto &entry : fs::directory_iterator(dir + "/knife"))
-        if (entry.path().extension() == ".png" && entry.path().stem().string().rfind("profile_", 0) == 0)
-          page.png(entry.path().string(), "Cross-section " + entry.path().stem().string() +
-                                            " (fraction of the knife's length): the profile after every update, mm.");
+      std::vector<fs::path> profiles;
+      if (fs::is_directory(dir + "/knife"))
+        for (const auto &entry : fs::directory_iterator(dir + "/knife"))
+          if (entry.path().extension() == ".png" && entry.path().stem().string().rfind("profile_", 0) == 0)
+            profiles.push_back(entry.path());
+      std::sort(profiles.begin(), profiles.end());
+      for (const auto &p : profiles)
+        page.png(p.string(), "Cross-section of the knife at " + p.stem().string().substr(8) +
+                               " of its length: the profile after every update, y and z in mm.", "profile");
 
       page.heading("Updates");
       const auto csv = read_csv(dir + "/trajectory.csv");
@@ -218,9 +254,11 @@ namespace abrade::report
             {"min_scaled_jacobian", "worst cell quality"}, {"remeshed", "remeshed"}, {"dem_warnings", "DEM warnings"}};
           std::vector<std::string>              header;
           std::vector<std::vector<std::string>> rows;
+          const int  tonnes_column = column(h, "tonnes");
+          const auto [unit, size]  = tonnes_unit(tonnes_column >= 0 ? std::atof(csv.back()[tonnes_column].c_str()) : 0);
           for (const auto &[c, title] : shown)
             if (column(h, c) >= 0)
-              header.push_back(title);
+              header.push_back(c == "tonnes" ? title + " [" + unit + "]" : title);
           for (std::size_t k = 1; k < csv.size(); ++k)
             {
               std::vector<std::string> row;
@@ -230,7 +268,7 @@ namespace abrade::report
                   if (i < 0 || i >= int(csv[k].size()))
                     continue;
                   const double v = std::atof(csv[k][i].c_str());
-                  row.push_back(c == "tonnes" ? tonnes(v)
+                  row.push_back(c == "tonnes" ? number(v / size, 4)
                                 : (c == "max_depth" || c == "point_recession") ? number(1000 * v, 4)
                                                                                 : number(v, 4));
                 }
@@ -292,8 +330,10 @@ namespace abrade::report
               rows.push_back(row);
             }
           page.table(csv[0], rows);
-          page.paragraph("Columns ending in _std are the standard deviations over the bed seeds; _uncertainty the "
-                         "uncertainty of a change (docs/user-guide.md).");
+          page.paragraph("Wear in m^3 per cycle (Archard's volume unless Output/Wear field says otherwise), payload in "
+                         "t per cycle, wear per tonne in m^3/t; columns ending in _std are the standard deviations over the "
+                         "bed seeds, _uncertainty the uncertainty of a change against the first row, in per cent "
+                         "(docs/user-guide.md).");
         }
       page.heading("Plots");
       for (const auto &p : pngs)
@@ -303,11 +343,28 @@ namespace abrade::report
       if (fs::exists(dir + "/runs"))
         {
           std::vector<SurfacePicture> shapes;
-          std::vector<std::string>    runs;
+          // each variant's run of the lowest seed, in the table's order
+          std::vector<std::string> runs;
           for (const auto &e : fs::directory_iterator(dir + "/runs"))
             if (e.is_directory())
               runs.push_back(e.path().string());
-          std::sort(runs.begin(), runs.end());
+          auto variant = [](const std::string &run) {
+            const std::string name = fs::path(run).filename().string();
+            return name.substr(0, name.rfind("-seed"));
+          };
+          auto seed = [](const std::string &run) {
+            const auto at = run.rfind("-seed");
+            return at == std::string::npos ? 0L : std::atol(run.c_str() + at + 5);
+          };
+          auto rank = [&](const std::string &run) {
+            for (std::size_t k = 1; k < csv.size(); ++k)
+              if (!csv[k].empty() && csv[k][0] == variant(run))
+                return long(k);
+            return long(csv.size());
+          };
+          std::sort(runs.begin(), runs.end(), [&](const std::string &a, const std::string &b) {
+            return std::make_tuple(rank(a), variant(a), seed(a)) < std::make_tuple(rank(b), variant(b), seed(b));
+          });
           std::vector<std::string> seen;
           for (const auto &run : runs)
             {
@@ -331,20 +388,27 @@ namespace abrade::report
               if (render_surfaces(dir + "/report", "worn_shapes.png", shapes, o))
                 page.png(dir + "/report/worn_shapes.png",
                          "Each variant's worn knife (a knife first, else the first wall with wear) coloured by Archard wear "
-                         "depth after the run (first bed seed), seen along its principal axes; one colour range, whose top "
-                         "is the 99th percentile (the deepest 1 % share its colour).");
+                         "depth after the run (its lowest bed seed), in the table's order, seen along its principal axes; "
+                         "one colour range, whose top is the 99th percentile (the deepest 1 % share its colour).");
             }
         }
       page.heading("Warnings");
-      std::vector<std::string> warnings;
-      for (const auto &p : {"study.md", "concepts.md"})
-        if (fs::exists(dir + "/" + p))
-          {
-            std::istringstream in(read_text(dir + "/" + p));
-            for (std::string line; std::getline(in, line);)
-              if (line.find("warning") != std::string::npos)
-                warnings.push_back(line);
-          }
+      std::vector<std::string> warnings; // the runs' own, each named by its run
+      if (fs::is_directory(dir + "/runs"))
+        {
+          std::vector<fs::path> runs;
+          for (const auto &e : fs::directory_iterator(dir + "/runs"))
+            if (e.is_directory())
+              runs.push_back(e.path());
+          std::sort(runs.begin(), runs.end());
+          for (const auto &run : runs)
+            {
+              std::vector<std::string> own;
+              collect_warnings(read_json((run / "summary.json").string()), own);
+              for (const auto &w : own)
+                warnings.push_back(run.filename().string() + ": " + w);
+            }
+        }
       page.warnings(warnings);
       if (fs::exists(dir + "/concepts.md"))
         page.details("concepts.md", read_text(dir + "/concepts.md"));
@@ -360,15 +424,30 @@ namespace abrade::report
       HtmlPage    page(calibration ? "Calibration against measured wear" : "Comparison with a field scan");
       if (calibration)
         {
-          const Tree &best = j.get_child("runs").begin()->second;
+          const auto runs = j.get_child_optional("runs");
+          if (!runs || runs->empty())
+            throw InputError(dir + "/calibration.json", "no calibrated run in it");
+          const Tree  &best = runs->begin()->second;
           const double w = best.get<double>("archard_coefficient", 0), lo = best.get<double>("archard_coefficient_low", 0),
                        hi = best.get<double>("archard_coefficient_high", 0);
           char value[40];
-          std::snprintf(value, sizeof value, "%.17g", w);
-          page.headline("Fitted wear coefficient W = <span id=\"headline-w\" data-value=\"" + std::string(value) +
-                        "\"><b>" + number(w, 4) + " 1/Pa</b></span> (interval " + number(lo, 4) + " to " + number(hi, 4) +
-                        "), scale " + number(best.get<double>("scale", 0), 4) + " of the run's W, correlation " +
-                        number(best.get<double>("correlation", 0), 4));
+          if (w > 0)
+            {
+              std::snprintf(value, sizeof value, "%.17g", w);
+              page.headline("Fitted wear coefficient W = <span id=\"headline-w\" data-value=\"" + std::string(value) +
+                            "\"><b>" + number(w, 4) + " 1/Pa</b></span> (95 % interval " + number(lo, 4) + " to " +
+                            number(hi, 4) + " 1/Pa), " + number(best.get<double>("scale", 0), 4) +
+                            " times the run's W; correlation of the pattern " + number(best.get<double>("correlation", 0), 4));
+            }
+          else // a run without a wear coefficient (an analytic wear rate): its scale
+            {
+              std::snprintf(value, sizeof value, "%.17g", best.get<double>("scale", 0));
+              page.headline("No W for this run (its wear has no coefficient): the measured wear is <span "
+                            "id=\"headline-scale\" data-value=\"" + std::string(value) + "\"><b>" +
+                            number(best.get<double>("scale", 0), 4) + "</b></span> times the predicted (95 % interval " +
+                            number(best.get<double>("scale_low", 0), 4) + " to " + number(best.get<double>("scale_high", 0), 4) +
+                            "); correlation " + number(best.get<double>("correlation", 0), 4));
+            }
           page.png(dir + "/calibration.png", "Predicted against measured wear depths with the fitted scale.");
           if (fs::exists(dir + "/calibration.md"))
             page.details("calibration.md", read_text(dir + "/calibration.md"));
@@ -406,16 +485,22 @@ namespace abrade::report
       throw InputError(dir, "not a directory");
     const Tree  summary = read_json(dir + "/summary.json");
     std::string html;
-    if (summary.get_child_optional("results.lifetime"))
-      html = lifetime_page(dir, summary);
+    if (summary.get_child_optional("results.lifetime") || text_at(summary, "job") == "lifetime")
+      {
+        html = lifetime_page(dir, summary);
+        if (fs::is_directory(dir + "/knife"))
+          write_paraview_script(dir);
+      }
     else if (fs::exists(dir + "/concepts.csv"))
       html = table_page(dir, "Knife concepts compared", "concepts.csv", {"wear.png", "lifetime.png"});
     else if (fs::exists(dir + "/study.csv"))
       {
-        std::vector<std::string> pngs;
-        for (const auto &e : fs::directory_iterator(dir))
-          if (e.path().extension() == ".png")
-            pngs.push_back(e.path().filename().string());
+        std::vector<std::string> pngs; // the sweep's plots (plots/*.png), and any beside study.csv
+        for (const std::string sub : {"", "plots"})
+          if (fs::is_directory(dir + "/" + sub))
+            for (const auto &e : fs::directory_iterator(dir + "/" + sub))
+              if (e.path().extension() == ".png")
+                pngs.push_back((sub.empty() ? "" : sub + "/") + e.path().filename().string());
         std::sort(pngs.begin(), pngs.end());
         html = table_page(dir, "Parameter sweep", "study.csv", pngs);
       }

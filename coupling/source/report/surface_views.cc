@@ -151,21 +151,28 @@ namespace abrade::report
     // one column per surface, the front view above the back view
     const int     columns = int(surfaces.size());
     std::ofstream gp(directory + "/" + stem + ".gp");
-    gp << "set terminal pngcairo size " << std::max(700, 380 * columns) << ",900 font 'DejaVu Sans,10'\n"
+    // wear of one cycle is a few micrometres: then the colour bar is in um
+    const double unit = hi < 0.01 && !signed_range ? 1000.0 : 1.0;
+    std::string  label = options.label;
+    if (unit != 1.0 && label.size() > 4 && label.compare(label.size() - 4, 4, "[mm]") == 0)
+      label = label.substr(0, label.size() - 4) + "[um]";
+    gp << "set terminal pngcairo size " << std::max(700, 400 * columns) << ",860 font 'DejaVu Sans,10'\n"
        << "set output '" << png << "'\nset termoption noenhanced\n"
        << "set multiplot layout 2," << columns << " rowsfirst\n"
        << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
        << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n"
-       << "set cbrange [" << lo << ":" << hi << "]\nset cblabel '" << options.label << "'\nset cbtics\n"
+       << "set cbrange [" << unit * lo << ":" << unit * hi << "]\nset cblabel '" << label << "'\nset cbtics\n"
        << (signed_range ? "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
                         : "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n");
     for (int v = 0; v < 2; ++v)
       for (std::size_t k = 0; k < surfaces.size(); ++k)
         {
           // two sides of the part: from the front and above, and from the back
-          gp << "set view " << (v == 0 ? "70, 25" : "70, 205") << ", 1.25\n"
-             << "set title '" << quote_free(surfaces[k].title) << (v == 0 ? " (front)" : " (back)") << "'\n"
-             << "splot '" << stem << "_" << k << ".dat' using 1:2:3:4 "
+          // one colour bar per row, beside the last picture
+          gp << (k + 1 == surfaces.size() ? "set colorbox\n" : "unset colorbox\n")
+             << "set view " << (v == 0 ? "70, 25" : "70, 205") << ", 1.1\n"
+             << "set title '" << quote_free(surfaces[k].title) << (v == 0 ? " (front)" : " (back)") << "' offset 0,1\n"
+             << "splot '" << stem << "_" << k << ".dat' using 1:2:3:(column(4)*" << unit << ") "
              << (as_points[k] ? "with points pointtype 7 pointsize 0.35 palette\n" : "with pm3d\n");
         }
     gp << "unset multiplot\n";
