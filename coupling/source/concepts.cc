@@ -258,25 +258,28 @@ namespace abrade::coupling
       }
     csv.close(), md.close();
 
-    // a bar chart of the wear per phase
+    // a bar chart of the wear per phase, the total's spread over the beds as error bars (the second
+    // plot reads the header line as a row: its first concept is row 1)
     {
       std::ofstream dat(out.file("wear.dat"));
       dat << "concept";
       for (const auto &p : phases)
         dat << ' ' << p;
-      dat << '\n';
+      dat << " total total_std\n";
       for (std::size_t k = 0; k < labels.size(); ++k)
         {
           dat << labels[k];
           for (const auto &p : phases)
             dat << ' ' << 1e9 * sum[k].wear[p].mean;
-          dat << '\n';
+          dat << ' ' << 1e9 * sum[k].wear["total"].mean << ' ' << 1e9 * sum[k].wear["total"].std << '\n';
         }
       std::ofstream gp(out.file("wear.gp"));
       gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'wear.png'\nset style data histograms\n"
             "set style histogram rowstacked\nset style fill solid 0.8 border -1\nset boxwidth 0.6\nset grid y\n"
-            "set ylabel 'knife wear per cycle [mm^3]'\nset key outside\nplot for [c=2:"
-         << phases.size() + 1 << "] 'wear.dat' using c:xtic(1) title columnhead\n";
+            "set ylabel 'knife wear per cycle [mm^3]'\nset key outside\nset yrange [0:*]\nplot for [c=2:"
+         << phases.size() + 1 << "] 'wear.dat' using c:xtic(1) title columnhead, '' using ($0-1):"
+         << phases.size() + 2 << ":" << phases.size() + 3
+         << " with yerrorbars lc rgb 'black' pt 7 ps 0.6 title 'total, +- std over the beds'\n";
     }
     for (const char *plot : {"wear.gp", "lifetime.gp"})
       if (std::filesystem::exists(out.file(plot)))

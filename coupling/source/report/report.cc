@@ -338,7 +338,7 @@ namespace abrade::report
       page.heading("Plots");
       for (const auto &p : pngs)
         if (fs::exists(dir + "/" + p))
-          page.png(dir + "/" + p, p);
+          page.png(dir + "/" + p, p, fs::path(p).stem().string());
       // the worn shapes side by side: each variant's first seed
       if (fs::exists(dir + "/runs"))
         {
@@ -517,26 +517,31 @@ namespace abrade::report
   void write_paraview_script(const std::string &dir)
   {
     std::ofstream py(dir + "/knife/open_in_paraview.py");
-    py << "# Opens the knife's worn shapes of this lifetime run in ParaView, coloured by wear depth:\n"
-          "#   paraview --script=open_in_paraview.py    or    pvpython open_in_paraview.py\n"
-          "# (run from this folder; the time slider steps through the updates).\n"
+    py << "# Opens the knife's worn shapes of this lifetime run in ParaView, coloured by wear depth [mm]:\n"
+          "#   paraview --script=open_in_paraview.py    (the GUI, to turn it around)\n"
+          "#   pvpython open_in_paraview.py             (knife_wear_paraview.png beside it, either way)\n"
+          "# The time slider steps through the updates (time = handled tonnes).\n"
           "import os\n"
           "from paraview.simple import *\n"
-          "here = os.path.dirname(os.path.abspath(__file__))\n"
+          "here = os.path.dirname(os.path.abspath(__file__)) if '__file__' in globals() else os.getcwd()\n"
           "knife = PVDReader(FileName=os.path.join(here, 'knife.pvd'))\n"
+          "depth = Calculator(Input=knife)\n"
+          "depth.ResultArrayName = 'wear_depth_mm'\n"
+          "depth.Function = 'wear_depth*1000'\n"
           "view = GetActiveViewOrCreate('RenderView')\n"
-          "display = Show(knife, view)\n"
-          "ColorBy(display, ('POINTS', 'wear_depth'))\n"
-          "lut = GetColorTransferFunction('wear_depth')\n"
+          "display = Show(depth, view)\n"
+          "ColorBy(display, ('POINTS', 'wear_depth_mm'))\n"
+          "lut = GetColorTransferFunction('wear_depth_mm')\n"
           "lut.ApplyPreset('Viridis (matplotlib)', True)\n"
           "animation = GetAnimationScene()\n"
           "animation.UpdateAnimationUsingDataTimeSteps()\n"
           "animation.AnimationTime = knife.TimestepValues[-1]\n"
           "display.RescaleTransferFunctionToDataRange(False, True)\n"
           "display.SetScalarBarVisibility(view, True)\n"
-          "bar = GetScalarBar(lut, view)\n"
-          "bar.Title = 'wear depth [m]'\n"
+          "GetScalarBar(lut, view).Title = 'wear depth [mm]'\n"
           "view.ResetCamera()\n"
-          "Render()\n";
+          "Render()\n"
+          "# (pvpython closes when the script ends: a picture of the last update stays)\n"
+          "SaveScreenshot(os.path.join(here, 'knife_wear_paraview.png'), view, ImageResolution=[1200, 900])\n";
   }
 } // namespace abrade::report
