@@ -3,6 +3,7 @@
 #include <vtkBase64Utilities.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -87,8 +88,11 @@ pre { font-size: .8em; background: #f7f7f7; padding: .5em; overflow-x: auto; }
 
   void HtmlPage::png(const std::string &file, const std::string &caption, const std::string &figure)
   {
-    std::ifstream     in(file, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::error_code   e; // (a regular file only: a link to a device such as /dev/full never ends)
+    const bool        regular = std::filesystem::is_regular_file(file, e) && std::filesystem::file_size(file, e) < 100u << 20;
+    std::ifstream     in(regular ? file : std::string(), std::ios::binary);
+    const std::string bytes = regular ? std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>())
+                                      : std::string();
     const auto [w, h] = png_size(bytes);
     if (w == 0)
       {

@@ -25,8 +25,18 @@ namespace abrade::report
     namespace fs = std::filesystem;
     using Tree   = boost::property_tree::ptree;
 
+    /// Whether @p file can be read as a run's output: a regular file (not a device such as a
+    /// link to /dev/full, which never ends) of at most 200 MB.
+    bool readable(const std::string &file)
+    {
+      std::error_code e;
+      return fs::is_regular_file(file, e) && fs::file_size(file, e) < 200u << 20;
+    }
+
     std::string read_text(const std::string &file)
     {
+      if (!readable(file))
+        return "";
       std::ifstream in(file);
       return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     }
@@ -37,7 +47,7 @@ namespace abrade::report
       Tree t;
       try
         {
-          if (fs::exists(file))
+          if (readable(file))
             boost::property_tree::read_json(file, t);
         }
       catch (const std::exception &)
@@ -90,7 +100,9 @@ namespace abrade::report
     std::vector<std::vector<std::string>> read_csv(const std::string &file)
     {
       std::vector<std::vector<std::string>> rows;
-      std::ifstream                         in(file);
+      if (!readable(file))
+        return rows;
+      std::ifstream in(file);
       for (std::string line; std::getline(in, line);)
         {
           if (!line.empty() && line.back() == '\r')

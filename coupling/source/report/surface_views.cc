@@ -57,7 +57,8 @@ namespace abrade::report
     bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, std::vector<double> &values,
                          bool &as_points)
     {
-      if (!std::filesystem::exists(s.file))
+      std::error_code e;
+      if (!std::filesystem::is_regular_file(s.file, e))
         return false;
       auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
       reader->SetFileName(s.file.c_str());
