@@ -6,6 +6,8 @@
 #include <abrade/common/error.h>
 #include <abrade/report/report.h>
 
+// (property_tree includes boost/bind.hpp, which otherwise prints a deprecation message)
+#define BOOST_BIND_GLOBAL_PLACEHOLDERS
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
