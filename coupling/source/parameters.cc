@@ -80,13 +80,7 @@ namespace abrade::coupling
                                                          {"rigid body", dem::WallMotion::Kind::rigid_body}};
 
     /// The registered wear laws' names, as a pattern and as documentation.
-    Selection wear_law_selection()
-    {
-      std::string names;
-      for (const auto &law : dem::registered_wear_laws())
-        names += (names.empty() ? "" : "|") + law->name();
-      return Selection(names);
-    }
+    Selection wear_law_selection() { return Selection(dem::wear_law_names("|")); }
 
     /// The volume fields of the registered laws ("archard_volume|oka_volume").
     std::string volume_field_names(const std::string &separator = ", ")

@@ -47,10 +47,8 @@ namespace abrade::coupling::lifetime
       {
         for (const auto &wc : c.walls)
           if (wc.solid_model)
-            for (const auto &law : wc.wear)
-              for (const auto &f : law->fields())
-                if (f.name == c.wear_field)
-                  return law->coefficient();
+            if (const dem::WearLaw *law = dem::law_recording(wc.wear, c.wear_field))
+              return law->coefficient();
         return 0;
       }
 

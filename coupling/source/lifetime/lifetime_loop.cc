@@ -11,6 +11,7 @@
 #include <abrade/coupling/lifetime/state_file.h>
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
+#include <abrade/dem/wear.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/surface_filter.h>
 
@@ -129,10 +130,7 @@ namespace abrade::coupling::lifetime
       ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
     if (!s.analytic)
       for (const auto &w : dem_case.walls)
-        if (w.solid_model && std::none_of(w.wear.begin(), w.wear.end(), [&](const auto &law) {
-              const auto fields = law->fields();
-              return std::any_of(fields.begin(), fields.end(), [&](const auto &f) { return f.name == dem_case.wear_field; });
-            }))
+        if (w.solid_model && !dem::law_recording(w.wear, dem_case.wear_field))
           {
             const dem::WearLaw *law = dem::wear_law_of_field(dem_case.wear_field);
             ctx.parameters.fail({"Wall " + w.wall.name, "Wear"}, "Laws",

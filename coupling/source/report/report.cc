@@ -3,6 +3,8 @@
 #include "surface_views.h"
 
 #include <abrade/common/atomic_file.h>
+#include <abrade/common/csv_reader.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/error.h>
 #include <abrade/report/report.h>
 
@@ -64,12 +66,7 @@ namespace abrade::report
       return v ? *v : std::string();
     }
 
-    std::string number(double x, int digits = 4)
-    {
-      char b[40];
-      std::snprintf(b, sizeof b, "%.*g", digits, x);
-      return b;
-    }
+    std::string number(double x, int digits = 4) { return io::format_number(x, digits); }
 
     /// The unit tonnes are shown in (t, kt, Mt: the largest that keeps the number, rounded to
     /// three digits, at 1 or more), and its size.
@@ -98,30 +95,18 @@ namespace abrade::report
       return b;
     }
 
-    /// A CSV file as rows of cells (the first row: the header).
-    std::vector<std::vector<std::string>> read_csv(const std::string &file)
+    /// A table of the run (an empty one when it is missing, not a regular file, or malformed: a
+    /// report shows what it can).
+    io::CsvTable read_table(const std::string &file)
     {
-      std::vector<std::vector<std::string>> rows;
-      if (!readable(file))
-        return rows;
-      std::ifstream in(file);
-      for (std::string line; std::getline(in, line);)
+      try
         {
-          if (!line.empty() && line.back() == '\r')
-            line.pop_back();
-          std::vector<std::string> cells;
-          std::stringstream        s(line);
-          for (std::string c; std::getline(s, c, ',');)
-            cells.push_back(c);
-          rows.push_back(cells);
+          if (readable(file))
+            return io::read_csv(file);
         }
-      return rows;
-    }
-
-    int column(const std::vector<std::string> &header, const std::string &name)
-    {
-      const auto it = std::find(header.begin(), header.end(), name);
-      return it == header.end() ? -1 : int(it - header.begin());
+      catch (const std::exception &)
+        {}
+      return {};
     }
 
     /// Every "warnings" list anywhere in @p t.
@@ -258,30 +243,29 @@ namespace abrade::report
                                " of its length: the profile after every update, y and z in mm.", "profile");
 
       page.heading("Updates");
-      const auto csv = read_csv(dir + "/trajectory.csv");
-      if (csv.size() > 1)
+      const io::CsvTable csv = read_table(dir + "/trajectory.csv");
+      if (!csv.rows.empty())
         {
-          const auto &h = csv[0];
           const std::vector<std::pair<std::string, std::string>> shown = {
             {"update", "update"}, {"tonnes", "handled"}, {"max_depth", "largest depth [mm]"},
             {"point_recession", "recession [mm]"}, {"worn_mass", "worn mass [kg]"},
             {"min_scaled_jacobian", "worst cell quality"}, {"remeshed", "remeshed"}, {"dem_warnings", "DEM warnings"}};
           std::vector<std::string>              header;
           std::vector<std::vector<std::string>> rows;
-          const int  tonnes_column = column(h, "tonnes");
-          const auto [unit, size]  = tonnes_unit(tonnes_column >= 0 ? std::atof(csv.back()[tonnes_column].c_str()) : 0);
+          const int  tonnes_column = csv.find("tonnes");
+          const auto [unit, size]  = tonnes_unit(tonnes_column >= 0 ? std::atof(csv.rows.back()[tonnes_column].c_str()) : 0);
           for (const auto &[c, title] : shown)
-            if (column(h, c) >= 0)
+            if (csv.find(c) >= 0)
               header.push_back(c == "tonnes" ? title + " [" + unit + "]" : title);
-          for (std::size_t k = 1; k < csv.size(); ++k)
+          for (const auto &line : csv.rows)
             {
               std::vector<std::string> row;
               for (const auto &[c, title] : shown)
                 {
-                  const int i = column(h, c);
-                  if (i < 0 || i >= int(csv[k].size()))
+                  const int i = csv.find(c);
+                  if (i < 0)
                     continue;
-                  const double v = std::atof(csv[k][i].c_str());
+                  const double v = std::atof(line[i].c_str());
                   row.push_back(c == "tonnes" ? number(v / size, 4)
                                 : (c == "max_depth" || c == "point_recession") ? number(1000 * v, 4)
                                                                                 : number(v, 4));
@@ -324,26 +308,26 @@ namespace abrade::report
                            const std::vector<std::string> &pngs)
     {
       HtmlPage   page(title);
-      const auto csv = read_csv(dir + "/" + csv_file);
-      page.headline("<span id=\"headline-count\" data-value=\"" + std::to_string(csv.empty() ? 0 : csv.size() - 1) +
-                    "\"><b>" + std::to_string(csv.empty() ? 0 : csv.size() - 1) + "</b></span> variants compared (" +
+      const io::CsvTable csv = read_table(dir + "/" + csv_file);
+      page.headline("<span id=\"headline-count\" data-value=\"" + std::to_string(csv.rows.size()) + "\"><b>" +
+                    std::to_string(csv.rows.size()) + "</b></span> variants compared (" +
                     escape_html(csv_file) + ")");
       page.heading("Comparison");
-      if (csv.size() > 1)
+      if (!csv.rows.empty())
         {
           std::vector<std::vector<std::string>> rows;
-          for (std::size_t k = 1; k < csv.size(); ++k)
+          for (const auto &line : csv.rows)
             {
               std::vector<std::string> row;
-              for (std::size_t c = 0; c < csv[k].size(); ++c)
+              for (const auto &cell : line)
                 {
                   char *end = nullptr;
-                  const double v = std::strtod(csv[k][c].c_str(), &end);
-                  row.push_back(end && *end == '\0' && !csv[k][c].empty() ? number(v, 4) : csv[k][c]);
+                  const double v = std::strtod(cell.c_str(), &end);
+                  row.push_back(end && *end == '\0' && !cell.empty() ? number(v, 4) : cell);
                 }
               rows.push_back(row);
             }
-          page.table(csv[0], rows);
+          page.table(csv.header, rows);
           page.paragraph("Wear in m^3 per cycle (Archard's volume unless Output/Wear field says otherwise), payload in "
                          "t per cycle, wear per tonne in m^3/t; columns ending in _std are the standard deviations over the "
                          "bed seeds, _uncertainty the uncertainty of a change against the first row, in per cent "
@@ -371,10 +355,10 @@ namespace abrade::report
             return at == std::string::npos ? 0L : std::atol(run.c_str() + at + 5);
           };
           auto rank = [&](const std::string &run) {
-            for (std::size_t k = 1; k < csv.size(); ++k)
-              if (!csv[k].empty() && csv[k][0] == variant(run))
+            for (std::size_t k = 0; k < csv.rows.size(); ++k)
+              if (!csv.rows[k].empty() && csv.rows[k][0] == variant(run))
                 return long(k);
-            return long(csv.size());
+            return long(csv.rows.size());
           };
           std::sort(runs.begin(), runs.end(), [&](const std::string &a, const std::string &b) {
             return std::make_tuple(rank(a), variant(a), seed(a)) < std::make_tuple(rank(b), variant(b), seed(b));

@@ -116,23 +116,28 @@ namespace abrade::io
     write_file_atomically(path, dump()); // checked; a crash leaves the old summary or the new one
   }
 
+  namespace
+  {
+    /// The first match of @p pattern (its group 1) after "@p key": in the file @p path.
+    std::optional<std::string> summary_match(const std::string &path, const std::string &key, const std::string &pattern)
+    {
+      std::ifstream     in(path);
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      std::smatch       m;
+      if (std::regex_search(text, m, std::regex("\"" + key + "\": *" + pattern)))
+        return m[1].str();
+      return std::nullopt;
+    }
+  } // namespace
+
   std::optional<double> summary_number(const std::string &path, const std::string &key)
   {
-    std::ifstream     in(path);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::smatch       m;
-    if (std::regex_search(text, m, std::regex("\"" + key + "\": *([-+0-9.eE]+)")))
-      return std::stod(m[1]);
-    return std::nullopt;
+    const auto v = summary_match(path, key, "([-+0-9.eE]+)");
+    return v ? std::optional<double>(std::stod(*v)) : std::nullopt;
   }
 
   std::optional<std::string> summary_string(const std::string &path, const std::string &key)
   {
-    std::ifstream     in(path);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::smatch       m;
-    if (std::regex_search(text, m, std::regex("\"" + key + "\": *\"([^\"]*)\"")))
-      return m[1].str();
-    return std::nullopt;
+    return summary_match(path, key, "\"([^\"]*)\"");
   }
 } // namespace abrade::io

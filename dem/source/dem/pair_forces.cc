@@ -151,7 +151,7 @@ namespace abrade::dem
           if constexpr (Law::needs_rotation)
             {
               cs.wx = WX[i] - WX[j], cs.wy = WY[i] - WY[j], cs.wz = WZ[i] - WZ[j];
-              const double ii = 1.4 * mi * ri * ri, ij = 1.4 * mj * rj * rj; // I + m r^2 of solid spheres
+              const double ii = rolling_inertia_of_sphere(mi, ri), ij = rolling_inertia_of_sphere(mj, rj);
               cs.rolling_inertia = ii * ij / (ii + ij);
             }
           if constexpr (Law::needs_area) // the circle the two spheres intersect in

@@ -578,7 +578,7 @@ namespace abrade::dem
                       // an impact: a history begins (with every slot taken, none is kept and
                       // the contact is not counted as one, rather than as one every step)
                       const bool began   = slot < 0 && free_slot >= 0;
-                      if (slot < 0 && free_slot >= 0)
+                      if (began)
                         {
                           slot = free_slot;
                           m.hist_wall[K * i + slot] = h.wall;
@@ -600,7 +600,7 @@ namespace abrade::dem
                         {
                           const Vec3 &ww = wall.angular_velocity;
                           cs.wx = P.wx[i] - ww[0], cs.wy = P.wy[i] - ww[1], cs.wz = P.wz[i] - ww[2];
-                          cs.rolling_inertia = 1.4 * P.mass[i] * ri * ri; // I + m r^2 of a solid sphere
+                          cs.rolling_inertia = rolling_inertia_of_sphere(P.mass[i], ri);
                         }
                       if constexpr (Law::needs_area)
                         cs.area = M_PI * (ri * ri - d * d);

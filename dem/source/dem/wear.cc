@@ -6,6 +6,15 @@
 
 namespace abrade::dem
 {
+  const WearLaw *law_recording(const WallWearLaws &laws, const std::string &field)
+  {
+    for (const auto &law : laws)
+      for (const auto &f : law->fields())
+        if (f.name == field)
+          return law.get();
+    return nullptr;
+  }
+
   /// Where one law's increments go: into its fields of one wall.
   class WearRecorder::Deposit : public WearDeposit
   {

@@ -77,11 +77,11 @@ namespace abrade::dem
     return laws;
   }
 
-  std::string wear_law_names()
+  std::string wear_law_names(const std::string &separator)
   {
     std::string names;
     for (const auto &law : registered_wear_laws())
-      names += (names.empty() ? "" : ", ") + law->name();
+      names += (names.empty() ? "" : separator) + law->name();
     return names;
   }
 

@@ -27,6 +27,9 @@ namespace abrade::dem
   /// The wear laws of one wall (none: the wall's wear is not tracked).
   using WallWearLaws = std::vector<std::shared_ptr<const WearLaw>>;
 
+  /// The law among @p laws that records field @p field (nullptr: none of them does).
+  const WearLaw *law_recording(const WallWearLaws &laws, const std::string &field);
+
   class WearRecorder : public StepHook
   {
   public:

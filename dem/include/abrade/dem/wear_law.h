@@ -104,8 +104,8 @@ namespace abrade::dem
   /// The registered laws (registered.h), in registration order: one instance each, with default
   /// parameters, to ask for names, fields and documentation.
   const std::vector<std::unique_ptr<WearLaw>> &registered_wear_laws();
-  /// The names of the registered laws, "archard, relative, ...".
-  std::string wear_law_names();
+  /// The names of the registered laws, "archard, relative, ..." (@p separator between them).
+  std::string wear_law_names(const std::string &separator = ", ");
   /// A new law of that name; an InputError naming the allowed names if there is none.
   std::unique_ptr<WearLaw> make_wear_law(const std::string &name);
   /// A new law of that name with its parameters' defaults, except those in @p values (entry

@@ -31,6 +31,10 @@ namespace abrade::dem
     double mx, my, mz;      ///< torque rolling models put on i (j gets the opposite) [N m]
   };
 
+  /// A solid sphere's moment of inertia about a point of its surface, I + m r^2 = 1.4 m r^2
+  /// (what rolls about a contact point).
+  inline double rolling_inertia_of_sphere(double mass, double radius) { return 1.4 * mass * radius * radius; }
+
   /// Turns a history vector (s0, s1, s2) into the current tangent plane of normal n, keeping its
   /// magnitude: project, then rescale by sqrt(|s|^2 / |s_projected|^2) = sqrt(1 + r) with
   /// r = sn^2 / |s_projected|^2. The normal turns little in one step, so r is tiny and the series
