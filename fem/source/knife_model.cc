@@ -1,6 +1,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/hash.h>
 #include <abrade/fem/knife_model.h>
+#include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/mesh_motion.h>
 
 #include <deal.II/grid/tria_description.h>
@@ -59,6 +60,27 @@ namespace abrade::fem
 
   double KnifeModel::volume() const { return mesh_volume(*tria); }
 
+  namespace
+  {
+    /// The triangles of @p s that the vertex @p offsets turn over (their normal against the one
+    /// they had) or squash to nothing: where fronts meet or a face shrinks away, which moved
+    /// vertices cannot follow.
+    std::size_t folding_triangles(const SolidSurface &s, const std::vector<Tensor<1, 3>> &offsets)
+    {
+      std::size_t folds = 0;
+      for (const auto &t : s.triangles)
+        {
+          const Tensor<1, 3> n0 = cross_product_3d(s.vertices[t[1]] - s.vertices[t[0]], s.vertices[t[2]] - s.vertices[t[0]]);
+          const Point<3>     a = s.vertices[t[0]] + offsets[t[0]], b = s.vertices[t[1]] + offsets[t[1]],
+                         c = s.vertices[t[2]] + offsets[t[2]];
+          const Tensor<1, 3> n1 = cross_product_3d(b - a, c - a);
+          if (n1 * n0 <= 0.05 * n0.norm_square())
+            ++folds;
+        }
+      return folds;
+    }
+  } // namespace
+
   KnifeModel::UpdateResult KnifeModel::apply_wear(const std::vector<double> &depth)
   {
     if (depth.size() != current_surface.vertices.size())
@@ -81,9 +103,26 @@ namespace abrade::fem
       if (current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary)
         for (unsigned v : current_surface.triangles[t])
           clamped[v] = true;
+    // what the update starts from, for the construction that cannot fold (rebuild_eroded)
+    std::vector<double> wearing = depth;
+    for (std::size_t v = 0; v < clamped.size(); ++v)
+      if (clamped[v])
+        wearing[v] = 0;
+    const Before before{current_surface, wearing, accumulated, displacement};
+
+    // moved vertices cannot follow where the surface folds: the worn surface is built anew
+    std::vector<Tensor<1, 3>> moves(offsets.size());
+    for (std::size_t v = 0; v < offsets.size(); ++v)
+      moves[v] = clamped[v] ? Tensor<1, 3>() : offsets[v];
+    if (const std::size_t folds = folding_triangles(current_surface, moves); folds > 0)
+      {
+        rebuild_eroded(before, std::to_string(folds) + " triangle(s) of the moved surface would fold", r);
+        return r;
+      }
+
     std::map<unsigned, Tensor<1, 3>> prescribed;
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
-      prescribed[current_surface.tria_vertex[v]] = clamped[v] ? Tensor<1, 3>() : offsets[v];
+      prescribed[current_surface.tria_vertex[v]] = moves[v];
     MeshMotion motion(*tria, {1, settings.stiffening, 1e-10});
     motion.solve(prescribed, {});
     move_vertices(*tria, motion.vertex_displacements());
@@ -104,7 +143,17 @@ namespace abrade::fem
       {
         const SolidSurface old_surface = extract_surface(*tria);
         auto               fresh       = std::make_unique<Triangulation<3>>();
-        r.surface_kept = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory);
+        try
+          {
+            r.surface_kept = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory);
+          }
+        catch (const InputError &e)
+          {
+            // Gmsh can mesh neither the moved surface nor inside its triangles: from the
+            // surface before the update, built so that it cannot fold
+            rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r);
+            return r;
+          }
         tria = std::move(fresh);
         ++remeshes;
         r.remeshed = true;
@@ -130,6 +179,63 @@ namespace abrade::fem
       current_surface = extract_surface(*tria);
     r.volume = volume();
     return r;
+  }
+
+  double KnifeModel::erosion_spacing() const
+  {
+    return settings.erosion_spacing > 0 ? settings.erosion_spacing
+                                        : std::min(settings.mesh_size / 6, plate_thickness / 15);
+  }
+
+  void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r)
+  {
+    const ErodedSurface eroded =
+      eroded_surface(before.surface.as_polydata(), before.depth, erosion_spacing(), settings.mesh_size / 3);
+    auto fresh = std::make_unique<Triangulation<3>>();
+    try
+      {
+        r.surface_kept = mesh_closed_surface(eroded.surface, settings.mesh_size, *fresh, settings.work_directory,
+                                             before.surface);
+      }
+    catch (const InputError &e)
+      {
+        throw RunError(std::string("the worn knife could not be meshed: ") + e.what());
+      }
+    r.quality = mesh_quality(*fresh);
+    if (r.quality.n_inverted > 0)
+      throw RunError("the remeshed knife has inverted cells");
+    tria = std::move(fresh);
+    ++remeshes;
+    r.remeshed        = true;
+    r.rebuilt         = why;
+    r.volume_cut_off  = eroded.volume_cut_off;
+    current_surface   = extract_surface(*tria);
+    // followed points: each new vertex continues the point of the surface before the update
+    // closest to it (its fields there), moved on by the step between them
+    accumulated = transfer_surface_field(before.surface, before.accumulated, current_surface);
+    displacement.assign(3 * current_surface.vertices.size(), 0.0);
+    std::vector<std::vector<double>> foot(3);
+    for (unsigned c = 0; c < 3; ++c)
+      {
+        std::vector<double> old_c(before.surface.vertices.size()), old_x(before.surface.vertices.size());
+        for (std::size_t v = 0; v < old_c.size(); ++v)
+          old_c[v] = before.displacement[3 * v + c], old_x[v] = before.surface.vertices[v][c];
+        const auto new_c = transfer_surface_field(before.surface, old_c, current_surface);
+        foot[c]          = transfer_surface_field(before.surface, old_x, current_surface);
+        for (std::size_t v = 0; v < new_c.size(); ++v)
+          displacement[3 * v + c] = new_c[v];
+      }
+    for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
+      {
+        Tensor<1, 3> step;
+        for (unsigned c = 0; c < 3; ++c)
+          step[c] = current_surface.vertices[v][c] - foot[c][v];
+        accumulated[v] += step.norm();
+        for (unsigned c = 0; c < 3; ++c)
+          displacement[3 * v + c] += step[c];
+      }
+    since_remesh.assign(current_surface.vertices.size(), 0.0);
+    r.volume = volume();
   }
 
   std::vector<double> KnifeModel::wear_depth() const

@@ -5,6 +5,7 @@
 #include <abrade/common/format_number.h>
 #include <abrade/common/termination.h>
 #include <abrade/fem/cad_check.h>
+#include <abrade/fem/meshing_job.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
 
@@ -37,6 +38,9 @@ namespace abrade::fem
 
   namespace
   {
+    /// A warning among the notes a meshing job returns.
+    const std::string warning_prefix = "warning: ";
+
     void read_msh_file(const std::string &path, Triangulation<3> &tria)
     {
       std::ifstream file(path);
@@ -580,14 +584,14 @@ namespace abrade::fem
                                   std::to_string(::getpid()) + "-" + std::to_string(meshed++) + ".msh"))
                                   .string();
         // the file's own length unit: h in it (STL), or the model scaled to metres first (CAD)
+        // Gmsh in its own process (meshing_job.h): a crash or a hang there is an InputError here
         auto mesh = [&](bool again, Triangulation<3> &into) {
-          with_gmsh(path, [&] {
-            if (cad)
-              load_cad(path, h, settings, report);
+          MeshingJob job{path, msh, h, again, false, settings};
+          for (const auto &note : run_meshing_job(job))
+            if (note.rfind(warning_prefix, 0) == 0)
+              report.warnings.push_back(note.substr(warning_prefix.size()));
             else
-              load_stl(path, h, settings, &report);
-            mesh_volume_with_gmsh(path, cad ? h : h / settings.scale, msh, again, cad);
-          });
+              report.notes.push_back(note);
           read_msh_file(msh, into);
           std::filesystem::remove(msh);
           if (!cad && settings.scale != 1)
@@ -657,14 +661,30 @@ namespace abrade::fem
     return report;
   }
 
+  std::vector<std::string> run_meshing_job_here(const MeshingJob &job)
+  {
+    SolidFileReport report;
+    const bool      cad = is_cad_file(job.input);
+    with_gmsh(job.input, [&] {
+      if (job.keep_triangles)
+        load_stl(job.input, 0, job.settings, nullptr, true);
+      else if (cad)
+        load_cad(job.input, job.mesh_size, job.settings, report);
+      else
+        load_stl(job.input, job.mesh_size, job.settings, &report);
+      mesh_volume_with_gmsh(job.input, cad ? job.mesh_size : job.mesh_size / job.settings.scale, job.output,
+                            job.again, cad);
+    });
+    for (const auto &w : report.warnings)
+      report.notes.push_back(warning_prefix + w);
+    return report.notes;
+  }
+
   void read_closed_triangles(const std::string &stl, double h, Triangulation<3> &tria)
   {
     const std::string msh = stl + ".volume.msh";
     SolidFileSettings as_is;
-    with_gmsh(stl, [&] {
-      load_stl(stl, 0, as_is, nullptr, true);
-      mesh_volume_with_gmsh(stl, h, msh, false, false);
-    });
+    run_meshing_job({stl, msh, h, false, true, as_is});
     read_msh_file(msh, tria);
     std::filesystem::remove(msh);
   }

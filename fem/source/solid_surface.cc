@@ -228,15 +228,16 @@ namespace abrade::fem
     return s;
   }
 
-  std::string remesh(const Triangulation<3> &tria, double h, Triangulation<3> &new_tria, const std::string &dir)
+  std::string mesh_closed_surface(const io::PolyData &surface, double h, Triangulation<3> &new_tria,
+                                  const std::string &dir, const SolidSurface &ids_from)
   {
-    const SolidSurface old = extract_surface(tria);
     std::filesystem::create_directories(dir);
     const std::string stl = dir + "/remesh-surface.stl";
-    io::write_stl(stl, old.as_polydata());
+    io::write_stl(stl, surface);
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
     std::string kept;
+    new_tria.clear();
     try
       {
         read_solid(stl, h, new_tria, as_is);
@@ -244,17 +245,17 @@ namespace abrade::fem
     catch (const InputError &remeshing)
       {
         kept = remeshing.what();
-        // Gmsh could not remesh the worn surface (it cannot parametrise a folded or tangled
-        // patch): the volume is filled again inside the surface's own triangles, which the next
-        // remesh may then improve
+        // Gmsh could not remesh the surface (it cannot parametrise a tangled patch, or it
+        // crashed): the volume is filled inside the surface's own triangles
         new_tria.clear();
         try
           {
             read_closed_triangles(stl, h, new_tria);
           }
-        catch (const InputError &)
+        catch (const InputError &filling)
           {
-            throw remeshing;
+            throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface: ") + remeshing.what() +
+                                    "; " + filling.what());
           }
       }
     // boundary ids from the old boundary triangle closest to each new face's centre
@@ -265,18 +266,24 @@ namespace abrade::fem
             const Point<3> c = cell->face(f)->center();
             std::size_t    best = 0;
             double         best_d2 = std::numeric_limits<double>::infinity();
-            for (std::size_t t = 0; t < old.triangles.size(); ++t)
+            for (std::size_t t = 0; t < ids_from.triangles.size(); ++t)
               {
-                const auto  &tri = old.triangles[t];
-                const auto   cp  = geometry::closest_point_on_triangle(c.begin_raw(), old.vertices[tri[0]].begin_raw(),
-                                                                       old.vertices[tri[1]].begin_raw(),
-                                                                       old.vertices[tri[2]].begin_raw());
+                const auto  &tri = ids_from.triangles[t];
+                const auto   cp  = geometry::closest_point_on_triangle(c.begin_raw(), ids_from.vertices[tri[0]].begin_raw(),
+                                                                       ids_from.vertices[tri[1]].begin_raw(),
+                                                                       ids_from.vertices[tri[2]].begin_raw());
                 const double d2 = c.distance_square(Point<3>(cp.p[0], cp.p[1], cp.p[2]));
                 if (d2 < best_d2)
                   best_d2 = d2, best = t;
               }
-            cell->face(f)->set_boundary_id(old.boundary_id[best]);
+            cell->face(f)->set_boundary_id(ids_from.boundary_id[best]);
           }
     return kept;
+  }
+
+  std::string remesh(const Triangulation<3> &tria, double h, Triangulation<3> &new_tria, const std::string &dir)
+  {
+    const SolidSurface old = extract_surface(tria);
+    return mesh_closed_surface(old.as_polydata(), h, new_tria, dir, old);
   }
 } // namespace abrade::fem

@@ -12,6 +12,12 @@
 // remeshes when it falls below a threshold (relative to the fresh mesh), or when the surface has
 // moved more than half a mesh size since the last remesh (the mesh then no longer resolves the
 // receding, rounding edge), carrying the accumulated depth and displacement over.
+// Moved vertices cannot follow everywhere: where fronts meet (a chisel tip under wear that
+// varies along its height) or a face shrinks away (the bevel of a thinning plate), triangles
+// of the moved surface turn over, and the surface folds. Such an update (a triangle turned or
+// squashed to 5 % of its area), and one whose moved surface Gmsh cannot remesh, is taken from
+// the surface before it by eroded_surface.h, which solves "every point recedes along its normal
+// by its depth" as a set and cannot fold; the knife is meshed anew from that.
 // The wear depth (wear_depth) is not that displacement: it is the distance of the worn surface
 // below the design (the fresh knife's surface), measured as `abrade compare` measures a scan
 // (geometry::wear_depth, one definition for both). Where the offset faces meet at a chisel tip
@@ -49,6 +55,9 @@ namespace abrade::fem
       /// count as worn through. 0: the plate thickness of a parametric knife, or for any other
       /// part the area-weighted median of the local thickness of its wearable surface.
       double plate_thickness = 0;
+      /// [m] The grid of the worn surface's construction where moved vertices would fold
+      /// (eroded_surface.h); 0: the smaller of mesh_size / 6 and plate_thickness / 15.
+      double erosion_spacing = 0;
     };
 
     /// The parametric knife, meshed with Gmsh.
@@ -65,6 +74,11 @@ namespace abrade::fem
       /// surface's own triangles instead); empty otherwise.
       std::string           surface_kept;
       std::vector<unsigned> worn_through; ///< surface vertices (of the surface before the update)
+      /// Why the worn surface was built anew from the surface before the update (moved
+      /// vertices would have folded, or the moved surface could not be remeshed); empty when
+      /// the vertices moved.
+      std::string           rebuilt;
+      double                volume_cut_off = 0; ///< [m^3] pieces the wear separated from the part
       double                volume = 0;
     };
 
@@ -113,7 +127,20 @@ namespace abrade::fem
     /// the wear depth below the design, the vertex displacement's length and its vector).
     void write(SolidOutput &output, double time) const;
 
+    /// [m] The grid spacing of the construction that cannot fold.
+    double erosion_spacing() const;
+
   private:
+    /// The state an update starts from.
+    struct Before
+    {
+      SolidSurface        surface;
+      std::vector<double> depth, accumulated, displacement;
+    };
+    /// The worn surface as eroded_surface() builds it from @p before (it cannot fold), meshed
+    /// anew; the followed points carried over. Throws RunError when Gmsh cannot mesh it.
+    void rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r);
+
     /// The design surface, the fields and the quality threshold of the fresh mesh.
     void start();
 

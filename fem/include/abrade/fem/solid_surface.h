@@ -67,6 +67,14 @@ namespace abrade::fem
   /// @p tria (through an STL of the surface and Gmsh); boundary ids of the new faces are taken
   /// from the nearest old boundary face. When Gmsh cannot remesh the surface, the volume is filled
   /// again inside the surface's own triangles: returns the reason then (empty: remeshed).
+  /// A tetrahedral mesh of size @p mesh_size filling the closed, outward triangle surface
+  /// @p surface (Gmsh, in its own process: fem/meshing_job.h): the surface remeshed, or where
+  /// Gmsh cannot, the volume filled inside its own triangles (returns why then; empty:
+  /// remeshed). Boundary ids from the nearest triangle of @p ids_from. Throws InputError when
+  /// neither works.
+  std::string mesh_closed_surface(const io::PolyData &surface, double mesh_size, dealii::Triangulation<3> &new_tria,
+                                  const std::string &work_directory, const SolidSurface &ids_from);
+
   std::string remesh(const dealii::Triangulation<3> &tria, double mesh_size, dealii::Triangulation<3> &new_tria,
                      const std::string &work_directory);
 } // namespace abrade::fem

@@ -1,0 +1,240 @@
+// The worn surface as the zero set of an implicit function on a grid (eroded_surface.h).
+#include <abrade/common/error.h>
+#include <abrade/common/surface_distance.h>
+#include <abrade/fem/eroded_surface.h>
+
+#include <vtkCellArray.h>
+#include <vtkCleanPolyData.h>
+#include <vtkFloatArray.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkIdList.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkQuadricDecimation.h>
+#include <vtkTriangleFilter.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace abrade::fem
+{
+  namespace
+  {
+    /// Signed volume enclosed by the triangles (divergence theorem): > 0 when outward.
+    double enclosed_volume(const io::PolyData &s)
+    {
+      double v = 0;
+      for (const auto &t : s.triangles)
+        {
+          const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
+          v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+        }
+      return v;
+    }
+
+    io::PolyData from_vtk(vtkPolyData *p)
+    {
+      io::PolyData out;
+      out.points.resize(3 * p->GetNumberOfPoints());
+      for (vtkIdType k = 0; k < p->GetNumberOfPoints(); ++k)
+        p->GetPoint(k, &out.points[3 * k]);
+      vtkNew<vtkIdList> ids;
+      for (vtkIdType c = 0; c < p->GetNumberOfCells(); ++c)
+        {
+          p->GetCellPoints(c, ids);
+          if (ids->GetNumberOfIds() == 3)
+            out.triangles.push_back({long(ids->GetId(0)), long(ids->GetId(1)), long(ids->GetId(2))});
+        }
+      return out;
+    }
+
+    vtkSmartPointer<vtkPolyData> to_vtk(const io::PolyData &s)
+    {
+      auto            p = vtkSmartPointer<vtkPolyData>::New();
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToDouble();
+      for (std::size_t k = 0; k < s.points.size(); k += 3)
+        points->InsertNextPoint(&s.points[k]);
+      vtkNew<vtkCellArray> cells;
+      for (const auto &t : s.triangles)
+        {
+          const vtkIdType ids[3] = {t[0], t[1], t[2]};
+          cells->InsertNextCell(3, ids);
+        }
+      p->SetPoints(points);
+      p->SetPolys(cells);
+      return p;
+    }
+  } // namespace
+
+  ErodedSurface eroded_surface(const io::PolyData &surface, const std::vector<double> &depth, double h,
+                               double edge_length)
+  {
+    if (depth.size() != surface.points.size() / 3)
+      throw std::logic_error("eroded_surface: one depth per point expected");
+    if (!(h > 0))
+      throw std::logic_error("eroded_surface: the grid spacing must be positive");
+    double deepest = 0;
+    for (const double d : depth)
+      deepest = std::max(deepest, d);
+
+    // the grid: the surface's box and a margin, offset by an irrational fraction of h
+    std::array<double, 3> lo{}, hi{};
+    for (int c = 0; c < 3; ++c)
+      lo[c] = std::numeric_limits<double>::infinity(), hi[c] = -lo[c];
+    for (std::size_t k = 0; k < surface.points.size(); ++k)
+      lo[k % 3] = std::min(lo[k % 3], surface.points[k]), hi[k % 3] = std::max(hi[k % 3], surface.points[k]);
+    std::array<long, 3> n{};
+    for (int c = 0; c < 3; ++c)
+      {
+        lo[c] -= (3 + 0.31830988618) * h;
+        n[c] = static_cast<long>(std::ceil((hi[c] + 3 * h - lo[c]) / h)) + 1;
+      }
+    const long          n_nodes = n[0] * n[1] * n[2];
+    std::vector<float> g(n_nodes);
+    auto node = [&](long i, long j, long k) { return i + n[0] * (j + n[1] * k); };
+
+    // phi, > 0 inside: exact near the surface, the sign (and a lower bound) elsewhere
+    const geometry::SurfaceDistance distance(surface.points, surface.triangles);
+    constexpr long                  B = 6;
+    const long                      nb[3] = {(n[0] + B - 1) / B, (n[1] + B - 1) / B, (n[2] + B - 1) / B};
+    const double                    half_diagonal = 0.5 * (B - 1) * h * std::sqrt(3.0);
+#pragma omp parallel for schedule(dynamic)
+    for (long b = 0; b < nb[0] * nb[1] * nb[2]; ++b)
+      {
+        const long   bi = b % nb[0], bj = (b / nb[0]) % nb[1], bk = b / (nb[0] * nb[1]);
+        const double centre[3] = {lo[0] + (bi * B + 0.5 * (B - 1)) * h, lo[1] + (bj * B + 0.5 * (B - 1)) * h,
+                                  lo[2] + (bk * B + 0.5 * (B - 1)) * h};
+        const double phi_centre = -distance.signed_distance(centre);
+        const bool   far        = std::abs(phi_centre) > half_diagonal + 2 * h;
+        for (long k = bk * B; k < std::min(n[2], (bk + 1) * B); ++k)
+          for (long j = bj * B; j < std::min(n[1], (bj + 1) * B); ++j)
+            for (long i = bi * B; i < std::min(n[0], (bi + 1) * B); ++i)
+              {
+                const double x[3] = {lo[0] + i * h, lo[1] + j * h, lo[2] + k * h};
+                g[node(i, j, k)] = float(far ? std::copysign(std::abs(phi_centre) - half_diagonal, phi_centre)
+                                             : -distance.signed_distance(x));
+              }
+      }
+
+    // the balls: points at half a spacing on every worn triangle, depth interpolated
+    for (const auto &t : surface.triangles)
+      {
+        const double d0 = depth[t[0]], d1 = depth[t[1]], d2 = depth[t[2]];
+        if (std::max({d0, d1, d2}) <= 0)
+          continue;
+        const double *a = &surface.points[3 * t[0]], *b = &surface.points[3 * t[1]], *c = &surface.points[3 * t[2]];
+        double        longest = 0;
+        for (int e = 0; e < 3; ++e)
+          {
+            const double *p = e == 0 ? a : e == 1 ? b : c, *q = e == 0 ? b : e == 1 ? c : a;
+            longest = std::max(longest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+          }
+        const long m = std::max(1L, static_cast<long>(std::ceil(longest / (0.5 * h))));
+        for (long u = 0; u <= m; ++u)
+          for (long v = 0; u + v <= m; ++v)
+            {
+              const double wa = double(m - u - v) / m, wb = double(u) / m, wc = double(v) / m;
+              const double d  = wa * d0 + wb * d1 + wc * d2;
+              if (d <= 0)
+                continue;
+              double p[3];
+              for (int q = 0; q < 3; ++q)
+                p[q] = wa * a[q] + wb * b[q] + wc * c[q];
+              const double reach = d + 2 * h;
+              long         from[3], to[3];
+              for (int q = 0; q < 3; ++q)
+                {
+                  from[q] = std::max(0L, static_cast<long>(std::floor((p[q] - reach - lo[q]) / h)));
+                  to[q]   = std::min(n[q] - 1, static_cast<long>(std::ceil((p[q] + reach - lo[q]) / h)));
+                }
+              for (long k = from[2]; k <= to[2]; ++k)
+                for (long j = from[1]; j <= to[1]; ++j)
+                  for (long i = from[0]; i <= to[0]; ++i)
+                    {
+                      const double dx = lo[0] + i * h - p[0], dy = lo[1] + j * h - p[1], dz = lo[2] + k * h - p[2];
+                      float       &gn = g[node(i, j, k)];
+                      const double ball = std::sqrt(dx * dx + dy * dy + dz * dz) - d;
+                      if (ball < gn)
+                        gn = float(ball);
+                    }
+            }
+      }
+
+    // the zero set
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(int(n[0]), int(n[1]), int(n[2]));
+    image->SetOrigin(lo[0], lo[1], lo[2]);
+    image->SetSpacing(h, h, h);
+    vtkNew<vtkFloatArray> values;
+    values->SetName("g");
+    values->SetNumberOfTuples(n_nodes);
+    for (long k = 0; k < n_nodes; ++k)
+      values->SetValue(k, g[k]);
+    image->GetPointData()->SetScalars(values);
+    vtkNew<vtkFlyingEdges3D> contour;
+    contour->SetInputData(image);
+    contour->SetValue(0, 0.0);
+    contour->ComputeNormalsOff();
+    contour->ComputeGradientsOff();
+    contour->ComputeScalarsOff();
+    contour->Update();
+    if (contour->GetOutput()->GetNumberOfCells() == 0)
+      throw RunError("the wear leaves nothing of the part (every point is worn away)");
+
+    ErodedSurface result;
+    result.spacing = h;
+    const io::PolyData whole = from_vtk(contour->GetOutput());
+    const double       whole_volume = std::abs(enclosed_volume(whole));
+
+    vtkNew<vtkPolyDataConnectivityFilter> largest;
+    largest->SetInputConnection(contour->GetOutputPort());
+    largest->SetExtractionModeToLargestRegion();
+    vtkNew<vtkCleanPolyData> clean;
+    clean->SetInputConnection(largest->GetOutputPort());
+    clean->Update();
+    const vtkIdType cells = clean->GetOutput()->GetNumberOfCells();
+
+    // to about the target edge length (equilateral triangles of that edge over the area)
+    double area = 0;
+    const io::PolyData kept = from_vtk(clean->GetOutput());
+    for (const auto &t : kept.triangles)
+      {
+        const double *a = &kept.points[3 * t[0]], *b = &kept.points[3 * t[1]], *c = &kept.points[3 * t[2]];
+        const double  u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        area += 0.5 * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+      }
+    const double wanted = area / (0.433 * edge_length * edge_length);
+    io::PolyData out    = kept;
+    if (wanted < 0.9 * cells)
+      {
+        vtkNew<vtkQuadricDecimation> decimate;
+        decimate->SetInputConnection(clean->GetOutputPort());
+        decimate->SetTargetReduction(1.0 - wanted / double(cells));
+        decimate->VolumePreservationOn();
+        vtkNew<vtkTriangleFilter> triangles;
+        triangles->SetInputConnection(decimate->GetOutputPort());
+        triangles->Update();
+        out = from_vtk(triangles->GetOutput());
+      }
+    double volume = enclosed_volume(out);
+    if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles
+      {
+        for (auto &t : out.triangles)
+          std::swap(t[1], t[2]);
+        volume = -volume;
+      }
+    result.surface        = std::move(out);
+    result.volume         = volume;
+    result.volume_cut_off = std::max(0.0, whole_volume - std::abs(enclosed_volume(kept)));
+    (void)deepest;
+    return result;
+  }
+} // namespace abrade::fem

@@ -1,0 +1,233 @@
+// Gmsh in a child process (meshing_job.h): the parent's side (spawn, wait with a time limit,
+// read what the child left) and the child's (parse the job, mesh, write the notes or the error).
+#include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
+#include <abrade/fem/meshing_job.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
+
+#ifndef ABRADE_MESHER_DEFAULT
+#  define ABRADE_MESHER_DEFAULT ""
+#endif
+
+namespace abrade::fem
+{
+  namespace
+  {
+    /// The mesher executable: $ABRADE_MESHER, else abrade-mesher beside this executable, else
+    /// the one of the build tree this library was built in; empty when none exists.
+    std::string mesher_executable()
+    {
+      namespace fs = std::filesystem;
+      if (const char *e = std::getenv("ABRADE_MESHER"); e && *e)
+        return fs::exists(e) ? e : "";
+      std::error_code ec;
+      const fs::path  self = fs::read_symlink("/proc/self/exe", ec);
+      if (!ec && fs::exists(self.parent_path() / "abrade-mesher"))
+        return (self.parent_path() / "abrade-mesher").string();
+      if (*ABRADE_MESHER_DEFAULT && fs::exists(ABRADE_MESHER_DEFAULT))
+        return ABRADE_MESHER_DEFAULT;
+      return "";
+    }
+
+    std::string number(double x)
+    {
+      char b[40];
+      std::snprintf(b, sizeof b, "%.17g", x);
+      return b;
+    }
+
+    std::string read_text(const std::string &path)
+    {
+      std::ifstream      in(path);
+      std::ostringstream s;
+      s << in.rdbuf();
+      return s.str();
+    }
+
+    std::vector<std::string> lines_of(const std::string &text)
+    {
+      std::vector<std::string> out;
+      std::istringstream       in(text);
+      for (std::string line; std::getline(in, line);)
+        if (!line.empty())
+          out.push_back(line);
+      return out;
+    }
+
+    /// The last lines of the child's log (what Gmsh said before it died), on one line.
+    std::string log_tail(const std::string &path)
+    {
+      auto        lines = lines_of(read_text(path));
+      std::string tail;
+      for (std::size_t k = lines.size() > 3 ? lines.size() - 3 : 0; k < lines.size(); ++k)
+        tail += (tail.empty() ? "" : " | ") + lines[k].substr(0, 200);
+      return tail;
+    }
+  } // namespace
+
+  std::vector<std::string> run_meshing_job(const MeshingJob &job, double time_limit)
+  {
+    const std::string mesher = mesher_executable();
+    if (mesher.empty())
+      {
+        auto notes = run_meshing_job_here(job);
+        notes.push_back("meshed in this process (abrade-mesher not found: set ABRADE_MESHER)");
+        return notes;
+      }
+    if (time_limit <= 0)
+      {
+        const char *e = std::getenv("ABRADE_MESHER_TIME_LIMIT");
+        time_limit    = e && std::atof(e) > 0 ? std::atof(e) : 1800;
+      }
+    const std::string notes_file = job.output + ".notes", error_file = job.output + ".error",
+                      log_file = job.output + ".log";
+    for (const auto &f : {job.output, notes_file, error_file})
+      std::filesystem::remove(f);
+
+    // everything the child needs, made before fork (after it only async-signal-safe calls)
+    const auto &s = job.settings;
+    std::vector<std::string> args = {mesher,
+                                     job.input,
+                                     job.output,
+                                     number(job.mesh_size),
+                                     job.again ? "1" : "0",
+                                     job.keep_triangles ? "1" : "0",
+                                     number(s.scale),
+                                     number(s.max_extent),
+                                     number(s.min_extent),
+                                     number(s.max_volume),
+                                     number(s.max_cells),
+                                     s.solid.empty() ? "-" : s.solid};
+    std::vector<char *> argv;
+    for (auto &a : args)
+      argv.push_back(a.data());
+    argv.push_back(nullptr);
+    // the child is no MPI rank: without the launcher's variables an MPI library it loads does
+    // not try to join the parent's job
+    std::vector<std::string> env;
+    for (char **e = environ; *e; ++e)
+      {
+        const std::string v = *e;
+        if (v.rfind("OMPI_", 0) != 0 && v.rfind("PMIX_", 0) != 0 && v.rfind("PMI_", 0) != 0)
+          env.push_back(v);
+      }
+    std::vector<char *> envp;
+    for (auto &v : env)
+      envp.push_back(v.data());
+    envp.push_back(nullptr);
+    const int log = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (log < 0)
+      throw RunError("cannot write " + log_file);
+
+    const pid_t parent = ::getpid();
+    const pid_t pid    = ::fork();
+    if (pid < 0)
+      {
+        ::close(log);
+        throw RunError(std::string("cannot start the mesher: ") + std::strerror(errno));
+      }
+    if (pid == 0)
+      {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the run, whatever ends it
+        if (::getppid() != parent)
+          ::_exit(127);
+        ::dup2(log, 1);
+        ::dup2(log, 2);
+        const int null = ::open("/dev/null", O_RDONLY);
+        if (null >= 0)
+          ::dup2(null, 0);
+        ::execve(argv[0], argv.data(), envp.data());
+        ::_exit(127);
+      }
+    ::close(log);
+
+    int        status  = 0;
+    const auto started = std::chrono::steady_clock::now();
+    for (auto pause = std::chrono::milliseconds(1);; pause = std::min(2 * pause, std::chrono::milliseconds(50)))
+      {
+        const pid_t done = ::waitpid(pid, &status, WNOHANG);
+        if (done == pid)
+          break;
+        if (done < 0 && errno != EINTR)
+          throw RunError(std::string("lost the mesher process: ") + std::strerror(errno));
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > time_limit)
+          {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+            throw InputError(job.input, "Gmsh did not finish meshing it within " + io::format_number(time_limit) +
+                                          " s (stopped; ABRADE_MESHER_TIME_LIMIT sets the limit)");
+          }
+        std::this_thread::sleep_for(pause);
+      }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(job.output))
+      {
+        std::filesystem::remove(log_file);
+        auto notes = lines_of(read_text(notes_file));
+        std::filesystem::remove(notes_file);
+        return notes;
+      }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 2 && std::filesystem::exists(error_file))
+      {
+        const std::string what = read_text(error_file);
+        std::filesystem::remove(error_file);
+        std::filesystem::remove(log_file);
+        throw InputError("", what); // it names the file itself
+      }
+    const std::string tail = log_tail(log_file);
+    const std::string how  = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"
+                                                 : "failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
+    throw InputError(job.input, "Gmsh " + how + " meshing it" + (tail.empty() ? "" : ": " + tail));
+  }
+
+  int meshing_job_main(int argc, char **argv)
+  {
+    if (argc != 12)
+      {
+        std::fprintf(stderr, "abrade-mesher: abrade's Gmsh child process (started by abrade, not by hand)\n");
+        return 1;
+      }
+    MeshingJob job;
+    job.input                  = argv[1];
+    job.output                 = argv[2];
+    job.mesh_size              = std::atof(argv[3]);
+    job.again                  = std::string(argv[4]) == "1";
+    job.keep_triangles         = std::string(argv[5]) == "1";
+    job.settings.scale         = std::atof(argv[6]);
+    job.settings.max_extent    = std::atof(argv[7]);
+    job.settings.min_extent    = std::atof(argv[8]);
+    job.settings.max_volume    = std::atof(argv[9]);
+    job.settings.max_cells     = std::atof(argv[10]);
+    job.settings.solid         = std::string(argv[11]) == "-" ? "" : argv[11];
+    try
+      {
+        const auto    notes = run_meshing_job_here(job);
+        std::ofstream out(job.output + ".notes");
+        for (const auto &n : notes)
+          out << n << '\n';
+        return out ? 0 : 1;
+      }
+    catch (const InputError &e)
+      {
+        std::filesystem::remove(job.output);
+        std::ofstream(job.output + ".error") << e.what();
+        return 2;
+      }
+  }
+} // namespace abrade::fem
