@@ -4,6 +4,7 @@
 #include <abrade/fem/eroded_surface.h>
 
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkCleanPolyData.h>
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>
@@ -20,7 +21,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
+#include <unordered_map>
 
 namespace abrade::fem
 {
@@ -39,6 +43,82 @@ namespace abrade::fem
       return v;
     }
 
+    /// The balls of the wear: points sampled on the worn triangles (at most @p step apart)
+    /// with the depth there as radius, in a hash grid for the nearest sphere.
+    struct Balls
+    {
+      std::vector<double> centre, radius;
+      double              cell = 0;
+      std::unordered_map<long long, std::vector<unsigned>> cells;
+
+      Balls(const io::PolyData &s, const std::vector<double> &depth, double step, double margin)
+      {
+        for (const auto &t : s.triangles)
+          {
+            const double d0 = depth[t[0]], d1 = depth[t[1]], d2 = depth[t[2]];
+            if (std::max({d0, d1, d2}) <= 0)
+              continue;
+            const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
+            const double  longest = std::max({std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]),
+                                              std::hypot(b[0] - c[0], b[1] - c[1], b[2] - c[2]),
+                                              std::hypot(c[0] - a[0], c[1] - a[1], c[2] - a[2])});
+            const long    m       = std::max(1L, static_cast<long>(std::ceil(longest / step)));
+            for (long u = 0; u <= m; ++u)
+              for (long v = 0; u + v <= m; ++v)
+                {
+                  const double wa = double(m - u - v) / m, wb = double(u) / m, wc = double(v) / m;
+                  const double d  = wa * d0 + wb * d1 + wc * d2;
+                  if (d <= 0)
+                    continue;
+                  for (int q = 0; q < 3; ++q)
+                    centre.push_back(wa * a[q] + wb * b[q] + wc * c[q]);
+                  radius.push_back(d);
+                }
+          }
+        double largest = 0;
+        for (const double r : radius)
+          largest = std::max(largest, r);
+        cell = largest + margin;
+        for (unsigned q = 0; q < radius.size(); ++q)
+          cells[key(&centre[3 * q], 0, 0, 0)].push_back(q);
+      }
+
+      long long key(const double *x, int di, int dj, int dk) const
+      {
+        const long long i = static_cast<long long>(std::floor(x[0] / cell)) + di,
+                        j = static_cast<long long>(std::floor(x[1] / cell)) + dj,
+                        k = static_cast<long long>(std::floor(x[2] / cell)) + dk;
+        return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL);
+      }
+
+      /// min over the balls of |x - p| - d(p) (infinity beyond every ball's reach), and the point
+      /// of that ball's sphere nearest to @p x.
+      double nearest_sphere_point(const double *x, double *on_sphere) const
+      {
+        double   best = std::numeric_limits<double>::infinity();
+        unsigned which = 0;
+        for (int di = -1; di <= 1; ++di)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int dk = -1; dk <= 1; ++dk)
+              if (const auto it = cells.find(key(x, di, dj, dk)); it != cells.end())
+                for (const unsigned q : it->second)
+                  {
+                    const double *p = &centre[3 * q];
+                    const double  g = std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]) - radius[q];
+                    if (g < best)
+                      best = g, which = q;
+                  }
+        if (std::isfinite(best))
+          {
+            const double *p = &centre[3 * which];
+            const double  r = best + radius[which];
+            for (int c = 0; c < 3; ++c)
+              on_sphere[c] = r > 0 ? p[c] + radius[which] * (x[c] - p[c]) / r : x[c];
+          }
+        return best;
+      }
+    };
+
     io::PolyData from_vtk(vtkPolyData *p)
     {
       io::PolyData out;
@@ -55,23 +135,6 @@ namespace abrade::fem
       return out;
     }
 
-    vtkSmartPointer<vtkPolyData> to_vtk(const io::PolyData &s)
-    {
-      auto            p = vtkSmartPointer<vtkPolyData>::New();
-      vtkNew<vtkPoints> points;
-      points->SetDataTypeToDouble();
-      for (std::size_t k = 0; k < s.points.size(); k += 3)
-        points->InsertNextPoint(&s.points[k]);
-      vtkNew<vtkCellArray> cells;
-      for (const auto &t : s.triangles)
-        {
-          const vtkIdType ids[3] = {t[0], t[1], t[2]};
-          cells->InsertNextCell(3, ids);
-        }
-      p->SetPoints(points);
-      p->SetPolys(cells);
-      return p;
-    }
   } // namespace
 
   ErodedSurface eroded_surface(const io::PolyData &surface, const std::vector<double> &depth, double h,
@@ -81,9 +144,6 @@ namespace abrade::fem
       throw std::logic_error("eroded_surface: one depth per point expected");
     if (!(h > 0))
       throw std::logic_error("eroded_surface: the grid spacing must be positive");
-    double deepest = 0;
-    for (const double d : depth)
-      deepest = std::max(deepest, d);
 
     // the grid: the surface's box and a margin, offset by an irrational fraction of h
     std::array<double, 3> lo{}, hi{};
@@ -125,47 +185,28 @@ namespace abrade::fem
       }
 
     // the balls: points at half a spacing on every worn triangle, depth interpolated
-    for (const auto &t : surface.triangles)
+    const Balls balls(surface, depth, 0.5 * h, 2 * h);
+    for (std::size_t q = 0; q < balls.radius.size(); ++q)
       {
-        const double d0 = depth[t[0]], d1 = depth[t[1]], d2 = depth[t[2]];
-        if (std::max({d0, d1, d2}) <= 0)
-          continue;
-        const double *a = &surface.points[3 * t[0]], *b = &surface.points[3 * t[1]], *c = &surface.points[3 * t[2]];
-        double        longest = 0;
-        for (int e = 0; e < 3; ++e)
+        const double *p     = &balls.centre[3 * q];
+        const double  d     = balls.radius[q];
+        const double  reach = d + 2 * h;
+        long          from[3], to[3];
+        for (int c = 0; c < 3; ++c)
           {
-            const double *p = e == 0 ? a : e == 1 ? b : c, *q = e == 0 ? b : e == 1 ? c : a;
-            longest = std::max(longest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+            from[c] = std::max(0L, static_cast<long>(std::floor((p[c] - reach - lo[c]) / h)));
+            to[c]   = std::min(n[c] - 1, static_cast<long>(std::ceil((p[c] + reach - lo[c]) / h)));
           }
-        const long m = std::max(1L, static_cast<long>(std::ceil(longest / (0.5 * h))));
-        for (long u = 0; u <= m; ++u)
-          for (long v = 0; u + v <= m; ++v)
-            {
-              const double wa = double(m - u - v) / m, wb = double(u) / m, wc = double(v) / m;
-              const double d  = wa * d0 + wb * d1 + wc * d2;
-              if (d <= 0)
-                continue;
-              double p[3];
-              for (int q = 0; q < 3; ++q)
-                p[q] = wa * a[q] + wb * b[q] + wc * c[q];
-              const double reach = d + 2 * h;
-              long         from[3], to[3];
-              for (int q = 0; q < 3; ++q)
-                {
-                  from[q] = std::max(0L, static_cast<long>(std::floor((p[q] - reach - lo[q]) / h)));
-                  to[q]   = std::min(n[q] - 1, static_cast<long>(std::ceil((p[q] + reach - lo[q]) / h)));
-                }
-              for (long k = from[2]; k <= to[2]; ++k)
-                for (long j = from[1]; j <= to[1]; ++j)
-                  for (long i = from[0]; i <= to[0]; ++i)
-                    {
-                      const double dx = lo[0] + i * h - p[0], dy = lo[1] + j * h - p[1], dz = lo[2] + k * h - p[2];
-                      float       &gn = g[node(i, j, k)];
-                      const double ball = std::sqrt(dx * dx + dy * dy + dz * dz) - d;
-                      if (ball < gn)
-                        gn = float(ball);
-                    }
-            }
+        for (long k = from[2]; k <= to[2]; ++k)
+          for (long j = from[1]; j <= to[1]; ++j)
+            for (long i = from[0]; i <= to[0]; ++i)
+              {
+                const double dx = lo[0] + i * h - p[0], dy = lo[1] + j * h - p[1], dz = lo[2] + k * h - p[2];
+                float       &gn   = g[node(i, j, k)];
+                const double ball = std::sqrt(dx * dx + dy * dy + dz * dz) - d;
+                if (ball < gn)
+                  gn = float(ball);
+              }
       }
 
     // the zero set
@@ -191,8 +232,35 @@ namespace abrade::fem
 
     ErodedSurface result;
     result.spacing = h;
-    const io::PolyData whole = from_vtk(contour->GetOutput());
-    const double       whole_volume = std::abs(enclosed_volume(whole));
+    // the pieces: the largest is the part; the others, cut off by the wear, are dropped
+    {
+      vtkNew<vtkPolyDataConnectivityFilter> regions;
+      regions->SetInputConnection(contour->GetOutputPort());
+      regions->SetExtractionModeToAllRegions();
+      regions->ColorRegionsOn();
+      regions->Update();
+      vtkPolyData       *all = regions->GetOutput();
+      vtkDataArray      *id  = all->GetPointData()->GetArray("RegionId"); // per point (VTK 9.1)
+      std::vector<double> piece(regions->GetNumberOfExtractedRegions(), 0.0);
+      vtkNew<vtkIdList>  ids;
+      for (vtkIdType c = 0; id && c < all->GetNumberOfCells(); ++c)
+        {
+          all->GetCellPoints(c, ids);
+          if (ids->GetNumberOfIds() != 3)
+            continue;
+          double a[3], b[3], q[3];
+          all->GetPoint(ids->GetId(0), a), all->GetPoint(ids->GetId(1), b), all->GetPoint(ids->GetId(2), q);
+          piece[static_cast<std::size_t>(id->GetTuple1(ids->GetId(0)))] +=
+            (a[0] * (b[1] * q[2] - b[2] * q[1]) - a[1] * (b[0] * q[2] - b[2] * q[0]) + a[2] * (b[0] * q[1] - b[1] * q[0])) / 6;
+        }
+      std::sort(piece.begin(), piece.end(), [](double x, double y) { return std::abs(x) > std::abs(y); });
+      for (std::size_t k = 1; k < piece.size(); ++k)
+        if (piece[k] * piece[0] > 0) // a solid piece (a void inside would have the other sign)
+          result.volume_cut_off += std::abs(piece[k]);
+      if (std::getenv("ABRADE_LAPS"))
+        for (std::size_t k = 0; k < piece.size() && k < 8; ++k)
+          std::fprintf(stderr, "  piece %zu: %.4g cm^3\n", k, piece[k] * 1e6);
+    }
 
     vtkNew<vtkPolyDataConnectivityFilter> largest;
     largest->SetInputConnection(contour->GetOutputPort());
@@ -201,6 +269,35 @@ namespace abrade::fem
     clean->SetInputConnection(largest->GetOutputPort());
     clean->Update();
     const vtkIdType cells = clean->GetOutput()->GetNumberOfCells();
+
+    // onto the exact zero set: marching cubes cuts every edge and corner of the front; each of
+    // its vertices goes to the nearest point of the piece of the front nearest to it (the old
+    // surface, or the sphere of the ball that removed the most there), which puts the vertices
+    // beside a sharp edge onto its faces, so that the decimation's quadrics find the edge; the
+    // decimated vertices, which the quadrics place off the front by up to a spacing, go back
+    // onto it the same way
+    auto project = [&](vtkPoints *points) {
+#pragma omp parallel for schedule(dynamic, 256)
+      for (vtkIdType k = 0; k < points->GetNumberOfPoints(); ++k)
+        {
+          double x[3];
+          points->GetPoint(k, x);
+          for (int iteration = 0; iteration < 4; ++iteration)
+            {
+              bool         rim = false;
+              double       on_surface[3], on_ball[3];
+              const double phi  = -distance.signed_distance(x, rim, on_surface);
+              const double ball = balls.nearest_sphere_point(x, on_ball);
+              const double gx   = std::min(phi, ball);
+              std::copy_n(phi <= ball ? on_surface : on_ball, 3, x);
+              if (std::abs(gx) < 1e-6 * h)
+                break;
+            }
+          points->SetPoint(k, x);
+        }
+      points->Modified();
+    };
+    project(clean->GetOutput()->GetPoints());
 
     // to about the target edge length (equilateral triangles of that edge over the area)
     double area = 0;
@@ -213,7 +310,7 @@ namespace abrade::fem
       }
     const double wanted = area / (0.433 * edge_length * edge_length);
     io::PolyData out    = kept;
-    if (wanted < 0.9 * cells)
+    if (wanted < 0.9 * cells && !std::getenv("ABRADE_NO_DECIMATE"))
       {
         vtkNew<vtkQuadricDecimation> decimate;
         decimate->SetInputConnection(clean->GetOutputPort());
@@ -222,6 +319,7 @@ namespace abrade::fem
         vtkNew<vtkTriangleFilter> triangles;
         triangles->SetInputConnection(decimate->GetOutputPort());
         triangles->Update();
+        project(triangles->GetOutput()->GetPoints());
         out = from_vtk(triangles->GetOutput());
       }
     double volume = enclosed_volume(out);
@@ -233,8 +331,6 @@ namespace abrade::fem
       }
     result.surface        = std::move(out);
     result.volume         = volume;
-    result.volume_cut_off = std::max(0.0, whole_volume - std::abs(enclosed_volume(kept)));
-    (void)deepest;
     return result;
   }
 } // namespace abrade::fem

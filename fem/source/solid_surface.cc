@@ -4,6 +4,13 @@
 #include <abrade/fem/solid_surface.h>
 
 #include <deal.II/base/symmetric_tensor.h>
+
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
@@ -162,29 +169,68 @@ namespace abrade::fem
     return out;
   }
 
+  struct SurfaceTransfer::Impl
+  {
+    vtkSmartPointer<vtkPolyData>         polydata;
+    vtkSmartPointer<vtkStaticCellLocator> locator;
+  };
+
+  SurfaceTransfer::SurfaceTransfer(const SolidSurface &from, const SolidSurface &to)
+  {
+    Impl              impl;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const auto &p : from.vertices)
+      points->InsertNextPoint(p[0], p[1], p[2]);
+    vtkNew<vtkCellArray> cells;
+    for (const auto &t : from.triangles)
+      {
+        const vtkIdType ids[3] = {t[0], t[1], t[2]};
+        cells->InsertNextCell(3, ids);
+      }
+    impl.polydata = vtkSmartPointer<vtkPolyData>::New();
+    impl.polydata->SetPoints(points);
+    impl.polydata->SetPolys(cells);
+    impl.locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    impl.locator->SetDataSet(impl.polydata);
+    impl.locator->BuildLocator();
+    triangle.resize(to.vertices.size());
+    weight.resize(to.vertices.size());
+    foot.resize(to.vertices.size());
+    for (std::size_t v = 0; v < to.vertices.size(); ++v)
+      {
+        double    q[3] = {to.vertices[v][0], to.vertices[v][1], to.vertices[v][2]}, closest[3], d2 = 0;
+        vtkIdType cell = 0;
+        int       sub  = 0;
+        impl.locator->FindClosestPoint(q, closest, cell, sub, d2);
+        const auto &t = from.triangles[cell];
+        const auto  cp = geometry::closest_point_on_triangle(q, from.vertices[t[0]].begin_raw(), from.vertices[t[1]].begin_raw(),
+                                                             from.vertices[t[2]].begin_raw());
+        triangle[v] = static_cast<unsigned>(cell);
+        weight[v]   = geometry::barycentric(cp.p, from.vertices[t[0]].begin_raw(), from.vertices[t[1]].begin_raw(),
+                                            from.vertices[t[2]].begin_raw());
+        foot[v]     = Point<3>(cp.p[0], cp.p[1], cp.p[2]);
+      }
+    triangles = from.triangles;
+  }
+
+  std::vector<double> SurfaceTransfer::operator()(const std::vector<double> &values, unsigned components,
+                                                  unsigned component) const
+  {
+    std::vector<double> out(triangle.size());
+    for (std::size_t v = 0; v < out.size(); ++v)
+      {
+        const auto &t = triangles[triangle[v]];
+        out[v]        = weight[v][0] * values[components * t[0] + component] +
+                 weight[v][1] * values[components * t[1] + component] + weight[v][2] * values[components * t[2] + component];
+      }
+    return out;
+  }
+
   std::vector<double> transfer_surface_field(const SolidSurface &from, const std::vector<double> &values,
                                              const SolidSurface &to)
   {
-    std::vector<double> out(to.vertices.size(), 0.0);
-    for (std::size_t v = 0; v < to.vertices.size(); ++v)
-      {
-        const Point<3> &p = to.vertices[v];
-        double          best_d2 = std::numeric_limits<double>::infinity();
-        for (const auto &t : from.triangles)
-          {
-            const Point<3> &a = from.vertices[t[0]], &b = from.vertices[t[1]], &c = from.vertices[t[2]];
-            const auto      cp = geometry::closest_point_on_triangle(p.begin_raw(), a.begin_raw(), b.begin_raw(),
-                                                                     c.begin_raw());
-            const Point<3>  q(cp.p[0], cp.p[1], cp.p[2]);
-            const double    d2 = p.distance_square(q);
-            if (d2 >= best_d2)
-              continue;
-            best_d2      = d2;
-            const auto w = geometry::barycentric(cp.p, a.begin_raw(), b.begin_raw(), c.begin_raw());
-            out[v]       = w[0] * values[t[0]] + w[1] * values[t[1]] + w[2] * values[t[2]];
-          }
-      }
-    return out;
+    return SurfaceTransfer(from, to)(values);
   }
 
   SolidSurface extract_surface(const Triangulation<3> &tria, const std::set<types::boundary_id> &ids)
@@ -229,33 +275,42 @@ namespace abrade::fem
   }
 
   std::string mesh_closed_surface(const io::PolyData &surface, double h, Triangulation<3> &new_tria,
-                                  const std::string &dir, const SolidSurface &ids_from)
+                                  const std::string &dir, const SolidSurface &ids_from, bool own_triangles_first)
   {
     std::filesystem::create_directories(dir);
     const std::string stl = dir + "/remesh-surface.stl";
     io::write_stl(stl, surface);
+    if (std::getenv("ABRADE_LAPS"))
+      {
+        static int n = 0;
+        std::filesystem::copy_file(stl, dir + "/remesh-surface-" + std::to_string(++n) + ".stl",
+                                   std::filesystem::copy_options::overwrite_existing);
+      }
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
+    // the two ways, in the order asked: Gmsh remeshes the surface (its triangles then need not
+    // be good ones, but its reparametrisation can cut sharp edges between its new vertices), or
+    // it fills the volume inside the surface's own triangles (exact, and as good as they are)
+    auto remeshed = [&] { read_solid(stl, h, new_tria, as_is); };
+    auto filled   = [&] { read_closed_triangles(stl, h, new_tria); };
     std::string kept;
     new_tria.clear();
     try
       {
-        read_solid(stl, h, new_tria, as_is);
+        own_triangles_first ? filled() : remeshed();
       }
-    catch (const InputError &remeshing)
+    catch (const InputError &first)
       {
-        kept = remeshing.what();
-        // Gmsh could not remesh the surface (it cannot parametrise a tangled patch, or it
-        // crashed): the volume is filled inside the surface's own triangles
+        kept = first.what();
         new_tria.clear();
         try
           {
-            read_closed_triangles(stl, h, new_tria);
+            own_triangles_first ? remeshed() : filled();
           }
-        catch (const InputError &filling)
+        catch (const InputError &second)
           {
-            throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface: ") + remeshing.what() +
-                                    "; " + filling.what());
+            throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface: ") + first.what() +
+                                    "; " + second.what());
           }
       }
     // boundary ids from the old boundary triangle closest to each new face's centre

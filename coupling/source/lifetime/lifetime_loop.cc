@@ -413,8 +413,7 @@ namespace abrade::coupling::lifetime
             if (!st.result.surface_kept.empty())
               {
                 ++surfaces_kept;
-                ctx.log.warning("update " + std::to_string(update) + ": " + st.result.surface_kept +
-                                "; the knife was meshed again inside its worn surface's own triangles");
+                ctx.log.warning("update " + std::to_string(update) + ": " + st.result.surface_kept);
               }
             break;
           }

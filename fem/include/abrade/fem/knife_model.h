@@ -70,8 +70,8 @@ namespace abrade::fem
     {
       MeshQuality           quality;
       bool                  remeshed = false;
-      /// Gmsh could not remesh the worn surface: why (the volume was filled inside the
-      /// surface's own triangles instead); empty otherwise.
+      /// Gmsh could not mesh the worn surface the first way it tried: why, and the way that
+      /// worked instead (a sentence for the log); empty otherwise.
       std::string           surface_kept;
       std::vector<unsigned> worn_through; ///< surface vertices (of the surface before the update)
       /// Why the worn surface was built anew from the surface before the update (moved

@@ -59,6 +59,26 @@ namespace abrade::fem
   std::vector<double> transfer_surface_field(const SolidSurface &from, const std::vector<double> &values,
                                              const SolidSurface &to);
 
+  /// The same for many fields: each vertex of @p to found once on @p from (its closest point
+  /// there, VTK's static cell locator), then any per-vertex field of @p from carried over.
+  class SurfaceTransfer
+  {
+  public:
+    SurfaceTransfer(const SolidSurface &from, const SolidSurface &to);
+    /// Component @p component of a field with @p components values per vertex of from.
+    std::vector<double> operator()(const std::vector<double> &values, unsigned components = 1,
+                                   unsigned component = 0) const;
+    /// The closest point on from of each vertex of to.
+    const std::vector<dealii::Point<3>> &feet() const { return foot; }
+
+  private:
+    struct Impl;
+    std::vector<std::array<unsigned, 3>> triangles;
+    std::vector<unsigned>                triangle;
+    std::vector<std::array<double, 3>>   weight;
+    std::vector<dealii::Point<3>>        foot;
+  };
+
   /// The boundary faces with the given ids (all boundary faces when @p ids is empty).
   SolidSurface extract_surface(const dealii::Triangulation<3> &tria,
                                const std::set<dealii::types::boundary_id> &ids = {});
@@ -69,11 +89,12 @@ namespace abrade::fem
   /// again inside the surface's own triangles: returns the reason then (empty: remeshed).
   /// A tetrahedral mesh of size @p mesh_size filling the closed, outward triangle surface
   /// @p surface (Gmsh, in its own process: fem/meshing_job.h): the surface remeshed, or where
-  /// Gmsh cannot, the volume filled inside its own triangles (returns why then; empty:
-  /// remeshed). Boundary ids from the nearest triangle of @p ids_from. Throws InputError when
-  /// neither works.
+  /// Gmsh cannot, the volume filled inside its own triangles (returns why the first way failed;
+  /// empty: it worked). @p own_triangles_first: fill first, remesh where that fails. Boundary
+  /// ids from the nearest triangle of @p ids_from. Throws InputError when neither works.
   std::string mesh_closed_surface(const io::PolyData &surface, double mesh_size, dealii::Triangulation<3> &new_tria,
-                                  const std::string &work_directory, const SolidSurface &ids_from);
+                                  const std::string &work_directory, const SolidSurface &ids_from,
+                                  bool own_triangles_first = false);
 
   std::string remesh(const dealii::Triangulation<3> &tria, double mesh_size, dealii::Triangulation<3> &new_tria,
                      const std::string &work_directory);

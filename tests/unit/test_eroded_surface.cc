@@ -1,0 +1,228 @@
+// The worn surface built as a set (fem/eroded_surface.h) against exact answers of the front
+// motion: a box worn uniformly is the inner box (flat faces at the depth, edges and corners
+// sharp); a chisel worn uniformly recedes at its tip by d / sin(half angle); a face worn by a
+// depth that grows linearly along it, d = d0 + k x, becomes the plane at d / sqrt(1 - k^2)
+// below it (the envelope of the balls, Huygens' construction), not at d; a plate worn on both
+// sides merges its fronts.
+#include <abrade/common/error.h>
+#include <abrade/fem/eroded_surface.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+using namespace abrade;
+using namespace abrade::fem;
+
+namespace
+{
+  /// A closed, outward triangle surface from corner points and quadrilateral/triangular faces
+  /// (each face counter-clockwise seen from outside), each face split into n x n pieces so that
+  /// the depth can vary over it.
+  io::PolyData box(double a, double b, double c, int n)
+  {
+    io::PolyData s;
+    // six faces: origin, u, v (u x v outward)
+    const double faces[6][9] = {{0, 0, 0, 0, b, 0, a, 0, 0}, {0, 0, c, a, 0, 0, 0, b, 0}, {0, 0, 0, a, 0, 0, 0, 0, c},
+                                {0, b, 0, 0, 0, c, a, 0, 0}, {0, 0, 0, 0, 0, c, 0, b, 0}, {a, 0, 0, 0, b, 0, 0, 0, c}};
+    for (const auto &f : faces)
+      {
+        const long base = long(s.points.size() / 3);
+        for (int j = 0; j <= n; ++j)
+          for (int i = 0; i <= n; ++i)
+            for (int q = 0; q < 3; ++q)
+              s.points.push_back(f[q] + f[3 + q] * i / n + f[6 + q] * j / n);
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i)
+            {
+              const long p = base + j * (n + 1) + i;
+              s.triangles.push_back({p, p + 1, p + n + 2});
+              s.triangles.push_back({p, p + n + 2, p + n + 1});
+            }
+      }
+    return s;
+  }
+
+  /// The highest z of the surface over (x, y) (the vertical line's intersections with the
+  /// triangles); -infinity where it meets none.
+  double highest_point_above(const io::PolyData &s, double x, double y)
+  {
+    double top = -std::numeric_limits<double>::infinity();
+    for (const auto &t : s.triangles)
+      {
+        const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
+        const double  det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+        if (det == 0)
+          continue;
+        const double u = ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / det;
+        const double v = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / det;
+        if (u >= 0 && v >= 0 && u + v <= 1)
+          top = std::max(top, a[2] + u * (b[2] - a[2]) + v * (c[2] - a[2]));
+      }
+    return top;
+  }
+
+  /// A prism along x (0 ... length) over a convex polygon in the (y, z) plane (counter-clockwise
+  /// seen from +x), its sides split into pieces of about @p step, its ends fans.
+  io::PolyData prism(const std::vector<std::array<double, 2>> &polygon, double length, double step)
+  {
+    io::PolyData s;
+    const long   nx = std::max(1L, long(std::ceil(length / step)));
+    const long   m  = long(polygon.size());
+    auto         add = [&](double x, double y, double z) {
+      s.points.insert(s.points.end(), {x, y, z});
+      return long(s.points.size() / 3 - 1);
+    };
+    std::vector<long> first(m + 1, 0), count(m + 1, 0);
+    std::vector<std::vector<long>> ring(nx + 1); // the points around each x station
+    for (long i = 0; i <= nx; ++i)
+      for (long e = 0; e < m; ++e)
+        {
+          const auto  &a = polygon[e], &b = polygon[(e + 1) % m];
+          const long   n = std::max(1L, long(std::ceil(std::hypot(b[0] - a[0], b[1] - a[1]) / step)));
+          for (long k = 0; k < n; ++k)
+            ring[i].push_back(add(length * i / nx, a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n));
+        }
+    const long around = long(ring[0].size());
+    for (long i = 0; i < nx; ++i)
+      for (long k = 0; k < around; ++k)
+        {
+          const long p = ring[i][k], q = ring[i][(k + 1) % around], r = ring[i + 1][(k + 1) % around],
+                     t = ring[i + 1][k];
+          s.triangles.push_back({p, r, t});
+          s.triangles.push_back({p, q, r});
+        }
+    for (long i : {0L, nx})
+      {
+        double cy = 0, cz = 0;
+        for (const auto &p : polygon)
+          cy += p[0] / m, cz += p[1] / m;
+        const long c = add(length * i / nx, cy, cz);
+        for (long k = 0; k < around; ++k)
+          if (i == 0)
+            s.triangles.push_back({c, ring[i][(k + 1) % around], ring[i][k]});
+          else
+            s.triangles.push_back({c, ring[i][k], ring[i][(k + 1) % around]});
+      }
+    return s;
+  }
+
+  double signed_volume(const io::PolyData &s)
+  {
+    double v = 0;
+    for (const auto &t : s.triangles)
+      {
+        const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
+        v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+              a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+      }
+    return v;
+  }
+} // namespace
+
+TEST(ErodedSurface, UniformWearOfABoxIsTheInnerBox)
+{
+  const double a = 0.10, b = 0.08, c = 0.06, d = 0.005, h = 0.002;
+  const auto   s = box(a, b, c, 4);
+  const auto   e = eroded_surface(s, std::vector<double>(s.points.size() / 3, d), h, 0.01);
+  const double inner = (a - 2 * d) * (b - 2 * d) * (c - 2 * d);
+  EXPECT_NEAR(e.volume, inner, 0.005 * inner);
+  EXPECT_NEAR(signed_volume(e.surface), e.volume, 1e-12);
+  // every vertex on the inner box's surface (its distance to it: the largest of the
+  // coordinates' distances to the inner faces, for points inside or on it)
+  double worst = 0, nearest_corner = 1;
+  for (std::size_t k = 0; k < e.surface.points.size(); k += 3)
+    {
+      const double *x = &e.surface.points[k];
+      const double  lo[3] = {d, d, d}, hi[3] = {a - d, b - d, c - d};
+      double        inside = 1, corner = 0;
+      for (int q = 0; q < 3; ++q)
+        {
+          inside = std::min({inside, x[q] - lo[q], hi[q] - x[q]});
+          corner = std::max(corner, std::min(std::abs(x[q] - lo[q]), std::abs(x[q] - hi[q])));
+        }
+      worst          = std::max(worst, std::abs(inside));
+      nearest_corner = std::min(nearest_corner, corner);
+    }
+  EXPECT_LT(worst, 0.1 * h) << "a vertex off the inner box";
+  EXPECT_LT(nearest_corner, 0.25 * h) << "the corners are cut";
+  EXPECT_EQ(e.volume_cut_off, 0);
+}
+
+TEST(ErodedSurface, ALinearlyGrowingDepthTiltsTheFaceByHuygens)
+{
+  // the top face (z = c) worn by d = d0 + k x, the others not at all
+  const double a = 0.05, b = 0.05, c = 0.04, d0 = 0.002, k = 0.3, h = 0.0015;
+  const auto   s = box(a, b, c, 10);
+  std::vector<double> depth(s.points.size() / 3, 0.0);
+  for (std::size_t v = 0; v < depth.size(); ++v)
+    if (s.points[3 * v + 2] == c)
+      depth[v] = d0 + k * s.points[3 * v];
+  const auto e = eroded_surface(s, depth, h, 0.008);
+  double     worst = 0;
+  for (double x = 0.01; x <= 0.04; x += 0.0025)
+    for (double y = 0.01; y <= 0.04; y += 0.0025)
+      {
+        const double z = highest_point_above(e.surface, x, y);
+        worst          = std::max(worst, std::abs((c - z) - (d0 + k * x) / std::sqrt(1 - k * k)));
+      }
+  EXPECT_LT(worst, 0.05 * h) << "not the envelope of the balls";
+}
+
+TEST(ErodedSurface, FrontsThatMeetMerge)
+{
+  // a plate 10 mm thick worn 6 mm from both faces on its left half: the left half is gone,
+  // cut off cleanly, the right half stands
+  const double a = 0.1, b = 0.05, c = 0.01, h = 0.001;
+  const auto   s = box(a, b, c, 10);
+  std::vector<double> depth(s.points.size() / 3, 0.0);
+  for (std::size_t v = 0; v < depth.size(); ++v)
+    if (s.points[3 * v] < 0.0401)
+      depth[v] = 0.006;
+  const auto e = eroded_surface(s, depth, h, 0.005);
+  double     left = a;
+  for (std::size_t q = 0; q < e.surface.points.size(); q += 3)
+    left = std::min(left, e.surface.points[q]);
+  EXPECT_GT(left, 0.04) << "material left where both fronts passed";
+  EXPECT_LT(left, 0.04 + 0.006 + h);
+  EXPECT_GT(e.volume, 0.5 * (a - 0.04) * b * c);
+}
+
+TEST(ErodedSurface, TheChiselWornStepByStepIsItsInnerParallelBody)
+{
+  // the reference knife's cross-section (30 mm plate, double bevel 40 mm high, 0.4 m long, here
+  // 0.2 m high): a convex prism, whose inner parallel body at distance D is the intersection of
+  // its faces' half-spaces moved in by D, so every point of the worn surface lies exactly D
+  // below the design. Three updates of 2.5 mm, each from the last one's surface, at the
+  // spacing the lifetime loop takes (2 mm) and its triangle length (6.7 mm)
+  const std::vector<std::array<double, 2>> section = {{0, 0}, {0.015, 0.04}, {0.015, 0.2}, {-0.015, 0.2}, {-0.015, 0.04}};
+  const double length = 0.4, d = 0.0025, h = 0.002;
+  io::PolyData surface = prism(section, length, 0.02);
+  ASSERT_NEAR(signed_volume(surface), length * (0.03 * 0.16 + 0.5 * 0.03 * 0.04), 1e-12);
+  // the design's planes: n . x <= offset
+  std::vector<std::array<double, 4>> planes = {{-1, 0, 0, 0}, {1, 0, 0, length}};
+  for (std::size_t e = 0; e < section.size(); ++e)
+    {
+      const auto &a = section[e], &b = section[(e + 1) % section.size()];
+      const double ny = b[1] - a[1], nz = -(b[0] - a[0]), norm = std::hypot(ny, nz);
+      planes.push_back({0, ny / norm, nz / norm, (ny * a[0] + nz * a[1]) / norm});
+    }
+  for (int update = 1; update <= 3; ++update)
+    {
+      const auto e = eroded_surface(surface, std::vector<double>(surface.points.size() / 3, d), h, 0.02 / 3);
+      surface      = e.surface;
+      double worst = 0;
+      for (std::size_t k = 0; k < surface.points.size(); k += 3)
+        {
+          double depth = 1;
+          for (const auto &p : planes)
+            depth = std::min(depth, p[3] - (p[0] * surface.points[k] + p[1] * surface.points[k + 1] +
+                                            p[2] * surface.points[k + 2]));
+          worst = std::max(worst, std::abs(depth - update * d));
+        }
+      EXPECT_LT(worst, 0.05 * h) << "update " << update << ": a vertex off the inner parallel body";
+    }
+}
