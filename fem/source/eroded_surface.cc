@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <unordered_map>
 
 namespace abrade::fem
@@ -118,6 +119,43 @@ namespace abrade::fem
         return best;
       }
     };
+
+    /// The edges of @p s whose two triangles face against each other (a triangle turned over
+    /// onto its neighbour: their normals more than 120 degrees apart), and edges not shared by
+    /// exactly two triangles.
+    std::size_t turned_triangles(const io::PolyData &s)
+    {
+      std::vector<std::array<double, 3>> normal(s.triangles.size());
+      for (std::size_t t = 0; t < s.triangles.size(); ++t)
+        {
+          const double *a = &s.points[3 * s.triangles[t][0]], *b = &s.points[3 * s.triangles[t][1]],
+                       *c = &s.points[3 * s.triangles[t][2]];
+          const double  u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+          std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+          const double          norm = std::hypot(n[0], n[1], n[2]);
+          for (auto &x : n)
+            x = norm > 0 ? x / norm : 0;
+          normal[t] = n;
+        }
+      std::map<std::pair<long, long>, std::vector<std::size_t>> edges;
+      for (std::size_t t = 0; t < s.triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e)
+          {
+            const long a = s.triangles[t][e], b = s.triangles[t][(e + 1) % 3];
+            edges[{std::min(a, b), std::max(a, b)}].push_back(t);
+          }
+      std::size_t bad = 0;
+      for (const auto &[edge, ts] : edges)
+        if (ts.size() != 2)
+          ++bad;
+        else
+          {
+            const auto &m = normal[ts[0]], &n = normal[ts[1]];
+            if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -0.5)
+              ++bad;
+          }
+      return bad;
+    }
 
     io::PolyData from_vtk(vtkPolyData *p)
     {
@@ -257,9 +295,6 @@ namespace abrade::fem
       for (std::size_t k = 1; k < piece.size(); ++k)
         if (piece[k] * piece[0] > 0) // a solid piece (a void inside would have the other sign)
           result.volume_cut_off += std::abs(piece[k]);
-      if (std::getenv("ABRADE_LAPS"))
-        for (std::size_t k = 0; k < piece.size() && k < 8; ++k)
-          std::fprintf(stderr, "  piece %zu: %.4g cm^3\n", k, piece[k] * 1e6);
     }
 
     vtkNew<vtkPolyDataConnectivityFilter> largest;
@@ -269,6 +304,8 @@ namespace abrade::fem
     clean->SetInputConnection(largest->GetOutputPort());
     clean->Update();
     const vtkIdType cells = clean->GetOutput()->GetNumberOfCells();
+    if (cells == 0)
+      throw RunError("the wear leaves nothing of the part (every point is worn away)");
 
     // onto the exact zero set: marching cubes cuts every edge and corner of the front; each of
     // its vertices goes to the nearest point of the piece of the front nearest to it (the old
@@ -308,9 +345,12 @@ namespace abrade::fem
         const double  u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         area += 0.5 * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
       }
-    const double wanted = area / (0.433 * edge_length * edge_length);
-    io::PolyData out    = kept;
-    if (wanted < 0.9 * cells && !std::getenv("ABRADE_NO_DECIMATE"))
+    // Quadric decimation does not check what its collapses do to the neighbours: a triangle
+    // can turn over onto its neighbour (Gmsh then finds overlapping facets). A decimation with a
+    // turned triangle is done again with twice the triangles, up to four times; then the
+    // surface stays as marching cubes made it.
+    io::PolyData out = kept;
+    for (double wanted = area / (0.433 * edge_length * edge_length); wanted < 0.9 * cells; wanted *= 2)
       {
         vtkNew<vtkQuadricDecimation> decimate;
         decimate->SetInputConnection(clean->GetOutputPort());
@@ -320,7 +360,12 @@ namespace abrade::fem
         triangles->SetInputConnection(decimate->GetOutputPort());
         triangles->Update();
         project(triangles->GetOutput()->GetPoints());
-        out = from_vtk(triangles->GetOutput());
+        io::PolyData decimated = from_vtk(triangles->GetOutput());
+        if (turned_triangles(decimated) == 0)
+          {
+            out = std::move(decimated);
+            break;
+          }
       }
     double volume = enclosed_volume(out);
     if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles

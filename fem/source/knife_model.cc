@@ -7,8 +7,6 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -116,7 +114,7 @@ namespace abrade::fem
     std::vector<Tensor<1, 3>> moves(offsets.size());
     for (std::size_t v = 0; v < offsets.size(); ++v)
       moves[v] = clamped[v] ? Tensor<1, 3>() : offsets[v];
-    if (const std::size_t folds = folding_triangles(current_surface, moves) + (std::getenv("ABRADE_ERODE") ? 1 : 0); folds > 0)
+    if (const std::size_t folds = folding_triangles(current_surface, moves); folds > 0)
       {
         rebuild_eroded(before, std::to_string(folds) + " triangle(s) of the moved surface would fold", r);
         return r;
@@ -191,11 +189,8 @@ namespace abrade::fem
 
   void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r)
   {
-    auto t0 = std::chrono::steady_clock::now();
-    auto lap = [&](const char *what) { auto t1 = std::chrono::steady_clock::now(); if (std::getenv("ABRADE_LAPS")) std::fprintf(stderr, "  %s %.2f s\n", what, std::chrono::duration<double>(t1 - t0).count()); t0 = t1; };
     const ErodedSurface eroded =
       eroded_surface(before.surface.as_polydata(), before.depth, erosion_spacing(), settings.mesh_size / 3);
-    lap("eroded");
     auto fresh = std::make_unique<Triangulation<3>>();
     try
       {
@@ -210,7 +205,6 @@ namespace abrade::fem
       {
         throw RunError(std::string("the worn knife could not be meshed: ") + e.what());
       }
-    lap("meshed");
     r.quality = mesh_quality(*fresh);
     if (r.quality.n_inverted > 0)
       throw RunError("the remeshed knife has inverted cells");
@@ -240,7 +234,6 @@ namespace abrade::fem
       }
     since_remesh.assign(current_surface.vertices.size(), 0.0);
     r.volume = volume();
-    lap("transferred");
   }
 
   std::vector<double> KnifeModel::wear_depth() const

@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <unistd.h>
@@ -404,9 +405,10 @@ namespace abrade::fem
     /// worn surface whose remeshing failed).
     /// Removes the triangles of zero area (three points on or within 1e-8 of the part's size of
     /// a line: an STL exporter's slivers) from the merged STL: Gmsh's surface mesher throws inside a parallel region on one, and
-    /// the process aborts. Returns how many were removed.
-    std::size_t remove_zero_area_triangles()
+    /// the process aborts; and repeated facets. Returns how many of each were removed.
+    std::pair<std::size_t, std::size_t> remove_zero_area_triangles()
     {
+      std::size_t duplicates = 0;
       gmsh::vectorpair surfaces;
       gmsh::model::getEntities(surfaces, 2);
       double box[6];
@@ -420,6 +422,7 @@ namespace abrade::fem
       };
       std::vector<Surface> kept;
       std::size_t          removed = 0;
+      std::set<std::array<std::size_t, 3>> seen;
       for (const auto &[dim, tag] : surfaces)
         {
           Surface                  s{tag, {}, {}, {}, {}};
@@ -447,7 +450,13 @@ namespace abrade::fem
                                                 std::pow(p[c][1] - p[(c + 1) % 3][1], 2) +
                                                 std::pow(p[c][2] - p[(c + 1) % 3][2], 2));
               const double twice_area2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-              if (longest2 == 0 || twice_area2 <= 1e-16 * size2 * longest2)
+              // a facet given twice (the same three corners, either orientation) sends METIS,
+              // called from Gmsh's surface classification, into an endless loop
+              std::array<std::size_t, 3> corner_set = {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]};
+              std::sort(corner_set.begin(), corner_set.end());
+              if (!seen.insert(corner_set).second)
+                ++duplicates;
+              else if (longest2 == 0 || twice_area2 <= 1e-16 * size2 * longest2)
                 ++removed;
               else
                 {
@@ -457,8 +466,8 @@ namespace abrade::fem
             }
           kept.push_back(std::move(s));
         }
-      if (removed == 0)
-        return 0;
+      if (removed + duplicates == 0)
+        return {0, 0};
       // the mesh again without them (nodes where they were, on the entities they were on)
       gmsh::model::mesh::clear();
       for (const auto &s : kept)
@@ -466,7 +475,7 @@ namespace abrade::fem
           gmsh::model::mesh::addNodes(2, s.tag, s.nodes, s.xyz);
           gmsh::model::mesh::addElementsByType(s.tag, 2, s.triangles, s.corners);
         }
-      return removed;
+      return {removed, duplicates};
     }
 
     void load_stl(const std::string &path, double h, const SolidFileSettings &settings, SolidFileReport *report,
@@ -484,13 +493,16 @@ namespace abrade::fem
         if (xyz.empty())
           throw InputError(path, "holds no triangles");
       }
-      if (const std::size_t removed = remove_zero_area_triangles(); removed > 0 && report)
+      const auto [removed, duplicates] = remove_zero_area_triangles();
+      if (removed > 0 && report)
         report->notes.push_back(std::to_string(removed) + " triangle(s) of zero area removed from the STL");
+      if (duplicates > 0 && report)
+        report->notes.push_back(std::to_string(duplicates) + " repeated facet(s) removed from the STL");
       check_extent(path, model_box(), settings.scale, settings, false);
       check_volume(path, enclosed_volume_of_triangles() * std::pow(settings.scale, 3), h, settings);
       if (!keep_triangles)
         {
-          gmsh::model::mesh::classifySurfaces((std::getenv("ABRADE_ANGLE") ? std::atof(std::getenv("ABRADE_ANGLE")) : 15) * M_PI / 180, true, true, M_PI);
+          gmsh::model::mesh::classifySurfaces(15 * M_PI / 180, true, true, M_PI);
           gmsh::model::mesh::createGeometry();
         }
       gmsh::vectorpair surfaces;

@@ -280,12 +280,6 @@ namespace abrade::fem
     std::filesystem::create_directories(dir);
     const std::string stl = dir + "/remesh-surface.stl";
     io::write_stl(stl, surface);
-    if (std::getenv("ABRADE_LAPS"))
-      {
-        static int n = 0;
-        std::filesystem::copy_file(stl, dir + "/remesh-surface-" + std::to_string(++n) + ".stl",
-                                   std::filesystem::copy_options::overwrite_existing);
-      }
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
     // the two ways, in the order asked: Gmsh remeshes the surface (its triangles then need not
