@@ -148,11 +148,14 @@ namespace abrade::fem
         ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the run, whatever ends it
         if (::getppid() != parent)
           ::_exit(127);
+        ::setpgid(0, 0); // a group of its own, which a time-out ends whole
         ::dup2(log, 1);
         ::dup2(log, 2);
         const int null = ::open("/dev/null", O_RDONLY);
         if (null >= 0)
           ::dup2(null, 0);
+        for (int fd = 3; fd < 1024; ++fd) // nothing of the run's (its output pipes) stays open
+          ::close(fd);
         ::execve(argv[0], argv.data(), envp.data());
         ::_exit(127);
       }
@@ -169,6 +172,7 @@ namespace abrade::fem
           throw RunError(std::string("lost the mesher process: ") + std::strerror(errno));
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > time_limit)
           {
+            ::kill(-pid, SIGKILL);
             ::kill(pid, SIGKILL);
             ::waitpid(pid, &status, 0);
             throw InputError(job.input, "Gmsh did not finish meshing it within " + io::format_number(time_limit) +
