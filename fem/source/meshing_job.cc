@@ -2,6 +2,7 @@
 // read what the child left) and the child's (parse the job, mesh, write the notes or the error).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/termination.h>
 #include <abrade/fem/meshing_job.h>
 
 #include <chrono>
@@ -82,8 +83,9 @@ namespace abrade::fem
     }
   } // namespace
 
-  std::vector<std::string> run_meshing_job(const MeshingJob &job, double time_limit)
+  std::vector<std::string> run_meshing_job(const MeshingJob &job)
   {
+    double time_limit = job.time_limit;
     const std::string mesher = mesher_executable();
     if (mesher.empty())
       {
@@ -91,11 +93,10 @@ namespace abrade::fem
         notes.push_back("meshed in this process (abrade-mesher not found: set ABRADE_MESHER)");
         return notes;
       }
+    if (const char *e = std::getenv("ABRADE_MESHER_TIME_LIMIT"); e && std::atof(e) > 0)
+      time_limit = std::atof(e);
     if (time_limit <= 0)
-      {
-        const char *e = std::getenv("ABRADE_MESHER_TIME_LIMIT");
-        time_limit    = e && std::atof(e) > 0 ? std::atof(e) : 1800;
-      }
+      time_limit = 1800;
     const std::string notes_file = job.output + ".notes", error_file = job.output + ".error",
                       log_file = job.output + ".log";
     for (const auto &f : {job.output, notes_file, error_file})
@@ -136,6 +137,9 @@ namespace abrade::fem
     if (log < 0)
       throw RunError("cannot write " + log_file);
 
+    // while it waits, SIGTERM and Ctrl-C end the run (and with it the child) at once, also
+    // where OpenCASCADE's checks of a CAD file, just before, set handlers of their own
+    io::install_termination_handlers();
     const pid_t parent = ::getpid();
     const pid_t pid    = ::fork();
     if (pid < 0)

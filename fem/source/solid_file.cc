@@ -41,6 +41,8 @@ namespace abrade::fem
   {
     /// A warning among the notes a meshing job returns.
     const std::string warning_prefix = "warning: ";
+    /// The number of solids in the file, among the notes.
+    const std::string solids_prefix = "solids in the file: ";
 
     void read_msh_file(const std::string &path, Triangulation<3> &tria)
     {
@@ -454,10 +456,10 @@ namespace abrade::fem
               // called from Gmsh's surface classification, into an endless loop
               std::array<std::size_t, 3> corner_set = {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]};
               std::sort(corner_set.begin(), corner_set.end());
-              if (!seen.insert(corner_set).second)
-                ++duplicates;
-              else if (longest2 == 0 || twice_area2 <= 1e-16 * size2 * longest2)
+              if (longest2 == 0 || twice_area2 <= 1e-16 * size2 * longest2)
                 ++removed;
+              else if (!seen.insert(corner_set).second)
+                ++duplicates;
               else
                 {
                   s.triangles.push_back(triangles[t]);
@@ -598,10 +600,12 @@ namespace abrade::fem
         // the file's own length unit: h in it (STL), or the model scaled to metres first (CAD)
         // Gmsh in its own process (meshing_job.h): a crash or a hang there is an InputError here
         auto mesh = [&](bool again, Triangulation<3> &into) {
-          MeshingJob job{path, msh, h, again, false, settings};
+          MeshingJob job{path, msh, h, again, false, settings, settings.mesher_time_limit};
           for (const auto &note : run_meshing_job(job))
             if (note.rfind(warning_prefix, 0) == 0)
               report.warnings.push_back(note.substr(warning_prefix.size()));
+            else if (note.rfind(solids_prefix, 0) == 0)
+              report.n_solids = unsigned(std::stoul(note.substr(solids_prefix.size())));
             else
               report.notes.push_back(note);
           read_msh_file(msh, into);
@@ -689,14 +693,15 @@ namespace abrade::fem
     });
     for (const auto &w : report.warnings)
       report.notes.push_back(warning_prefix + w);
+    report.notes.push_back(solids_prefix + std::to_string(report.n_solids));
     return report.notes;
   }
 
-  void read_closed_triangles(const std::string &stl, double h, Triangulation<3> &tria)
+  void read_closed_triangles(const std::string &stl, double h, Triangulation<3> &tria, double time_limit)
   {
     const std::string msh = stl + ".volume.msh";
     SolidFileSettings as_is;
-    run_meshing_job({stl, msh, h, false, true, as_is});
+    run_meshing_job({stl, msh, h, false, true, as_is, time_limit});
     read_msh_file(msh, tria);
     std::filesystem::remove(msh);
   }

@@ -282,11 +282,14 @@ namespace abrade::fem
     io::write_stl(stl, surface);
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
+    // a worn surface meshes in seconds; Gmsh's surface classification can loop forever on a
+    // tangled one (METIS): two minutes, then the other way
+    as_is.mesher_time_limit = 120;
     // the two ways, in the order asked: Gmsh remeshes the surface (its triangles then need not
     // be good ones, but its reparametrisation can cut sharp edges between its new vertices), or
     // it fills the volume inside the surface's own triangles (exact, and as good as they are)
     auto remeshed = [&] { read_solid(stl, h, new_tria, as_is); };
-    auto filled   = [&] { read_closed_triangles(stl, h, new_tria); };
+    auto filled   = [&] { read_closed_triangles(stl, h, new_tria, as_is.mesher_time_limit); };
     std::string kept;
     new_tria.clear();
     try

@@ -34,12 +34,14 @@ namespace abrade::fem
     /// Fill the STL's own triangles as they are (no surface remeshing).
     bool keep_triangles = false;
     SolidFileSettings settings; ///< scale, size and cell limits, the solid of a CAD file
+    /// [s] How long the mesher may take; 0: ABRADE_MESHER_TIME_LIMIT, or 1800 s.
+    double time_limit = 0;
   };
 
   /// Runs @p job in the mesher process and returns the notes of reading the part (the solid
   /// taken, slivers removed, ...). Throws InputError naming job.input when Gmsh cannot mesh it,
-  /// crashes or runs past @p time_limit seconds (0: ABRADE_MESHER_TIME_LIMIT, or 1800 s).
-  std::vector<std::string> run_meshing_job(const MeshingJob &job, double time_limit = 0);
+  /// crashes or runs past job.time_limit.
+  std::vector<std::string> run_meshing_job(const MeshingJob &job);
 
   /// The job in this process (what the mesher executable does; solid_file.cc).
   std::vector<std::string> run_meshing_job_here(const MeshingJob &job);

@@ -49,6 +49,9 @@ namespace abrade::fem
     dealii::Tensor<1, 3> rotation_axis{{0, 0, 1}};
     double               rotation_angle = 0;
     dealii::Tensor<1, 3> offset;
+    /// [s] How long Gmsh may mesh the part (it runs in a child process: fem/meshing_job.h); 0:
+    /// ABRADE_MESHER_TIME_LIMIT, or 1800 s.
+    double mesher_time_limit = 0;
   };
 
   /// What reading a solid file found out, for the log and summary.json.
@@ -70,7 +73,8 @@ namespace abrade::fem
   /// Tetrahedra that fill the closed triangle surface of @p stl as it is (its triangles are not
   /// remeshed; the interior with tetrahedra of at most @p mesh_size). Boundary ids: Gmsh's
   /// surface number. Throws InputError when Gmsh cannot fill it.
-  void read_closed_triangles(const std::string &stl, double mesh_size, dealii::Triangulation<3> &tria);
+  void read_closed_triangles(const std::string &stl, double mesh_size, dealii::Triangulation<3> &tria,
+                             double time_limit = 0);
 
   /// The number of tetrahedra of size @p mesh_size that fill @p volume, about: a regular
   /// tetrahedron of edge h has the volume h^3 / (6 sqrt 2), and Gmsh's are a little smaller.
