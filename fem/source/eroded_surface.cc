@@ -16,6 +16,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
 #include <vtkQuadricDecimation.h>
+#include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
@@ -120,40 +121,55 @@ namespace abrade::fem
       }
     };
 
-    /// The edges of @p s whose two triangles face against each other (a triangle turned over
-    /// onto its neighbour: their normals more than 120 degrees apart), and edges not shared by
-    /// exactly two triangles.
-    std::size_t turned_triangles(const io::PolyData &s)
+    /// The triangles of @p s that face against the surface they approximate, @p reference (their
+    /// normal opposed to the one of the reference triangle closest to their centre: turned over
+    /// by a collapse), and the edges of @p s not shared by exactly two triangles.
+    std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr)
     {
-      std::vector<std::array<double, 3>> normal(s.triangles.size());
-      for (std::size_t t = 0; t < s.triangles.size(); ++t)
+      vtkNew<vtkStaticCellLocator> locator;
+      locator->SetDataSet(reference);
+      locator->BuildLocator();
+      auto normal = [](const double *a, const double *b, const double *c) {
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        return std::array<double, 3>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      };
+      std::size_t       bad = 0;
+      vtkNew<vtkIdList> ids;
+      for (std::size_t k = 0; k < s.triangles.size(); ++k)
         {
-          const double *a = &s.points[3 * s.triangles[t][0]], *b = &s.points[3 * s.triangles[t][1]],
-                       *c = &s.points[3 * s.triangles[t][2]];
-          const double  u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-          std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-          const double          norm = std::hypot(n[0], n[1], n[2]);
-          for (auto &x : n)
-            x = norm > 0 ? x / norm : 0;
-          normal[t] = n;
+          const auto   &t = s.triangles[k];
+          const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
+          double        centre[3], closest[3], d2 = 0;
+          for (int q = 0; q < 3; ++q)
+            centre[q] = (a[q] + b[q] + c[q]) / 3;
+          vtkIdType cell = -1;
+          int       sub  = 0;
+          locator->FindClosestPoint(centre, closest, cell, sub, d2);
+          if (cell < 0)
+            continue;
+          reference->GetCellPoints(cell, ids);
+          if (ids->GetNumberOfIds() != 3)
+            continue;
+          double p[3][3];
+          for (int q = 0; q < 3; ++q)
+            reference->GetPoint(ids->GetId(q), p[q]);
+          const auto m = normal(a, b, c), n = normal(p[0], p[1], p[2]);
+          if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < 0)
+            {
+              ++bad;
+              if (turned)
+                turned->push_back(k);
+            }
         }
-      std::map<std::pair<long, long>, std::vector<std::size_t>> edges;
-      for (std::size_t t = 0; t < s.triangles.size(); ++t)
+      std::map<std::pair<long, long>, int> edges;
+      for (const auto &t : s.triangles)
         for (int e = 0; e < 3; ++e)
           {
-            const long a = s.triangles[t][e], b = s.triangles[t][(e + 1) % 3];
-            edges[{std::min(a, b), std::max(a, b)}].push_back(t);
+            const long a = t[e], b = t[(e + 1) % 3];
+            ++edges[{std::min(a, b), std::max(a, b)}];
           }
-      std::size_t bad = 0;
-      for (const auto &[edge, ts] : edges)
-        if (ts.size() != 2)
-          ++bad;
-        else
-          {
-            const auto &m = normal[ts[0]], &n = normal[ts[1]];
-            if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -0.5)
-              ++bad;
-          }
+      for (const auto &[edge, n] : edges)
+        bad += n != 2;
       return bad;
     }
 
@@ -347,8 +363,9 @@ namespace abrade::fem
       }
     // Quadric decimation does not check what its collapses do to the neighbours: a triangle
     // can turn over onto its neighbour (Gmsh then finds overlapping facets). A decimation with a
-    // turned triangle is done again with twice the triangles, up to four times; then the
-    // surface stays as marching cubes made it.
+    // turned triangle is done again with twice the triangles, while that is fewer than
+    // marching cubes made; then the
+    // surface stays as marching cubes made it (its vertices projected).
     io::PolyData out = kept;
     for (double wanted = area / (0.433 * edge_length * edge_length); wanted < 0.9 * cells; wanted *= 2)
       {
@@ -359,9 +376,17 @@ namespace abrade::fem
         vtkNew<vtkTriangleFilter> triangles;
         triangles->SetInputConnection(decimate->GetOutputPort());
         triangles->Update();
+        const io::PolyData placed = from_vtk(triangles->GetOutput()); // where the quadrics put them
         project(triangles->GetOutput()->GetPoints());
-        io::PolyData decimated = from_vtk(triangles->GetOutput());
-        if (turned_triangles(decimated) == 0)
+        io::PolyData             decimated = from_vtk(triangles->GetOutput());
+        std::vector<std::size_t> turned;
+        // the projection can turn a small triangle beside a sharp edge: its corners stay
+        // where the quadrics put them
+        if (turned_triangles(decimated, clean->GetOutput(), &turned) > 0)
+          for (const std::size_t t : turned)
+            for (const long v : decimated.triangles[t])
+              std::copy_n(&placed.points[3 * v], 3, &decimated.points[3 * v]);
+        if (turned_triangles(decimated, clean->GetOutput()) == 0)
           {
             out = std::move(decimated);
             break;

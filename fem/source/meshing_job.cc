@@ -37,7 +37,11 @@ namespace abrade::fem
     {
       namespace fs = std::filesystem;
       if (const char *e = std::getenv("ABRADE_MESHER"); e && *e)
-        return fs::exists(e) ? e : "";
+        {
+          if (!fs::exists(e))
+            throw InputError("ABRADE_MESHER", std::string("no mesher executable at '") + e + "'");
+          return e;
+        }
       std::error_code ec;
       const fs::path  self = fs::read_symlink("/proc/self/exe", ec);
       if (!ec && fs::exists(self.parent_path() / "abrade-mesher"))
@@ -85,7 +89,7 @@ namespace abrade::fem
 
   std::vector<std::string> run_meshing_job(const MeshingJob &job)
   {
-    double time_limit = job.time_limit;
+    double time_limit = job.time_limit; // the caller's, else the environment's, else 1800 s
     const std::string mesher = mesher_executable();
     if (mesher.empty())
       {
@@ -93,7 +97,7 @@ namespace abrade::fem
         notes.push_back("meshed in this process (abrade-mesher not found: set ABRADE_MESHER)");
         return notes;
       }
-    if (const char *e = std::getenv("ABRADE_MESHER_TIME_LIMIT"); e && std::atof(e) > 0)
+    if (const char *e = std::getenv("ABRADE_MESHER_TIME_LIMIT"); time_limit <= 0 && e && std::atof(e) > 0)
       time_limit = std::atof(e);
     if (time_limit <= 0)
       time_limit = 1800;
@@ -153,6 +157,8 @@ namespace abrade::fem
         if (::getppid() != parent)
           ::_exit(127);
         ::setpgid(0, 0); // a group of its own, which a time-out ends whole
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP}) // not the run's handlers (summary.json)
+          ::signal(signal, SIG_DFL);
         ::dup2(log, 1);
         ::dup2(log, 2);
         const int null = ::open("/dev/null", O_RDONLY);
@@ -164,6 +170,7 @@ namespace abrade::fem
         ::_exit(127);
       }
     ::close(log);
+    ::setpgid(pid, pid); // (also here: no race with the child's own call)
 
     int        status  = 0;
     const auto started = std::chrono::steady_clock::now();
@@ -178,7 +185,9 @@ namespace abrade::fem
           {
             ::kill(-pid, SIGKILL);
             ::kill(pid, SIGKILL);
-            ::waitpid(pid, &status, 0);
+            while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+              ;
+            std::filesystem::remove(job.output);
             throw InputError(job.input, "Gmsh did not finish meshing it within " + io::format_number(time_limit) +
                                           " s (stopped; ABRADE_MESHER_TIME_LIMIT sets the limit)");
           }
@@ -235,6 +244,12 @@ namespace abrade::fem
       {
         std::filesystem::remove(job.output);
         std::ofstream(job.output + ".error") << e.what();
+        return 2;
+      }
+    catch (const std::exception &e) // anything else is that mesh's failure too, said as such
+      {
+        std::filesystem::remove(job.output);
+        std::ofstream(job.output + ".error") << job.input << ": Gmsh could not mesh it: " << e.what();
         return 2;
       }
   }

@@ -177,6 +177,8 @@ namespace abrade::fem
 
   SurfaceTransfer::SurfaceTransfer(const SolidSurface &from, const SolidSurface &to)
   {
+    if (from.triangles.empty())
+      throw std::logic_error("SurfaceTransfer: the surface to carry fields from has no triangles");
     Impl              impl;
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -278,7 +280,8 @@ namespace abrade::fem
                                   const std::string &dir, const SolidSurface &ids_from, bool own_triangles_first)
   {
     std::filesystem::create_directories(dir);
-    const std::string stl = dir + "/remesh-surface.stl";
+    // a name of this process's own: under MPI every rank meshes its copy of the knife
+    const std::string stl = dir + "/remesh-surface-" + std::to_string(::getpid()) + ".stl";
     io::write_stl(stl, surface);
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself

@@ -698,7 +698,20 @@ namespace abrade::coupling::lifetime
                       " DEM warning(s) in this run's cycles (Simulation/On error = continue): the life rests on "
                       "cycles the DEM flagged; log.txt names each kind, trajectory.csv counts them per update");
     if (history.size() > 1) // nothing to plot before the first update
-      plot_lifetime(ctx.output.root(), s.planes, frame);
+      {
+        TrajectoryMarks marks;
+        marks.depth_limit     = s.max_depth;
+        marks.recession_limit = s.max_recession;
+        if (e.extrapolated && (e.criterion == depth_criterion || e.criterion == recession_criterion))
+          {
+            marks.extrapolated = true;
+            marks.last_tonnes  = history.back().tonnes;
+            marks.last_value   = history.back().values[e.criterion];
+            marks.life         = e.tonnes;
+            marks.limit        = e.criterion == depth_criterion ? s.max_depth : s.max_recession;
+          }
+        plot_lifetime(ctx.output.root(), s.planes, frame, marks);
+      }
     std::ostringstream line;
     if (e.criterion != EndOfLife::none && !e.reached && end.rfind("no wear", 0) == 0)
       {

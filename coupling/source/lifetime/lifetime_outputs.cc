@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
+#include <abrade/common/format_number.h>
 
 #include <algorithm>
 #include <cmath>
@@ -118,8 +119,20 @@ namespace abrade::coupling::lifetime
     return missing;
   }
 
-  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame)
+  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame,
+                     const TrajectoryMarks &marks)
   {
+    // the limits as horizontal lines, an extrapolation dashed to the predicted life
+    std::ostringstream extra;
+    if (marks.depth_limit > 0)
+      extra << ", " << 1000 * marks.depth_limit << " with lines dt 3 lw 2 lc rgb 'red' title 'end of life: depth "
+            << io::format_number(1000 * marks.depth_limit) << " mm'";
+    if (marks.recession_limit > 0)
+      extra << ", " << 1000 * marks.recession_limit
+            << " with lines dt 3 lw 2 lc rgb 'dark-orange' title 'end of life: recession "
+            << io::format_number(1000 * marks.recession_limit) << " mm'";
+    if (marks.extrapolated && marks.life > marks.last_tonnes)
+      extra << ", '-' using ($1/T):2 with lines dt 2 lw 2 lc rgb 'black' title 'extrapolated to the predicted life'";
     std::ofstream gp(dir + "/lifetime.gp");
     // tonnes in t, kt or Mt (whichever the largest needs), the key below the plot, off the data
     gp << "set terminal pngcairo size 900,650\nset grid\nset datafile separator ','\nset datafile columnheaders\n"
@@ -133,8 +146,11 @@ namespace abrade::coupling::lifetime
           "fs transparent solid 0.25 noborder title 'largest depth +- spread of the beds', "
           "'' using (column('tonnes')/T):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
           "'' using (column('tonnes')/T):(column('point_recession')*1000) with linespoints title 'recession of the followed point', "
-          "'' using (column('tonnes')/T):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'\n"
-          "unset xrange\nunset yrange\nunset y2range\n"
+          "'' using (column('tonnes')/T):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'"
+       << extra.str() << "\n";
+    if (marks.extrapolated && marks.life > marks.last_tonnes)
+      gp << marks.last_tonnes << " " << 1000 * marks.last_value << "\n" << marks.life << " " << 1000 * marks.limit << "\ne\n";
+    gp << "unset xrange\nunset yrange\nunset y2range\n"
           "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
     for (double f : planes)
       {

@@ -31,6 +31,18 @@ namespace abrade::coupling::lifetime
   /// Returns the profile files that are missing.
   std::vector<std::string> truncate_profiles(const std::vector<double> &planes, long update, const std::string &directory);
 
-  /// trajectory.png (wear depth, recession and worn volume vs tonnes) and knife/profile_F.png.
-  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame);
+  /// What trajectory.png marks besides the data: the end-of-life limits on the depth and the
+  /// recession [m] (0: none), and an extrapolated life, drawn dashed from the last update's
+  /// point (tonnes, value of the criterion's quantity [m]) to (life, limit).
+  struct TrajectoryMarks
+  {
+    double depth_limit = 0, recession_limit = 0;
+    bool   extrapolated = false;
+    double last_tonnes = 0, last_value = 0, life = 0, limit = 0;
+  };
+
+  /// trajectory.png (wear depth, recession and worn volume vs tonnes, the limits and an
+  /// extrapolation) and knife/profile_F.png.
+  void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame,
+                     const TrajectoryMarks &marks = {});
 } // namespace abrade::coupling::lifetime
