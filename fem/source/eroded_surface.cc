@@ -319,7 +319,7 @@ namespace abrade::fem
     vtkNew<vtkCleanPolyData> clean;
     clean->SetInputConnection(largest->GetOutputPort());
     clean->Update();
-    const vtkIdType cells = clean->GetOutput()->GetNumberOfCells();
+    vtkIdType cells = clean->GetOutput()->GetNumberOfCells();
     if (cells == 0)
       throw RunError("the wear leaves nothing of the part (every point is worn away)");
 
@@ -351,10 +351,28 @@ namespace abrade::fem
       points->Modified();
     };
     project(clean->GetOutput()->GetPoints());
+    // vertices projected onto one point (beside a sharp edge) are one vertex, and the triangles
+    // they squash are dropped: no zero-area or repeated facets for the decimation and Gmsh
+    vtkNew<vtkPolyData> projected;
+    projected->DeepCopy(clean->GetOutput());
+    vtkNew<vtkCleanPolyData> merged;
+    merged->SetInputData(projected);
+    merged->ToleranceIsAbsoluteOn();
+    merged->SetAbsoluteTolerance(1e-4 * h);
+    merged->ConvertLinesToPointsOff();
+    merged->ConvertPolysToLinesOff();
+    merged->ConvertStripsToPolysOff();
+    vtkNew<vtkTriangleFilter> only_triangles;
+    only_triangles->SetInputConnection(merged->GetOutputPort());
+    only_triangles->PassLinesOff();
+    only_triangles->PassVertsOff();
+    only_triangles->Update();
+    vtkPolyData *front = only_triangles->GetOutput();
+    cells              = front->GetNumberOfCells();
 
     // to about the target edge length (equilateral triangles of that edge over the area)
     double area = 0;
-    const io::PolyData kept = from_vtk(clean->GetOutput());
+    const io::PolyData kept = from_vtk(front);
     for (const auto &t : kept.triangles)
       {
         const double *a = &kept.points[3 * t[0]], *b = &kept.points[3 * t[1]], *c = &kept.points[3 * t[2]];
@@ -370,7 +388,7 @@ namespace abrade::fem
     for (double wanted = area / (0.433 * edge_length * edge_length); wanted < 0.9 * cells; wanted *= 2)
       {
         vtkNew<vtkQuadricDecimation> decimate;
-        decimate->SetInputConnection(clean->GetOutputPort());
+        decimate->SetInputData(front);
         decimate->SetTargetReduction(1.0 - wanted / double(cells));
         decimate->VolumePreservationOn();
         vtkNew<vtkTriangleFilter> triangles;
@@ -382,11 +400,11 @@ namespace abrade::fem
         std::vector<std::size_t> turned;
         // the projection can turn a small triangle beside a sharp edge: its corners stay
         // where the quadrics put them
-        if (turned_triangles(decimated, clean->GetOutput(), &turned) > 0)
+        if (turned_triangles(decimated, front, &turned) > 0)
           for (const std::size_t t : turned)
             for (const long v : decimated.triangles[t])
               std::copy_n(&placed.points[3 * v], 3, &decimated.points[3 * v]);
-        if (turned_triangles(decimated, clean->GetOutput()) == 0)
+        if (turned_triangles(decimated, front) == 0)
           {
             out = std::move(decimated);
             break;

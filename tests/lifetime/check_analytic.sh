@@ -4,10 +4,10 @@
 #            every update (to 1e-3: after a remesh the offset of Gmsh's approximation of the sharp
 #            edges is not exact to round-off); the predicted life is limit / rate within 1 %: to 6 mm with
 #            1.5 mm per update (crossed at the end of update 4), to 7 mm with 2.55 mm per update
-#            (crossed inside update 3), and to 12 mm (the knife cannot be remeshed past about
-#            9.4 mm of uniform wear, an open problem of the remeshing: the run stops there and
-#            extrapolates with its last update's rate; the rejected step leaves no trace in the
-#            summary); the flat faces recede by rate x
+#            (crossed inside update 3), and to 12 mm, reached (past about 9 mm the moved
+#            vertices fold and the worn surface is built as a set: from then on the depth to 4 %
+#            and the life to 4 %, the followed points unchecked; the run stopped at 9.4 mm with a
+#            failed remesh before); the flat faces recede by rate x
 #            tonnes (1e-6), the chisel tip by rate x tonnes / sin(half edge angle) (1e-4).
 #            With three seeds scattered by 10 %: the life and the seed factors equal those of the
 #            three seeds run alone (1e-3), the interval is their t-interval (t(0.975, 2) =
@@ -51,7 +51,7 @@ seeds uniform_seeds_resumed 4,5,6 --resume
 "$abrade" run "$dir/analytic_one_face.prm" --output "$out/one_face_through" --quiet \
   --set "Lifetime/Cycles per update=40000" --set "Lifetime/Smoothing radius=0" > /dev/null
 python3 - "$out" <<'PY'
-import csv, json, math, sys, os
+import csv, json, math, os, re, sys
 out = sys.argv[1]
 def rows(case):
     return list(csv.DictReader(open(os.path.join(out, case, "trajectory.csv"))))
@@ -63,11 +63,22 @@ def check(case, column, expected, measured, tol):
     err = abs(measured - expected) / expected
     worst[(case, column)] = max(worst.get((case, column), 0), err)
     assert err < tol, f"{case} {column}: {measured} vs analytic {expected} (relative error {err:.2e} > {tol})"
+def rebuilt_from(case):
+    """The first update whose worn surface was built anew as a set (fem/eroded_surface.h)."""
+    found = re.findall(r"^update (\d+): the worn surface built anew", open(os.path.join(out, case, "log.txt")).read(), re.M)
+    return min(map(int, found)) if found else None
 for case, life in (("uniform", 12000), ("uniform_crossed", 6000), ("uniform_coarse", 7000)):
     u = rows(case)
     assert len(u) >= 3 and any(r["remeshed"] == "1" for r in u), f"{case}: too few updates or no remesh"
+    first = rebuilt_from(case)
     for r in u:
         t = float(r["tonnes"])
+        if first and int(r["update"]) >= first:
+            # built as a set: the depth to the construction's accuracy (corners cut by a few
+            # hundredths of its grid, carried on; docs/physics.md), the followed points by
+            # closest points (not tested here)
+            check(case, "wear depth (built as a set)", 1e-6 * t, float(r["max_depth"]), 0.04)
+            continue
         check(case, "wear depth", 1e-6 * t, float(r["max_depth"]), 1e-3)
         check(case, "tip", 1e-6 * t / sin_half, float(r["point_recession"]), 1e-4)
         check(case, "face +y", 1e-6 * t, float(r["point_recession_2"]), 1e-6)
@@ -75,16 +86,11 @@ for case, life in (("uniform", 12000), ("uniform_crossed", 6000), ("uniform_coar
         assert 0.93 < float(r["swept_over_archard"]) <= 1.0, r["swept_over_archard"]
         assert float(r["max_vertex_displacement"]) > 2.5 * float(r["max_depth"]), "the tip moves further than the depth"
     s = summary(case)
-    check(case, "life", life, s["predicted_tonnes_to_end_of_life"], 0.01)
+    check(case, "life", life, s["predicted_tonnes_to_end_of_life"], 0.04 if first else 0.01)
     assert s["end_of_life_criterion"] == "maximum depth", s
-    if case != "uniform":
-        assert not s["extrapolated"] and s["end"] == "maximum depth reached", s["end"]
-    else:
-        # the run ends on a step that could not be remeshed: it leaves no trace (the knife is
-        # back at the last update's checkpoint, the summary is the last row's)
-        assert "could not be remeshed" in s["end"], s["end"]
-        for key in ("max_depth", "worn_volume"):
-            check(case, f"rejected step: {key}", float(u[-1][key]), s[key], 1e-9)
+    # reached, not extrapolated (the uniform case stopped at 9.4 mm, where Gmsh could not remesh
+    # the surface, until the worn surface was built as a set)
+    assert not s["extrapolated"] and s["end"] == "maximum depth reached", s["end"]
 e = rows("edge")
 assert len(e) >= 3 and any(r["remeshed"] == "1" for r in e), "edge: too few updates or no remesh"
 for r in e:
