@@ -314,25 +314,17 @@ namespace abrade::fem
           }
       }
     // boundary ids from the old boundary triangle closest to each new face's centre
+    SolidSurface centres;
     for (const auto &cell : new_tria.active_cell_iterators())
       for (const unsigned f : cell->face_indices())
         if (cell->face(f)->at_boundary())
-          {
-            const Point<3> c = cell->face(f)->center();
-            std::size_t    best = 0;
-            double         best_d2 = std::numeric_limits<double>::infinity();
-            for (std::size_t t = 0; t < ids_from.triangles.size(); ++t)
-              {
-                const auto  &tri = ids_from.triangles[t];
-                const auto   cp  = geometry::closest_point_on_triangle(c.begin_raw(), ids_from.vertices[tri[0]].begin_raw(),
-                                                                       ids_from.vertices[tri[1]].begin_raw(),
-                                                                       ids_from.vertices[tri[2]].begin_raw());
-                const double d2 = c.distance_square(Point<3>(cp.p[0], cp.p[1], cp.p[2]));
-                if (d2 < best_d2)
-                  best_d2 = d2, best = t;
-              }
-            cell->face(f)->set_boundary_id(ids_from.boundary_id[best]);
-          }
+          centres.vertices.push_back(cell->face(f)->center());
+    const SurfaceTransfer closest(ids_from, centres);
+    std::size_t           k = 0;
+    for (const auto &cell : new_tria.active_cell_iterators())
+      for (const unsigned f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          cell->face(f)->set_boundary_id(ids_from.boundary_id[closest.triangles_of()[k++]]);
     return kept;
   }
 

@@ -70,6 +70,8 @@ namespace abrade::fem
                                    unsigned component = 0) const;
     /// The closest point on from of each vertex of to.
     const std::vector<dealii::Point<3>> &feet() const { return foot; }
+    /// The triangle of from that holds the closest point of each vertex of to.
+    const std::vector<unsigned> &triangles_of() const { return triangle; }
 
   private:
     struct Impl;
