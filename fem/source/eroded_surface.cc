@@ -32,16 +32,20 @@ namespace abrade::fem
 {
   namespace
   {
-    /// Signed volume enclosed by the triangles (divergence theorem): > 0 when outward.
+    /// The signed volume of the tetrahedron (origin, a, b, c): a triangle's share of the volume
+    /// its surface encloses (divergence theorem).
+    double volume_share(const double *a, const double *b, const double *c)
+    {
+      return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+              a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    }
+
+    /// Signed volume enclosed by the triangles: > 0 when outward.
     double enclosed_volume(const io::PolyData &s)
     {
       double v = 0;
       for (const auto &t : s.triangles)
-        {
-          const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
-          v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
-        }
+        v += volume_share(&s.points[3 * t[0]], &s.points[3 * t[1]], &s.points[3 * t[2]]);
       return v;
     }
 
@@ -304,8 +308,7 @@ namespace abrade::fem
             continue;
           double a[3], b[3], q[3];
           all->GetPoint(ids->GetId(0), a), all->GetPoint(ids->GetId(1), b), all->GetPoint(ids->GetId(2), q);
-          piece[static_cast<std::size_t>(id->GetTuple1(ids->GetId(0)))] +=
-            (a[0] * (b[1] * q[2] - b[2] * q[1]) - a[1] * (b[0] * q[2] - b[2] * q[0]) + a[2] * (b[0] * q[1] - b[1] * q[0])) / 6;
+          piece[static_cast<std::size_t>(id->GetTuple1(ids->GetId(0)))] += volume_share(a, b, q);
         }
       std::sort(piece.begin(), piece.end(), [](double x, double y) { return std::abs(x) > std::abs(y); });
       for (std::size_t k = 1; k < piece.size(); ++k)
