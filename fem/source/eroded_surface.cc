@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/surface_distance.h>
 #include <abrade/fem/eroded_surface.h>
+#include <abrade/fem/surface_check.h>
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -126,8 +127,11 @@ namespace abrade::fem
     };
 
     /// The triangles of @p s that face against the surface they approximate, @p reference (their
-    /// normal opposed to the one of the reference triangle closest to their centre: turned over
-    /// by a collapse), and the edges of @p s not shared by exactly two triangles.
+    /// normal more than 120 degrees from the one of the reference triangle closest to their
+    /// centre: turned over by a collapse; a triangle across a sharp edge of the front is up to
+    /// half the edge's turn from either face, and its closest reference triangle may lie on
+    /// the other face), the edges of @p s not shared by exactly two triangles, and the pairs
+    /// of triangles that cross (surface_check.h).
     std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr)
     {
       vtkNew<vtkStaticCellLocator> locator;
@@ -157,8 +161,9 @@ namespace abrade::fem
           double p[3][3];
           for (int q = 0; q < 3; ++q)
             reference->GetPoint(ids->GetId(q), p[q]);
-          const auto m = normal(a, b, c), n = normal(p[0], p[1], p[2]);
-          if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < 0)
+          const auto   m = normal(a, b, c), n = normal(p[0], p[1], p[2]);
+          const double mn = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+          if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -0.5 * mn)
             {
               ++bad;
               if (turned)
@@ -174,6 +179,13 @@ namespace abrade::fem
           }
       for (const auto &[edge, n] : edges)
         bad += n != 2;
+      if (bad == 0)
+        for (const auto &pair : intersecting_triangles(s))
+          {
+            ++bad;
+            if (turned)
+              turned->insert(turned->end(), pair.begin(), pair.end());
+          }
       return bad;
     }
 

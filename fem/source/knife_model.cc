@@ -1,6 +1,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/hash.h>
 #include <abrade/fem/knife_model.h>
+#include <abrade/fem/surface_check.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/mesh_motion.h>
 
@@ -119,6 +120,17 @@ namespace abrade::fem
         rebuild_eroded(before, std::to_string(folds) + " triangle(s) of the moved surface would fold", r);
         return r;
       }
+    {
+      io::PolyData moved = current_surface.as_polydata();
+      for (std::size_t v = 0; v < moves.size(); ++v)
+        for (unsigned c = 0; c < 3; ++c)
+          moved.points[3 * v + c] += moves[v][c];
+      if (const auto crossing = intersecting_triangles(moved, 1); !crossing.empty())
+        {
+          rebuild_eroded(before, "the moved surface would cross itself", r);
+          return r;
+        }
+    }
 
     std::map<unsigned, Tensor<1, 3>> prescribed;
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)

@@ -1,7 +1,9 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_surface.h>
+#include <abrade/fem/surface_check.h>
 
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -293,6 +295,16 @@ namespace abrade::fem
     std::filesystem::create_directories(dir);
     // a name of this process's own: under MPI every rank meshes its copy of the knife
     const std::string stl = dir + "/remesh-surface-" + std::to_string(::getpid()) + ".stl";
+    // a surface that crosses itself has no inside: said with its place, before Gmsh spends
+    // minutes finding it ("Two facets intersect", "overlapping facets") without one
+    if (const auto crossing = intersecting_triangles(surface, 1); !crossing.empty())
+      {
+        const auto  &t = surface.triangles[crossing[0][0]];
+        const double *p = &surface.points[3 * t[0]];
+        throw InputError(stl, "the surface crosses itself: triangles " + std::to_string(crossing[0][0] + 1) + " and " +
+                                std::to_string(crossing[0][1] + 1) + " intersect near (" + io::format_number(p[0]) +
+                                ", " + io::format_number(p[1]) + ", " + io::format_number(p[2]) + ") m");
+      }
     io::write_stl(stl, surface);
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
