@@ -143,27 +143,35 @@ namespace abrade::fem
       };
       std::size_t       bad = 0;
       vtkNew<vtkIdList> ids;
+      // whether the normal m is opposed to the one of the reference triangle closest to x
+      auto opposed = [&](const double *x, const std::array<double, 3> &m) {
+        double    closest[3], d2 = 0;
+        vtkIdType cell = -1;
+        int       sub  = 0;
+        locator->FindClosestPoint(x, closest, cell, sub, d2);
+        if (cell < 0)
+          return false;
+        reference->GetCellPoints(cell, ids);
+        if (ids->GetNumberOfIds() != 3)
+          return false;
+        double p[3][3];
+        for (int q = 0; q < 3; ++q)
+          reference->GetPoint(ids->GetId(q), p[q]);
+        const auto   n  = normal(p[0], p[1], p[2]);
+        const double mn = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+        return m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -0.5 * mn;
+      };
       for (std::size_t k = 0; k < s.triangles.size(); ++k)
         {
           const auto   &t = s.triangles[k];
           const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
-          double        centre[3], closest[3], d2 = 0;
+          double        centre[3];
           for (int q = 0; q < 3; ++q)
             centre[q] = (a[q] + b[q] + c[q]) / 3;
-          vtkIdType cell = -1;
-          int       sub  = 0;
-          locator->FindClosestPoint(centre, closest, cell, sub, d2);
-          if (cell < 0)
-            continue;
-          reference->GetCellPoints(cell, ids);
-          if (ids->GetNumberOfIds() != 3)
-            continue;
-          double p[3][3];
-          for (int q = 0; q < 3; ++q)
-            reference->GetPoint(ids->GetId(q), p[q]);
-          const auto   m = normal(a, b, c), n = normal(p[0], p[1], p[2]);
-          const double mn = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
-          if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -0.5 * mn)
+          // against the reference closest to its centre and to each corner: beside a sharp
+          // edge one of them can lie on the other face, a turned triangle is turned against all
+          const auto m = normal(a, b, c);
+          if (opposed(centre, m) && opposed(a, m) && opposed(b, m) && opposed(c, m))
             {
               ++bad;
               if (turned)
@@ -205,6 +213,31 @@ namespace abrade::fem
       return out;
     }
 
+
+    /// The corners of the triangles @p bad names (it returns how many are bad and lists them)
+    /// go back from where @p s has them (the projection's points) towards @p from, half the
+    /// way each time, all the way after eight times: whether none is left bad.
+    template <typename Bad>
+    bool step_back(io::PolyData &s, const io::PolyData &from, Bad bad)
+    {
+      const std::vector<double> to = s.points;
+      std::vector<double>       share(s.points.size() / 3, 1.0);
+      for (int round = 0; round <= 8; ++round)
+        {
+          std::vector<std::size_t> listed;
+          if (bad(s, listed) == 0)
+            return true;
+          if (listed.empty() || round == 8)
+            return false; // not the projection's doing, or not undone by it
+          const double keep = round == 7 ? 0.0 : std::ldexp(1.0, -(round + 1)); // of the step
+          for (const std::size_t t : listed)
+            for (const long v : s.triangles[t])
+              share[v] = std::min(share[v], keep);
+          for (std::size_t k = 0; k < s.points.size(); ++k)
+            s.points[k] = from.points[k] + share[k / 3] * (to[k] - from.points[k]);
+        }
+      return false;
+    }
   } // namespace
 
   ErodedSurface eroded_surface(const io::PolyData &surface, const std::vector<double> &depth, double h,
@@ -350,7 +383,7 @@ namespace abrade::fem
         {
           double x[3];
           points->GetPoint(k, x);
-          for (int iteration = 0; iteration < 4; ++iteration)
+          for (int iteration = 0; iteration < 64; ++iteration)
             {
               bool         rim = false;
               double       on_surface[3], on_ball[3];
@@ -412,14 +445,12 @@ namespace abrade::fem
         const io::PolyData placed = from_vtk(triangles->GetOutput()); // where the quadrics put them
         project(triangles->GetOutput()->GetPoints());
         io::PolyData             decimated = from_vtk(triangles->GetOutput());
-        std::vector<std::size_t> turned;
-        // the projection can turn a small triangle beside a sharp edge: its corners stay
-        // where the quadrics put them
-        if (turned_triangles(decimated, front, &turned) > 0)
-          for (const std::size_t t : turned)
-            for (const long v : decimated.triangles[t])
-              std::copy_n(&placed.points[3 * v], 3, &decimated.points[3 * v]);
-        if (turned_triangles(decimated, front) == 0)
+        // the projection can turn or cross a small triangle beside a sharp edge: its corners
+        // go back towards where the quadrics put them
+        const bool clean_surface = step_back(decimated, placed, [&](const io::PolyData &x, std::vector<std::size_t> &listed) {
+          return turned_triangles(x, front, &listed);
+        });
+        if (clean_surface)
           {
             out = std::move(decimated);
             break;

@@ -53,6 +53,12 @@ namespace abrade::fem
     for (const auto &t : design.triangles)
       triangles.push_back({long(t[0]), long(t[1]), long(t[2])});
     design_distance = std::make_shared<const geometry::SurfaceDistance>(points, triangles);
+    double longest = 0;
+    for (const auto &t : design.triangles)
+      for (unsigned e = 0; e < 3; ++e)
+        longest = std::max(longest, design.vertices[t[e]].distance(design.vertices[t[(e + 1) % 3]]));
+    carved = subdivided(design, std::clamp(static_cast<unsigned>(std::ceil(longest / (settings.mesh_size / 3))), 1u, 6u));
+    carved_depth.assign(carved.vertices.size(), 0.0);
     accumulated.assign(current_surface.vertices.size(), 0.0);
     displacement.assign(3 * current_surface.vertices.size(), 0.0);
     since_remesh.assign(current_surface.vertices.size(), 0.0);
@@ -109,7 +115,19 @@ namespace abrade::fem
     for (std::size_t v = 0; v < clamped.size(); ++v)
       if (clamped[v])
         wearing[v] = 0;
-    const Before before{current_surface, wearing, accumulated, displacement};
+    const Before before{current_surface, accumulated, displacement};
+    {
+      // the design's points go on receding with the worn surface's point closest to them
+      const auto grow = SurfaceTransfer(current_surface, carved)(wearing);
+      std::vector<bool> held(carved.vertices.size(), false);
+      for (std::size_t t = 0; t < carved.triangles.size(); ++t)
+        if (carved.boundary_id[t] != KnifeGeometry::wearable_boundary)
+          for (unsigned v : carved.triangles[t])
+            held[v] = true;
+      for (std::size_t v = 0; v < carved_depth.size(); ++v)
+        if (!held[v])
+          carved_depth[v] += std::max(0.0, grow[v]);
+    }
 
     // moved vertices cannot follow where the surface folds: the worn surface is built anew
     std::vector<Tensor<1, 3>> moves(offsets.size());
@@ -202,7 +220,7 @@ namespace abrade::fem
   void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r)
   {
     const ErodedSurface eroded =
-      eroded_surface(before.surface.as_polydata(), before.depth, erosion_spacing(), settings.mesh_size / 3);
+      eroded_surface(carved.as_polydata(), carved_depth, erosion_spacing(), settings.mesh_size / 3);
     auto fresh = std::make_unique<Triangulation<3>>();
     try
       {
@@ -297,7 +315,7 @@ namespace abrade::fem
   {
     // A knife checkpoint: this line, the blocks (each its length, then its values), and the
     // FNV-1a hash of all before it (16 hex digits): a changed byte is named, never read as a mesh.
-    const std::string checkpoint_magic = "abrade knife checkpoint 2\n";
+    const std::string checkpoint_magic = "abrade knife checkpoint 3\n";
 
     template <typename T>
     void put(std::ostream &out, const std::vector<T> &v)
@@ -342,7 +360,7 @@ namespace abrade::fem
     std::ostringstream        blocks(std::ios::binary);
     blocks << checkpoint_magic;
     put(blocks, vertices), put(blocks, cells), put(blocks, faces), put(blocks, accumulated), put(blocks, displacement),
-      put(blocks, since_remesh), put(blocks, state);
+      put(blocks, since_remesh), put(blocks, state), put(blocks, carved_depth);
     const std::string content = blocks.str();
     std::ofstream     out(path, std::ios::binary);
     out << content << io::fnv1a_hex(content);
@@ -373,10 +391,11 @@ namespace abrade::fem
     const auto f = get<unsigned>(in, size, path);
     auto       acc = get<double>(in, size, path), disp = get<double>(in, size, path), since = get<double>(in, size, path);
     const auto state = get<double>(in, size, path);
+    auto       carved_d = get<double>(in, size, path);
     // what a checksum cannot catch (a file written by other code): the blocks' shapes and ranges
     const std::size_t n_points = v.size() / 3;
     bool              sane     = v.size() % 3 == 0 && c.size() % 4 == 0 && f.size() % 4 == 0 && state.size() >= 2 &&
-                    disp.size() == 3 * acc.size() && since.size() == acc.size();
+                    disp.size() == 3 * acc.size() && since.size() == acc.size() && carved_d.size() == carved.vertices.size();
     for (std::size_t k = 0; sane && k < v.size(); ++k)
       sane = std::isfinite(v[k]);
     for (std::size_t k = 0; sane && k < c.size(); ++k)
@@ -422,7 +441,7 @@ namespace abrade::fem
     current_surface   = extract_surface(*tria);
     if (acc.size() != current_surface.vertices.size())
       throw InputError(path, "knife checkpoint does not match its mesh");
-    accumulated.swap(acc), displacement.swap(disp), since_remesh.swap(since);
+    accumulated.swap(acc), displacement.swap(disp), since_remesh.swap(since), carved_depth.swap(carved_d);
     quality_threshold = state.at(0);
     remeshes          = static_cast<unsigned>(state.at(1));
   }

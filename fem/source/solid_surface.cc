@@ -164,6 +164,71 @@ namespace abrade::fem
     return thickness;
   }
 
+  SolidSurface subdivided(const SolidSurface &s, unsigned m)
+  {
+    if (m <= 1)
+      {
+        SolidSurface same;
+        same.vertices = s.vertices, same.triangles = s.triangles, same.boundary_id = s.boundary_id;
+        return same;
+      }
+    SolidSurface out;
+    out.vertices = s.vertices; // the corners first, with their indices
+    // the points inside an edge, m - 1 of them from its lower-numbered end, made once
+    std::map<std::pair<unsigned, unsigned>, unsigned> edge_first;
+    auto on_edge = [&](unsigned a, unsigned b, unsigned k) { // k-th of m from a towards b
+      if (k == 0)
+        return a;
+      if (k == m)
+        return b;
+      const bool forward = a < b;
+      const auto key     = forward ? std::make_pair(a, b) : std::make_pair(b, a);
+      auto       it      = edge_first.find(key);
+      if (it == edge_first.end())
+        {
+          it = edge_first.emplace(key, static_cast<unsigned>(out.vertices.size())).first;
+          for (unsigned j = 1; j < m; ++j)
+            out.vertices.push_back(s.vertices[key.first] + (double(j) / m) * (s.vertices[key.second] - s.vertices[key.first]));
+        }
+      return it->second + (forward ? k : m - k) - 1;
+    };
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+      {
+        const auto &[a, b, c] = s.triangles[t];
+        // lattice point (i, j): a + i/m (b - a) + j/m (c - a), i + j <= m
+        std::vector<unsigned> index((m + 1) * (m + 1), 0);
+        auto                  at = [&](unsigned i, unsigned j) -> unsigned & { return index[i * (m + 1) + j]; };
+        for (unsigned i = 0; i <= m; ++i)
+          for (unsigned j = 0; i + j <= m; ++j)
+            {
+              if (j == 0)
+                at(i, j) = on_edge(a, b, i);
+              else if (i == 0)
+                at(i, j) = on_edge(a, c, j);
+              else if (i + j == m)
+                at(i, j) = on_edge(b, c, j);
+              else
+                {
+                  at(i, j) = static_cast<unsigned>(out.vertices.size());
+                  out.vertices.push_back(s.vertices[a] + (double(i) / m) * (s.vertices[b] - s.vertices[a]) +
+                                         (double(j) / m) * (s.vertices[c] - s.vertices[a]));
+                }
+            }
+        for (unsigned i = 0; i < m; ++i)
+          for (unsigned j = 0; i + j < m; ++j)
+            {
+              out.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+              out.boundary_id.push_back(s.boundary_id[t]);
+              if (i + j + 1 < m)
+                {
+                  out.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+                  out.boundary_id.push_back(s.boundary_id[t]);
+                }
+            }
+      }
+    return out;
+  }
+
   double typical_thickness(const SolidSurface &s, types::boundary_id id)
   {
     const auto          thickness = local_thickness(s);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace abrade::fem
 {
@@ -49,11 +50,49 @@ namespace abrade::fem
     }
   } // namespace
 
-  std::vector<std::array<std::size_t, 2>> intersecting_triangles(const io::PolyData &s, std::size_t at_most)
+  std::vector<std::array<std::size_t, 2>> intersecting_triangles(const io::PolyData &surface, std::size_t at_most,
+                                                                 double merge_distance)
   {
     std::vector<std::array<std::size_t, 2>> out;
-    if (s.triangles.empty() || at_most == 0)
+    if (surface.triangles.empty() || at_most == 0)
       return out;
+    // points closer than merge_distance: one (the first of them), by a hash of cells of that size
+    io::PolyData merged;
+    const io::PolyData &s = merge_distance > 0 ? merged : surface;
+    if (merge_distance > 0)
+      {
+        const std::size_t n = surface.points.size() / 3;
+        std::vector<long> same(n);
+        std::unordered_map<long long, std::vector<long>> cells;
+        auto key = [&](const double *x, int di, int dj, int dk) {
+          return (static_cast<long long>(std::floor(x[0] / merge_distance) + di) * 73856093LL) ^
+                 (static_cast<long long>(std::floor(x[1] / merge_distance) + dj) * 19349663LL) ^
+                 (static_cast<long long>(std::floor(x[2] / merge_distance) + dk) * 83492791LL);
+        };
+        for (std::size_t v = 0; v < n; ++v)
+          {
+            const double *x = &surface.points[3 * v];
+            same[v]         = long(v);
+            for (int di = -1; di <= 1 && same[v] == long(v); ++di)
+              for (int dj = -1; dj <= 1 && same[v] == long(v); ++dj)
+                for (int dk = -1; dk <= 1 && same[v] == long(v); ++dk)
+                  if (const auto it = cells.find(key(x, di, dj, dk)); it != cells.end())
+                    for (const long w : it->second)
+                      if (std::hypot(x[0] - surface.points[3 * w], x[1] - surface.points[3 * w + 1],
+                                     x[2] - surface.points[3 * w + 2]) <= merge_distance)
+                        {
+                          same[v] = w;
+                          break;
+                        }
+            if (same[v] == long(v))
+              cells[key(x, 0, 0, 0)].push_back(long(v));
+          }
+        merged.points = surface.points;
+        // a squashed triangle keeps its place in the list (the pairs name the surface's
+        // triangles), skipped below
+        for (const auto &t : surface.triangles)
+          merged.triangles.push_back({same[t[0]], same[t[1]], same[t[2]]});
+      }
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     for (std::size_t k = 0; k < s.points.size() / 3; ++k)
@@ -76,6 +115,8 @@ namespace abrade::fem
     for (std::size_t i = 0; i < s.triangles.size(); ++i)
       {
         const auto &a = s.triangles[i];
+        if (a[0] == a[1] || a[1] == a[2] || a[2] == a[0])
+          continue; // squashed by the merge
         double      box[6];
         for (int c = 0; c < 3; ++c)
           {
@@ -92,6 +133,8 @@ namespace abrade::fem
             if (j <= i)
               continue;
             const auto &b = s.triangles[j];
+            if (b[0] == b[1] || b[1] == b[2] || b[2] == b[0])
+              continue;
             // the vertices they share, and each one's others
             std::vector<long> shared, only_a, only_b;
             for (const long v : a)

@@ -37,6 +37,11 @@ namespace abrade::fem
     io::PolyData as_polydata() const;
   };
 
+  /// Each triangle of @p surface cut into m x m (m = @p pieces) on its barycentric lattice, the
+  /// points on shared edges shared (a closed surface stays closed), boundary ids kept; the
+  /// geometry is the same, the vertices m times denser along each edge.
+  SolidSurface subdivided(const SolidSurface &surface, unsigned pieces);
+
   /// Local wall thickness at every surface vertex: the distance along the inward normal to the
   /// surface on the other side (ray cast; infinity where the ray leaves through no triangle).
   std::vector<double> local_thickness(const SolidSurface &surface);
