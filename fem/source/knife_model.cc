@@ -102,15 +102,21 @@ namespace abrade::fem
         return r; // end of life: reported, not carried into the mesh
       }
 
-    // inward, as the offset surface moves (SolidSurface::inward_offsets), on the wearable surface
-    // only (clamped vertices stay)
-    const auto                             offsets = current_surface.inward_offsets(depth);
-    std::vector<bool>                      clamped(current_surface.vertices.size(), false);
+    // inward, as the offset surface moves (SolidSurface::inward_offsets), the wearable faces
+    // only: a vertex of clamped faces only stays, one on a clamped face's rim moves within it
+    std::vector<bool> held(current_surface.triangles.size(), false);
+    std::vector<int>  wearing_triangles(current_surface.vertices.size(), 0);
     for (std::size_t t = 0; t < current_surface.triangles.size(); ++t)
-      if (current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary)
+      {
+        held[t] = current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary;
         for (unsigned v : current_surface.triangles[t])
-          clamped[v] = true;
-    // what the update starts from, for the construction that cannot fold (rebuild_eroded)
+          wearing_triangles[v] += held[t] ? 0 : 1;
+      }
+    const auto        offsets = current_surface.inward_offsets(depth, &held);
+    std::vector<bool> clamped(current_surface.vertices.size(), false);
+    for (std::size_t v = 0; v < clamped.size(); ++v)
+      clamped[v] = wearing_triangles[v] == 0;
+    // what the update wears, for the construction that cannot fold (rebuild_eroded)
     std::vector<double> wearing = depth;
     for (std::size_t v = 0; v < clamped.size(); ++v)
       if (clamped[v])
@@ -119,13 +125,15 @@ namespace abrade::fem
     {
       // the design's points go on receding with the worn surface's point closest to them
       const auto grow = SurfaceTransfer(current_surface, carved)(wearing);
-      std::vector<bool> held(carved.vertices.size(), false);
+      // (a point of clamped faces only does not wear; one on a clamped face's rim wears with
+      // the faces beside it, its ball cutting the clamped face's rim as they recede)
+      std::vector<bool> wears(carved.vertices.size(), false);
       for (std::size_t t = 0; t < carved.triangles.size(); ++t)
-        if (carved.boundary_id[t] != KnifeGeometry::wearable_boundary)
+        if (carved.boundary_id[t] == KnifeGeometry::wearable_boundary)
           for (unsigned v : carved.triangles[t])
-            held[v] = true;
+            wears[v] = true;
       for (std::size_t v = 0; v < carved_depth.size(); ++v)
-        if (!held[v])
+        if (wears[v])
           carved_depth[v] += std::max(0.0, grow[v]);
     }
 

@@ -62,21 +62,24 @@ namespace abrade::fem
     return n;
   }
 
-  std::vector<Tensor<1, 3>> SolidSurface::inward_offsets(const std::vector<double> &depth) const
+  std::vector<Tensor<1, 3>> SolidSurface::inward_offsets(const std::vector<double> &depth,
+                                                         const std::vector<bool>   *held) const
   {
     // per vertex: M = sum A n n^T, b = -sum A n depth (n outward); u minimises sum A (n.u + depth)^2
     std::vector<SymmetricTensor<2, 3>> m(vertices.size());
     std::vector<Tensor<1, 3>>          b(vertices.size());
-    for (const auto &t : triangles)
+    for (std::size_t k = 0; k < triangles.size(); ++k)
       {
+        const auto  &t    = triangles[k];
         Tensor<1, 3> n    = cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]);
         const double area = 0.5 * n.norm();
         if (area <= 0)
           continue;
         n /= 2 * area;
-        const SymmetricTensor<2, 3> nn = symmetrize(outer_product(n, n));
+        const SymmetricTensor<2, 3> nn    = symmetrize(outer_product(n, n));
+        const double                wears = held && (*held)[k] ? 0.0 : 1.0;
         for (unsigned v : t)
-          m[v] += area * nn, b[v] -= area * depth[v] * n;
+          m[v] += area * nn, b[v] -= area * wears * depth[v] * n;
       }
     std::vector<Tensor<1, 3>> u(vertices.size());
     for (std::size_t v = 0; v < vertices.size(); ++v)
