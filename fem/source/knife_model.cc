@@ -123,8 +123,26 @@ namespace abrade::fem
         wearing[v] = 0;
     const Before before{current_surface, accumulated, displacement};
     {
-      // the design's points go on receding with the worn surface's point closest to them
-      const auto grow = SurfaceTransfer(current_surface, carved)(wearing);
+      // the design's points go on receding with the worn surface's point closest to them: a
+      // point p whose closest point q lies on a face recedes by the depth there (its distance
+      // to the face grows by it); one in the shadow of a sharp edge or corner (q on the edge)
+      // by how far the edge moves towards it, u(q) . (q - p) / |q - p| (the edge's offset u
+      // moves each face's plane by its depth: between the depth and depth / sin(half angle)
+      // at a chisel's tip), else the tip's balls lag behind the tip
+      const SurfaceTransfer to_design(current_surface, carved);
+      std::vector<double>   grow = to_design(wearing);
+      std::vector<double>   u(3 * offsets.size());
+      for (std::size_t v = 0; v < offsets.size(); ++v)
+        for (unsigned c = 0; c < 3; ++c)
+          u[3 * v + c] = clamped[v] ? 0.0 : offsets[v][c];
+      const std::array<std::vector<double>, 3> u_at = {to_design(u, 3, 0), to_design(u, 3, 1), to_design(u, 3, 2)};
+      for (std::size_t v = 0; v < grow.size(); ++v)
+        {
+          const Tensor<1, 3> towards = to_design.feet()[v] - carved.vertices[v];
+          const double       gap     = towards.norm();
+          if (gap > 1e-9 * settings.mesh_size)
+            grow[v] = std::max(grow[v], (u_at[0][v] * towards[0] + u_at[1][v] * towards[1] + u_at[2][v] * towards[2]) / gap);
+        }
       // (a point of clamped faces only does not wear; one on a clamped face's rim wears with
       // the faces beside it, its ball cutting the clamped face's rim as they recede)
       std::vector<bool> wears(carved.vertices.size(), false);

@@ -400,8 +400,14 @@ namespace abrade::fem
           }
         catch (const InputError &second)
           {
-            throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface: ") + first.what() +
-                                    "; " + second.what());
+            // kept for a look (each failure its own file): what Gmsh could not mesh
+            static int        failures = 0;
+            const std::string kept_as  = dir + "/unmeshed-surface-" + std::to_string(::getpid()) + "-" +
+                                        std::to_string(++failures) + ".stl";
+            std::error_code   ignored;
+            std::filesystem::copy_file(stl, kept_as, std::filesystem::copy_options::overwrite_existing, ignored);
+            throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface (kept as ") + kept_as +
+                                    "): " + first.what() + "; " + second.what());
           }
       }
     // boundary ids from the old boundary triangle closest to each new face's centre
