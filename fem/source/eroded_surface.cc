@@ -214,6 +214,91 @@ namespace abrade::fem
     }
 
 
+    /// The sharp edges of a surface (its two triangles' normals more than 20 degrees apart), in
+    /// a hash grid of cells of a given size, for the closest point on them.
+    struct SharpEdges
+    {
+      std::vector<std::array<double, 6>>                   segment;
+      double                                               cell = 1;
+      std::unordered_map<long long, std::vector<unsigned>> cells;
+
+      SharpEdges(const io::PolyData &s, double cell_size) : cell(cell_size)
+      {
+        // points at one place are one (a surface may repeat them face by face), to a
+        // millionth of the cell
+        std::map<std::array<long long, 3>, long> first;
+        std::vector<long>                         same(s.points.size() / 3);
+        for (std::size_t v = 0; v < same.size(); ++v)
+          {
+            const std::array<long long, 3> at = {std::llround(s.points[3 * v] / (1e-6 * cell)),
+                                                 std::llround(s.points[3 * v + 1] / (1e-6 * cell)),
+                                                 std::llround(s.points[3 * v + 2] / (1e-6 * cell))};
+            same[v] = first.emplace(at, long(v)).first->second;
+          }
+        std::map<std::pair<long, long>, std::vector<std::size_t>> edges;
+        for (std::size_t k = 0; k < s.triangles.size(); ++k)
+          for (int e = 0; e < 3; ++e)
+            {
+              const long a = same[s.triangles[k][e]], b = same[s.triangles[k][(e + 1) % 3]];
+              edges[{std::min(a, b), std::max(a, b)}].push_back(k);
+            }
+        auto unit_normal = [&](std::size_t k) {
+          const double *a = &s.points[3 * s.triangles[k][0]], *b = &s.points[3 * s.triangles[k][1]],
+                       *c = &s.points[3 * s.triangles[k][2]];
+          const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+          std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+          const double          l = std::hypot(n[0], n[1], n[2]);
+          for (double &x : n)
+            x = l > 0 ? x / l : 0;
+          return n;
+        };
+        for (const auto &[edge, pair] : edges)
+          {
+            if (pair.size() != 2)
+              continue;
+            const auto n1 = unit_normal(pair[0]), n2 = unit_normal(pair[1]);
+            if (n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2] > std::cos(20 * M_PI / 180))
+              continue;
+            const double *a = &s.points[3 * edge.first], *b = &s.points[3 * edge.second];
+            const auto    id = static_cast<unsigned>(segment.size());
+            segment.push_back({a[0], a[1], a[2], b[0], b[1], b[2]});
+            long lo[3], hi[3];
+            for (int c = 0; c < 3; ++c)
+              lo[c] = long(std::floor(std::min(a[c], b[c]) / cell)), hi[c] = long(std::floor(std::max(a[c], b[c]) / cell));
+            for (long i = lo[0]; i <= hi[0]; ++i)
+              for (long j = lo[1]; j <= hi[1]; ++j)
+                for (long k = lo[2]; k <= hi[2]; ++k)
+                  cells[key(i, j, k)].push_back(id);
+          }
+      }
+
+      static long long key(long i, long j, long k) { return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL); }
+
+      /// The closest point on a sharp edge within one cell of @p x, and its distance (infinity
+      /// where there is none).
+      double closest(const double *x, double *on_edge) const
+      {
+        double best = std::numeric_limits<double>::infinity();
+        const long i0 = long(std::floor(x[0] / cell)), j0 = long(std::floor(x[1] / cell)), k0 = long(std::floor(x[2] / cell));
+        for (long i = i0 - 1; i <= i0 + 1; ++i)
+          for (long j = j0 - 1; j <= j0 + 1; ++j)
+            for (long k = k0 - 1; k <= k0 + 1; ++k)
+              if (const auto it = cells.find(key(i, j, k)); it != cells.end())
+                for (const unsigned q : it->second)
+                  {
+                    const auto  &g = segment[q];
+                    const double d[3] = {g[3] - g[0], g[4] - g[1], g[5] - g[2]};
+                    const double dd   = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                    const double t    = dd > 0 ? std::clamp(((x[0] - g[0]) * d[0] + (x[1] - g[1]) * d[1] + (x[2] - g[2]) * d[2]) / dd, 0.0, 1.0) : 0.0;
+                    const double p[3] = {g[0] + t * d[0], g[1] + t * d[1], g[2] + t * d[2]};
+                    const double r    = std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]);
+                    if (r < best)
+                      best = r, std::copy_n(p, 3, on_edge);
+                  }
+        return best;
+      }
+    };
+
     /// The corners of the triangles @p bad names (it returns how many are bad and lists them)
     /// go back from where @p s has them (the projection's points) towards @p from, half the
     /// way each time, all the way after eight times: whether none is left bad.
@@ -399,6 +484,36 @@ namespace abrade::fem
       points->Modified();
     };
     project(clean->GetOutput()->GetPoints());
+    // marching cubes chamfers the unworn surface's sharp edges (a strip of needles a quarter
+    // to a spacing wide, which the decimation widens): vertices within a spacing of one, on
+    // the unworn surface and in no ball there, go onto it, which makes the strip's triangles
+    // flat (undone where that makes triangles cross); before the decimation and after it. The
+    // lifetime loop's knife flips the flat triangles away (surface_tidy.h).
+    const SharpEdges sharp(surface, h);
+    auto snap_to_sharp_edges = [&](io::PolyData &s, double within) {
+      const io::PolyData unsnapped = s;
+      for (std::size_t v = 0; v < s.points.size() / 3; ++v)
+        {
+          double *x = &s.points[3 * v], on_edge[3], on_ball[3], on_surface[3];
+          bool    rim = false;
+          if (std::abs(distance.signed_distance(x, rim, on_surface)) > 1e-6 * h ||
+              sharp.closest(x, on_edge) > within || balls.nearest_sphere_point(on_edge, on_ball) < 1e-6 * h)
+            continue;
+          std::copy_n(on_edge, 3, x);
+        }
+      for (const auto &pair : intersecting_triangles(s, std::numeric_limits<std::size_t>::max(), 1e-4 * h))
+        for (const std::size_t t : pair)
+          for (const long v : s.triangles[t])
+            std::copy_n(&unsnapped.points[3 * v], 3, &s.points[3 * v]);
+    };
+    {
+      io::PolyData mc = from_vtk(clean->GetOutput());
+      snap_to_sharp_edges(mc, h); // its vertices nearest an edge lie up to a spacing from it
+      vtkPoints *points = clean->GetOutput()->GetPoints();
+      for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
+        points->SetPoint(v, &mc.points[3 * v]);
+      points->Modified();
+    }
     // vertices projected onto one point (beside a sharp edge) are one vertex, and the triangles
     // they squash are dropped: no zero-area or repeated facets for the decimation and Gmsh
     vtkNew<vtkPolyData> projected;
@@ -456,6 +571,7 @@ namespace abrade::fem
             break;
           }
       }
+    snap_to_sharp_edges(out, h / 2);
     double volume = enclosed_volume(out);
     if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles
       {

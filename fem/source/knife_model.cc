@@ -2,6 +2,7 @@
 #include <abrade/common/hash.h>
 #include <abrade/fem/knife_model.h>
 #include <abrade/fem/surface_check.h>
+#include <abrade/fem/surface_tidy.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/mesh_motion.h>
 
@@ -245,8 +246,11 @@ namespace abrade::fem
 
   void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r)
   {
-    const ErodedSurface eroded =
-      eroded_surface(carved.as_polydata(), carved_depth, erosion_spacing(), settings.mesh_size / 3);
+    ErodedSurface eroded = eroded_surface(carved.as_polydata(), carved_depth, erosion_spacing(), settings.mesh_size / 3);
+    // needles on its flat faces and flat triangles along the unworn edges, on which Gmsh's
+    // tetrahedral meshers stall, flipped away (moving the surface by a thousandth of the grid
+    // at most)
+    tidy_flat_regions(eroded.surface, 0.05, 1e-3 * erosion_spacing());
     auto fresh = std::make_unique<Triangulation<3>>();
     try
       {

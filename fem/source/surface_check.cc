@@ -10,6 +10,7 @@
 #include <vtkTriangle.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
 
@@ -111,12 +112,20 @@ namespace abrade::fem
     locator->BuildLocator();
 
     auto at = [&](long v) { return &s.points[3 * v]; };
+    // a triangle of no area (its corners on one line) has no inside to cross: skipped, as a
+    // squashed one is (an edge flip takes it away, surface_tidy.h)
+    auto flat = [&](const std::array<long, 3> &t) {
+      const Vec    u = sub(at(t[1]), at(t[0])), w = sub(at(t[2]), at(t[0]));
+      const Vec    e = {w[0] - u[0], w[1] - u[1], w[2] - u[2]};
+      const double longest = std::max({dot(u, u), dot(w, w), dot(e, e)});
+      return norm(cross(u, w)) <= 1e-12 * longest;
+    };
     vtkNew<vtkIdList> near;
     for (std::size_t i = 0; i < s.triangles.size(); ++i)
       {
         const auto &a = s.triangles[i];
-        if (a[0] == a[1] || a[1] == a[2] || a[2] == a[0])
-          continue; // squashed by the merge
+        if (a[0] == a[1] || a[1] == a[2] || a[2] == a[0] || flat(a))
+          continue; // squashed by the merge, or of no area
         double      box[6];
         for (int c = 0; c < 3; ++c)
           {
@@ -133,7 +142,7 @@ namespace abrade::fem
             if (j <= i)
               continue;
             const auto &b = s.triangles[j];
-            if (b[0] == b[1] || b[1] == b[2] || b[2] == b[0])
+            if (b[0] == b[1] || b[1] == b[2] || b[2] == b[0] || flat(b))
               continue;
             // the vertices they share, and each one's others
             std::vector<long> shared, only_a, only_b;

@@ -14,7 +14,7 @@ namespace abrade::fem
   /// Pairs of triangles of @p surface (indices into its triangles) that meet other than along
   /// the vertices and edge they share: crossing (beside a shared vertex too) or, across a shared
   /// edge, folded flat onto each other. A repeated triangle is a pair too. At most
-  /// @p at_most pairs are returned. Points closer than @p merge_distance count as one (the
+  /// @p at_most pairs are returned. Triangles of no area (corners on one line) are skipped. Points closer than @p merge_distance count as one (the
   /// triangles they squash are skipped): a surface about to be cleaned of them is checked as
   /// it will be. Candidates come from VTK's static cell locator (the
   /// triangles within each one's bounds), pairs without a shared vertex are tested by
