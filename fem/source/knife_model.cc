@@ -58,7 +58,7 @@ namespace abrade::fem
     for (const auto &t : design.triangles)
       for (unsigned e = 0; e < 3; ++e)
         longest = std::max(longest, design.vertices[t[e]].distance(design.vertices[t[(e + 1) % 3]]));
-    carved = subdivided(design, std::clamp(static_cast<unsigned>(std::ceil(longest / (settings.mesh_size / 3))), 1u, 6u));
+    carved = subdivided(design, std::clamp(static_cast<unsigned>(std::ceil(longest / erosion_spacing())), 1u, 12u));
     carved_depth.assign(carved.vertices.size(), 0.0);
     accumulated.assign(current_surface.vertices.size(), 0.0);
     displacement.assign(3 * current_surface.vertices.size(), 0.0);
