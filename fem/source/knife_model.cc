@@ -249,8 +249,13 @@ namespace abrade::fem
     ErodedSurface eroded = eroded_surface(carved.as_polydata(), carved_depth, erosion_spacing(), settings.mesh_size / 3);
     // needles on its flat faces and flat triangles along the unworn edges, on which Gmsh's
     // tetrahedral meshers stall, flipped away (moving the surface by a thousandth of the grid
-    // at most)
-    tidy_flat_regions(eroded.surface, 0.05, 1e-3 * erosion_spacing());
+    // at most); kept as it was where a flip would make it cross itself
+    {
+      io::PolyData tidied = eroded.surface;
+      tidy_flat_regions(tidied, 0.05, 1e-3 * erosion_spacing());
+      if (intersecting_triangles(tidied, 1).empty())
+        eroded.surface = std::move(tidied);
+    }
     auto fresh = std::make_unique<Triangulation<3>>();
     try
       {

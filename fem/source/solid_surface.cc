@@ -363,15 +363,17 @@ namespace abrade::fem
     std::filesystem::create_directories(dir);
     // a name of this process's own: under MPI every rank meshes its copy of the knife
     const std::string stl = dir + "/remesh-surface-" + std::to_string(::getpid()) + ".stl";
-    // a surface that crosses itself has no inside: said with its place, before Gmsh spends
-    // minutes finding it ("Two facets intersect", "overlapping facets") without one
+    // a surface that crosses itself has no inside: Gmsh's remeshing may still make one of it,
+    // and where neither way works the message says where it crosses (Gmsh's own "Two facets
+    // intersect" names no place)
+    std::string crossing_note;
     if (const auto crossing = intersecting_triangles(surface, 1); !crossing.empty())
       {
-        const auto  &t = surface.triangles[crossing[0][0]];
+        const auto   &t = surface.triangles[crossing[0][0]];
         const double *p = &surface.points[3 * t[0]];
-        throw InputError(stl, "the surface crosses itself: triangles " + std::to_string(crossing[0][0] + 1) + " and " +
-                                std::to_string(crossing[0][1] + 1) + " intersect near (" + io::format_number(p[0]) +
-                                ", " + io::format_number(p[1]) + ", " + io::format_number(p[2]) + ") m");
+        crossing_note   = "; the surface crosses itself: triangles " + std::to_string(crossing[0][0] + 1) + " and " +
+                        std::to_string(crossing[0][1] + 1) + " intersect near (" + io::format_number(p[0]) + ", " +
+                        io::format_number(p[1]) + ", " + io::format_number(p[2]) + ") m";
       }
     io::write_stl(stl, surface);
     SolidFileSettings as_is;
@@ -407,7 +409,7 @@ namespace abrade::fem
             std::error_code   ignored;
             std::filesystem::copy_file(stl, kept_as, std::filesystem::copy_options::overwrite_existing, ignored);
             throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface (kept as ") + kept_as +
-                                    "): " + first.what() + "; " + second.what());
+                                    "): " + first.what() + "; " + second.what() + crossing_note);
           }
       }
     // boundary ids from the old boundary triangle closest to each new face's centre
