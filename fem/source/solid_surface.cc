@@ -103,36 +103,61 @@ namespace abrade::fem
     return d;
   }
 
+  namespace
+  {
+    /// The surface as VTK polydata (double points), for VTK's locators.
+    vtkSmartPointer<vtkPolyData> as_vtk(const SolidSurface &s)
+    {
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToDouble();
+      for (const auto &p : s.vertices)
+        points->InsertNextPoint(p[0], p[1], p[2]);
+      vtkNew<vtkCellArray> cells;
+      for (const auto &t : s.triangles)
+        {
+          const vtkIdType ids[3] = {t[0], t[1], t[2]};
+          cells->InsertNextCell(3, ids);
+        }
+      auto polydata = vtkSmartPointer<vtkPolyData>::New();
+      polydata->SetPoints(points);
+      polydata->SetPolys(cells);
+      return polydata;
+    }
+
+    vtkSmartPointer<vtkStaticCellLocator> locator_of(vtkPolyData *polydata)
+    {
+      auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+      locator->SetDataSet(polydata);
+      locator->BuildLocator();
+      return locator;
+    }
+  } // namespace
+
   std::vector<double> local_thickness(const SolidSurface &s)
   {
-    const auto          normals = s.vertex_normals();
     std::vector<double> thickness(s.vertices.size(), std::numeric_limits<double>::infinity());
+    if (s.triangles.empty())
+      return thickness;
+    const auto polydata = as_vtk(s);
+    const auto locator  = locator_of(polydata);
+    const auto normals  = s.vertex_normals();
+    double     box[6];
+    polydata->GetBounds(box);
+    const double reach = 2 * std::hypot(box[1] - box[0], box[3] - box[2], box[5] - box[4]);
+    // The ray starts a hair inside: the vertex's own triangles all pass through the vertex, so a
+    // ray from just below it cannot meet them again (VTK's locator finds the first hit along it).
+    const double hair = 1e-9 * reach;
     for (std::size_t v = 0; v < s.vertices.size(); ++v)
       {
-        const Point<3>     o = s.vertices[v];
-        const Tensor<1, 3> d = -normals[v];
-        for (const auto &t : s.triangles)
-          {
-            if (t[0] == v || t[1] == v || t[2] == v)
-              continue; // the vertex's own triangles
-            // Moeller-Trumbore ray-triangle intersection
-            const Tensor<1, 3> e1 = s.vertices[t[1]] - s.vertices[t[0]], e2 = s.vertices[t[2]] - s.vertices[t[0]];
-            const Tensor<1, 3> p  = cross_product_3d(d, e2);
-            const double       det = e1 * p;
-            if (std::abs(det) < 1e-300)
-              continue;
-            const Tensor<1, 3> tv = o - s.vertices[t[0]];
-            const double       u  = (tv * p) / det;
-            if (u < 0 || u > 1)
-              continue;
-            const Tensor<1, 3> q = cross_product_3d(tv, e1);
-            const double       w = (d * q) / det;
-            if (w < 0 || u + w > 1)
-              continue;
-            const double dist = (e2 * q) / det;
-            if (dist > 1e-12)
-              thickness[v] = std::min(thickness[v], dist);
-          }
+        if (normals[v].norm() == 0)
+          continue;
+        const Tensor<1, 3> d    = -normals[v];
+        const Point<3>     from = s.vertices[v] + hair * d, to = s.vertices[v] + reach * d;
+        double             t = 0, x[3], pcoords[3];
+        int                sub  = 0;
+        vtkIdType          cell = -1;
+        if (locator->IntersectWithLine(from.begin_raw(), to.begin_raw(), 0.0, t, x, pcoords, sub, cell) && cell >= 0)
+          thickness[v] = hair + t * (reach - hair);
       }
     return thickness;
   }
@@ -179,23 +204,9 @@ namespace abrade::fem
   {
     if (from.triangles.empty())
       throw std::logic_error("SurfaceTransfer: the surface to carry fields from has no triangles");
-    Impl              impl;
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    for (const auto &p : from.vertices)
-      points->InsertNextPoint(p[0], p[1], p[2]);
-    vtkNew<vtkCellArray> cells;
-    for (const auto &t : from.triangles)
-      {
-        const vtkIdType ids[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, ids);
-      }
-    impl.polydata = vtkSmartPointer<vtkPolyData>::New();
-    impl.polydata->SetPoints(points);
-    impl.polydata->SetPolys(cells);
-    impl.locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-    impl.locator->SetDataSet(impl.polydata);
-    impl.locator->BuildLocator();
+    Impl impl;
+    impl.polydata = as_vtk(from);
+    impl.locator  = locator_of(impl.polydata);
     triangle.resize(to.vertices.size());
     weight.resize(to.vertices.size());
     foot.resize(to.vertices.size());

@@ -245,6 +245,47 @@ TEST(SolidSurface, LocalThicknessAndWornThrough)
     }
 }
 
+// A hollow cube (a 1 m box around a 0.4 m cavity): the ray from a point of the outer wall meets
+// the cavity's wall first, 0.3 m in, not the far outer wall 1 m away; the first hit is the
+// thickness.
+TEST(SolidSurface, LocalThicknessIsTheFirstWallTheRayMeets)
+{
+  SolidSurface s;
+  auto add_box = [&](double lo, double hi, bool outward) {
+    const unsigned first = static_cast<unsigned>(s.vertices.size());
+    for (unsigned c = 0; c < 8; ++c)
+      s.vertices.emplace_back(c & 1 ? hi : lo, c & 2 ? hi : lo, c & 4 ? hi : lo);
+    // outward (counter-clockwise seen from outside) faces of the unit cube's corners
+    const std::array<std::array<unsigned, 4>, 6> quads = {
+      {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}};
+    for (const auto &q : quads)
+      for (const auto &t : {std::array<unsigned, 3>{q[0], q[1], q[2]}, std::array<unsigned, 3>{q[0], q[2], q[3]}})
+        s.triangles.push_back(outward ? std::array<unsigned, 3>{first + t[0], first + t[1], first + t[2]}
+                                      : std::array<unsigned, 3>{first + t[0], first + t[2], first + t[1]});
+  };
+  add_box(0, 1, true);
+  add_box(0.3, 0.7, false);
+  s.boundary_id.assign(s.triangles.size(), 1);
+  // a vertex in the middle of the outer wall x = 0: split the face's triangles there
+  const unsigned mid = static_cast<unsigned>(s.vertices.size());
+  s.vertices.emplace_back(0, 0.5, 0.5);
+  std::vector<std::array<unsigned, 3>> kept;
+  for (const auto &t : s.triangles)
+    if (t[0] < 8 && s.vertices[t[0]][0] == 0 && s.vertices[t[1]][0] == 0 && s.vertices[t[2]][0] == 0)
+      for (unsigned e = 0; e < 3; ++e)
+        kept.push_back({t[e], t[(e + 1) % 3], mid});
+    else
+      kept.push_back(t);
+  s.triangles = kept;
+  s.boundary_id.assign(s.triangles.size(), 1);
+  EXPECT_NEAR(enclosed_volume(s), 1 - 0.4 * 0.4 * 0.4, 1e-12);
+  const auto thickness = local_thickness(s);
+  EXPECT_NEAR(thickness[mid], 0.3, 1e-9);
+  // and a cavity's corner looks into the solid along the diagonal, away from the cavity: to the
+  // outer box's corner, 0.3 sqrt(3)
+  EXPECT_NEAR(thickness[8], 0.3 * std::sqrt(3.0), 1e-9);
+}
+
 // The offset surface: a uniform inward depth d moves the flat faces by d along their normals,
 // the chisel tip up by d / sin(half angle) (where the two offset bevels meet), and every vertex
 // on the bevel-side edge to the intersection of its two offset faces.
