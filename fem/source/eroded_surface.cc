@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/surface_distance.h>
 #include <abrade/fem/eroded_surface.h>
+#include <abrade/fem/surface_check.h>
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -126,8 +127,11 @@ namespace abrade::fem
     };
 
     /// The triangles of @p s that face against the surface they approximate, @p reference (their
-    /// normal opposed to the one of the reference triangle closest to their centre: turned over
-    /// by a collapse), and the edges of @p s not shared by exactly two triangles.
+    /// normal more than 120 degrees from the one of the reference triangle closest to their
+    /// centre: turned over by a collapse; a triangle across a sharp edge of the front is up to
+    /// half the edge's turn from either face, and its closest reference triangle may lie on
+    /// the other face), the edges of @p s not shared by exactly two triangles, and the pairs
+    /// of triangles that cross (surface_check.h).
     std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr)
     {
       vtkNew<vtkStaticCellLocator> locator;
@@ -139,26 +143,35 @@ namespace abrade::fem
       };
       std::size_t       bad = 0;
       vtkNew<vtkIdList> ids;
+      // whether the normal m is opposed to the one of the reference triangle closest to x
+      auto opposed = [&](const double *x, const std::array<double, 3> &m) {
+        double    closest[3], d2 = 0;
+        vtkIdType cell = -1;
+        int       sub  = 0;
+        locator->FindClosestPoint(x, closest, cell, sub, d2);
+        if (cell < 0)
+          return false;
+        reference->GetCellPoints(cell, ids);
+        if (ids->GetNumberOfIds() != 3)
+          return false;
+        double p[3][3];
+        for (int q = 0; q < 3; ++q)
+          reference->GetPoint(ids->GetId(q), p[q]);
+        const auto   n  = normal(p[0], p[1], p[2]);
+        const double mn = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+        return m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -0.5 * mn;
+      };
       for (std::size_t k = 0; k < s.triangles.size(); ++k)
         {
           const auto   &t = s.triangles[k];
           const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
-          double        centre[3], closest[3], d2 = 0;
+          double        centre[3];
           for (int q = 0; q < 3; ++q)
             centre[q] = (a[q] + b[q] + c[q]) / 3;
-          vtkIdType cell = -1;
-          int       sub  = 0;
-          locator->FindClosestPoint(centre, closest, cell, sub, d2);
-          if (cell < 0)
-            continue;
-          reference->GetCellPoints(cell, ids);
-          if (ids->GetNumberOfIds() != 3)
-            continue;
-          double p[3][3];
-          for (int q = 0; q < 3; ++q)
-            reference->GetPoint(ids->GetId(q), p[q]);
-          const auto m = normal(a, b, c), n = normal(p[0], p[1], p[2]);
-          if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < 0)
+          // against the reference closest to its centre and to each corner: beside a sharp
+          // edge one of them can lie on the other face, a turned triangle is turned against all
+          const auto m = normal(a, b, c);
+          if (opposed(centre, m) && opposed(a, m) && opposed(b, m) && opposed(c, m))
             {
               ++bad;
               if (turned)
@@ -174,6 +187,13 @@ namespace abrade::fem
           }
       for (const auto &[edge, n] : edges)
         bad += n != 2;
+      if (bad == 0)
+        for (const auto &pair : intersecting_triangles(s))
+          {
+            ++bad;
+            if (turned)
+              turned->insert(turned->end(), pair.begin(), pair.end());
+          }
       return bad;
     }
 
@@ -193,6 +213,116 @@ namespace abrade::fem
       return out;
     }
 
+
+    /// The sharp edges of a surface (its two triangles' normals more than 20 degrees apart), in
+    /// a hash grid of cells of a given size, for the closest point on them.
+    struct SharpEdges
+    {
+      std::vector<std::array<double, 6>>                   segment;
+      double                                               cell = 1;
+      std::unordered_map<long long, std::vector<unsigned>> cells;
+
+      SharpEdges(const io::PolyData &s, double cell_size) : cell(cell_size)
+      {
+        // points at one place are one (a surface may repeat them face by face), to a
+        // millionth of the cell
+        std::map<std::array<long long, 3>, long> first;
+        std::vector<long>                         same(s.points.size() / 3);
+        for (std::size_t v = 0; v < same.size(); ++v)
+          {
+            const std::array<long long, 3> at = {std::llround(s.points[3 * v] / (1e-6 * cell)),
+                                                 std::llround(s.points[3 * v + 1] / (1e-6 * cell)),
+                                                 std::llround(s.points[3 * v + 2] / (1e-6 * cell))};
+            same[v] = first.emplace(at, long(v)).first->second;
+          }
+        std::map<std::pair<long, long>, std::vector<std::size_t>> edges;
+        for (std::size_t k = 0; k < s.triangles.size(); ++k)
+          for (int e = 0; e < 3; ++e)
+            {
+              const long a = same[s.triangles[k][e]], b = same[s.triangles[k][(e + 1) % 3]];
+              edges[{std::min(a, b), std::max(a, b)}].push_back(k);
+            }
+        auto unit_normal = [&](std::size_t k) {
+          const double *a = &s.points[3 * s.triangles[k][0]], *b = &s.points[3 * s.triangles[k][1]],
+                       *c = &s.points[3 * s.triangles[k][2]];
+          const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+          std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+          const double          l = std::hypot(n[0], n[1], n[2]);
+          for (double &x : n)
+            x = l > 0 ? x / l : 0;
+          return n;
+        };
+        for (const auto &[edge, pair] : edges)
+          {
+            if (pair.size() != 2)
+              continue;
+            const auto n1 = unit_normal(pair[0]), n2 = unit_normal(pair[1]);
+            if (n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2] > std::cos(20 * M_PI / 180))
+              continue;
+            const double *a = &s.points[3 * edge.first], *b = &s.points[3 * edge.second];
+            const auto    id = static_cast<unsigned>(segment.size());
+            segment.push_back({a[0], a[1], a[2], b[0], b[1], b[2]});
+            long lo[3], hi[3];
+            for (int c = 0; c < 3; ++c)
+              lo[c] = long(std::floor(std::min(a[c], b[c]) / cell)), hi[c] = long(std::floor(std::max(a[c], b[c]) / cell));
+            for (long i = lo[0]; i <= hi[0]; ++i)
+              for (long j = lo[1]; j <= hi[1]; ++j)
+                for (long k = lo[2]; k <= hi[2]; ++k)
+                  cells[key(i, j, k)].push_back(id);
+          }
+      }
+
+      static long long key(long i, long j, long k) { return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL); }
+
+      /// The closest point on a sharp edge within one cell of @p x, and its distance (infinity
+      /// where there is none).
+      double closest(const double *x, double *on_edge) const
+      {
+        double best = std::numeric_limits<double>::infinity();
+        const long i0 = long(std::floor(x[0] / cell)), j0 = long(std::floor(x[1] / cell)), k0 = long(std::floor(x[2] / cell));
+        for (long i = i0 - 1; i <= i0 + 1; ++i)
+          for (long j = j0 - 1; j <= j0 + 1; ++j)
+            for (long k = k0 - 1; k <= k0 + 1; ++k)
+              if (const auto it = cells.find(key(i, j, k)); it != cells.end())
+                for (const unsigned q : it->second)
+                  {
+                    const auto  &g = segment[q];
+                    const double d[3] = {g[3] - g[0], g[4] - g[1], g[5] - g[2]};
+                    const double dd   = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                    const double t    = dd > 0 ? std::clamp(((x[0] - g[0]) * d[0] + (x[1] - g[1]) * d[1] + (x[2] - g[2]) * d[2]) / dd, 0.0, 1.0) : 0.0;
+                    const double p[3] = {g[0] + t * d[0], g[1] + t * d[1], g[2] + t * d[2]};
+                    const double r    = std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]);
+                    if (r < best)
+                      best = r, std::copy_n(p, 3, on_edge);
+                  }
+        return best;
+      }
+    };
+
+    /// The corners of the triangles @p bad names (it returns how many are bad and lists them)
+    /// go back from where @p s has them (the projection's points) towards @p from, half the
+    /// way each time, all the way after eight times: whether none is left bad.
+    template <typename Bad>
+    bool step_back(io::PolyData &s, const io::PolyData &from, Bad bad)
+    {
+      const std::vector<double> to = s.points;
+      std::vector<double>       share(s.points.size() / 3, 1.0);
+      for (int round = 0; round <= 8; ++round)
+        {
+          std::vector<std::size_t> listed;
+          if (bad(s, listed) == 0)
+            return true;
+          if (listed.empty() || round == 8)
+            return false; // not the projection's doing, or not undone by it
+          const double keep = round == 7 ? 0.0 : std::ldexp(1.0, -(round + 1)); // of the step
+          for (const std::size_t t : listed)
+            for (const long v : s.triangles[t])
+              share[v] = std::min(share[v], keep);
+          for (std::size_t k = 0; k < s.points.size(); ++k)
+            s.points[k] = from.points[k] + share[k / 3] * (to[k] - from.points[k]);
+        }
+      return false;
+    }
   } // namespace
 
   ErodedSurface eroded_surface(const io::PolyData &surface, const std::vector<double> &depth, double h,
@@ -338,7 +468,7 @@ namespace abrade::fem
         {
           double x[3];
           points->GetPoint(k, x);
-          for (int iteration = 0; iteration < 4; ++iteration)
+          for (int iteration = 0; iteration < 64; ++iteration)
             {
               bool         rim = false;
               double       on_surface[3], on_ball[3];
@@ -354,6 +484,36 @@ namespace abrade::fem
       points->Modified();
     };
     project(clean->GetOutput()->GetPoints());
+    // marching cubes chamfers the unworn surface's sharp edges (a strip of needles a quarter
+    // to a spacing wide, which the decimation widens): vertices within a spacing of one, on
+    // the unworn surface and in no ball there, go onto it, which makes the strip's triangles
+    // flat (undone where that makes triangles cross); before the decimation and after it. The
+    // lifetime loop's knife flips the flat triangles away (surface_tidy.h).
+    const SharpEdges sharp(surface, h);
+    auto snap_to_sharp_edges = [&](io::PolyData &s, double within) {
+      const io::PolyData unsnapped = s;
+      for (std::size_t v = 0; v < s.points.size() / 3; ++v)
+        {
+          double *x = &s.points[3 * v], on_edge[3], on_ball[3], on_surface[3];
+          bool    rim = false;
+          if (std::abs(distance.signed_distance(x, rim, on_surface)) > 1e-6 * h ||
+              sharp.closest(x, on_edge) > within || balls.nearest_sphere_point(on_edge, on_ball) < 1e-6 * h)
+            continue;
+          std::copy_n(on_edge, 3, x);
+        }
+      for (const auto &pair : intersecting_triangles(s, std::numeric_limits<std::size_t>::max(), 1e-4 * h))
+        for (const std::size_t t : pair)
+          for (const long v : s.triangles[t])
+            std::copy_n(&unsnapped.points[3 * v], 3, &s.points[3 * v]);
+    };
+    {
+      io::PolyData mc = from_vtk(clean->GetOutput());
+      snap_to_sharp_edges(mc, h); // its vertices nearest an edge lie up to a spacing from it
+      vtkPoints *points = clean->GetOutput()->GetPoints();
+      for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
+        points->SetPoint(v, &mc.points[3 * v]);
+      points->Modified();
+    }
     // vertices projected onto one point (beside a sharp edge) are one vertex, and the triangles
     // they squash are dropped: no zero-area or repeated facets for the decimation and Gmsh
     vtkNew<vtkPolyData> projected;
@@ -400,19 +560,18 @@ namespace abrade::fem
         const io::PolyData placed = from_vtk(triangles->GetOutput()); // where the quadrics put them
         project(triangles->GetOutput()->GetPoints());
         io::PolyData             decimated = from_vtk(triangles->GetOutput());
-        std::vector<std::size_t> turned;
-        // the projection can turn a small triangle beside a sharp edge: its corners stay
-        // where the quadrics put them
-        if (turned_triangles(decimated, front, &turned) > 0)
-          for (const std::size_t t : turned)
-            for (const long v : decimated.triangles[t])
-              std::copy_n(&placed.points[3 * v], 3, &decimated.points[3 * v]);
-        if (turned_triangles(decimated, front) == 0)
+        // the projection can turn or cross a small triangle beside a sharp edge: its corners
+        // go back towards where the quadrics put them
+        const bool clean_surface = step_back(decimated, placed, [&](const io::PolyData &x, std::vector<std::size_t> &listed) {
+          return turned_triangles(x, front, &listed);
+        });
+        if (clean_surface)
           {
             out = std::move(decimated);
             break;
           }
       }
+    snap_to_sharp_edges(out, h / 2);
     double volume = enclosed_volume(out);
     if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles
       {
