@@ -412,12 +412,15 @@ namespace abrade::coupling::lifetime
         if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
           {
             st.moved = true;
+            const std::string cut_off =
+              st.result.volume_cut_off > 0
+                ? io::format_number(st.result.volume_cut_off * 1e6) + " cm^3 cut off by the wear"
+                : std::string();
             if (!st.result.rebuilt.empty())
               ctx.log.line("update " + std::to_string(update) + ": the worn surface built anew (" +
-                           st.result.rebuilt + ")" +
-                           (st.result.volume_cut_off > 0
-                              ? "; " + io::format_number(st.result.volume_cut_off * 1e6) + " cm^3 cut off by the wear"
-                              : std::string()));
+                           st.result.rebuilt + ")" + (cut_off.empty() ? "" : "; " + cut_off));
+            else if (!cut_off.empty())
+              ctx.log.line("update " + std::to_string(update) + ": " + cut_off);
             if (!st.result.surface_kept.empty())
               {
                 ++surfaces_kept;
