@@ -579,10 +579,22 @@ namespace abrade::fem
           if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.02 * h)
             std::copy_n(x, 3, &moved[3 * v]);
         }
+      // the corners of a turned or crossing triangle go back, until none is left (a corner put
+      // back can make its neighbour cross: rounds)
       out.points = moved;
-      if (!step_back(out, unsharpened, [&](const io::PolyData &x, std::vector<std::size_t> &listed) {
-            return turned_triangles(x, front, &listed);
-          }))
+      bool clean_surface = false;
+      for (int round = 0; round < 32 && !clean_surface; ++round)
+        {
+          std::vector<std::size_t> listed;
+          if (turned_triangles(out, front, &listed) == 0)
+            clean_surface = true;
+          else if (listed.empty())
+            break; // not the placement's doing
+          for (const std::size_t t : listed)
+            for (const long v : out.triangles[t])
+              std::copy_n(&unsharpened.points[3 * v], 3, &out.points[3 * v]);
+        }
+      if (!clean_surface)
         out = unsharpened;
     }
     snap_to_sharp_edges(out, h / 2);
