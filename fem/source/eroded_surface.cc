@@ -17,6 +17,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
+#include <vtkSmartPointer.h>
 #include <vtkQuadricDecimation.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTriangleFilter.h>
@@ -26,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <unordered_map>
@@ -427,86 +429,36 @@ namespace abrade::fem
             continue;
           std::copy_n(on_edge, 3, x);
         }
-      for (const auto &pair : intersecting_triangles(s, std::numeric_limits<std::size_t>::max(), 1e-4 * h))
-        for (const std::size_t t : pair)
-          for (const long v : s.triangles[t])
-            std::copy_n(&unsnapped.points[3 * v], 3, &s.points[3 * v]);
-    };
-    {
-      io::PolyData mc = from_vtk(clean->GetOutput());
-      snap_to_sharp_edges(mc, h); // its vertices nearest an edge lie up to a spacing from it
-      vtkPoints *points = clean->GetOutput()->GetPoints();
-      for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
-        points->SetPoint(v, &mc.points[3 * v]);
-      points->Modified();
-    }
-    // vertices projected onto one point (beside a sharp edge) are one vertex, and the triangles
-    // they squash are dropped: no zero-area or repeated facets for the decimation and Gmsh
-    vtkNew<vtkPolyData> projected;
-    projected->DeepCopy(clean->GetOutput());
-    vtkNew<vtkCleanPolyData> merged;
-    merged->SetInputData(projected);
-    merged->ToleranceIsAbsoluteOn();
-    merged->SetAbsoluteTolerance(1e-4 * h);
-    merged->ConvertLinesToPointsOff();
-    merged->ConvertPolysToLinesOff();
-    merged->ConvertStripsToPolysOff();
-    vtkNew<vtkTriangleFilter> only_triangles;
-    only_triangles->SetInputConnection(merged->GetOutputPort());
-    only_triangles->PassLinesOff();
-    only_triangles->PassVertsOff();
-    only_triangles->Update();
-    vtkPolyData *front = only_triangles->GetOutput();
-    cells              = front->GetNumberOfCells();
-
-    // to about the target edge length (equilateral triangles of that edge over the area)
-    double area = 0;
-    const io::PolyData kept = from_vtk(front);
-    for (const auto &t : kept.triangles)
-      {
-        const double *a = &kept.points[3 * t[0]], *b = &kept.points[3 * t[1]], *c = &kept.points[3 * t[2]];
-        const double  u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        area += 0.5 * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
-      }
-    // Quadric decimation does not check what its collapses do to the neighbours: a triangle
-    // can turn over onto its neighbour (Gmsh then finds overlapping facets). A decimation with a
-    // turned triangle is done again with twice the triangles, while that is fewer than
-    // marching cubes made; then the
-    // surface stays as marching cubes made it (its vertices projected).
-    io::PolyData out = kept;
-    for (double wanted = area / (0.433 * edge_length * edge_length); wanted < 0.9 * cells; wanted *= 2)
-      {
-        vtkNew<vtkQuadricDecimation> decimate;
-        decimate->SetInputData(front);
-        decimate->SetTargetReduction(1.0 - wanted / double(cells));
-        decimate->VolumePreservationOn();
-        vtkNew<vtkTriangleFilter> triangles;
-        triangles->SetInputConnection(decimate->GetOutputPort());
-        triangles->Update();
-        const io::PolyData placed = from_vtk(triangles->GetOutput()); // where the quadrics put them
-        project(triangles->GetOutput()->GetPoints());
-        io::PolyData             decimated = from_vtk(triangles->GetOutput());
-        // the projection can turn or cross a small triangle beside a sharp edge: its corners
-        // go back towards where the quadrics put them
-        const bool clean_surface = step_back(decimated, placed, [&](const io::PolyData &x, std::vector<std::size_t> &listed) {
-          return turned_triangles(x, front, &listed);
-        });
-        if (clean_surface)
-          {
-            out = std::move(decimated);
+      // the corners of crossing triangles go back, in rounds (a corner put back can make its
+      // neighbour cross); if crossings remain, nothing is snapped
+      for (int round = 0;; ++round)
+        {
+          const auto pairs = intersecting_triangles(s, std::numeric_limits<std::size_t>::max(), 1e-4 * h);
+          if (pairs.empty())
             break;
-          }
-      }
+          if (round == 32)
+            {
+              s = unsnapped;
+              break;
+            }
+          for (const auto &pair : pairs)
+            for (const std::size_t t : pair)
+              for (const long v : s.triangles[t])
+                std::copy_n(&unsnapped.points[3 * v], 3, &s.points[3 * v]);
+        }
+    };
     // the front's own sharp edges (a chisel's worn tip, the rim of a worn face): marching
     // cubes cuts them by up to a spacing across (at the 41-degree chisel's tip the cut raised the
     // tip by 0.8 of a spacing), and the decimation keeps the cut; each vertex of the worn front
     // whose neighbours' normals there turn by more than 20 degrees goes to the point nearest
     // to it of their tangent planes (dual contouring's placement: onto the edge where two
     // faces meet, onto the corner where three), where that point lies on the front within a
-    // spacing; undone where a triangle turns or crosses
-    {
-      const io::PolyData unsharpened = out;
-      const std::size_t  nv          = out.points.size() / 3;
+    // spacing; undone where a triangle turns or crosses (against @p reference). On the
+    // marching-cubes surface, before the decimation, so that the quadrics keep the edge (after
+    // it, a vertex a decimated triangle's width from the edge cannot reach it), and after it
+    auto place_front_edges = [&](io::PolyData &s, vtkPolyData *reference) {
+      const io::PolyData unsharpened = s;
+      const std::size_t  nv          = s.points.size() / 3;
       std::vector<std::array<double, 3>> normal(nv, {0, 0, 0});
       std::vector<char>                  on_worn(nv, 0);
       auto front_value = [&](const double *x, double *n) {
@@ -518,14 +470,14 @@ namespace abrade::fem
       };
       for (std::size_t v = 0; v < nv; ++v)
         {
-          const auto [value, worn_piece] = front_value(&out.points[3 * v], normal[v].data());
+          const auto [value, worn_piece] = front_value(&s.points[3 * v], normal[v].data());
           on_worn[v] = worn_piece && std::abs(value) < 1e-3 * h;
         }
       std::vector<std::vector<long>> ring(nv);
-      for (const auto &t : out.triangles)
+      for (const auto &t : s.triangles)
         for (int e = 0; e < 3; ++e)
           ring[t[e]].push_back(t[(e + 1) % 3]), ring[t[e]].push_back(t[(e + 2) % 3]);
-      std::vector<double> moved = out.points;
+      std::vector<double> moved = s.points;
       for (std::size_t v = 0; v < nv; ++v)
         {
           if (!on_worn[v])
@@ -543,13 +495,13 @@ namespace abrade::fem
           // min sum (n . (x - y))^2 + lambda |x - v|^2
           double       A[3][3] = {}, b[3] = {};
           const double lambda  = 1e-3;
-          const double *xv     = &out.points[3 * v];
+          const double *xv     = &s.points[3 * v];
           for (const long p : planes)
             {
               if (!on_worn[p])
                 continue;
               const auto   &n = normal[p];
-              const double *y = &out.points[3 * p];
+              const double *y = &s.points[3 * p];
               const double  ny = n[0] * y[0] + n[1] * y[1] + n[2] * y[2];
               for (int i = 0; i < 3; ++i)
                 {
@@ -579,24 +531,119 @@ namespace abrade::fem
           if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.02 * h)
             std::copy_n(x, 3, &moved[3 * v]);
         }
-      // the corners of a turned or crossing triangle go back, until none is left (a corner put
-      // back can make its neighbour cross: rounds)
-      out.points = moved;
+      // the corners of a turned or crossing triangle go back, until none is left that was not
+      // there before (a corner put back can make its neighbour cross: rounds; the marching
+      // cubes' needle strips flattened onto an unworn sharp edge touch their neighbours)
+      std::vector<std::size_t> before;
+      const std::size_t        bad_before = turned_triangles(s, reference, &before);
+      std::sort(before.begin(), before.end());
+      s.points           = moved;
       bool clean_surface = false;
       for (int round = 0; round < 32 && !clean_surface; ++round)
         {
           std::vector<std::size_t> listed;
-          if (turned_triangles(out, front, &listed) == 0)
+          const std::size_t        bad = turned_triangles(s, reference, &listed);
+          std::vector<std::size_t> added;
+          std::sort(listed.begin(), listed.end());
+          std::set_difference(listed.begin(), listed.end(), before.begin(), before.end(), std::back_inserter(added));
+          if (bad <= bad_before && added.empty())
             clean_surface = true;
-          else if (listed.empty())
+          else if (added.empty())
             break; // not the placement's doing
-          for (const std::size_t t : listed)
-            for (const long v : out.triangles[t])
-              std::copy_n(&unsharpened.points[3 * v], 3, &out.points[3 * v]);
+          for (const std::size_t t : added)
+            for (const long v : s.triangles[t])
+              std::copy_n(&unsharpened.points[3 * v], 3, &s.points[3 * v]);
         }
       if (!clean_surface)
-        out = unsharpened;
+        s = unsharpened;
+    };
+    // the front's sharp edges placed before the decimation, so that its quadrics keep them;
+    // the decimated triangles are checked against (turned_triangles) the surface without the
+    // placement (the placed vertices make slivers along the edge, with any normal), and where
+    // no decimation of the placed surface comes out clean, the unplaced one is decimated
+    vtkNew<vtkPolyData> unplaced, edges_placed;
+    bool                placed_any = false;
+    {
+      io::PolyData mc = from_vtk(clean->GetOutput());
+      snap_to_sharp_edges(mc, h); // its vertices nearest an edge lie up to a spacing from it
+      vtkPoints *points = clean->GetOutput()->GetPoints();
+      for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
+        points->SetPoint(v, &mc.points[3 * v]);
+      points->Modified();
+      unplaced->DeepCopy(clean->GetOutput());
+      const std::vector<double> snapped = mc.points;
+      place_front_edges(mc, unplaced);
+      placed_any = mc.points != snapped;
+      for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
+        points->SetPoint(v, &mc.points[3 * v]);
+      points->Modified();
+      edges_placed->DeepCopy(clean->GetOutput());
     }
+    // vertices projected onto one point (beside a sharp edge) are one vertex, and the triangles
+    // they squash are dropped: no zero-area or repeated facets for the decimation and Gmsh
+    auto merged_points = [h](vtkPolyData *surface) {
+      vtkNew<vtkCleanPolyData> merged;
+      merged->SetInputData(surface);
+      merged->ToleranceIsAbsoluteOn();
+      merged->SetAbsoluteTolerance(1e-4 * h);
+      merged->ConvertLinesToPointsOff();
+      merged->ConvertPolysToLinesOff();
+      merged->ConvertStripsToPolysOff();
+      vtkNew<vtkTriangleFilter> only_triangles;
+      only_triangles->SetInputConnection(merged->GetOutputPort());
+      only_triangles->PassLinesOff();
+      only_triangles->PassVertsOff();
+      only_triangles->Update();
+      vtkSmartPointer<vtkPolyData> out = only_triangles->GetOutput();
+      return out;
+    };
+    const vtkSmartPointer<vtkPolyData> front = merged_points(unplaced), sharp_front = merged_points(edges_placed);
+    cells                                    = front->GetNumberOfCells();
+
+    // to about the target edge length (equilateral triangles of that edge over the area)
+    double area = 0;
+    const io::PolyData kept = from_vtk(front);
+    for (const auto &t : kept.triangles)
+      {
+        const double *a = &kept.points[3 * t[0]], *b = &kept.points[3 * t[1]], *c = &kept.points[3 * t[2]];
+        const double  u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        area += 0.5 * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+      }
+    // Quadric decimation does not check what its collapses do to the neighbours: a triangle
+    // can turn over onto its neighbour (Gmsh then finds overlapping facets). A decimation with a
+    // turned triangle is done again with twice the triangles, while that is fewer than
+    // marching cubes made; then the
+    // surface stays as marching cubes made it (its vertices projected).
+    io::PolyData out = kept;
+    bool decimated_clean = false;
+    for (double wanted = area / (0.433 * edge_length * edge_length); wanted < 0.9 * cells && !decimated_clean; wanted *= 2)
+      for (vtkPolyData *input : {sharp_front.Get(), front.Get()})
+      {
+        if (input == sharp_front.Get() && !placed_any)
+          continue;
+        vtkNew<vtkQuadricDecimation> decimate;
+        decimate->SetInputData(input);
+        decimate->SetTargetReduction(1.0 - wanted / double(input->GetNumberOfCells()));
+        decimate->VolumePreservationOn();
+        vtkNew<vtkTriangleFilter> triangles;
+        triangles->SetInputConnection(decimate->GetOutputPort());
+        triangles->Update();
+        const io::PolyData placed = from_vtk(triangles->GetOutput()); // where the quadrics put them
+        project(triangles->GetOutput()->GetPoints());
+        io::PolyData             decimated = from_vtk(triangles->GetOutput());
+        // the projection can turn or cross a small triangle beside a sharp edge: its corners
+        // go back towards where the quadrics put them
+        const bool clean_surface = step_back(decimated, placed, [&](const io::PolyData &x, std::vector<std::size_t> &listed) {
+          return turned_triangles(x, unplaced, &listed);
+        });
+        if (clean_surface)
+          {
+            out             = std::move(decimated);
+            decimated_clean = true;
+            break;
+          }
+      }
+    place_front_edges(out, unplaced);
     snap_to_sharp_edges(out, h / 2);
     double volume = enclosed_volume(out);
     if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles
