@@ -58,8 +58,9 @@ namespace abrade::fem
     /// centre: turned over by a collapse; a triangle across a sharp edge of the front is up to
     /// half the edge's turn from either face, and its closest reference triangle may lie on
     /// the other face), the edges of @p s not shared by exactly two triangles, and the pairs
-    /// of triangles that cross (surface_check.h).
-    std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr)
+    /// of triangles that cross (surface_check.h; points closer than @p merge_distance as one).
+    std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr,
+                                 double merge_distance = 0)
     {
       vtkNew<vtkStaticCellLocator> locator;
       locator->SetDataSet(reference);
@@ -115,7 +116,7 @@ namespace abrade::fem
       for (const auto &[edge, n] : edges)
         bad += n != 2;
       if (bad == 0)
-        for (const auto &pair : intersecting_triangles(s))
+        for (const auto &pair : intersecting_triangles(s, std::numeric_limits<std::size_t>::max(), merge_distance))
           {
             ++bad;
             if (turned)
@@ -452,11 +453,12 @@ namespace abrade::fem
     // tip by 0.8 of a spacing), and the decimation keeps the cut; each vertex of the worn front
     // whose neighbours' normals there turn by more than 20 degrees goes to the point nearest
     // to it of their tangent planes (dual contouring's placement: onto the edge where two
-    // faces meet, onto the corner where three), where that point lies on the front within a
-    // spacing; undone where a triangle turns or crosses (against @p reference). On the
+    // faces meet, onto the corner where three), where that point lies within a spacing and on
+    // the front (within 0.005 of a spacing); undone where a triangle turns or crosses (against
+    // @p reference; points within @p merge_distance as one, where they will be merged). On the
     // marching-cubes surface, before the decimation, so that the quadrics keep the edge (after
     // it, a vertex a decimated triangle's width from the edge cannot reach it), and after it
-    auto place_front_edges = [&](io::PolyData &s, vtkPolyData *reference) {
+    auto place_front_edges = [&](io::PolyData &s, vtkPolyData *reference, double merge_distance) {
       const io::PolyData unsharpened = s;
       const std::size_t  nv          = s.points.size() / 3;
       std::vector<std::array<double, 3>> normal(nv, {0, 0, 0});
@@ -492,7 +494,12 @@ namespace abrade::fem
               turn = std::min(turn, normal[v][0] * normal[p][0] + normal[v][1] * normal[p][1] + normal[v][2] * normal[p][2]);
           if (turn > std::cos(20 * M_PI / 180))
             continue;
-          // min sum (n . (x - y))^2 + lambda |x - v|^2
+          // min sum (n . (x - y))^2 + lambda |x - v|^2: lambda fixes the position along the
+          // edge (where the planes leave it free) and keeps the placed points of a fan a little
+          // apart (with 1e-6 they came onto one line, and the decimation of the slivers between
+          // them turned triangles); across a shallow edge (the planes' weight 2 sin^2(10
+          // degrees) per pair at a 20-degree one) it pulls the point into the part by up to
+          // a hundredth of a spacing, which the test on the front below refuses
           double       A[3][3] = {}, b[3] = {};
           const double lambda  = 1e-3;
           const double *xv     = &s.points[3 * v];
@@ -528,21 +535,21 @@ namespace abrade::fem
                       M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
             }
           double unused[3];
-          if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.02 * h)
+          if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.005 * h)
             std::copy_n(x, 3, &moved[3 * v]);
         }
       // the corners of a turned or crossing triangle go back, until none is left that was not
       // there before (a corner put back can make its neighbour cross: rounds; the marching
       // cubes' needle strips flattened onto an unworn sharp edge touch their neighbours)
       std::vector<std::size_t> before;
-      const std::size_t        bad_before = turned_triangles(s, reference, &before);
+      const std::size_t        bad_before = turned_triangles(s, reference, &before, merge_distance);
       std::sort(before.begin(), before.end());
       s.points           = moved;
       bool clean_surface = false;
       for (int round = 0; round < 32 && !clean_surface; ++round)
         {
           std::vector<std::size_t> listed;
-          const std::size_t        bad = turned_triangles(s, reference, &listed);
+          const std::size_t        bad = turned_triangles(s, reference, &listed, merge_distance);
           std::vector<std::size_t> added;
           std::sort(listed.begin(), listed.end());
           std::set_difference(listed.begin(), listed.end(), before.begin(), before.end(), std::back_inserter(added));
@@ -572,7 +579,7 @@ namespace abrade::fem
       points->Modified();
       unplaced->DeepCopy(clean->GetOutput());
       const std::vector<double> snapped = mc.points;
-      place_front_edges(mc, unplaced);
+      place_front_edges(mc, unplaced, 0);
       placed_any = mc.points != snapped;
       for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
         points->SetPoint(v, &mc.points[3 * v]);
@@ -643,7 +650,7 @@ namespace abrade::fem
             break;
           }
       }
-    place_front_edges(out, unplaced);
+    place_front_edges(out, unplaced, 0);
     snap_to_sharp_edges(out, h / 2);
     double volume = enclosed_volume(out);
     if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles
