@@ -58,9 +58,8 @@ namespace abrade::fem
     /// centre: turned over by a collapse; a triangle across a sharp edge of the front is up to
     /// half the edge's turn from either face, and its closest reference triangle may lie on
     /// the other face), the edges of @p s not shared by exactly two triangles, and the pairs
-    /// of triangles that cross (surface_check.h; points closer than @p merge_distance as one).
-    std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr,
-                                 double merge_distance = 0)
+    /// of triangles that cross (surface_check.h).
+    std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr)
     {
       vtkNew<vtkStaticCellLocator> locator;
       locator->SetDataSet(reference);
@@ -116,7 +115,7 @@ namespace abrade::fem
       for (const auto &[edge, n] : edges)
         bad += n != 2;
       if (bad == 0)
-        for (const auto &pair : intersecting_triangles(s, std::numeric_limits<std::size_t>::max(), merge_distance))
+        for (const auto &pair : intersecting_triangles(s))
           {
             ++bad;
             if (turned)
@@ -454,11 +453,13 @@ namespace abrade::fem
     // whose neighbours' normals there turn by more than 20 degrees goes to the point nearest
     // to it of their tangent planes (dual contouring's placement: onto the edge where two
     // faces meet, onto the corner where three), where that point lies within a spacing and on
-    // the front (within 0.005 of a spacing); undone where a triangle turns or crosses (against
-    // @p reference; points within @p merge_distance as one, where they will be merged). On the
-    // marching-cubes surface, before the decimation, so that the quadrics keep the edge (after
-    // it, a vertex a decimated triangle's width from the edge cannot reach it), and after it
-    auto place_front_edges = [&](io::PolyData &s, vtkPolyData *reference, double merge_distance) {
+    // the front (within 0.02 of a spacing); undone where a triangle turns or crosses that did not
+    // before (against @p reference). After the
+    // decimation only: a vertex a decimated triangle's width from the edge cannot reach it
+    // (the decimation keeps marching cubes' chamfer there), but placed on the marching-cubes
+    // surface before it, the decimated surface of the STEP knife of lifetime/file_part had a
+    // segment through a facet at its fourth update (Gmsh refused it; the check did not find it)
+    auto place_front_edges = [&](io::PolyData &s, vtkPolyData *reference) {
       const io::PolyData unsharpened = s;
       const std::size_t  nv          = s.points.size() / 3;
       std::vector<std::array<double, 3>> normal(nv, {0, 0, 0});
@@ -495,11 +496,7 @@ namespace abrade::fem
           if (turn > std::cos(20 * M_PI / 180))
             continue;
           // min sum (n . (x - y))^2 + lambda |x - v|^2: lambda fixes the position along the
-          // edge (where the planes leave it free) and keeps the placed points of a fan a little
-          // apart (with 1e-6 they came onto one line, and the decimation of the slivers between
-          // them turned triangles); across a shallow edge (the planes' weight 2 sin^2(10
-          // degrees) per pair at a 20-degree one) it pulls the point into the part by up to
-          // a hundredth of a spacing, which the test on the front below refuses
+          // edge, where the planes leave it free
           double       A[3][3] = {}, b[3] = {};
           const double lambda  = 1e-3;
           const double *xv     = &s.points[3 * v];
@@ -535,21 +532,21 @@ namespace abrade::fem
                       M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
             }
           double unused[3];
-          if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.005 * h)
+          if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.02 * h)
             std::copy_n(x, 3, &moved[3 * v]);
         }
       // the corners of a turned or crossing triangle go back, until none is left that was not
       // there before (a corner put back can make its neighbour cross: rounds; the marching
       // cubes' needle strips flattened onto an unworn sharp edge touch their neighbours)
       std::vector<std::size_t> before;
-      const std::size_t        bad_before = turned_triangles(s, reference, &before, merge_distance);
+      const std::size_t        bad_before = turned_triangles(s, reference, &before);
       std::sort(before.begin(), before.end());
       s.points           = moved;
       bool clean_surface = false;
       for (int round = 0; round < 32 && !clean_surface; ++round)
         {
           std::vector<std::size_t> listed;
-          const std::size_t        bad = turned_triangles(s, reference, &listed, merge_distance);
+          const std::size_t        bad = turned_triangles(s, reference, &listed);
           std::vector<std::size_t> added;
           std::sort(listed.begin(), listed.end());
           std::set_difference(listed.begin(), listed.end(), before.begin(), before.end(), std::back_inserter(added));
@@ -564,12 +561,7 @@ namespace abrade::fem
       if (!clean_surface)
         s = unsharpened;
     };
-    // the front's sharp edges placed before the decimation, so that its quadrics keep them;
-    // the decimated triangles are checked against (turned_triangles) the surface without the
-    // placement (the placed vertices make slivers along the edge, with any normal), and where
-    // no decimation of the placed surface comes out clean, the unplaced one is decimated
-    vtkNew<vtkPolyData> unplaced, edges_placed;
-    bool                placed_any = false;
+    vtkNew<vtkPolyData> unplaced;
     {
       io::PolyData mc = from_vtk(clean->GetOutput());
       snap_to_sharp_edges(mc, h); // its vertices nearest an edge lie up to a spacing from it
@@ -578,13 +570,6 @@ namespace abrade::fem
         points->SetPoint(v, &mc.points[3 * v]);
       points->Modified();
       unplaced->DeepCopy(clean->GetOutput());
-      const std::vector<double> snapped = mc.points;
-      place_front_edges(mc, unplaced, 0);
-      placed_any = mc.points != snapped;
-      for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
-        points->SetPoint(v, &mc.points[3 * v]);
-      points->Modified();
-      edges_placed->DeepCopy(clean->GetOutput());
     }
     // vertices projected onto one point (beside a sharp edge) are one vertex, and the triangles
     // they squash are dropped: no zero-area or repeated facets for the decimation and Gmsh
@@ -604,7 +589,7 @@ namespace abrade::fem
       vtkSmartPointer<vtkPolyData> out = only_triangles->GetOutput();
       return out;
     };
-    const vtkSmartPointer<vtkPolyData> front = merged_points(unplaced), sharp_front = merged_points(edges_placed);
+    const vtkSmartPointer<vtkPolyData> front = merged_points(unplaced);
     cells                                    = front->GetNumberOfCells();
 
     // to about the target edge length (equilateral triangles of that edge over the area)
@@ -622,15 +607,11 @@ namespace abrade::fem
     // marching cubes made; then the
     // surface stays as marching cubes made it (its vertices projected).
     io::PolyData out = kept;
-    bool decimated_clean = false;
-    for (double wanted = area / (0.433 * edge_length * edge_length); wanted < 0.9 * cells && !decimated_clean; wanted *= 2)
-      for (vtkPolyData *input : {sharp_front.Get(), front.Get()})
+    for (double wanted = area / (0.433 * edge_length * edge_length); wanted < 0.9 * cells; wanted *= 2)
       {
-        if (input == sharp_front.Get() && !placed_any)
-          continue;
         vtkNew<vtkQuadricDecimation> decimate;
-        decimate->SetInputData(input);
-        decimate->SetTargetReduction(1.0 - wanted / double(input->GetNumberOfCells()));
+        decimate->SetInputData(front);
+        decimate->SetTargetReduction(1.0 - wanted / double(cells));
         decimate->VolumePreservationOn();
         vtkNew<vtkTriangleFilter> triangles;
         triangles->SetInputConnection(decimate->GetOutputPort());
@@ -641,16 +622,15 @@ namespace abrade::fem
         // the projection can turn or cross a small triangle beside a sharp edge: its corners
         // go back towards where the quadrics put them
         const bool clean_surface = step_back(decimated, placed, [&](const io::PolyData &x, std::vector<std::size_t> &listed) {
-          return turned_triangles(x, unplaced, &listed);
+          return turned_triangles(x, front, &listed);
         });
         if (clean_surface)
           {
-            out             = std::move(decimated);
-            decimated_clean = true;
+            out = std::move(decimated);
             break;
           }
       }
-    place_front_edges(out, unplaced, 0);
+    place_front_edges(out, front);
     snap_to_sharp_edges(out, h / 2);
     double volume = enclosed_volume(out);
     if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles
