@@ -453,7 +453,7 @@ namespace abrade::fem
     // whose neighbours' normals there turn by more than 20 degrees goes to the point nearest
     // to it of their tangent planes (dual contouring's placement: onto the edge where two
     // faces meet, onto the corner where three), where that point lies within a spacing and on
-    // the front (within 0.02 of a spacing); undone where a triangle turns or crosses that did not
+    // the front (within 0.005 of a spacing); undone where a triangle turns or crosses that did not
     // before (against @p reference). After the
     // decimation only: a vertex a decimated triangle's width from the edge cannot reach it
     // (the decimation keeps marching cubes' chamfer there), but placed on the marching-cubes
@@ -496,9 +496,11 @@ namespace abrade::fem
           if (turn > std::cos(20 * M_PI / 180))
             continue;
           // min sum (n . (x - y))^2 + lambda |x - v|^2: lambda fixes the position along the
-          // edge, where the planes leave it free
+          // edge, where the planes leave it free, and is small beside the planes' weight across
+          // a shallow edge (2 sin^2(10 degrees) per pair of planes at a 20-degree one): with
+          // 1e-3 the point was pulled into the part there by a few hundredths of a millimetre
           double       A[3][3] = {}, b[3] = {};
-          const double lambda  = 1e-3;
+          const double lambda  = 1e-6;
           const double *xv     = &s.points[3 * v];
           for (const long p : planes)
             {
@@ -532,7 +534,7 @@ namespace abrade::fem
                       M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
             }
           double unused[3];
-          if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.02 * h)
+          if (std::hypot(x[0] - xv[0], x[1] - xv[1], x[2] - xv[2]) < h && std::abs(front_value(x, unused).first) < 0.005 * h)
             std::copy_n(x, 3, &moved[3 * v]);
         }
       // the corners of a turned or crossing triangle go back, until none is left that was not
