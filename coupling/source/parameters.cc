@@ -300,10 +300,8 @@ namespace abrade::coupling
     prm.declare_entry("Analytic wear rate", "1e-6", Anything(),
                       "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
                       "inward normal, as a function of the knife's current coordinates x, y, z (the "
-                      "knife's own frame, see Recession points), of t, the tonnes handled so far, and of zmin, the "
-                      "lowest z of the wearable surface now (a rate that follows the receding edge), e.g. "
-                      "'1e-6*exp(-z/0.01)', '1e-6*(1+t/5000)' or '1e-6*(z<zmin+0.003)'; evaluated at the surface's "
-                      "vertices. muparser syntax.");
+                      "knife's own frame, see Recession points) and of t, the tonnes handled so far, e.g. "
+                      "'1e-6*exp(-z/0.01)' or '1e-6*(1+t/5000)'; evaluated at the surface's vertices. muparser syntax.");
     prm.declare_entry("Analytic seed scatter", "0", Double(0, 1),
                       "[-] Wear source = analytic: each seed's rate is multiplied by 1 + this x z, z a "
                       "standard normal number drawn from the seed: a known bed-to-bed scatter (verification "

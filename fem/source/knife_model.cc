@@ -1,8 +1,6 @@
 #include <abrade/common/error.h>
 #include <abrade/common/hash.h>
 #include <abrade/fem/knife_model.h>
-#include <abrade/fem/surface_check.h>
-#include <abrade/fem/surface_tidy.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/mesh_motion.h>
 
@@ -54,12 +52,6 @@ namespace abrade::fem
     for (const auto &t : design.triangles)
       triangles.push_back({long(t[0]), long(t[1]), long(t[2])});
     design_distance = std::make_shared<const geometry::SurfaceDistance>(points, triangles);
-    double longest = 0;
-    for (const auto &t : design.triangles)
-      for (unsigned e = 0; e < 3; ++e)
-        longest = std::max(longest, design.vertices[t[e]].distance(design.vertices[t[(e + 1) % 3]]));
-    carved = subdivided(design, std::clamp(static_cast<unsigned>(std::ceil(longest / erosion_spacing())), 1u, 12u));
-    carved_depth.assign(carved.vertices.size(), 0.0);
     accumulated.assign(current_surface.vertices.size(), 0.0);
     displacement.assign(3 * current_surface.vertices.size(), 0.0);
     since_remesh.assign(current_surface.vertices.size(), 0.0);
@@ -103,58 +95,20 @@ namespace abrade::fem
         return r; // end of life: reported, not carried into the mesh
       }
 
-    // inward, as the offset surface moves (SolidSurface::inward_offsets), the wearable faces
-    // only: a vertex of clamped faces only stays, one on a clamped face's rim moves within it
-    std::vector<bool> held(current_surface.triangles.size(), false);
-    std::vector<int>  wearing_triangles(current_surface.vertices.size(), 0);
+    // inward, as the offset surface moves (SolidSurface::inward_offsets), on the wearable surface
+    // only (clamped vertices stay)
+    const auto                             offsets = current_surface.inward_offsets(depth);
+    std::vector<bool>                      clamped(current_surface.vertices.size(), false);
     for (std::size_t t = 0; t < current_surface.triangles.size(); ++t)
-      {
-        held[t] = current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary;
+      if (current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary)
         for (unsigned v : current_surface.triangles[t])
-          wearing_triangles[v] += held[t] ? 0 : 1;
-      }
-    const auto        offsets = current_surface.inward_offsets(depth, &held);
-    std::vector<bool> clamped(current_surface.vertices.size(), false);
-    for (std::size_t v = 0; v < clamped.size(); ++v)
-      clamped[v] = wearing_triangles[v] == 0;
-    // what the update wears, for the construction that cannot fold (rebuild_eroded)
+          clamped[v] = true;
+    // what the update starts from, for the construction that cannot fold (rebuild_eroded)
     std::vector<double> wearing = depth;
     for (std::size_t v = 0; v < clamped.size(); ++v)
       if (clamped[v])
         wearing[v] = 0;
-    const Before before{current_surface, accumulated, displacement};
-    {
-      // the design's points go on receding with the worn surface's point closest to them: a
-      // point p whose closest point q lies on a face recedes by the depth there (its distance
-      // to the face grows by it); one in the shadow of a sharp edge or corner (q on the edge)
-      // by how far the edge moves towards it, u(q) . (q - p) / |q - p| (the edge's offset u
-      // moves each face's plane by its depth: between the depth and depth / sin(half angle)
-      // at a chisel's tip), else the tip's balls lag behind the tip
-      const SurfaceTransfer to_design(current_surface, carved);
-      std::vector<double>   grow = to_design(wearing);
-      std::vector<double>   u(3 * offsets.size());
-      for (std::size_t v = 0; v < offsets.size(); ++v)
-        for (unsigned c = 0; c < 3; ++c)
-          u[3 * v + c] = clamped[v] ? 0.0 : offsets[v][c];
-      const std::array<std::vector<double>, 3> u_at = {to_design(u, 3, 0), to_design(u, 3, 1), to_design(u, 3, 2)};
-      for (std::size_t v = 0; v < grow.size(); ++v)
-        {
-          const Tensor<1, 3> towards = to_design.feet()[v] - carved.vertices[v];
-          const double       gap     = towards.norm();
-          if (gap > 1e-9 * settings.mesh_size)
-            grow[v] = std::max(grow[v], (u_at[0][v] * towards[0] + u_at[1][v] * towards[1] + u_at[2][v] * towards[2]) / gap);
-        }
-      // (a point of clamped faces only does not wear; one on a clamped face's rim wears with
-      // the faces beside it, its ball cutting the clamped face's rim as they recede)
-      std::vector<bool> wears(carved.vertices.size(), false);
-      for (std::size_t t = 0; t < carved.triangles.size(); ++t)
-        if (carved.boundary_id[t] == KnifeGeometry::wearable_boundary)
-          for (unsigned v : carved.triangles[t])
-            wears[v] = true;
-      for (std::size_t v = 0; v < carved_depth.size(); ++v)
-        if (wears[v])
-          carved_depth[v] += std::max(0.0, grow[v]);
-    }
+    const Before before{current_surface, wearing, accumulated, displacement};
 
     // moved vertices cannot follow where the surface folds: the worn surface is built anew
     std::vector<Tensor<1, 3>> moves(offsets.size());
@@ -165,17 +119,6 @@ namespace abrade::fem
         rebuild_eroded(before, std::to_string(folds) + " triangle(s) of the moved surface would fold", r);
         return r;
       }
-    {
-      io::PolyData moved = current_surface.as_polydata();
-      for (std::size_t v = 0; v < moves.size(); ++v)
-        for (unsigned c = 0; c < 3; ++c)
-          moved.points[3 * v + c] += moves[v][c];
-      if (const auto crossing = intersecting_triangles(moved, 1); !crossing.empty())
-        {
-          rebuild_eroded(before, "the moved surface would cross itself", r);
-          return r;
-        }
-    }
 
     std::map<unsigned, Tensor<1, 3>> prescribed;
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
@@ -246,16 +189,8 @@ namespace abrade::fem
 
   void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r)
   {
-    ErodedSurface eroded = eroded_surface(carved.as_polydata(), carved_depth, erosion_spacing(), settings.mesh_size / 3);
-    // needles on its flat faces and flat triangles along the unworn edges, on which Gmsh's
-    // tetrahedral meshers stall, flipped away (moving the surface by a thousandth of the grid
-    // at most); kept as it was where a flip would make it cross itself
-    {
-      io::PolyData tidied = eroded.surface;
-      tidy_flat_regions(tidied, 0.05, 1e-3 * erosion_spacing());
-      if (intersecting_triangles(tidied, 1).empty())
-        eroded.surface = std::move(tidied);
-    }
+    const ErodedSurface eroded =
+      eroded_surface(before.surface.as_polydata(), before.depth, erosion_spacing(), settings.mesh_size / 3);
     auto fresh = std::make_unique<Triangulation<3>>();
     try
       {
@@ -350,7 +285,7 @@ namespace abrade::fem
   {
     // A knife checkpoint: this line, the blocks (each its length, then its values), and the
     // FNV-1a hash of all before it (16 hex digits): a changed byte is named, never read as a mesh.
-    const std::string checkpoint_magic = "abrade knife checkpoint 3\n";
+    const std::string checkpoint_magic = "abrade knife checkpoint 2\n";
 
     template <typename T>
     void put(std::ostream &out, const std::vector<T> &v)
@@ -395,7 +330,7 @@ namespace abrade::fem
     std::ostringstream        blocks(std::ios::binary);
     blocks << checkpoint_magic;
     put(blocks, vertices), put(blocks, cells), put(blocks, faces), put(blocks, accumulated), put(blocks, displacement),
-      put(blocks, since_remesh), put(blocks, state), put(blocks, carved_depth);
+      put(blocks, since_remesh), put(blocks, state);
     const std::string content = blocks.str();
     std::ofstream     out(path, std::ios::binary);
     out << content << io::fnv1a_hex(content);
@@ -426,11 +361,10 @@ namespace abrade::fem
     const auto f = get<unsigned>(in, size, path);
     auto       acc = get<double>(in, size, path), disp = get<double>(in, size, path), since = get<double>(in, size, path);
     const auto state = get<double>(in, size, path);
-    auto       carved_d = get<double>(in, size, path);
     // what a checksum cannot catch (a file written by other code): the blocks' shapes and ranges
     const std::size_t n_points = v.size() / 3;
     bool              sane     = v.size() % 3 == 0 && c.size() % 4 == 0 && f.size() % 4 == 0 && state.size() >= 2 &&
-                    disp.size() == 3 * acc.size() && since.size() == acc.size() && carved_d.size() == carved.vertices.size();
+                    disp.size() == 3 * acc.size() && since.size() == acc.size();
     for (std::size_t k = 0; sane && k < v.size(); ++k)
       sane = std::isfinite(v[k]);
     for (std::size_t k = 0; sane && k < c.size(); ++k)
@@ -476,7 +410,7 @@ namespace abrade::fem
     current_surface   = extract_surface(*tria);
     if (acc.size() != current_surface.vertices.size())
       throw InputError(path, "knife checkpoint does not match its mesh");
-    accumulated.swap(acc), displacement.swap(disp), since_remesh.swap(since), carved_depth.swap(carved_d);
+    accumulated.swap(acc), displacement.swap(disp), since_remesh.swap(since);
     quality_threshold = state.at(0);
     remeshes          = static_cast<unsigned>(state.at(1));
   }

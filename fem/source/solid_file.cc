@@ -701,24 +701,7 @@ namespace abrade::fem
   {
     const std::string msh = stl + ".volume.msh";
     SolidFileSettings as_is;
-    // HXT and Gmsh's optimisers first (the Delaunay mesher left slivers of scaled Jacobian
-    // 1e-15 inside worn knives' surfaces), then the Delaunay mesher, whose boundary recovery
-    // differs: each fails on surfaces the other fills
-    try
-      {
-        run_meshing_job({stl, msh, h, true, true, as_is, time_limit});
-      }
-    catch (const InputError &hxt)
-      {
-        try
-          {
-            run_meshing_job({stl, msh, h, false, true, as_is, time_limit});
-          }
-        catch (const InputError &delaunay)
-          {
-            throw InputError(stl, std::string(delaunay.what()) + " (and with HXT: " + hxt.what() + ")");
-          }
-      }
+    run_meshing_job({stl, msh, h, false, true, as_is, time_limit});
     read_msh_file(msh, tria);
     std::filesystem::remove(msh);
   }

@@ -1,9 +1,7 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/error.h>
-#include <abrade/common/format_number.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_surface.h>
-#include <abrade/fem/surface_check.h>
 
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -62,24 +60,21 @@ namespace abrade::fem
     return n;
   }
 
-  std::vector<Tensor<1, 3>> SolidSurface::inward_offsets(const std::vector<double> &depth,
-                                                         const std::vector<bool>   *held) const
+  std::vector<Tensor<1, 3>> SolidSurface::inward_offsets(const std::vector<double> &depth) const
   {
     // per vertex: M = sum A n n^T, b = -sum A n depth (n outward); u minimises sum A (n.u + depth)^2
     std::vector<SymmetricTensor<2, 3>> m(vertices.size());
     std::vector<Tensor<1, 3>>          b(vertices.size());
-    for (std::size_t k = 0; k < triangles.size(); ++k)
+    for (const auto &t : triangles)
       {
-        const auto  &t    = triangles[k];
         Tensor<1, 3> n    = cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]);
         const double area = 0.5 * n.norm();
         if (area <= 0)
           continue;
         n /= 2 * area;
-        const SymmetricTensor<2, 3> nn    = symmetrize(outer_product(n, n));
-        const double                wears = held && (*held)[k] ? 0.0 : 1.0;
+        const SymmetricTensor<2, 3> nn = symmetrize(outer_product(n, n));
         for (unsigned v : t)
-          m[v] += area * nn, b[v] -= area * wears * depth[v] * n;
+          m[v] += area * nn, b[v] -= area * depth[v] * n;
       }
     std::vector<Tensor<1, 3>> u(vertices.size());
     for (std::size_t v = 0; v < vertices.size(); ++v)
@@ -165,71 +160,6 @@ namespace abrade::fem
           thickness[v] = hair + t * (reach - hair);
       }
     return thickness;
-  }
-
-  SolidSurface subdivided(const SolidSurface &s, unsigned m)
-  {
-    if (m <= 1)
-      {
-        SolidSurface same;
-        same.vertices = s.vertices, same.triangles = s.triangles, same.boundary_id = s.boundary_id;
-        return same;
-      }
-    SolidSurface out;
-    out.vertices = s.vertices; // the corners first, with their indices
-    // the points inside an edge, m - 1 of them from its lower-numbered end, made once
-    std::map<std::pair<unsigned, unsigned>, unsigned> edge_first;
-    auto on_edge = [&](unsigned a, unsigned b, unsigned k) { // k-th of m from a towards b
-      if (k == 0)
-        return a;
-      if (k == m)
-        return b;
-      const bool forward = a < b;
-      const auto key     = forward ? std::make_pair(a, b) : std::make_pair(b, a);
-      auto       it      = edge_first.find(key);
-      if (it == edge_first.end())
-        {
-          it = edge_first.emplace(key, static_cast<unsigned>(out.vertices.size())).first;
-          for (unsigned j = 1; j < m; ++j)
-            out.vertices.push_back(s.vertices[key.first] + (double(j) / m) * (s.vertices[key.second] - s.vertices[key.first]));
-        }
-      return it->second + (forward ? k : m - k) - 1;
-    };
-    for (std::size_t t = 0; t < s.triangles.size(); ++t)
-      {
-        const auto &[a, b, c] = s.triangles[t];
-        // lattice point (i, j): a + i/m (b - a) + j/m (c - a), i + j <= m
-        std::vector<unsigned> index((m + 1) * (m + 1), 0);
-        auto                  at = [&](unsigned i, unsigned j) -> unsigned & { return index[i * (m + 1) + j]; };
-        for (unsigned i = 0; i <= m; ++i)
-          for (unsigned j = 0; i + j <= m; ++j)
-            {
-              if (j == 0)
-                at(i, j) = on_edge(a, b, i);
-              else if (i == 0)
-                at(i, j) = on_edge(a, c, j);
-              else if (i + j == m)
-                at(i, j) = on_edge(b, c, j);
-              else
-                {
-                  at(i, j) = static_cast<unsigned>(out.vertices.size());
-                  out.vertices.push_back(s.vertices[a] + (double(i) / m) * (s.vertices[b] - s.vertices[a]) +
-                                         (double(j) / m) * (s.vertices[c] - s.vertices[a]));
-                }
-            }
-        for (unsigned i = 0; i < m; ++i)
-          for (unsigned j = 0; i + j < m; ++j)
-            {
-              out.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
-              out.boundary_id.push_back(s.boundary_id[t]);
-              if (i + j + 1 < m)
-                {
-                  out.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-                  out.boundary_id.push_back(s.boundary_id[t]);
-                }
-            }
-      }
-    return out;
   }
 
   double typical_thickness(const SolidSurface &s, types::boundary_id id)
@@ -363,18 +293,6 @@ namespace abrade::fem
     std::filesystem::create_directories(dir);
     // a name of this process's own: under MPI every rank meshes its copy of the knife
     const std::string stl = dir + "/remesh-surface-" + std::to_string(::getpid()) + ".stl";
-    // a surface that crosses itself has no inside: Gmsh's remeshing may still make one of it,
-    // and where neither way works the message says where it crosses (Gmsh's own "Two facets
-    // intersect" names no place)
-    std::string crossing_note;
-    if (const auto crossing = intersecting_triangles(surface, 1); !crossing.empty())
-      {
-        const auto   &t = surface.triangles[crossing[0][0]];
-        const double *p = &surface.points[3 * t[0]];
-        crossing_note   = "; the surface crosses itself: triangles " + std::to_string(crossing[0][0] + 1) + " and " +
-                        std::to_string(crossing[0][1] + 1) + " intersect near (" + io::format_number(p[0]) + ", " +
-                        io::format_number(p[1]) + ", " + io::format_number(p[2]) + ") m";
-      }
     io::write_stl(stl, surface);
     SolidFileSettings as_is;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
@@ -402,14 +320,8 @@ namespace abrade::fem
           }
         catch (const InputError &second)
           {
-            // kept for a look (each failure its own file): what Gmsh could not mesh
-            static int        failures = 0;
-            const std::string kept_as  = dir + "/unmeshed-surface-" + std::to_string(::getpid()) + "-" +
-                                        std::to_string(++failures) + ".stl";
-            std::error_code   ignored;
-            std::filesystem::copy_file(stl, kept_as, std::filesystem::copy_options::overwrite_existing, ignored);
-            throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface (kept as ") + kept_as +
-                                    "): " + first.what() + "; " + second.what() + crossing_note);
+            throw InputError(stl, std::string("Gmsh could neither remesh nor fill the surface: ") + first.what() +
+                                    "; " + second.what());
           }
       }
     // boundary ids from the old boundary triangle closest to each new face's centre

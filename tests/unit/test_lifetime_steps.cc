@@ -194,18 +194,6 @@ TEST(UpdateSize, FixedOrAFractionOfTheMeshSize)
   EXPECT_EQ(cycles_for_update(0, 0.05, 0.02, 3e-7), 3333);
 }
 
-// The update that would cross the depth limit ends a quarter of a regular update past it: from
-// 13.9987 mm to a 14 mm limit at 1 um a cycle, 0.5 mm past: 502 cycles, not 2000 (which wore
-// the 30 mm knife's plate away); nothing changes where the limit is far or passed.
-TEST(UpdateSize, TheLastUpdateEndsALittlePastTheLimit)
-{
-  EXPECT_EQ(cycles_to_pass(2000, 0.014 - 0.0139987, 0.0005, 1e-6), 502);
-  EXPECT_EQ(cycles_to_pass(2000, 0.004, 0.0005, 1e-6), 2000);
-  EXPECT_EQ(cycles_to_pass(2000, -0.001, 0.0005, 1e-6), 2000);
-  EXPECT_EQ(cycles_to_pass(2000, 0.001, 0.0005, 0), 2000);
-  EXPECT_EQ(cycles_to_pass(2000, 1e-12, 0, 1), 1);
-}
-
 TEST(StateFile, NumbersComeBackBitForBitAndErrorsNameTheLine)
 {
   const std::string path = fem::testing::tmp("abrade_state_file.txt");

@@ -245,35 +245,6 @@ TEST(SolidSurface, LocalThicknessAndWornThrough)
     }
 }
 
-// Subdivision keeps the closed surface closed and its shape: the same enclosed volume and area,
-// every edge in two triangles, m^2 times the triangles, the boundary ids kept.
-TEST(SolidSurface, SubdividedKeepsTheClosedSurface)
-{
-  KnifeGeometry    k;
-  Triangulation<3> tria;
-  k.mesh(tria, 0.05, tmp("abrade_subdivided.msh"));
-  const SolidSurface s = extract_surface(tria);
-  const SolidSurface fine = subdivided(s, 3);
-  EXPECT_EQ(fine.triangles.size(), 9 * s.triangles.size());
-  EXPECT_NEAR(enclosed_volume(fine), enclosed_volume(s), 1e-12);
-  EXPECT_NEAR(fine.area(), s.area(), 1e-12);
-  std::map<std::pair<unsigned, unsigned>, int> edges;
-  for (const auto &t : fine.triangles)
-    for (unsigned e = 0; e < 3; ++e)
-      ++edges[{std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])}];
-  for (const auto &[edge, n] : edges)
-    ASSERT_EQ(n, 2) << "an edge of " << n << " triangle(s)";
-  // Euler: V - E + F = 2 for the closed, genus-0 knife
-  EXPECT_EQ(long(fine.vertices.size()) - long(edges.size()) + long(fine.triangles.size()), 2);
-  std::map<types::boundary_id, double> area, fine_area;
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
-    area[s.boundary_id[t]] += s.triangle_area(t);
-  for (std::size_t t = 0; t < fine.triangles.size(); ++t)
-    fine_area[fine.boundary_id[t]] += fine.triangle_area(t);
-  for (const auto &[id, a] : area)
-    EXPECT_NEAR(fine_area[id], a, 1e-12) << "boundary id " << int(id);
-}
-
 // A hollow cube (a 1 m box around a 0.4 m cavity): the ray from a point of the outer wall meets
 // the cavity's wall first, 0.3 m in, not the far outer wall 1 m away; the first hit is the
 // thickness.

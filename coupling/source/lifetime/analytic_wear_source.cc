@@ -8,8 +8,6 @@
 #include <deal.II/base/function_parser.h>
 
 #include <cmath>
-#include <limits>
-#include <memory>
 #include <random>
 #include <stdexcept>
 
@@ -30,16 +28,16 @@ namespace abrade::coupling::lifetime
     public:
       AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, const std::vector<int> &seeds,
                          double scatter)
-        : expression(expression)
-        , tonnes_per_cycle(tonnes_per_cycle)
+        : tonnes_per_cycle(tonnes_per_cycle)
       {
         try
           {
-            parse(0)->value(dealii::Point<3>());
+            rate.initialize("x,y,z,t", expression, {}, true);
+            rate.value(dealii::Point<3>());
           }
         catch (const std::exception &)
           {
-            throw std::invalid_argument("cannot evaluate '" + expression + "' as a function of x, y, z, t and zmin");
+            throw std::invalid_argument("cannot evaluate '" + expression + "' as a function of x, y, z and t");
           }
         for (int s : seeds)
           {
@@ -54,20 +52,13 @@ namespace abrade::coupling::lifetime
       {
         CycleWear w;
         w.tonnes_per_cycle = tonnes_per_cycle;
-        const auto area    = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
-        // zmin: the lowest point of the wearable surface now, so that a rate can follow the
-        // edge as it recedes ('1e-6*(z < zmin + 0.003)')
-        double zmin = std::numeric_limits<double>::infinity();
-        for (std::size_t v = 0; v < area.size(); ++v)
-          if (area[v] > 0)
-            zmin = std::min(zmin, surface.vertices[v][2]);
-        auto rate = parse(std::isfinite(zmin) ? zmin : 0.0);
-        rate->set_time(tonnes);
+        rate.set_time(tonnes);
+        const auto          area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
         std::vector<double> volume(surface.vertices.size(), 0.0);
         for (std::size_t v = 0; v < volume.size(); ++v)
           if (area[v] > 0)
             {
-              const double r = rate->value(surface.vertices[v]);
+              const double r = rate.value(surface.vertices[v]);
               if (!(r >= 0) || !std::isfinite(r))
                 {
                   const auto &p = surface.vertices[v];
@@ -89,14 +80,7 @@ namespace abrade::coupling::lifetime
       std::vector<std::string> phases() const override { return {}; }
 
     private:
-      std::unique_ptr<dealii::FunctionParser<3>> parse(double zmin) const
-      {
-        auto f = std::make_unique<dealii::FunctionParser<3>>();
-        f->initialize("x,y,z,t", expression, {{"zmin", zmin}}, true);
-        return f;
-      }
-
-      std::string               expression;
+      dealii::FunctionParser<3> rate;
       double                    tonnes_per_cycle;
       std::vector<double>       factor; // per seed
     };

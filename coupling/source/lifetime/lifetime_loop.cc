@@ -361,14 +361,6 @@ namespace abrade::coupling::lifetime
     long n = cycles_for_update(s.fixed_cycles, s.fraction, knife_parameters.mesh_size, rates.largest);
     if (s.target_tonnes > 0 && tonnes_per_cycle_now > 0) // the last update ends at the target
       n = std::max(1L, std::min(n, long(std::ceil((s.target_tonnes - tonnes) / tonnes_per_cycle_now))));
-    // the adaptive update that would cross the depth limit ends a little past it (by a quarter
-    // of a regular update's depth at the fastest rate), not wherever the regular size puts it:
-    // the life is interpolated within a short step, and a limit near half the plate is not
-    // jumped over into a plate worn through (the 30 mm knife to 14 mm: the update from 13.999 mm
-    // asked for 16 mm, which left nothing of the plate)
-    if (s.fixed_cycles <= 0 && s.max_depth > 0)
-      n = cycles_to_pass(n, s.max_depth - history.back().values[depth_criterion],
-                         0.25 * s.fraction * knife_parameters.mesh_size, rates.largest);
     return n;
   }
 
@@ -412,15 +404,12 @@ namespace abrade::coupling::lifetime
         if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
           {
             st.moved = true;
-            const std::string cut_off =
-              st.result.volume_cut_off > 0
-                ? io::format_number(st.result.volume_cut_off * 1e6) + " cm^3 cut off by the wear"
-                : std::string();
             if (!st.result.rebuilt.empty())
               ctx.log.line("update " + std::to_string(update) + ": the worn surface built anew (" +
-                           st.result.rebuilt + ")" + (cut_off.empty() ? "" : "; " + cut_off));
-            else if (!cut_off.empty())
-              ctx.log.line("update " + std::to_string(update) + ": " + cut_off);
+                           st.result.rebuilt + ")" +
+                           (st.result.volume_cut_off > 0
+                              ? "; " + io::format_number(st.result.volume_cut_off * 1e6) + " cm^3 cut off by the wear"
+                              : std::string()));
             if (!st.result.surface_kept.empty())
               {
                 ++surfaces_kept;

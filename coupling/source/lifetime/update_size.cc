@@ -12,12 +12,4 @@ namespace abrade::coupling::lifetime
     const double n = std::floor(fraction * mesh_size / largest_rate);
     return n >= 1 ? (n < 1e15 ? long(n) : long(1e15)) : 1L;
   }
-
-  long cycles_to_pass(long n, double gap, double past, double largest_rate)
-  {
-    if (!(gap > 0) || !(largest_rate > 0))
-      return n;
-    const double enough = std::ceil((gap + past) / largest_rate);
-    return std::max(1L, enough < double(n) ? long(enough) : n);
-  }
 } // namespace abrade::coupling::lifetime

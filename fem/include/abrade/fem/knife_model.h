@@ -135,11 +135,10 @@ namespace abrade::fem
     struct Before
     {
       SolidSurface        surface;
-      std::vector<double> accumulated, displacement;
+      std::vector<double> depth, accumulated, displacement;
     };
-    /// The worn surface as eroded_surface() builds it (it cannot fold) from the design and the
-    /// depth accumulated at its points, meshed anew; the followed points carried over from
-    /// @p before. Throws RunError when Gmsh cannot mesh it.
+    /// The worn surface as eroded_surface() builds it from @p before (it cannot fold), meshed
+    /// anew; the followed points carried over. Throws RunError when Gmsh cannot mesh it.
     void rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r);
 
     /// The design surface, the fields and the quality threshold of the fresh mesh.
@@ -149,14 +148,6 @@ namespace abrade::fem
     std::unique_ptr<dealii::Triangulation<3>> tria;
     SolidSurface                              current_surface;
     SolidSurface                              design;
-    /// The design surface cut to a third of the mesh size, and the wear depth accumulated at
-    /// each of its vertices: at every update each design point adds the depth of the worn
-    /// surface's point closest to it, which is how fast its distance to the worn surface grows
-    /// (the nearest point recedes along the line to it). The worn solid is carved from the
-    /// design with these depths (rebuild_eroded), so the corners that one construction cuts
-    /// between its vertices are not carried into the next.
-    SolidSurface                              carved;
-    std::vector<double>                       carved_depth;
     std::shared_ptr<const geometry::SurfaceDistance> design_distance;
     std::vector<double>                       accumulated;
     std::vector<double>                       displacement;   ///< accumulated, 3 per surface vertex

@@ -33,18 +33,9 @@ namespace abrade::fem
     /// depth / sin(half angle) as the offset surface does, instead of by the depth alone (which
     /// leaves a growing spike). Directions the planes hardly constrain (eigenvalues below 1e-3 of
     /// the largest) are left out; the displacement is capped at 4 x depth.
-    /// Triangles with @p held true do not wear: their planes stay (offset 0), so a vertex on the
-    /// rim of a held face moves within its plane as the worn faces beside it recede, and a
-    /// vertex of held triangles only does not move.
-    std::vector<dealii::Tensor<1, 3>> inward_offsets(const std::vector<double> &depth,
-                                                     const std::vector<bool>   *held = nullptr) const;
+    std::vector<dealii::Tensor<1, 3>> inward_offsets(const std::vector<double> &depth) const;
     io::PolyData as_polydata() const;
   };
-
-  /// Each triangle of @p surface cut into m x m (m = @p pieces) on its barycentric lattice, the
-  /// points on shared edges shared (a closed surface stays closed), boundary ids kept; the
-  /// geometry is the same, the vertices m times denser along each edge.
-  SolidSurface subdivided(const SolidSurface &surface, unsigned pieces);
 
   /// Local wall thickness at every surface vertex: the distance along the inward normal to the
   /// surface on the other side (ray cast; infinity where the ray leaves through no triangle).

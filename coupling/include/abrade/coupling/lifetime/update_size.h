@@ -9,10 +9,4 @@ namespace abrade::coupling::lifetime
   /// @p fixed > 0: that many; otherwise max(1, floor(fraction x mesh size / largest depth rate)).
   /// @p largest_rate: the largest depth per cycle over the knife [m] (> 0).
   long cycles_for_update(long fixed, double fraction, double mesh_size, double largest_rate);
-
-  /// @p n cycles, or fewer: the update that would cross a limit @p gap ahead [m] ends @p past
-  /// beyond it at the fastest rate @p largest_rate [m per cycle] (so the life is interpolated
-  /// within a short step, and a limit is not jumped over); at least one cycle. A gap <= 0 or a
-  /// rate <= 0 leaves @p n.
-  long cycles_to_pass(long n, double gap, double past, double largest_rate);
 } // namespace abrade::coupling::lifetime
