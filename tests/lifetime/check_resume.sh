@@ -33,6 +33,10 @@ signal=${ABRADE_SIGNAL:-KILL}
 kill -s "$signal" "$pid" 2>/dev/null || { echo "the run finished before it could be killed"; exit 1; }
 pkill -"$signal" -f -- "--output $out/killed" 2>/dev/null || true # the MPI ranks, if any
 wait "$pid" 2>/dev/null || true
+gone() { # until no process of the killed run is left (at most 60 s)
+  for _ in $(seq 1 600); do pgrep -f -- "--output $out/killed" > /dev/null || return 0; sleep 0.1; done
+}
+gone
 killed_at=$(newest "$out/killed/checkpoint")
 if [[ -d $out/killed/.rank-1/checkpoint ]]; then
   u1=$(newest "$out/killed/.rank-1/checkpoint")
@@ -50,7 +54,11 @@ if [[ -z ${ABRADE_LAUNCH:-} ]]; then # the second kill: inside the first resumed
     sleep 0.01
   done
   kill -s "$signal" "$pid" 2>/dev/null || { echo "the resumed run finished before it could be killed"; exit 1; }
+  # the run itself, where the shell that runs the function did not exec it (a run left going
+  # finished the update beside the last resume, and the profiles had it twice)
+  pkill -"$signal" -f -- "--output $out/killed" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
+  gone
   (( $(newest "$out/killed/checkpoint") == killed_at )) || { echo "the second kill came after an update"; exit 1; }
 fi
 run "$prm" --output "$out/killed" --quiet --resume "${sets[@]}" > /dev/null
