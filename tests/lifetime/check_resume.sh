@@ -30,13 +30,16 @@ for _ in $(seq 1 600); do   # at most 60 s
   sleep 0.1
 done
 signal=${ABRADE_SIGNAL:-KILL}
-kill -s "$signal" "$pid" 2>/dev/null || { echo "the run finished before it could be killed"; exit 1; }
-pkill -"$signal" -f -- "--output $out/killed" 2>/dev/null || true # the MPI ranks, if any
-wait "$pid" 2>/dev/null || true
-gone() { # until no process of the killed run is left (at most 60 s)
+stop() { # the run started as $pid: signalled, with its processes (MPI ranks; the run itself where
+  # the shell running the function did not exec it: a run left going finished its update beside
+  # the last resume, and the profiles had that update twice), until none is left (at most 60 s)
+  kill -s "$signal" "$pid" 2>/dev/null || return 1
+  pkill -"$signal" -f -- "--output $out/killed" 2>/dev/null || true
+  wait "$pid" 2>/dev/null || true
   for _ in $(seq 1 600); do pgrep -f -- "--output $out/killed" > /dev/null || return 0; sleep 0.1; done
+  echo "the killed run is still going after 60 s"; exit 1
 }
-gone
+stop || { echo "the run finished before it could be killed"; exit 1; }
 killed_at=$(newest "$out/killed/checkpoint")
 if [[ -d $out/killed/.rank-1/checkpoint ]]; then
   u1=$(newest "$out/killed/.rank-1/checkpoint")
@@ -53,12 +56,7 @@ if [[ -z ${ABRADE_LAUNCH:-} ]]; then # the second kill: inside the first resumed
     grep -q "Resuming after update $killed_at" "$out/killed/log.txt" 2>/dev/null && break
     sleep 0.01
   done
-  kill -s "$signal" "$pid" 2>/dev/null || { echo "the resumed run finished before it could be killed"; exit 1; }
-  # the run itself, where the shell that runs the function did not exec it (a run left going
-  # finished the update beside the last resume, and the profiles had it twice)
-  pkill -"$signal" -f -- "--output $out/killed" 2>/dev/null || true
-  wait "$pid" 2>/dev/null || true
-  gone
+  stop || { echo "the resumed run finished before it could be killed"; exit 1; }
   (( $(newest "$out/killed/checkpoint") == killed_at )) || { echo "the second kill came after an update"; exit 1; }
 fi
 run "$prm" --output "$out/killed" --quiet --resume "${sets[@]}" > /dev/null
