@@ -18,7 +18,7 @@ packages=(
   # parallel
   libopenmpi-dev openmpi-bin
   # tests (chromium: the run report opened in a headless browser)
-  libgtest-dev numdiff chromium
+  libgtest-dev numdiff chromium strace
   # benchmarks: the peer codes and the plots (matplotlib-free: gnuplot draws the PNGs)
   liggghts lammps python3 gnuplot-nox
 )

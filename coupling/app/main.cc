@@ -11,6 +11,7 @@
 //
 // Exit codes: 0 success, 2 bad input (command line, parameter file, mesh), 3 run-time failure
 // (NaN, lost particle, inverted element), 1 anything else.
+#include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/common/termination.h>
@@ -30,6 +31,7 @@
 #include <abrade/field/commands.h>
 #include <abrade/report/report.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cmath>
@@ -145,7 +147,14 @@ namespace
     std::vector<int>  seeds;
     std::stringstream ss(text);
     for (std::string s; std::getline(ss, s, ',');)
-      seeds.push_back(integer("--seeds", s));
+      {
+        const int seed = integer("--seeds", s);
+        if (seed < 0)
+          throw InputError("command line", "--seeds: a seed is 0 or more, got " + s);
+        if (std::find(seeds.begin(), seeds.end(), seed) != seeds.end())
+          throw InputError("command line", "--seeds: seed " + s + " is given twice (the same bed twice is no replicate)");
+        seeds.push_back(seed);
+      }
     return seeds;
   }
 
@@ -216,7 +225,11 @@ namespace
         else if (a[k] == "--wall")
           cl.wall = value("--wall");
         else if (a[k] == "--jobs")
-          cl.jobs = integer("--jobs", value("--jobs"));
+          {
+            cl.jobs = integer("--jobs", value("--jobs"));
+            if (cl.jobs < 0)
+              throw InputError("command line", "--jobs must be 0 (one per core) or more, got " + a[k]);
+          }
         else if (a[k] == "--knives")
           cl.knives = value("--knives");
         else if (a[k] == "--lifetime-updates")
@@ -235,6 +248,27 @@ namespace
           throw InputError("command line", "more than one parameter file given ('" + cl.file + "', '" + a[k] + "')");
       }
     return cl;
+  }
+
+  /// DIR/parameters.prm: every parameter the run used. When the run reads its parameters from
+  /// that very file (`run d/parameters.prm --output d`), it is left as it is if it holds exactly
+  /// that, and the run is refused if not (the user's edits would be lost).
+  void write_parameters(const coupling::ParameterFile &params, const std::string &canonical,
+                        const std::string &path)
+  {
+    std::error_code ec;
+    for (const auto &input : params.files_read())
+      if (std::filesystem::equivalent(input, path, ec))
+        {
+          std::ifstream      in(input);
+          std::ostringstream text;
+          text << in.rdbuf();
+          if (text.str() == canonical)
+            return;
+          throw InputError(input, "is the output directory's parameters.prm, which the run writes: copy it out of "
+                                  "the output directory, or choose another --output");
+        }
+    io::write_file_atomically(path, canonical);
   }
 
   int run(const CommandLine &cl)
@@ -261,13 +295,14 @@ namespace
     const dem::Parallel ranks = dem::Parallel::world();
     const bool          root  = ranks.rank() == 0;
     io::OutputDirectory out(root ? dir : dir + "/.rank-" + std::to_string(ranks.rank()), dir);
-    io::Log             log;
+    out.claim();
+    const std::string canonical = params.canonical_text();
+    write_parameters(params, canonical, out.file("parameters.prm"));
+    io::Log log;
     log.set_echo(root);
     if (!root)
       io::ProgressLine::set_quiet(true);
     log.open(out.file("log.txt"));
-    const std::string canonical = params.canonical_text();
-    std::ofstream(out.file("parameters.prm")) << canonical;
 
     prm.enter_subsection("Simulation");
     const long threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : dem::default_thread_count(ranks);
@@ -454,11 +489,17 @@ int main(int argc, char **argv)
           coupling::ParameterFile p(cl.file, cl.sets);
           auto                     c = coupling::read_dem_case(p);
           io::OutputDirectory      out(cl.output);
+          out.claim();
           io::Log                  log; // to the terminal
           log.set_echo(true);
           coupling::fill_solid_model_walls(c, p, out.root(), log); // the FEM knife's surface, placed
           for (const auto &w : c.walls)
             {
+              std::error_code ec;
+              for (const auto &input : c.input_files)
+                if (std::filesystem::equivalent(input, out.file(w.wall.name + ".stl"), ec))
+                  throw InputError(input, "is wall " + w.wall.name + "'s mesh and the file export-walls would write "
+                                          "it to: choose another --output");
               dem::write_stl(out.file(w.wall.name + ".stl"), w.wall.mesh);
               std::cout << out.file(w.wall.name + ".stl") << ": " << w.wall.mesh.n_triangles() << " triangles\n";
             }

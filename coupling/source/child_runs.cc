@@ -1,6 +1,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/common/progress.h>
+#include <abrade/common/termination.h>
 #include <abrade/coupling/child_runs.h>
 
 #include <algorithm>
@@ -36,7 +37,7 @@ namespace abrade::coupling
       pool.emplace_back([&] {
         for (std::size_t k; (k = next++) < runs.size();)
           {
-            if (std::system(runs[k].command.c_str()) != 0)
+            if (io::run_child_command(runs[k].command) != 0)
               {
                 std::lock_guard<std::mutex> lock(failure_mutex);
                 failure = "run " + runs[k].dir + " failed (see " + runs[k].dir + ".log)";

@@ -8,6 +8,7 @@
 // minus one, with the uncertainty of the ratio from the two standard errors (independent
 // beds: first-order propagation).
 #include <abrade/common/error.h>
+#include <abrade/common/input_file.h>
 #include <abrade/common/external.h>
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
@@ -97,13 +98,13 @@ namespace abrade::coupling
     std::vector<std::string> labels;
     for (const auto &f : o.files)
       {
-        if (!std::filesystem::is_regular_file(f))
-          throw InputError(f, "file not found");
+        io::require_input_file(f);
         labels.push_back(label_of(f));
         if (std::count(labels.begin(), labels.end(), labels.back()) > 1)
           throw InputError(f, "two concepts named '" + labels.back() + "' (the file names name them)");
       }
-    const io::OutputDirectory out(o.output);
+    io::OutputDirectory out(o.output);
+    out.claim();
     const std::string         root = std::filesystem::absolute(o.output).string();
     out.subdirectory("beds"), out.subdirectory("runs");
 

@@ -109,14 +109,21 @@ namespace abrade::coupling
         }
       if (!bed.empty() && std::filesystem::path(bed).is_relative())
         bed = ctx.output.shared_file(bed);
-      // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes)
-      const bool here = !bed.empty() && std::filesystem::exists(bed);
-      if (sim.parallel().max(sim.parallel().rank() == 0 && here ? 1.0 : 0.0) > 0)
+      // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes;
+      // the reduction is also what makes the others wait for a bed rank 0 has just saved)
+      const auto saved = [&] {
+        const bool here = !bed.empty() && std::filesystem::exists(bed);
+        return sim.parallel().max(sim.parallel().rank() == 0 && here ? 1.0 : 0.0) > 0;
+      };
+      const auto load = [&] {
+        io::ScopedTimer t(ctx.timers, "load bed");
+        dem::load_bed(sim, bed);
+        check_bed_sizes(c, sim, bed);
+        sim.setup();
+      };
+      if (saved())
         {
-          io::ScopedTimer t(ctx.timers, "load bed");
-          dem::load_bed(sim, bed);
-          check_bed_sizes(c, sim, bed);
-          sim.setup();
+          load();
           ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.n_particles()) +
                        " particles, top at z = " + fmt(bed_top(sim), 4) + " m");
           return true;
@@ -165,6 +172,14 @@ namespace abrade::coupling
         {
           dem::save_bed(sim, bed);
           ctx.log.line("Saved the settled bed to " + bed);
+          // and go on from the file, not from the settled state in memory: a later run, a
+          // resumed one and the next cycle of a lifetime run start from the file, which holds
+          // the particles but neither their contact histories nor the settling's particle order
+          // and clock (a lifetime run killed before its first update resumed to a life of
+          // 1.4e7 t against 5.0e6 t uninterrupted)
+          if (!saved())
+            throw RunError("the settled bed " + bed + " was saved but is not there");
+          load();
         }
       return false;
     }

@@ -125,7 +125,9 @@ namespace abrade::coupling
         kp.geometry.mesh(*m.tria, kp.mesh_size, directory + "/knife.msh");
         return m;
       }
-    m.report     = fem::read_solid(kp.file, kp.mesh_size, *m.tria, kp.file_settings);
+    fem::SolidFileSettings settings = kp.file_settings;
+    settings.work_directory         = directory; // the run's own (nothing written outside it)
+    m.report     = fem::read_solid(kp.file, kp.mesh_size, *m.tria, settings);
     m.file_faces = fem::part_faces(*m.tria, m.report.face_names);
     try
       {

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/input_file.h>
 #include <abrade/common/file_extension.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
@@ -40,19 +41,31 @@ namespace abrade::coupling
       std::ostringstream s;
       if (in.peek() != std::ifstream::traits_type::eof() && !(s << in.rdbuf()))
         throw InputError(file, "cannot read the parameter file");
-      return s.str();
+      std::string text = s.str();
+      // a UTF-8 byte order mark (Windows editors write one) is no part of the first line
+      if (text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        text.erase(0, 3);
+      return text;
     }
 
     constexpr std::size_t max_line_length = 20000;
 
     /// Appends @p file's lines to @p text, every `include FILE` line replaced by that file's
     /// lines (relative to @p file's directory), recording where each line comes from.
+    /// A file included twice at every level of a chain doubles the work per level (an "include
+    /// bomb": 22 levels took minutes): no case needs more than this many inclusions in all.
+    constexpr std::size_t max_inclusions = 1000;
+
     void expand_includes(const std::string &file, std::vector<std::string> &chain, std::string &text,
-                         std::vector<std::pair<std::string, int>> &origin)
+                         std::vector<std::pair<std::string, int>> &origin, std::size_t &inclusions)
     {
       const std::string canonical = std::filesystem::weakly_canonical(file).string();
       if (chain.size() >= 32)
         throw InputError(file, "includes nested more than 32 deep");
+      if (++inclusions > max_inclusions)
+        throw InputError(file, "more than " + std::to_string(max_inclusions) +
+                                 " files included in all (a file included several times is counted each time: "
+                                 "files that include the same file twice, level after level?)");
       chain.push_back(canonical);
       std::istringstream in(read_text(file));
       std::string        line;
@@ -72,8 +85,14 @@ namespace abrade::coupling
               if (included.is_relative())
                 included = base / included;
               const std::string where = file + ":" + std::to_string(n);
-              if (!std::filesystem::is_regular_file(included))
-                throw InputError(where, "included file " + included.string() + " not found");
+              try
+                {
+                  io::require_input_file(included.string(), "included file");
+                }
+              catch (const InputError &e)
+                {
+                  throw InputError(where, e.what());
+                }
               if (std::find(chain.begin(), chain.end(), std::filesystem::weakly_canonical(included).string()) !=
                   chain.end())
                 {
@@ -84,7 +103,7 @@ namespace abrade::coupling
                                             included.filename().string() +
                                             "): a file cannot include itself, directly or through others");
                 }
-              expand_includes(included.string(), chain, text, origin);
+              expand_includes(included.string(), chain, text, origin, inclusions);
               continue;
             }
           text += line + "\n";
@@ -94,6 +113,17 @@ namespace abrade::coupling
     }
 
   } // namespace
+
+  std::vector<std::string> ParameterFile::files_read() const
+  {
+    std::vector<std::string> files;
+    if (!file.empty())
+      files.push_back(file);
+    for (const auto &[f, line] : origin)
+      if (std::find(files.begin(), files.end(), f) == files.end())
+        files.push_back(f);
+    return files;
+  }
 
   Override parse_override(const std::string &text)
   {
@@ -196,12 +226,10 @@ namespace abrade::coupling
       text = default_case_text();
     else
       {
-        if (!std::filesystem::exists(f))
-          throw InputError(f, "parameter file not found");
-        if (!std::filesystem::is_regular_file(f))
-          throw InputError(f, "not a regular file");
+        io::require_input_file(f, "parameter file");
         std::vector<std::string> chain;
-        expand_includes(f, chain, text, origin);
+        std::size_t              inclusions = 0;
+        expand_includes(f, chain, text, origin, inclusions);
       }
     std::vector<Override> overrides;
     for (const auto &s : set)
@@ -307,5 +335,18 @@ namespace abrade::coupling
     std::ostringstream s;
     prm.print_parameters(s, dealii::ParameterHandler::ShortPRM);
     return s.str();
+  }
+
+  std::string ParameterFile::identity_text()
+  {
+    prm.enter_subsection("Output");
+    const std::string directory = prm.get("Directory");
+    prm.set("Directory", "");
+    prm.leave_subsection();
+    const std::string text = canonical_text();
+    prm.enter_subsection("Output");
+    prm.set("Directory", directory);
+    prm.leave_subsection();
+    return text;
   }
 } // namespace abrade::coupling

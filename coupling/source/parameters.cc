@@ -256,11 +256,12 @@ namespace abrade::coupling
     prm.leave_subsection();
 
     prm.enter_subsection("Lifetime");
-    prm.declare_entry("Tonnes per cycle", "10", Double(0, huge),
+    prm.declare_entry("Tonnes per cycle", "10", Double(0, 1e6),
                       "[t] Material handled per operating cycle (the tonnes axis of the trajectory); 0: "
                       "the DEM's payload, the most mass above Simulation/Payload height at the end of a "
                       "phase, measured at every update (a grab: a knife that burrows worse takes less). "
-                      "Range: >= 0.");
+                      "Range: [0, 1e6] (the largest grabs take tens of tonnes a cycle: a million is "
+                      "a unit mistake).");
     prm.declare_entry("Seeds", "1", List(Integer(0)),
                       "Bed seeds of the replicate DEM cycles run at every update; their wear is "
                       "averaged (one settled bed per seed, saved and reused).");
@@ -470,7 +471,8 @@ namespace abrade::coupling
                       "Settled-bed file. If it exists, the bed is loaded from it and no particles "
                       "are generated; otherwise the bed is generated, settled and saved there, so "
                       "later runs (and every operating cycle) start from the same bed. A relative "
-                      "path is relative to the output directory. Empty: generate every time. "
+                      "path is relative to the output directory and stays inside it (no '..'); a "
+                      "bed shared between runs is named by an absolute path. Empty: generate every time. "
                       "A file ending in .csv, .dump, .lammpstrj or .liggghts is a bed made elsewhere "
                       "and is imported as it is (not settled again, never written; relative to the "
                       "parameter file): a CSV table with columns x, y, z and radius or diameter [m] "
@@ -893,6 +895,14 @@ namespace abrade::coupling
                  "no bed to import at '" + c.bed_file + "' (a .csv table or a LIGGGHTS/LAMMPS dump is read, never "
                  "written; abrade's own beds end in .bed)");
       }
+    else if (std::filesystem::path(c.bed_file).is_relative())
+      // a relative bed is the run's own, in its output directory: a way out of it ('../x.bed') is
+      // refused; a bed shared between runs is named by an absolute path, on purpose
+      for (const auto &part : std::filesystem::path(c.bed_file))
+        if (part == "..")
+          f.fail({"Particles", "Settling"}, "Bed file",
+                 "'" + c.bed_file + "' leads out of the output directory (a relative bed file is the run's own, "
+                 "inside it): name a bed shared between runs by its absolute path");
     prm.leave_subsection();
     prm.leave_subsection();
     apply_coarse_graining(f, c);
@@ -938,6 +948,7 @@ namespace abrade::coupling
             const std::string file = resolve(f, prm.get("File"));
             if (file.empty())
               f.fail(wp, "File", "Geometry = file needs a mesh file");
+            c.input_files.push_back(file);
             // CAD (a shell from a design tool): Gmsh meshes its surfaces to triangles of the
             // wall's 'Maximum edge length'
             const bool cad = fem::is_cad_file(file);

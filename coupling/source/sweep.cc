@@ -25,6 +25,7 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/child_runs.h>
+#include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/sweep.h>
 
 #include <algorithm>
@@ -215,12 +216,11 @@ namespace abrade::coupling
       for (std::size_t b = 0; b < a; ++b)
         if (o.varies[a].key == o.varies[b].key)
           throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice");
-    const io::OutputDirectory out(o.output);
+    if (o.jobs < 0)
+      throw InputError("command line", "--jobs must be 0 (one per core) or more, got " + std::to_string(o.jobs));
+    io::OutputDirectory out(o.output);
+    out.claim();
     const std::string         root = std::filesystem::absolute(o.output).string();
-    out.subdirectory("plots");
-    out.subdirectory("surfaces");
-    out.subdirectory("beds");
-    out.subdirectory("runs");
 
     // the grid: every combination of the varied values, the first parameter varying slowest
     std::vector<std::vector<std::string>> combos(1);
@@ -246,6 +246,35 @@ namespace abrade::coupling
                                              "' comes twice (a value repeated, or values that differ only in "
                                              "characters a directory name cannot hold)");
     }
+    // every run's parameters checked before any run starts (a misspelt key or a value out of
+    // its range once failed only after the first runs had been launched, exit 3)
+    for (const auto &c : combos)
+      {
+        std::vector<std::string> sets = o.sets;
+        for (std::size_t i = 0; i < o.varies.size(); ++i)
+          sets.push_back(o.varies[i].key + "=" + c[i]);
+        for (int seed : o.seeds)
+          {
+            sets.push_back("Particles/Generation/Seed=" + std::to_string(seed));
+            try
+              {
+                ParameterFile run(o.parameter_file, sets);
+                const auto    walls = dealii::Utilities::split_string_list(run.handler().get("Walls"));
+                if (std::find(walls.begin(), walls.end(), o.wall) == walls.end())
+                  throw InputError("--wall " + o.wall, "no such wall in the case (its walls: " +
+                                                         run.handler().get("Walls") + ")");
+              }
+            catch (const InputError &e)
+              {
+                throw InputError("sweep run " + name_of(c) + "-seed" + std::to_string(seed), e.what());
+              }
+            sets.pop_back();
+          }
+      }
+    out.subdirectory("plots");
+    out.subdirectory("surfaces");
+    out.subdirectory("beds");
+    out.subdirectory("runs");
     // a particle parameter changes the bed: one bed per seed and particle values
     auto bed_key = [&](const std::vector<std::string> &c, int seed) {
       std::string k = "bed-seed" + std::to_string(seed);

@@ -1,3 +1,4 @@
+#include "gmsh_session.h"
 #include <abrade/common/error.h>
 #include <abrade/common/termination.h>
 #include <abrade/fem/knife_geometry.h>
@@ -120,7 +121,7 @@ namespace abrade::fem
   void KnifeGeometry::build_and_mesh(const std::vector<std::pair<double, double>> &p, double h,
                                      const std::string &msh_file) const
   {
-    gmsh::initialize();
+    start_gmsh();
     io::install_termination_handlers(); // (Gmsh's own ignored SIGTERM and Ctrl-C)
     gmsh::option::setNumber("General.Terminal", 0);
     const int volume_tag = build(p, h);
@@ -130,7 +131,7 @@ namespace abrade::fem
   void KnifeGeometry::write_step(const std::string &step_file) const
   {
     check();
-    gmsh::initialize();
+    start_gmsh();
     io::install_termination_handlers(); // (Gmsh's own ignored SIGTERM and Ctrl-C)
     gmsh::option::setNumber("General.Terminal", 0);
     try

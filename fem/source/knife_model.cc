@@ -1,5 +1,6 @@
 #include <abrade/common/error.h>
 #include <abrade/common/hash.h>
+#include <abrade/common/temporary_directory.h>
 #include <abrade/fem/knife_model.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/mesh_motion.h>
@@ -23,7 +24,7 @@ namespace abrade::fem
     : settings(s), tria(std::make_unique<Triangulation<3>>())
   {
     if (settings.work_directory.empty())
-      settings.work_directory = (std::filesystem::temp_directory_path() / "abrade-knife").string();
+      settings.work_directory = io::private_temporary_directory();
     std::filesystem::create_directories(settings.work_directory);
     geometry.mesh(*tria, settings.mesh_size, settings.work_directory + "/knife.msh");
     if (settings.plate_thickness <= 0)
@@ -35,7 +36,7 @@ namespace abrade::fem
     : settings(s), tria(std::move(mesh))
   {
     if (settings.work_directory.empty())
-      settings.work_directory = (std::filesystem::temp_directory_path() / "abrade-knife").string();
+      settings.work_directory = io::private_temporary_directory();
     std::filesystem::create_directories(settings.work_directory);
     start();
   }

@@ -1,6 +1,9 @@
 // Reading a user's part (solid_file.h): Gmsh for CAD, STL and the physical names of .msh files,
 // deal.II's GridIn for the volume mesh.
+#include "gmsh_session.h"
 #include <abrade/common/error.h>
+#include <abrade/common/input_file.h>
+#include <abrade/common/temporary_directory.h>
 #include <abrade/common/file_extension.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/termination.h>
@@ -78,7 +81,7 @@ namespace abrade::fem
     template <typename F>
     void with_gmsh(const std::string &label, F &&f, const std::string &doing = "mesh it")
     {
-      gmsh::initialize();
+      start_gmsh();
       io::install_termination_handlers(); // (Gmsh installs its own, which ignored SIGTERM and Ctrl-C)
       gmsh::option::setNumber("General.Terminal", 0);
       try
@@ -539,18 +542,32 @@ namespace abrade::fem
                                                                    degrees * M_PI / 180);
   }
 
+  namespace
+  {
+    /// The settings' work directory, else this process's private temporary one.
+    std::string work_directory(const SolidFileSettings &settings)
+    {
+      if (settings.work_directory.empty())
+        return io::private_temporary_directory();
+      std::error_code ec;
+      std::filesystem::create_directories(settings.work_directory, ec);
+      if (ec)
+        throw RunError("cannot create " + settings.work_directory + ": " + ec.message());
+      return settings.work_directory;
+    }
+  } // namespace
+
   SolidFileReport read_solid(const std::string &path, double h, Triangulation<3> &tria, const SolidFileSettings &settings)
   {
     if (!(settings.scale > 0))
       throw InputError(path, "the file scale must be positive");
-    if (!std::filesystem::exists(path))
-      throw InputError(path, "solid file not found");
+    io::require_input_file(path, "solid file");
     const std::string ext = lower_extension(path);
     SolidFileReport   report;
     const bool        cad = is_cad_file(path);
     if (ext == ".msh")
       {
-        const std::string clean = (std::filesystem::temp_directory_path() /
+        const std::string clean = (std::filesystem::path(work_directory(settings)) /
                                    ("abrade-msh-" + std::to_string(::getpid()) + "-" +
                                     std::filesystem::path(path).filename().string()))
                                     .string();
@@ -593,7 +610,7 @@ namespace abrade::fem
           throw InputError(path, "meshing a CAD or STL solid needs a positive mesh size");
         // a name of this process's own: MPI ranks and the parallel runs of a study mesh at once
         static int        meshed = 0;
-        const std::string msh    = (std::filesystem::temp_directory_path() /
+        const std::string msh    = (std::filesystem::path(work_directory(settings)) /
                                  (std::filesystem::path(path).stem().string() + "-abrade-volume-" +
                                   std::to_string(::getpid()) + "-" + std::to_string(meshed++) + ".msh"))
                                   .string();
@@ -708,8 +725,7 @@ namespace abrade::fem
 
   void convert_to_step(const std::string &input, const std::string &step_file)
   {
-    if (!std::filesystem::exists(input))
-      throw InputError(input, "file not found");
+    io::require_input_file(input);
     if (lower_extension(step_file) != ".step" && lower_extension(step_file) != ".stp")
       throw InputError(step_file, "the output is a STEP file (.step or .stp)");
     with_gmsh(input, [&] {
@@ -732,8 +748,7 @@ namespace abrade::fem
 
   SolidSurface read_cad_surface(const std::string &path, double h)
   {
-    if (!std::filesystem::exists(path))
-      throw InputError(path, "CAD file not found");
+    io::require_input_file(path, "CAD file");
     if (!is_cad_file(path))
       throw InputError(path, "not a CAD file (.step/.stp or .iges/.igs)");
     if (!(h > 0))

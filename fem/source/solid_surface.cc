@@ -295,6 +295,7 @@ namespace abrade::fem
     const std::string stl = dir + "/remesh-surface-" + std::to_string(::getpid()) + ".stl";
     io::write_stl(stl, surface);
     SolidFileSettings as_is;
+    as_is.work_directory = dir;
     as_is.min_quality = 0; // the lifetime loop judges the quality of its remeshes itself
     // a worn surface meshes in seconds; Gmsh's surface classification can loop forever on a
     // tangled one (METIS): two minutes, then the other way

@@ -1,5 +1,6 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/common/external.h>
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
@@ -34,20 +35,24 @@ namespace abrade::field
 
   namespace
   {
+    std::string trimmed(const std::string &t)
+    {
+      const auto first = t.find_first_not_of(" \t"), last = t.find_last_not_of(" \t");
+      return first == std::string::npos ? "" : t.substr(first, last - first + 1);
+    }
+
     std::vector<double> numbers(const std::string &flag, const std::string &text, std::size_t count = 0)
     {
       std::vector<double> v;
       std::stringstream   s(text);
       std::string         item;
       while (std::getline(s, item, ','))
-        try
-          {
-            v.push_back(std::stod(item));
-          }
-        catch (const std::exception &)
-          {
-            throw InputError(flag, "'" + item + "' is not a number");
-          }
+        {
+          const auto x = io::finite_number(trimmed(item));
+          if (!x)
+            throw InputError(flag, "'" + item + "' is not a finite number");
+          v.push_back(*x);
+        }
       if (count && v.size() != count)
         throw InputError(flag, std::to_string(count) + " comma-separated numbers expected, got '" + text + "'");
       return v;
@@ -111,7 +116,11 @@ namespace abrade::field
       else if (flag == "--profile-planes")
         s.profile_planes = numbers(flag, value());
       else if (flag == "--tonnes")
-        s.tonnes = numbers(flag, value(), 1)[0];
+        {
+          s.tonnes = numbers(flag, value(), 1)[0];
+          if (!(s.tonnes > 0))
+            throw InputError(flag, "the tonnes handled must be positive, got " + io::format_number(s.tonnes));
+        }
       else
         return false;
       return true;
@@ -169,6 +178,7 @@ namespace abrade::field
                                          calibrate_usage);
     const auto                         ms = read_measurements(table, locations);
     io::OutputDirectory            out(output);
+    out.claim();
     std::vector<CalibrationResult> results;
     std::ofstream                  residuals(out.file("residuals.csv"));
     residuals.precision(10);

@@ -454,6 +454,7 @@ namespace abrade::field
 
     // outputs
     io::OutputDirectory out(s.output);
+    out.claim();
     add_array(scan.data, "deviation", deviation);
     if (r.has_reference)
       add_array(scan.data, "measured_depth", measured), add_array(scan.data, "predicted_depth", predicted_depth);

@@ -168,7 +168,7 @@ namespace abrade::coupling::lifetime
     ctx.output.subdirectory("beds");
     knife_output      = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory("knife"), "knife");
     checkpoints       = std::make_unique<LifetimeCheckpoints>(ctx.output.subdirectory("checkpoint"));
-    hash              = io::fnv1a_hex(ctx.parameters.canonical_text());
+    hash              = io::fnv1a_hex(ctx.parameters.identity_text());
     volume0           = knife->volume();
     criteria          = {{"maximum depth", s.max_depth},
                          {"maximum recession", s.max_recession},
@@ -224,6 +224,24 @@ namespace abrade::coupling::lifetime
     else
       knife = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
     frame = profile_frame(knife->design_surface());
+    // a limit the part cannot reach would be "reached" only by an extrapolation, far beyond
+    // anything the run followed (Maximum depth = 1 m on a 30 mm knife gave 5.5e8 t without a word)
+    if (s.max_depth > knife->thickness())
+      ctx.parameters.fail({"Lifetime"}, "Maximum depth",
+                          io::format_number(s.max_depth) + " m is more than the part's plate thickness (" +
+                            io::format_number(knife->thickness()) +
+                            " m): a depth below the design cannot reach it (a length in millimetres?)");
+    {
+      double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+      for (const auto &v : knife->design_surface().vertices)
+        for (int d = 0; d < 3; ++d)
+          lo[d] = std::min(lo[d], v[d]), hi[d] = std::max(hi[d], v[d]);
+      const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+      if (s.max_recession > size)
+        ctx.parameters.fail({"Lifetime"}, "Maximum recession",
+                            io::format_number(s.max_recession) + " m is more than the part's largest extent (" +
+                              io::format_number(size) + " m): no edge can recede that far (a length in millimetres?)");
+    }
     if (s.max_depth >= 0.5 * knife->thickness())
       warnings.push_back("Maximum depth " + io::format_number(s.max_depth) + " m is at least half the plate thickness (" +
                          io::format_number(knife->thickness()) +

@@ -1,5 +1,6 @@
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
+#include <abrade/common/input_file.h>
 
 #include <fstream>
 
@@ -54,9 +55,10 @@ namespace abrade::io
 
   CsvTable read_csv(const std::string &path)
   {
+    require_input_file(path);
     std::ifstream in(path);
     if (!in)
-      throw InputError(path, "file not found");
+      throw InputError(path, "cannot read the file");
     CsvTable t;
     t.file = path;
     std::string text;

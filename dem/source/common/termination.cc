@@ -1,10 +1,15 @@
 #include <abrade/common/termination.h>
 
+#include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 
 #include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 namespace abrade::io
@@ -14,8 +19,44 @@ namespace abrade::io
     // set once while the run is set up, read only by the handler (never freed)
     const std::string *summary_path = nullptr, *summary_aside = nullptr, *summary_text = nullptr;
 
+    constexpr int                 max_children = 256;
+    std::atomic<int>              child_groups[max_children];
+
+    /// Sends @p signal to every registered child group and waits for them (async-signal-safe:
+    /// kill, waitpid, nanosleep), 10 s at most, then kills what is left.
+    void end_children(int signal)
+    {
+      bool any = false;
+      for (auto &g : child_groups)
+        if (const int pgid = g.load(); pgid > 0)
+          ::kill(-pgid, signal), any = true;
+      if (!any)
+        return;
+      for (int tick = 0; tick < 1000; ++tick)
+        {
+          bool running = false;
+          for (auto &g : child_groups)
+            if (const int pgid = g.load(); pgid > 0)
+              {
+                ::waitpid(pgid, nullptr, WNOHANG); // an ended leader reaped (a zombie still counts)
+                if (::kill(-pgid, 0) != 0)
+                  g.store(0); // nobody left in the group
+                else
+                  running = true;
+              }
+          if (!running)
+            return;
+          const timespec ten_ms{0, 10'000'000};
+          ::nanosleep(&ten_ms, nullptr);
+        }
+      for (auto &g : child_groups)
+        if (const int pgid = g.load(); pgid > 0)
+          ::kill(-pgid, SIGKILL);
+    }
+
     extern "C" void on_termination(int signal)
     {
+      end_children(signal);
       static const char message[] = "\nabrade: interrupted; the last complete checkpoint is kept (a lifetime "
                                     "run continues with --resume)\n";
       [[maybe_unused]] auto written = ::write(2, message, sizeof message - 1);
@@ -37,6 +78,53 @@ namespace abrade::io
   {
     for (const int s : {SIGTERM, SIGINT, SIGHUP})
       std::signal(s, on_termination);
+  }
+
+  void register_child_group(int pgid)
+  {
+    for (auto &g : child_groups)
+      {
+        int empty = 0;
+        if (g.compare_exchange_strong(empty, pgid))
+          return;
+      }
+  }
+
+  void unregister_child_group(int pgid)
+  {
+    for (auto &g : child_groups)
+      {
+        int was = pgid;
+        g.compare_exchange_strong(was, 0);
+      }
+  }
+
+  int run_child_command(const std::string &command)
+  {
+    // what the child needs, made before fork (after it only async-signal-safe calls)
+    const char *argv[] = {"sh", "-c", command.c_str(), nullptr};
+    const pid_t parent = ::getpid();
+    const pid_t pid    = ::fork();
+    if (pid < 0)
+      return -1;
+    if (pid == 0)
+      {
+        ::setpgid(0, 0);
+        ::prctl(PR_SET_PDEATHSIG, SIGTERM); // a parent killed by SIGKILL takes its children along
+        if (::getppid() != parent)
+          ::_exit(143);
+        for (const int s : {SIGTERM, SIGINT, SIGHUP})
+          std::signal(s, SIG_DFL);
+        ::execv("/bin/sh", const_cast<char *const *>(argv));
+        ::_exit(127);
+      }
+    ::setpgid(pid, pid); // (also here: the group exists before a signal can be forwarded to it)
+    register_child_group(pid);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+      ;
+    unregister_child_group(pid);
+    return status;
   }
 
   void prepare_interrupted_summary(const std::string &path, const std::string &text)

@@ -1,15 +1,18 @@
 #include <abrade/common/error.h>
+#include <abrade/common/input_file.h>
+#include <abrade/common/obj_file.h>
 #include <abrade/common/legacy_vtk.h>
 #include <abrade/common/ply_file.h>
 #include <abrade/common/vtk_input.h>
 
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkPoints.h>
 #include <vtkCleanPolyData.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkPointData.h>
 #include <vtkTriangleFilter.h>
 #include <vtkNew.h>
-#include <vtkOBJReader.h>
 #include <vtkObject.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
@@ -42,42 +45,59 @@ namespace abrade::io
       return p;
     }
 
-    /// VTK's OBJ reader follows face indices unchecked (an index past the vertices, or 0, reads
-    /// out of bounds): every index is checked here first, naming the line.
-    void check_obj(const std::string &path)
+    /// What VTK's XML and STL readers hand back is checked before anything follows an index
+    /// or uses a coordinate: they read a connectivity past the points (`0 1 99999` for three
+    /// points crashed a wall's export; 7 or 1000 read memory past the points), offsets that do
+    /// not rise, and NaN or infinite coordinates (an STL wall with a NaN was "of zero area") as
+    /// they are. @p cells are one of the data set's cell arrays, @p kind names them.
+    void check_cells(const std::string &path, vtkCellArray *cells, vtkIdType n_points, const char *kind)
     {
-      std::ifstream in(path);
-      std::string   line;
-      long          vertices = 0;
-      for (long n = 1; std::getline(in, line); ++n)
+      if (!cells || cells->GetNumberOfCells() == 0)
+        return;
+      vtkDataArray *offsets = cells->GetOffsetsArray(), *connectivity = cells->GetConnectivityArray();
+      const vtkIdType n = cells->GetNumberOfCells(), size = connectivity->GetNumberOfTuples();
+      double          previous = 0;
+      for (vtkIdType c = 0; c <= n; ++c)
         {
-          std::istringstream words(line);
-          std::string        kind;
-          words >> kind;
-          if (kind == "v")
-            ++vertices;
-          else if (kind == "f" || kind == "l")
-            for (std::string corner; words >> corner;)
-              {
-                const std::string number = corner.substr(0, corner.find('/'));
-                std::size_t       used   = 0;
-                long              index  = 0;
-                try
-                  {
-                    index = std::stol(number, &used);
-                  }
-                catch (const std::exception &)
-                  {
-                    used = 0;
-                  }
-                if (used != number.size() || number.empty())
-                  throw InputError(path + ":" + std::to_string(n), "'" + corner + "' is not a vertex index");
-                if (index == 0 || index > vertices || index < -vertices)
-                  throw InputError(path + ":" + std::to_string(n),
-                                   "vertex index " + number + " out of range (" + std::to_string(vertices) +
-                                     " vertices defined before this line; indices count from 1, or back from -1)");
-              }
+          const double o = offsets->GetTuple1(c);
+          if (!(o >= previous && o <= double(size)) || (c == 0 && o != 0))
+            throw InputError(path, std::string("the ") + kind + "' offsets are broken at " + kind + " " +
+                                     std::to_string(c) + " (offset " + std::to_string(long(o)) + " of a connectivity of " +
+                                     std::to_string(size) + " indices)");
+          previous = o;
         }
+      for (vtkIdType k = 0; k < size; ++k)
+        {
+          const double i = connectivity->GetTuple1(k);
+          if (!(i >= 0 && i < double(n_points)))
+            throw InputError(path, std::string("point index ") + std::to_string(long(i)) + " in the " + kind +
+                                     "' connectivity (entry " + std::to_string(k) + ") is out of range (" +
+                                     std::to_string(n_points) + " points, counted from 0)");
+        }
+    }
+
+    void check_points(const std::string &path, vtkPoints *points)
+    {
+      if (!points)
+        return;
+      for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+        {
+          double x[3];
+          points->GetPoint(p, x);
+          if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+            throw InputError(path, "point " + std::to_string(p) + " has a coordinate that is not a finite number");
+        }
+    }
+
+    vtkSmartPointer<vtkPolyData> checked(const std::string &path, vtkSmartPointer<vtkPolyData> p)
+    {
+      const vtkIdType n = p->GetNumberOfPoints();
+      check_points(path, p->GetPoints());
+      check_cells(path, p->GetVerts(), n, "vertices");
+      check_cells(path, p->GetLines(), n, "lines");
+      check_cells(path, p->GetPolys(), n, "polygons");
+      check_cells(path, p->GetStrips(), n, "strips");
+      return p;
     }
 
     /// Keeps VTK's error window quiet while it lives: the caller reports in its own words.
@@ -91,29 +111,29 @@ namespace abrade::io
 
   vtkSmartPointer<vtkPolyData> read_polydata(const std::string &path)
   {
-    if (!std::filesystem::is_regular_file(path))
-      throw InputError(path, "file not found");
+    require_input_file(path);
     const std::string ext = lower_extension(path);
     QuietVtk          quiet;
     if (ext == ".stl")
-      return read_with<vtkSTLReader>(path);
+      return checked(path, read_with<vtkSTLReader>(path));
     if (ext == ".obj")
-      {
-        check_obj(path);
-        return read_with<vtkOBJReader>(path);
-      }
+      return read_obj(path);
     if (ext == ".ply")
       return read_ply(path);
     if (ext == ".vtk")
       return read_legacy_vtk(path);
     if (ext == ".vtp")
-      return read_with<vtkXMLPolyDataReader>(path);
+      return checked(path, read_with<vtkXMLPolyDataReader>(path));
     if (ext == ".vtu")
       {
         vtkNew<vtkXMLUnstructuredGridReader> r;
         r->SetFileName(path.c_str());
+        r->Update();
+        vtkUnstructuredGrid *grid = r->GetOutput();
+        check_points(path, grid->GetPoints());
+        check_cells(path, grid->GetCells(), grid->GetNumberOfPoints(), "cells");
         vtkNew<vtkDataSetSurfaceFilter> surface;
-        surface->SetInputConnection(r->GetOutputPort());
+        surface->SetInputData(grid);
         // deal.II's DataOut writes every cell with its own copies of its vertices: merge them,
         // then the faces two cells share come twice and are dropped (the outer surface remains)
         vtkNew<vtkCleanPolyData> merge;

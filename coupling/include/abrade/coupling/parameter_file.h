@@ -44,6 +44,11 @@ namespace abrade::coupling
                            const std::string &message) const;
     /// The full parameter set (defaults included) as .prm text.
     std::string canonical_text();
+    /// What makes a run the run it is: the canonical text less where it is written (a run moved
+    /// to another directory, or named by another spelling of its own, resumes as itself).
+    std::string identity_text();
+    /// The files read: the parameter file and every file it includes (none for the default case).
+    std::vector<std::string> files_read() const;
 
   private:
     /// The walls listed: at most 1,000, names that can be file names, and each listed in the

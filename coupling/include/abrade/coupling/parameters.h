@@ -51,6 +51,7 @@ namespace abrade::coupling
     std::string              wear_field = "archard_volume"; ///< Output/Wear field
     std::vector<std::string> warnings;            ///< parameters that do not follow it, ...
     std::string              bed_file;
+    std::vector<std::string> input_files; ///< the mesh files read (no output may replace one)
     std::vector<Phase>       phases;
     std::optional<double>    payload_height; ///< report the mass above it after every phase
     struct WallCase

@@ -9,6 +9,12 @@
 //   DIR/checkpoint/       restart data
 //   DIR/.rank-N/          under mpirun, what rank N > 0 writes (each rank runs the same job on
 //                         globally reduced data; rank 0's files are the results)
+//
+// A directory belongs to one run: claim() takes DIR/.abrade-lock (an flock(), which the kernel
+// releases when the process ends, also by SIGKILL), so a second run on the same directory is
+// refused with the first one's pid instead of mixing both runs' files; and it refuses a
+// directory holding symbolic links, which the run's writes would follow out of it.
+#include <memory>
 #include <string>
 
 namespace abrade::io
@@ -26,8 +32,13 @@ namespace abrade::io
     std::string shared_file(const std::string &name) const { return shared_path + "/" + name; }
     /// Creates (if needed) and returns the subdirectory @p name.
     std::string subdirectory(const std::string &name) const;
+    /// Makes the directory this process's own until it ends (see above); throws InputError
+    /// naming the directory when another process holds it or a symbolic link is inside it. A
+    /// second claim of a directory this process holds already does nothing.
+    void claim();
 
   private:
-    std::string root_path, shared_path;
+    std::string           root_path, shared_path;
+    std::shared_ptr<void> lock; ///< the open lock file while claimed
   };
 } // namespace abrade::io

@@ -41,6 +41,10 @@ namespace abrade::fem
     /// A CAD file with several solids: "" or "all" takes all of them as one part; a number
     /// takes the solid of that number (Gmsh's volume tag, as the message lists them).
     std::string solid;
+    /// Where the intermediate meshes go (the run's own directory, so that nothing is written
+    /// outside it); empty: a directory of this process's own, made with exclusive create in the
+    /// system's temporary folder and removed when the process ends.
+    std::string work_directory;
     /// Below this minimum scaled Jacobian a mesh made by Gmsh is optimised once more (Gmsh: vertices relocated, cells below 0.5 improved),
     /// and a mesh still below it is reported with the place of its worst cell.
     double min_quality = 0.05;

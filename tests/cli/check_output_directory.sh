@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# An output directory is the run's own (issue 35):
+#  - a second run on a directory in use is refused, naming the first one's pid (two runs 3 s
+#    apart once both "completed" with a torn trajectory.csv and a mixed log);
+#  - a symbolic link inside it (trajectory.csv, log.txt, knife/) is refused, its target untouched;
+#  - `run d/parameters.prm --output d` does not overwrite the user's edited file (and reruns
+#    the run's own unedited one); export-walls does not overwrite its input mesh;
+#  - a run resumes as itself when its directory is named by another spelling (absolute instead
+#    of relative) or was copied elsewhere;
+#  - a knife job writes nothing outside its output directory (strace: no file opened for
+#    writing elsewhere; Gmsh's FLTK preferences and temporary meshes were);
+#  - SIGTERM to a sweep ends its child runs too (they went on writing).
+#   check_output_directory.sh ABRADE SOURCE_DIR OUTDIR
+set -euo pipefail
+abrade=$1 src=$2 out=$3
+expect="bash $src/tests/expect_error.sh"
+rm -rf "$out" && mkdir -p "$out" && cd "$out"
+life=("$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --quiet)
+
+# the lock: a run in progress, then a second on its directory
+"${life[@]}" --output busy --set "Lifetime/Maximum updates=3" > /dev/null 2>&1 &
+first=$!
+for _ in $(seq 1 300); do [[ -s busy/.abrade-lock ]] && break; sleep 0.05; done
+$expect 2 "busy: another abrade run \(pid $first\) is writing into this output directory" -- "${life[@]}" --output busy
+wait $first || { echo "the first run failed beside the refused second"; exit 1; }
+# the lock goes with the process (also after SIGKILL): the directory is free again
+"${life[@]}" --output busy --set "Lifetime/Maximum updates=1" > /dev/null
+
+# links inside: refused, their targets untouched
+for name in trajectory.csv log.txt parameters.prm knife; do
+  mkdir -p "links_$name" && echo keep > "target_$name"
+  ln -s "$PWD/target_$name" "links_$name/$name"
+  $expect 2 "links_$name/$name: a symbolic link \(to .*target_$name\) inside the output directory" -- \
+    "${life[@]}" --output "links_$name" --set "Lifetime/Maximum updates=1"
+  [[ $(cat "target_$name") == keep ]] || { echo "target_$name was overwritten"; exit 1; }
+done
+
+# the run's own parameters.prm as the input: rerun as it is; edited, refused and kept
+"${life[@]}" --output own --set "Lifetime/Maximum updates=1" > /dev/null
+"$abrade" run own/parameters.prm --output own --quiet > /dev/null
+echo "# my note" >> own/parameters.prm
+cp own/parameters.prm edited.prm
+$expect 2 "own/parameters.prm: is the output directory's parameters.prm, which the run writes" -- \
+  "$abrade" run own/parameters.prm --output own --quiet
+cmp own/parameters.prm edited.prm
+# export-walls whose wall file is the file it would write
+mkdir -p walls && cp "$src/tests/cli/knife_mm.stl" walls/w.stl && cp walls/w.stl walls_w.stl
+printf 'set Job = dem\nset Walls = w\nsubsection Simulation\n  set Phases = only: 0.001\nend\nsubsection Wall w\n  set Geometry = file\n  set File = walls/w.stl\n  set Offset = 0, 0, 1\nend\n' > w.prm
+$expect 2 "walls/w.stl: is wall w's mesh and the file export-walls would write it to" -- \
+  "$abrade" export-walls w.prm --output walls
+cmp walls/w.stl walls_w.stl
+
+# resume by the parameters, not the directory's spelling
+three=(--set "Lifetime/Maximum updates=3")
+"${life[@]}" --output spelled "${three[@]}" > /dev/null
+cp spelled/trajectory.csv whole.csv && cp -r spelled copied
+rm spelled/checkpoint/*-3.* copied/checkpoint/*-3.*
+$expect 0 "Resuming after update 2" -- "$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --output "$PWD/spelled" \
+  "${three[@]}" --resume
+$expect 0 "Resuming after update 2" -- "$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --output copied \
+  "${three[@]}" --resume
+cmp whole.csv spelled/trajectory.csv
+cmp whole.csv copied/trajectory.csv
+
+# nothing written outside the output directory by a knife job (STEP part: Gmsh in the mesher)
+if command -v strace > /dev/null; then
+  printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.geo
+  "$abrade" convert block.geo --output block.step > /dev/null
+  strace -f -qq -e trace=openat,creat,rename,mkdir,unlink -o trace.txt "$abrade" run --quiet --output knife_job \
+    --set Job=knife --set Knife/Geometry=file --set "Knife/File=$PWD/block.step" \
+    --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
+  # files opened for writing (O_WRONLY, O_RDWR, O_CREAT), made or removed: inside knife_job/
+  # only (/dev/null and the terminal aside, and Open MPI's session directory ompi.* in the
+  # temporary folder: the MPI run time's own, removed by MPI_Finalize)
+  outside=$(grep -E 'openat\(.*(O_WRONLY|O_RDWR|O_CREAT)|creat\(|rename\(|mkdir\(|unlink\(' trace.txt |
+              grep -v -- "= -1 E" | grep -oE '"[^"]*"' | tr -d '"' |
+              while read -r f; do
+                case $f in
+                  /dev/null|/dev/tty|/dev/pts/*|/dev/shm/*|"${TMPDIR:-/tmp}"/ompi.*) ;;
+                  knife_job|knife_job/*|"$PWD"/knife_job|"$PWD"/knife_job/*) ;;
+                  *) echo "$f" ;;
+                esac
+              done | sort -u)
+  [[ -z $outside ]] || { echo "written outside the output directory:"; echo "$outside"; exit 1; }
+else
+  echo "strace not installed: the write check skipped"
+fi
+
+# SIGTERM to a sweep: its child runs end with it
+printf 'include %s\nset Walls = box\nsubsection Wall box\n  set Geometry = box\nend\n' "$src/tests/cli/small_bed.prm" > long.prm
+"$abrade" sweep long.prm --vary "Particles/Generation/Count=20,21" --seeds 1,2 --jobs 2 \
+  --wall box --output sweep --quiet --set "Simulation/Phases=long: 100" > /dev/null 2>&1 &
+sweep=$!
+for _ in $(seq 1 300); do (( $(pgrep -fc -- "--output $PWD/sweep/runs") >= 1 )) && break; sleep 0.1; done
+(( $(pgrep -fc -- "--output $PWD/sweep/runs") >= 1 )) || { echo "no child run started"; exit 1; }
+kill -TERM $sweep
+wait $sweep && { echo "the sweep ended 0 after SIGTERM"; exit 1; }
+sleep 0.5
+left=$(pgrep -fc -- "--output $PWD/sweep/runs" || true)
+(( left == 0 )) || { echo "$left child run(s) still going after the sweep ended"; pkill -f -- "--output $PWD/sweep/runs"; exit 1; }
+echo "output directories: the run's own"
