@@ -93,42 +93,12 @@ namespace abrade::coupling
     }
   } // namespace
 
-  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
+  namespace
   {
+    /// Generates the particles of @p c into @p sim (the fine region first, if any) and lets
+    /// them settle.
+    void generate_and_settle(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
     {
-      if (dem::is_imported_bed(bed)) // another code's bed, as it is (read_dem_case checked it is there)
-        {
-          io::ScopedTimer t(ctx.timers, "import bed");
-          const auto      imported = dem::import_bed(sim, bed, c.fill.material);
-          sim.setup();
-          ctx.log.line("Imported the bed " + bed + " (" + imported.format +
-                       (imported.timestep >= 0 ? ", timestep " + std::to_string(imported.timestep) : std::string()) +
-                       "): " + std::to_string(sim.n_particles()) + " particles, top at z = " + fmt(bed_top(sim), 4) +
-                       " m");
-          return true;
-        }
-      if (!bed.empty() && std::filesystem::path(bed).is_relative())
-        bed = ctx.output.shared_file(bed);
-      // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes;
-      // the reduction is also what makes the others wait for a bed rank 0 has just saved)
-      const auto saved = [&] {
-        const bool here = !bed.empty() && std::filesystem::exists(bed);
-        return sim.parallel().max(sim.parallel().rank() == 0 && here ? 1.0 : 0.0) > 0;
-      };
-      const auto load = [&] {
-        io::ScopedTimer t(ctx.timers, "load bed");
-        dem::load_bed(sim, bed);
-        check_bed_sizes(c, sim, bed);
-        sim.setup();
-      };
-      if (saved())
-        {
-          load();
-          ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.n_particles()) +
-                       " particles, top at z = " + fmt(bed_top(sim), 4) + " m");
-          return true;
-        }
-
       dem::FillRegion   fill = c.fill;
       dem::TriangleMesh region;
       if (!c.region_mesh_file.empty())
@@ -168,21 +138,62 @@ namespace abrade::coupling
       if (c.settle_ke > 0 && ke > c.settle_ke)
         ctx.log.warning("the bed did not settle below " + fmt(c.settle_ke) +
                         " J per particle within Particles/Settling/Maximum time");
-      if (!bed.empty())
-        {
-          dem::save_bed(sim, bed);
-          ctx.log.line("Saved the settled bed to " + bed);
-          // and go on from the file, not from the settled state in memory: a later run, a
-          // resumed one and the next cycle of a lifetime run start from the file, which holds
-          // the particles but neither their contact histories nor the settling's particle order
-          // and clock (a lifetime run killed before its first update resumed to a life of
-          // 1.4e7 t against 5.0e6 t uninterrupted)
-          if (!saved())
-            throw RunError("the settled bed " + bed + " was saved but is not there");
-          load();
-        }
-      return false;
     }
+  } // namespace
+
+  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
+  {
+    if (dem::is_imported_bed(bed)) // another code's bed, as it is (read_dem_case checked it is there)
+      {
+        io::ScopedTimer t(ctx.timers, "import bed");
+        const auto      imported = dem::import_bed(sim, bed, c.fill.material);
+        sim.setup();
+        ctx.log.line("Imported the bed " + bed + " (" + imported.format +
+                     (imported.timestep >= 0 ? ", timestep " + std::to_string(imported.timestep) : std::string()) +
+                     "): " + std::to_string(sim.n_particles()) + " particles, top at z = " + fmt(bed_top(sim), 4) +
+                     " m");
+        return true;
+      }
+    if (bed.empty()) // no bed file: generated for this run alone
+      {
+        generate_and_settle(c, sim, ctx);
+        return false;
+      }
+    if (std::filesystem::path(bed).is_relative())
+      bed = ctx.output.shared_file(bed);
+    // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes; the
+    // reduction is also what makes the others wait for a bed rank 0 has just saved)
+    const auto saved = [&] {
+      const bool here = std::filesystem::exists(bed);
+      return sim.parallel().max(sim.parallel().rank() == 0 && here ? 1.0 : 0.0) > 0;
+    };
+    const bool made = !saved();
+    if (made)
+      {
+        // The bed is made in a simulation of its own and the run goes on from the file, as a
+        // later run, a resumed one and every cycle of a lifetime run do: the settling leaves
+        // contact histories and wall states that the file does not hold (a lifetime run killed
+        // before its first update once resumed to a life of 1.4e7 t against 5.0e6 t
+        // uninterrupted: its first cycle had gone on from the settled simulation)
+        dem::Simulation settling(c.settings);
+        build_simulation(c, settling);
+        generate_and_settle(c, settling, ctx);
+        flush_warnings(settling, ctx.log);
+        dem::save_bed(settling, bed);
+        ctx.log.line("Saved the settled bed to " + bed);
+        if (!saved())
+          throw RunError("the settled bed " + bed + " was saved but is not there");
+      }
+    {
+      io::ScopedTimer t(ctx.timers, "load bed");
+      dem::load_bed(sim, bed);
+      check_bed_sizes(c, sim, bed);
+      sim.setup();
+    }
+    if (!made)
+      ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.n_particles()) + " particles, top at z = " +
+                   fmt(bed_top(sim), 4) + " m");
+    return !made;
   }
 
   void report_coarse_graining(const DemCase &c, JobContext &ctx)
