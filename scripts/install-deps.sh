@@ -19,6 +19,8 @@ packages=(
   libopenmpi-dev openmpi-bin
   # tests (chromium: the run report opened in a headless browser)
   libgtest-dev numdiff chromium strace
+  # in-process fuzzing of the readers (tests/fuzz/libfuzzer): clang with libFuzzer and the sanitizers
+  clang libclang-rt-14-dev
   # benchmarks: the peer codes and the plots (matplotlib-free: gnuplot draws the PNGs)
   liggghts lammps python3 gnuplot-nox
 )

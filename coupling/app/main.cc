@@ -358,18 +358,36 @@ namespace
             {}
         throw;
       }
-    finish("completed");
-    log.line("Done: " + out.file("summary.json"));
+    finish("completed"); // (the report shows the summary's status)
+    // the report is one of the run's declared outputs: a write that fails (a full disk) fails
+    // the run (exit 3); a report that cannot be made of what the run wrote is a warning
     if (root && job_name == "lifetime")
       try
         {
           report::write_paraview_script(dir);
           log.line("Report: " + report::write_report(dir));
         }
-      catch (const std::exception &e) // the run is done: a report that fails is a warning
+      catch (const RunError &e)
+        {
+          // a report cut short by a full disk is no output: its pieces go, which also makes
+          // room for the summary that says the run failed (else it would still say completed)
+          std::error_code ec;
+          std::filesystem::remove_all(out.file("report"), ec);
+          std::filesystem::remove(out.file("report.html.tmp"), ec);
+          try
+            {
+              finish(std::string("failed: ") + e.what());
+              log.file_only(std::string("error: ") + e.what());
+            }
+          catch (const std::exception &)
+            {}
+          throw;
+        }
+      catch (const std::exception &e)
         {
           log.line(std::string("warning: no report written: ") + e.what());
         }
+    log.line("Done: " + out.file("summary.json"));
     return 0;
   }
 } // namespace

@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <set>
@@ -483,6 +484,64 @@ namespace abrade::fem
       return {removed, duplicates};
     }
 
+    /// A part's STL must bound one solid: every edge shared by exactly two triangles, all of
+    /// them one connected piece. Gmsh meshed nothing of a surface with a hole, of two disjoint
+    /// solids or of edges shared by three or more triangles, and said only "No elements in
+    /// volume 1"; here the first such edge is named.
+    void check_closed_surface(const std::string &path)
+    {
+      std::vector<std::size_t> nodes, triangles, corners;
+      std::vector<double>      xyz, parametric;
+      gmsh::model::mesh::getNodes(nodes, xyz, parametric, -1, -1, true, false);
+      gmsh::model::mesh::getElementsByType(2, triangles, corners, -1);
+      std::map<std::size_t, std::size_t> index;
+      for (std::size_t k = 0; k < nodes.size(); ++k)
+        index[nodes[k]] = k;
+      auto point = [&](std::size_t node) {
+        const std::size_t k = index[node];
+        return "(" + format_number(xyz[3 * k]) + ", " + format_number(xyz[3 * k + 1]) + ", " +
+               format_number(xyz[3 * k + 2]) + ")";
+      };
+      std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edges; // -> triangles
+      for (std::size_t t = 0; t < triangles.size(); ++t)
+        for (int c = 0; c < 3; ++c)
+          {
+            const std::size_t a = corners[3 * t + c], b = corners[3 * t + (c + 1) % 3];
+            edges[{std::min(a, b), std::max(a, b)}].push_back(t);
+          }
+      std::size_t open = 0, shared = 0;
+      std::string first_open, first_shared;
+      for (const auto &[e, ts] : edges)
+        if (ts.size() == 1 && open++ == 0)
+          first_open = point(e.first) + " and " + point(e.second);
+        else if (ts.size() > 2 && shared++ == 0)
+          first_shared = point(e.first) + " and " + point(e.second) + " (" + std::to_string(ts.size()) + " triangles)";
+      if (open > 0)
+        throw InputError(path, "the surface is not closed: " + std::to_string(open) +
+                                 " edge(s) belong to one triangle only, the first between " + first_open +
+                                 " (a hole); a solid part needs a closed surface");
+      if (shared > 0)
+        throw InputError(path, std::to_string(shared) + " edge(s) are shared by more than two triangles, the first "
+                                                         "between " + first_shared +
+                                 ": not the surface of one solid (solids touching along an edge?)");
+      // connected pieces: triangles joined across their edges
+      std::vector<std::size_t> parent(triangles.size());
+      for (std::size_t t = 0; t < parent.size(); ++t)
+        parent[t] = t;
+      std::function<std::size_t(std::size_t)> root = [&](std::size_t t) {
+        return parent[t] == t ? t : parent[t] = root(parent[t]);
+      };
+      for (const auto &[e, ts] : edges)
+        parent[root(ts[0])] = root(ts[1]);
+      std::set<std::size_t> pieces;
+      for (std::size_t t = 0; t < parent.size(); ++t)
+        pieces.insert(root(t));
+      if (pieces.size() > 1)
+        throw InputError(path, "the surface is " + std::to_string(pieces.size()) +
+                                 " separate closed pieces: a part is one solid (give each its own file, or "
+                                 "join them in the CAD tool)");
+    }
+
     void load_stl(const std::string &path, double h, const SolidFileSettings &settings, SolidFileReport *report,
                   bool keep_triangles = false)
     {
@@ -503,6 +562,8 @@ namespace abrade::fem
         report->notes.push_back(std::to_string(removed) + " triangle(s) of zero area removed from the STL");
       if (duplicates > 0 && report)
         report->notes.push_back(std::to_string(duplicates) + " repeated facet(s) removed from the STL");
+      if (report) // a user's part (a worn surface, filled as it is, was checked where it was built)
+        check_closed_surface(path);
       check_extent(path, model_box(), settings.scale, settings, false);
       check_volume(path, enclosed_volume_of_triangles() * std::pow(settings.scale, 3), h, settings);
       if (!keep_triangles)
@@ -527,6 +588,60 @@ namespace abrade::fem
         if (cell->active_cell_index() == index)
           return cell->center();
       return {};
+    }
+  } // namespace
+
+  namespace
+  {
+    /// A user's volume mesh must be one solid: no cell given twice (a tetrahedron three times
+    /// over was blamed on Knife/Clamped faces), no pieces that share no face (two disjoint
+    /// tetrahedra were taken as one part).
+    std::string format_point(const Point<3> &p)
+    {
+      return "(" + format_number(p[0]) + ", " + format_number(p[1]) + ", " + format_number(p[2]) + ")";
+    }
+
+    void check_one_solid(const std::string &path, const Triangulation<3> &tria)
+    {
+      std::map<std::vector<unsigned>, unsigned> seen;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          std::vector<unsigned> vertices;
+          for (const unsigned v : cell->vertex_indices())
+            vertices.push_back(cell->vertex_index(v));
+          std::sort(vertices.begin(), vertices.end());
+          const auto [it, inserted] = seen.emplace(vertices, cell->active_cell_index());
+          if (!inserted)
+            throw InputError(path, "cell " + std::to_string(cell->active_cell_index()) + " (at " +
+                                     format_point(cell->center()) + ") repeats cell " + std::to_string(it->second) +
+                                     ": a volume mesh holds each cell once");
+        }
+      std::vector<bool>     reached(tria.n_active_cells(), false);
+      std::vector<unsigned> todo = {0};
+      reached[0]                 = true;
+      std::vector<typename Triangulation<3>::active_cell_iterator> cells;
+      for (const auto &cell : tria.active_cell_iterators())
+        cells.push_back(cell);
+      std::size_t n_reached = 1;
+      while (!todo.empty())
+        {
+          const auto cell = cells[todo.back()];
+          todo.pop_back();
+          for (const unsigned f : cell->face_indices())
+            if (!cell->at_boundary(f))
+              {
+                const unsigned n = cell->neighbor(f)->active_cell_index();
+                if (!reached[n])
+                  reached[n] = true, todo.push_back(n), ++n_reached;
+              }
+        }
+      if (n_reached < cells.size())
+        {
+          const auto away = std::find(reached.begin(), reached.end(), false) - reached.begin();
+          throw InputError(path, "the mesh is in separate pieces: " + std::to_string(cells.size() - n_reached) + " of " +
+                                   std::to_string(cells.size()) + " cells share no face with cell 0 (the first at " +
+                                   format_point(cells[away]->center()) + "); a part is one solid");
+        }
     }
   } // namespace
 
@@ -583,6 +698,7 @@ namespace abrade::fem
             throw InputError(path, what.substr(what.find(": ") + 2));
           }
         std::filesystem::remove(clean);
+        check_one_solid(path, tria);
         bool hexahedra = false;
         for (const auto &cell : tria.active_cell_iterators())
           hexahedra = hexahedra || !cell->reference_cell().is_simplex();

@@ -4,7 +4,8 @@
 # follows no link inside its output directory) ends the run with exit 3 and a message naming the
 # file, and summary.json says "failed" (a CSV cut at 8 kB once left a summary saying "completed"):
 #  1. trajectory.csv (a CSV written row by row);
-#  2. the knife's first .vtu (a file written aside and renamed: its aside copy is /dev/full).
+#  2. the knife's first .vtu (a file written aside and renamed: its aside copy is /dev/full);
+#  3. a disk that fills up during the run.
 #   check_failed_writes.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -27,4 +28,26 @@ status csv/summary.json
 mkdir -p vtu/knife && full vtu/knife/knife_00000.vtu.tmp
 $expect 3 "run failed: cannot write vtu/knife/knife_00000.vtu \(disk full" -- "${run[@]}" --output vtu
 status vtu/summary.json
+# a disk that fills up at the end of the run (a file system that holds the run's data but not
+# its report, sized from the same run on the real disk): the run either writes every declared
+# output or ends with exit 3 naming what it could not write (a 2 MB disk once ended "completed"
+# without report.html and the profile picture)
+"${run[@]}" --output sized --set "Lifetime/Maximum updates=3" > /dev/null
+kb=$(( $(du -sk sized | cut -f1) - $(du -sk sized/report | cut -f1) - $(du -sk sized/report.html | cut -f1) + 64 ))
+mkdir -p small && mount -t tmpfs -o size=${kb}k tmpfs small
+set +e
+out_text=$("${run[@]}" --output small/run --set "Lifetime/Maximum updates=3" 2>&1 </dev/null)
+rc=$?
+set -e
+if [[ $rc -eq 0 ]]; then
+  for f in report.html trajectory.png knife/profile_0.50.png summary.json; do
+    [[ -s small/run/$f ]] || { echo "the run completed on a full disk without $f:"; echo "$out_text"; exit 1; }
+  done
+  echo "the 2 MB disk held the whole run"
+else
+  [[ $rc -eq 3 ]] || { echo "a full disk ended the run with exit $rc:"; echo "$out_text"; exit 1; }
+  grep -q "run failed: cannot write" <<< "$out_text" || { echo "no 'cannot write' message:"; echo "$out_text"; exit 1; }
+  status small/run/summary.json
+  echo "a full disk: exit 3, $(grep -o 'cannot write [^ ]*' <<< "$out_text" | head -1), summary failed"
+fi
 echo "failed writes: exit 3, summary failed"

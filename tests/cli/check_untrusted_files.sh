@@ -4,11 +4,13 @@
 #  - OBJ: texture/normal index out of range (VTK crashed), NaN/inf coordinates (read as 0), a
 #    vertex of two coordinates (z = 0), faces of mixed corner formats (the second kind dropped);
 #  - VTP: connectivity past the points (a crash, or memory read past them), offsets broken;
+#  - knife parts that are not one solid: an STL with a hole, two disjoint boxes, two boxes
+#    sharing an edge, a .msh of two disjoint tetrahedra or of one tetrahedron three times;
 #  - STL with a NaN (was "zero area"), a symlink loop (an internal error), a directory, a FIFO
 #    (a reader waits forever), /dev/zero (a reader reads forever), /dev/null as a mesh file;
 #  - parameter files: an include bomb (time doubling per level), a byte order mark (refused
-#    with an invisible character), Tonnes per cycle 1e300, an end-of-life limit larger than the
-#    part, a bed written outside the output directory ('../x.bed');
+#    with an invisible character), Tonnes per cycle 1e300, a bed written outside the output
+#    directory ('../x.bed'); an end-of-life limit larger than the part is warned about;
 #  - compare: --tonnes nan or -1, --profile-planes nan;
 #  - sweep: a misspelt --vary key, a value out of range, --seeds -1 / 1,1, --jobs -3, --wall
 #    nope: refused before any run starts (no runs/ directory made).
@@ -67,12 +69,48 @@ $expect 2 "more than 1000 files included in all" -- timeout 20 "$abrade" run i22
 printf '\xef\xbb\xbfset Job = knife\n' > bom.prm
 $expect 0 "job 'knife' from bom.prm" -- timeout 60 "$abrade" run bom.prm --output o_bom
 
+# knife parts that are not one solid: Gmsh said "No elements in volume 1", or took them
+knife=(timeout 60 "$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Knife/Geometry=file
+       --set "Knife/File scale=1" --set "Knife/Clamped faces=normal 0, 0, -1")
+python3 - <<'PY'
+def box(x0, y0, z0, x1, y1, z1):
+    v = [(x0, y0, z0), (x1, y0, z0), (x1, y1, z0), (x0, y1, z0), (x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)]
+    f = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6),
+         (3, 0, 4), (3, 4, 7)]
+    return [[v[i] for i in t] for t in f]
+def stl(name, triangles):
+    with open(name, "w") as out:
+        out.write("solid s\n")
+        for t in triangles:
+            out.write("facet normal 0 0 0\n outer loop\n" + "".join("  vertex %g %g %g\n" % p for p in t) +
+                      " endloop\nendfacet\n")
+        out.write("endsolid s\n")
+stl("hole.stl", box(0, 0, 0, 0.1, 0.06, 0.02)[1:])
+stl("two.stl", box(0, 0, 0, 0.1, 0.06, 0.02) + box(0.2, 0, 0, 0.3, 0.06, 0.02))
+stl("edge.stl", box(0, 0, 0, 0.1, 0.06, 0.02) + box(0.1, 0.06, 0, 0.2, 0.12, 0.02))
+PY
+$expect 2 "hole.stl: the surface is not closed: 3 edge\(s\) belong to one triangle only" -- "${knife[@]}" --output o_hole \
+  --set "Knife/File=$out/hole.stl"
+$expect 2 "two.stl: the surface is 2 separate closed pieces: a part is one solid" -- "${knife[@]}" --output o_two \
+  --set "Knife/File=$out/two.stl"
+$expect 2 "edge.stl: 1 edge\(s\) are shared by more than two triangles, the first between \(0.1, 0.06, 0\) and \(0.1, 0.06, 0.02\)" \
+  -- "${knife[@]}" --output o_edge --set "Knife/File=$out/edge.stl"
+nodes='$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 5 0 0\n6 6 0 0\n7 5 1 0\n8 5 0 1\n$EndNodes\n'
+printf "$nodes"'$Elements\n2\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 5 6 7 8\n$EndElements\n' > disjoint.msh
+$expect 2 "disjoint.msh: the mesh is in separate pieces: 1 of 2 cells share no face with cell 0" -- "${knife[@]}" \
+  --output o_disjoint --set "Knife/File=$out/disjoint.msh" --set "Knife/Clamped faces=normal 0, 0, -1"
+printf "$nodes"'$Elements\n3\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 1 2 3 4\n3 4 2 1 1 1 2 3 4\n$EndElements\n' > thrice.msh
+$expect 2 "thrice.msh: (cell 1 \(at .*\) repeats cell 0|Gmsh could not read it)" -- "${knife[@]}" --output o_thrice \
+  --set "Knife/File=$out/thrice.msh"
+
 life=("$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --quiet)
 $expect 2 "Tonnes per cycle=1e300.*Double 0...1e\+06" -- timeout 20 "${life[@]}" --output o_t --set "Lifetime/Tonnes per cycle=1e300"
-$expect 2 "Lifetime/Maximum depth: 1 m is more than the part's plate thickness" -- timeout 60 "${life[@]}" --output o_d \
-  --set "Lifetime/Maximum depth=1"
-$expect 2 "Lifetime/Maximum recession: 5 m is more than the part's largest extent" -- timeout 60 "${life[@]}" --output o_r \
-  --set "Lifetime/Maximum recession=5" --set "Lifetime/Recession points=0.2, 0, 0"
+# an end-of-life limit beyond the part: said, on the terminal and in the summary's warnings
+$expect 0 "Lifetime/Maximum depth 1 m is more than the part's plate thickness \(0.06 m\)" -- timeout 60 "${life[@]}" \
+  --output o_d --set "Lifetime/Maximum depth=1" --set "Lifetime/Maximum updates=1"
+grep -q "Maximum depth 1 m is more than" o_d/summary.json || { echo "the warning is not in summary.json"; exit 1; }
+$expect 0 "Lifetime/Maximum recession 5 m is more than the part's largest extent" -- timeout 60 "${life[@]}" \
+  --output o_r --set "Lifetime/Maximum recession=5" --set "Lifetime/Maximum updates=1"
 $expect 2 "Bed file: '../x.bed' leads out of the output directory" -- timeout 20 "$abrade" run \
   "$src/tests/cli/small_bed.prm" --output o_bed --set "Particles/Settling/Bed file=../x.bed"
 [[ ! -e x.bed ]] || { echo "a bed was written outside the output directory"; exit 1; }

@@ -14,6 +14,9 @@ Each target is a small valid input and the cheapest command that reads it:
   step  the knife as a STEP block in mm (abrade convert)         abrade run (Job = knife)
   xyz   a point-cloud scan                                       abrade compare
   vtp   a surface scan (VTK XML, ASCII)                          abrade compare
+  scan.stl, scan.ply, scan.obj: surface scans                    abrade compare
+  wall.vtp, wall.vtu: a wall's VTK XML surface / volume          abrade export-walls
+  knife.stl: the knife as a closed STL box (Gmsh meshes it)      abrade run (Job = knife)
   csv   a measurement table                                      abrade calibrate
   pvd   a lifetime run's knife.pvd                               abrade calibrate
   bed   a settled bed (binary, with its checksum)                abrade run (Job = dem)
@@ -192,10 +195,44 @@ CORPUS["dump"] = ("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n0\nITEM: BOX BOUNDS
                   "ITEM: ATOMS id type x y z vx vy vz radius\n"
                   "1 1 0 0 0.0275 0 0 0 0.0275\n2 1 0.06 0 0.0275 0 0 -0.1 0.0275\n3 1 0 0.06 0.08 0 0 0 0.0275\n")
 CORPUS["bed.csv"] = "id,x,y,z,diameter,vz\n1,0,0,0.0275,0.055,0\n2,0.06,0,0.0275,0.055,-0.1\n3,0,0.06,0.08,0.055,0\n"
-TARGETS = ("prm", "stl", "obj", "ply", "vtk", "msh", "step", "xyz", "vtp", "csv", "pvd", "bed", "dump", "bed.csv")
+# walls read from VTK XML (a VTP surface, the outer surface of a VTU), the knife as a closed STL
+# (meshed by Gmsh in abrade-mesher), and scans as STL, PLY and OBJ surfaces
+CORPUS["wall.vtp"] = CORPUS["vtp"]
+CORPUS["wall.vtu"] = """<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
+  <UnstructuredGrid>
+    <Piece NumberOfPoints="4" NumberOfCells="1">
+      <Points>
+        <DataArray type="Float64" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0 0 0 1</DataArray>
+      </Points>
+      <Cells>
+        <DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3</DataArray>
+        <DataArray type="Int64" Name="offsets" format="ascii">4</DataArray>
+        <DataArray type="UInt8" Name="types" format="ascii">10</DataArray>
+      </Cells>
+    </Piece>
+  </UnstructuredGrid>
+</VTKFile>
+"""
+_box = [(0, 0, 0), (0.1, 0, 0), (0.1, 0.06, 0), (0, 0.06, 0), (0, 0, 0.02), (0.1, 0, 0.02), (0.1, 0.06, 0.02), (0, 0.06, 0.02)]
+_faces = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6),
+          (3, 0, 4), (3, 4, 7)]
+CORPUS["knife.stl"] = "solid box\n" + "".join(
+    "facet normal 0 0 0\n outer loop\n" + "".join("  vertex %g %g %g\n" % _box[i] for i in f) + " endloop\nendfacet\n"
+    for f in _faces) + "endsolid box\n"
+_scan = [(0.05, 0.015, 0.05), (0.1, 0.015, 0.05), (0.075, 0.015, 0.1), (0.075, 0.0, 0.075)]
+CORPUS["scan.stl"] = "solid scan\n" + "".join(
+    "facet normal 0 0 0\n outer loop\n" + "".join("  vertex %g %g %g\n" % _scan[i] for i in f) + " endloop\nendfacet\n"
+    for f in [(0, 1, 2), (0, 3, 1), (1, 3, 2), (2, 3, 0)]) + "endsolid scan\n"
+CORPUS["scan.ply"] = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 4\nproperty list uchar int vertex_indices\nend_header\n" +
+                      "".join("%g %g %g\n" % p for p in _scan) + "3 0 1 2\n3 0 3 1\n3 1 3 2\n3 2 3 0\n")
+CORPUS["scan.obj"] = "".join("v %g %g %g\n" % p for p in _scan) + "f 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n"
+TARGETS = ("prm", "stl", "obj", "ply", "vtk", "wall.vtp", "wall.vtu", "msh", "step", "knife.stl", "xyz", "vtp",
+           "scan.stl", "scan.ply", "scan.obj", "csv", "pvd", "bed", "dump", "bed.csv")
 IMPORTED = ("dump", "bed.csv")
 BINARY = ("bed",)
-MADE = ("step", "xyz", "vtp", "csv", "pvd", "bed")  # made by abrade at the start (Fixtures)
+MADE = ("step", "xyz", "vtp", "scan.stl", "scan.ply", "scan.obj", "csv", "pvd", "bed")  # need the Fixtures
 
 
 
@@ -269,12 +306,12 @@ def mutate(data: bytes, rng: random.Random) -> bytes:
 def command(abrade, target, path, work, fixtures):
     if target == "prm":
         return [abrade, "export-walls", path, "--output", work]
-    if target in ("stl", "obj", "ply", "vtk"):
+    if target in ("stl", "obj", "ply", "vtk", "wall.vtp", "wall.vtu"):
         prm = os.path.join(work, "wall.prm")
         with open(prm, "w") as f:
             f.write(WALL_PRM.format(file=path))
         return [abrade, "export-walls", prm, "--output", work]
-    if target in ("xyz", "vtp"):
+    if target in ("xyz", "vtp", "scan.stl", "scan.ply", "scan.obj"):
         return [abrade, "compare", "--predicted", fixtures.worn, "--scan", path, "--output", os.path.join(work, "c")]
     if target == "csv":
         return [abrade, "calibrate", "--run", fixtures.run, "--measurements", path, "--output", os.path.join(work, "c")]
@@ -290,7 +327,7 @@ def command(abrade, target, path, work, fixtures):
     if target in ("bed", "dump", "bed.csv"):
         return [abrade, "run", os.path.join(fixtures.source, "tests/cli/small_bed.prm"), "--quiet", "--output",
                 os.path.join(work, "o"), "--set", f"Particles/Settling/Bed file={path}"]
-    clamped = "group bolted" if target == "msh" else "normal 0, 0, 1"
+    clamped = "group bolted" if target == "msh" else "normal 0, 0, -1" if target == "knife.stl" else "normal 0, 0, 1"
     return [abrade, "run", "--output", work, "--quiet", "--set", "Job=knife", "--set", "Knife/Geometry=file",
             "--set", f"Knife/File={path}", "--set", f"Knife/Clamped faces={clamped}"]
 

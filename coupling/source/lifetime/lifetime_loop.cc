@@ -224,13 +224,18 @@ namespace abrade::coupling::lifetime
     else
       knife = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
     frame = profile_frame(knife->design_surface());
-    // a limit the part cannot reach would be "reached" only by an extrapolation, far beyond
-    // anything the run followed (Maximum depth = 1 m on a 30 mm knife gave 5.5e8 t without a word)
+    // a limit the part cannot reach is "reached" only by an extrapolation far beyond anything
+    // the run followed (Maximum depth = 1 m on a 30 mm knife gave 5.5e8 t without a word): said
+    // on the terminal, in the summary's warnings and beside the life (a run that only wants a
+    // number of updates may set such a limit on purpose)
+    auto unreachable = [&](const std::string &what) {
+      ctx.log.warning(what);
+      warnings.push_back(what);
+    };
     if (s.max_depth > knife->thickness())
-      ctx.parameters.fail({"Lifetime"}, "Maximum depth",
-                          io::format_number(s.max_depth) + " m is more than the part's plate thickness (" +
-                            io::format_number(knife->thickness()) +
-                            " m): a depth below the design cannot reach it (a length in millimetres?)");
+      unreachable("Lifetime/Maximum depth " + io::format_number(s.max_depth) + " m is more than the part's plate "
+                  "thickness (" + io::format_number(knife->thickness()) + " m): no depth below the design reaches it, "
+                  "and a life to it is an extrapolation beyond the part (a length in millimetres?)");
     {
       double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
       for (const auto &v : knife->design_surface().vertices)
@@ -238,11 +243,11 @@ namespace abrade::coupling::lifetime
           lo[d] = std::min(lo[d], v[d]), hi[d] = std::max(hi[d], v[d]);
       const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
       if (s.max_recession > size)
-        ctx.parameters.fail({"Lifetime"}, "Maximum recession",
-                            io::format_number(s.max_recession) + " m is more than the part's largest extent (" +
-                              io::format_number(size) + " m): no edge can recede that far (a length in millimetres?)");
+        unreachable("Lifetime/Maximum recession " + io::format_number(s.max_recession) + " m is more than the part's "
+                    "largest extent (" + io::format_number(size) + " m): no edge recedes that far, and a life to it "
+                    "is an extrapolation beyond the part (a length in millimetres?)");
     }
-    if (s.max_depth >= 0.5 * knife->thickness())
+    if (s.max_depth >= 0.5 * knife->thickness() && s.max_depth <= knife->thickness())
       warnings.push_back("Maximum depth " + io::format_number(s.max_depth) + " m is at least half the plate thickness (" +
                          io::format_number(knife->thickness()) +
                          " m): the wear depth below the design is the distance to the nearest design surface and "

@@ -165,6 +165,11 @@ namespace abrade::coupling::lifetime
               "title sprintf('update %d', i+1)\n";
       }
     gp.close();
-    io::run_gnuplot(dir, "lifetime.gp");
+    if (!gp)
+      throw RunError("cannot write " + dir + "/lifetime.gp (disk full?)");
+    std::vector<std::string> pictures = {"trajectory.png"};
+    for (double f : planes)
+      pictures.push_back("knife/" + profile_name(f) + ".png");
+    io::run_gnuplot_for(dir, "lifetime.gp", pictures);
   }
 } // namespace abrade::coupling::lifetime

@@ -62,7 +62,7 @@ namespace abrade::io
           {
             // a corner: v, v/vt, v//vn or v/vt/vn; an index counts from 1, or back from -1
             auto index = [&](const std::string &corner, const std::string &number, long defined,
-                             const char *what) -> long {
+                             const char *what, const char *whats) -> long {
               std::size_t used = 0;
               long        i    = 0;
               try
@@ -77,7 +77,7 @@ namespace abrade::io
                 fail("'" + corner.substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn)");
               if (i == 0 || i > defined || i < -defined)
                 fail(std::string(what) + " index " + number + " out of range (" + std::to_string(defined) + " " +
-                     what + "s defined before this line; indices count from 1, or back from -1)");
+                     whats + " defined before this line; indices count from 1, or back from -1)");
               return i > 0 ? i - 1 : defined + i;
             };
             face.clear();
@@ -91,11 +91,11 @@ namespace abrade::io
                   parts.push_back("");
                 if (parts.empty() || parts.size() > 3)
                   fail("'" + corner.substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn)");
-                face.push_back(vtkIdType(index(corner, parts[0], long(points->GetNumberOfPoints()), "vertex")));
+                face.push_back(vtkIdType(index(corner, parts[0], long(points->GetNumberOfPoints()), "vertex", "vertices")));
                 if (parts.size() >= 2 && !parts[1].empty())
-                  index(corner, parts[1], textures, "texture coordinate");
+                  index(corner, parts[1], textures, "texture coordinate", "texture coordinates");
                 if (parts.size() == 3)
-                  index(corner, parts[2], normals, "normal");
+                  index(corner, parts[2], normals, "normal", "normals");
               }
             if (face.size() < 3)
               fail("a face of " + std::to_string(face.size()) + " corner(s); a face needs at least three");

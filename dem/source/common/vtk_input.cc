@@ -50,7 +50,8 @@ namespace abrade::io
     /// points crashed a wall's export; 7 or 1000 read memory past the points), offsets that do
     /// not rise, and NaN or infinite coordinates (an STL wall with a NaN was "of zero area") as
     /// they are. @p cells are one of the data set's cell arrays, @p kind names them.
-    void check_cells(const std::string &path, vtkCellArray *cells, vtkIdType n_points, const char *kind)
+    void check_cells(const std::string &path, vtkCellArray *cells, vtkIdType n_points, const char *kind,
+                     vtkIdType least)
     {
       if (!cells || cells->GetNumberOfCells() == 0)
         return;
@@ -60,10 +61,15 @@ namespace abrade::io
       for (vtkIdType c = 0; c <= n; ++c)
         {
           const double o = offsets->GetTuple1(c);
-          if (!(o >= previous && o <= double(size)) || (c == 0 && o != 0))
+          if (!(o >= previous && o <= double(size)) || (c == 0 && o != 0) || (c == n && o != double(size)))
             throw InputError(path, std::string("the ") + kind + "' offsets are broken at " + kind + " " +
                                      std::to_string(c) + " (offset " + std::to_string(long(o)) + " of a connectivity of " +
                                      std::to_string(size) + " indices)");
+          // VTK cannot build its cell map of a polygon of two points (and then reads a null one)
+          if (c > 0 && o - previous < double(least))
+            throw InputError(path, "cell " + std::to_string(c - 1) + " of the " + kind + " has " +
+                                     std::to_string(long(o - previous)) + " point(s), fewer than " +
+                                     std::to_string(least));
           previous = o;
         }
       for (vtkIdType k = 0; k < size; ++k)
@@ -89,14 +95,43 @@ namespace abrade::io
         }
     }
 
+    /// VTK reads an STL whose first bytes are not all text as binary and allocates for the
+    /// triangle count its header announces: a garbled ASCII file (a byte changed in a line)
+    /// asked for gigabytes and the process died. Such a file must be a binary STL whose count
+    /// fits its size (84 bytes of header and count, 50 a triangle).
+    void check_stl(const std::string &path)
+    {
+      std::ifstream in(path, std::ios::binary);
+      char          head[256];
+      in.read(head, sizeof head);
+      const std::streamsize n_read = in.gcount();
+      const bool            text   = std::all_of(head, head + n_read, [](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return (u >= 32 && u < 127) || u == '\t' || u == '\n' || u == '\r';
+      });
+      if (text)
+        return;
+      const auto size = std::filesystem::file_size(path);
+      if (size < 84)
+        throw InputError(path, "not an STL file: not text, and shorter (" + std::to_string(size) +
+                                 " bytes) than a binary STL's 84-byte header");
+      std::uint32_t count = 0;
+      std::memcpy(&count, head + 80, 4); // (little-endian, as the format is)
+      if (84 + 50 * std::uint64_t(count) > size)
+        throw InputError(path, "a binary STL whose header announces " + std::to_string(count) + " triangles (" +
+                                 std::to_string(84 + 50 * std::uint64_t(count)) + " bytes) in a file of " +
+                                 std::to_string(size) + " bytes: cut short, or an ASCII STL with bytes that are "
+                                                        "not text");
+    }
+
     vtkSmartPointer<vtkPolyData> checked(const std::string &path, vtkSmartPointer<vtkPolyData> p)
     {
       const vtkIdType n = p->GetNumberOfPoints();
       check_points(path, p->GetPoints());
-      check_cells(path, p->GetVerts(), n, "vertices");
-      check_cells(path, p->GetLines(), n, "lines");
-      check_cells(path, p->GetPolys(), n, "polygons");
-      check_cells(path, p->GetStrips(), n, "strips");
+      check_cells(path, p->GetVerts(), n, "vertices", 1);
+      check_cells(path, p->GetLines(), n, "lines", 2);
+      check_cells(path, p->GetPolys(), n, "polygons", 3);
+      check_cells(path, p->GetStrips(), n, "strips", 3);
       return p;
     }
 
@@ -115,7 +150,10 @@ namespace abrade::io
     const std::string ext = lower_extension(path);
     QuietVtk          quiet;
     if (ext == ".stl")
-      return checked(path, read_with<vtkSTLReader>(path));
+      {
+        check_stl(path);
+        return checked(path, read_with<vtkSTLReader>(path));
+      }
     if (ext == ".obj")
       return read_obj(path);
     if (ext == ".ply")
@@ -131,7 +169,7 @@ namespace abrade::io
         r->Update();
         vtkUnstructuredGrid *grid = r->GetOutput();
         check_points(path, grid->GetPoints());
-        check_cells(path, grid->GetCells(), grid->GetNumberOfPoints(), "cells");
+        check_cells(path, grid->GetCells(), grid->GetNumberOfPoints(), "cells", 1);
         vtkNew<vtkDataSetSurfaceFilter> surface;
         surface->SetInputData(grid);
         // deal.II's DataOut writes every cell with its own copies of its vertices: merge them,
