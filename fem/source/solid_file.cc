@@ -7,6 +7,7 @@
 #include <abrade/common/file_extension.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/termination.h>
+#include <abrade/common/vtk_input.h>
 #include <abrade/fem/cad_check.h>
 #include <abrade/fem/meshing_job.h>
 #include <abrade/fem/solid_file.h>
@@ -18,6 +19,7 @@
 #include <deal.II/physics/transformations.h>
 
 #include <gmsh.h>
+#include <vtkPolyData.h>
 
 #include "quiet_stdout.h"
 
@@ -315,6 +317,12 @@ namespace abrade::fem
                                       format_number(s.scale) + " meant? (1 reads it as declared); or set it"
                                   : "check the unit the file declares, or set Knife/File scale")
                   : "set Knife/File scale (the file has no unit)";
+      // a box a million times larger than its smallest side is no part in another unit: a point
+      // far from the rest (a corrupt coordinate)
+      const double smallest = std::min({extent[0], extent[1], extent[2]});
+      if (largest > s.max_extent && smallest > 0 && largest > 1e6 * smallest)
+        throw InputError(path, "the part's bounding box is " + size + ": a point lies far from the others (a "
+                                 "corrupt coordinate?), no change of unit makes it a part");
       if (largest > s.max_extent)
         throw InputError(path, "the part's bounding box is " + size + ", larger than " + format_number(s.max_extent) +
                                  " m: is it in millimetres? " + fix + " = " + format_number(0.001 * now));
@@ -545,6 +553,17 @@ namespace abrade::fem
     void load_stl(const std::string &path, double h, const SolidFileSettings &settings, SolidFileReport *report,
                   bool keep_triangles = false)
     {
+      {
+        // Gmsh's STL reader drops a file with a coordinate it cannot read (inf, 1e30) and says
+        // only that it "holds no triangles": read by abrade's checked reader first, which names
+        // the point, and checked for its size while Gmsh has not seen it
+        const auto poly = io::read_polydata(path);
+        if (poly->GetNumberOfCells() == 0)
+          throw InputError(path, "holds no triangles");
+        double b[6];
+        poly->GetBounds(b);
+        check_extent(path, {b[0], b[2], b[4], b[1], b[3], b[5]}, settings.scale, settings, false);
+      }
       gmsh::merge(path);
       {
         // a coordinate that is not a number sends Gmsh's meshers into an endless loop

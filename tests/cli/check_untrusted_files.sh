@@ -5,7 +5,8 @@
 #    vertex of two coordinates (z = 0), faces of mixed corner formats (the second kind dropped);
 #  - VTP: connectivity past the points (a crash, or memory read past them), offsets broken;
 #  - knife parts that are not one solid: an STL with a hole, two disjoint boxes, two boxes
-#    sharing an edge, a .msh of two disjoint tetrahedra or of one tetrahedron three times;
+#    sharing an edge, a .msh of two disjoint tetrahedra or of one tetrahedron three times, an
+#    STL with inf or 1e30 in a vertex ("holds no triangles");
 #  - STL with a NaN (was "zero area"), a symlink loop (an internal error), a directory, a FIFO
 #    (a reader waits forever), /dev/zero (a reader reads forever), /dev/null as a mesh file;
 #  - parameter files: an include bomb (time doubling per level), a byte order mark (refused
@@ -95,6 +96,13 @@ $expect 2 "two.stl: the surface is 2 separate closed pieces: a part is one solid
   --set "Knife/File=$out/two.stl"
 $expect 2 "edge.stl: 1 edge\(s\) are shared by more than two triangles, the first between \(0.1, 0.06, 0\) and \(0.1, 0.06, 0.02\)" \
   -- "${knife[@]}" --output o_edge --set "Knife/File=$out/edge.stl"
+# a knife STL with a coordinate Gmsh cannot read: it dropped the file ("holds no triangles")
+sed 's/vertex 0.0 -15.0 0.0/vertex inf -15.0 0.0/' "$src/tests/cli/knife_mm.stl" > knife_inf.stl
+$expect 2 "knife_inf.stl: point 0 has a coordinate that is not a finite number" -- "${knife[@]}" --output o_kinf \
+  --set "Knife/File=$out/knife_inf.stl" --set "Knife/File scale=0.001"
+sed 's/vertex 0.0 -15.0 0.0/vertex 1e30 -15.0 0.0/' "$src/tests/cli/knife_mm.stl" > knife_far.stl
+$expect 2 "knife_far.stl: the part's bounding box is 1e\+27 x 0.03 x 0.5 m: a point lies far from the others" -- \
+  "${knife[@]}" --output o_kfar --set "Knife/File=$out/knife_far.stl" --set "Knife/File scale=0.001"
 nodes='$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 5 0 0\n6 6 0 0\n7 5 1 0\n8 5 0 1\n$EndNodes\n'
 printf "$nodes"'$Elements\n2\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 5 6 7 8\n$EndElements\n' > disjoint.msh
 $expect 2 "disjoint.msh: the mesh is in separate pieces: 1 of 2 cells share no face with cell 0" -- "${knife[@]}" \
