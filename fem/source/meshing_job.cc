@@ -119,7 +119,8 @@ namespace abrade::fem
                                      number(s.min_extent),
                                      number(s.max_volume),
                                      number(s.max_cells),
-                                     s.solid.empty() ? "-" : s.solid};
+                                     s.solid.empty() ? "-" : s.solid,
+                                     job.kind};
     std::vector<char *> argv;
     for (auto &a : args)
       argv.push_back(a.data());
@@ -215,7 +216,7 @@ namespace abrade::fem
 
   int meshing_job_main(int argc, char **argv)
   {
-    if (argc != 12)
+    if (argc != 12 && argc != 13)
       {
         std::fprintf(stderr, "abrade-mesher: abrade's Gmsh child process (started by abrade, not by hand)\n");
         return 1;
@@ -232,6 +233,7 @@ namespace abrade::fem
     job.settings.max_volume    = std::atof(argv[9]);
     job.settings.max_cells     = std::atof(argv[10]);
     job.settings.solid         = std::string(argv[11]) == "-" ? "" : argv[11];
+    job.kind                   = argc == 13 ? argv[12] : "volume";
     try
       {
         const auto    notes = run_meshing_job_here(job);

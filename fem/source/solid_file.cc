@@ -829,8 +829,66 @@ namespace abrade::fem
     return report;
   }
 
+  namespace
+  {
+    SolidSurface read_cad_surface_here(const std::string &path, double h);
+    void         convert_to_step_here(const std::string &input, const std::string &step_file);
+
+    /// A surface from the mesher: its vertices and triangles as text, every coordinate with
+    /// 17 digits (the parent reads back exactly what the child made).
+    void write_surface_file(const std::string &path, const SolidSurface &s)
+    {
+      std::ofstream out(path);
+      out.precision(17);
+      out << "abrade-surface 1\n" << s.vertices.size() << ' ' << s.triangles.size() << '\n';
+      for (const auto &v : s.vertices)
+        out << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+      for (const auto &t : s.triangles)
+        out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+      if (!out)
+        throw RunError("cannot write " + path);
+    }
+
+    SolidSurface read_surface_file(const std::string &path)
+    {
+      std::ifstream in(path);
+      std::string   magic;
+      int           version = 0;
+      std::size_t   nv = 0, nt = 0;
+      in >> magic >> version >> nv >> nt;
+      if (magic != "abrade-surface" || version != 1)
+        throw RunError("the mesher's surface " + path + " is not one it writes");
+      SolidSurface s;
+      s.vertices.resize(nv);
+      s.triangles.resize(nt);
+      for (auto &v : s.vertices)
+        in >> v[0] >> v[1] >> v[2];
+      for (auto &t : s.triangles)
+        in >> t[0] >> t[1] >> t[2];
+      if (!in)
+        throw RunError("the mesher's surface " + path + " is cut short");
+      for (const auto &t : s.triangles)
+        for (const unsigned v : t)
+          if (v >= nv)
+            throw RunError("the mesher's surface " + path + " names a vertex it does not hold");
+      return s;
+    }
+  } // namespace
+
   std::vector<std::string> run_meshing_job_here(const MeshingJob &job)
   {
+    if (job.kind == "surface")
+      {
+        write_surface_file(job.output, read_cad_surface_here(job.input, job.mesh_size));
+        return {};
+      }
+    if (job.kind == "step")
+      {
+        convert_to_step_here(job.input, job.output);
+        return {};
+      }
+    if (job.kind != "volume")
+      throw RunError("the mesher knows no job '" + job.kind + "'");
     SolidFileReport report;
     const bool      cad = is_cad_file(job.input);
     with_gmsh(job.input, [&] {
@@ -863,6 +921,15 @@ namespace abrade::fem
     io::require_input_file(input);
     if (lower_extension(step_file) != ".step" && lower_extension(step_file) != ".stp")
       throw InputError(step_file, "the output is a STEP file (.step or .stp)");
+    MeshingJob job{input, step_file, 0, false, false, {}, 0};
+    job.kind = "step";
+    run_meshing_job(job); // Gmsh in the mesher process
+  }
+
+  namespace
+  {
+  void convert_to_step_here(const std::string &input, const std::string &step_file)
+  {
     with_gmsh(input, [&] {
       gmsh::open(input);
       gmsh::vectorpair volumes;
@@ -874,6 +941,7 @@ namespace abrade::fem
     if (!std::filesystem::exists(step_file))
       throw InputError(step_file, "Gmsh did not write it");
   }
+  } // namespace
 
   bool is_cad_file(const std::string &path)
   {
@@ -888,6 +956,23 @@ namespace abrade::fem
       throw InputError(path, "not a CAD file (.step/.stp or .iges/.igs)");
     if (!(h > 0))
       throw InputError(path, "meshing a CAD surface needs a positive mesh size");
+    // Gmsh in the mesher process (meshing_job.h); the surface comes back in a file of this
+    // process's own
+    static int        made = 0;
+    const std::string out  = io::private_temporary_directory() + "/" + std::filesystem::path(path).stem().string() +
+                            "-surface-" + std::to_string(::getpid()) + "-" + std::to_string(made++) + ".txt";
+    MeshingJob job{path, out, h, false, false, {}, 0};
+    job.kind = "surface";
+    run_meshing_job(job);
+    SolidSurface s = read_surface_file(out);
+    std::filesystem::remove(out);
+    return s;
+  }
+
+  namespace
+  {
+  SolidSurface read_cad_surface_here(const std::string &path, double h)
+  {
     SolidSurface s;
     with_gmsh(path, [&] {
       import_cad(path);
@@ -930,4 +1015,5 @@ namespace abrade::fem
       throw InputError(path, "Gmsh made no triangles of its surfaces");
     return s;
   }
+  } // namespace
 } // namespace abrade::fem

@@ -91,7 +91,11 @@ namespace abrade::io
           double x[3];
           points->GetPoint(p, x);
           if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-            throw InputError(path, "point " + std::to_string(p) + " has a coordinate that is not a finite number");
+            {
+              std::ostringstream where;
+              where << "point " << p << " (" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+              throw InputError(path, where.str() + " has a coordinate that is not a finite number");
+            }
         }
     }
 

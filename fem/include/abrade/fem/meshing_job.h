@@ -1,5 +1,6 @@
 #pragma once
-// Gmsh, contained. Gmsh can take the whole process down: an exception thrown inside one of its
+// Gmsh, contained (every Gmsh session on a user's file: volume meshes, a CAD wall's surface,
+// `abrade convert`). Gmsh can take the whole process down: an exception thrown inside one of its
 // OpenMP regions calls std::terminate (a worn surface whose faces became slivers did that at
 // 9 mm of uniform wear on the 30 mm knife), and a surface with a repeated facet sends METIS,
 // called from its surface classification, into a loop that ignores SIGTERM. So every volume
@@ -36,6 +37,10 @@ namespace abrade::fem
     SolidFileSettings settings; ///< scale, size and cell limits, the solid of a CAD file
     /// [s] How long the mesher may take; 0: ABRADE_MESHER_TIME_LIMIT, or 1800 s.
     double time_limit = 0;
+    /// What the child makes of the input: "volume" (the tetrahedral mesh above), "surface" (a
+    /// CAD file's surfaces as triangles of size mesh_size, written as a surface file:
+    /// write_surface_file) or "step" (the input's CAD model as STEP: abrade convert).
+    std::string kind = "volume";
   };
 
   /// Runs @p job in the mesher process and returns the notes of reading the part (the solid
@@ -47,7 +52,7 @@ namespace abrade::fem
   std::vector<std::string> run_meshing_job_here(const MeshingJob &job);
 
   /// The mesher executable's main: `abrade-mesher INPUT OUTPUT H AGAIN KEEP SCALE MAX_EXTENT
-  /// MIN_EXTENT MAX_VOLUME MAX_CELLS SOLID`. Exit 0: OUTPUT written, the notes in
+  /// MIN_EXTENT MAX_VOLUME MAX_CELLS SOLID [KIND]`. Exit 0: OUTPUT written, the notes in
   /// OUTPUT.notes; exit 2: the InputError's message in OUTPUT.error.
   int meshing_job_main(int argc, char **argv);
 } // namespace abrade::fem
