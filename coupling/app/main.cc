@@ -295,9 +295,23 @@ namespace
     const dem::Parallel ranks = dem::Parallel::world();
     const bool          root  = ranks.rank() == 0;
     io::OutputDirectory out(root ? dir : dir + "/.rank-" + std::to_string(ranks.rank()), dir);
-    out.claim();
-    const std::string canonical = params.canonical_text();
-    write_parameters(params, canonical, out.file("parameters.prm"));
+    const std::string   canonical = params.canonical_text();
+    {
+      // the ranks agree: a directory refused on one rank (rank 0 holds the lock and looks for
+      // links in all of it) ends every rank, not rank 0 alone while the others wait for it
+      std::string refused;
+      try
+        {
+          out.claim();
+          write_parameters(params, canonical, out.file("parameters.prm"));
+        }
+      catch (const InputError &e)
+        {
+          refused = e.what();
+        }
+      if (ranks.max(refused.empty() ? 0.0 : 1.0) > 0)
+        throw InputError(refused.empty() ? dir : "", refused.empty() ? "refused on another MPI rank" : refused);
+    }
     io::Log log;
     log.set_echo(root);
     if (!root)

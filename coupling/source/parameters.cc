@@ -896,13 +896,24 @@ namespace abrade::coupling
                  "written; abrade's own beds end in .bed)");
       }
     else if (std::filesystem::path(c.bed_file).is_relative())
-      // a relative bed is the run's own, in its output directory: a way out of it ('../x.bed') is
-      // refused; a bed shared between runs is named by an absolute path, on purpose
-      for (const auto &part : std::filesystem::path(c.bed_file))
-        if (part == "..")
+      {
+        // a relative bed is the run's own, in its output directory: one that would be written
+        // out of it ('../x.bed', not there yet) is refused; reading one from anywhere is fine,
+        // and a bed shared between runs is named by an absolute path, on purpose
+        prm.leave_subsection();
+        prm.leave_subsection();
+        prm.enter_subsection("Output");
+        const std::filesystem::path output = prm.get("Directory");
+        prm.leave_subsection();
+        prm.enter_subsection("Particles");
+        prm.enter_subsection("Settling");
+        const std::filesystem::path bed(c.bed_file);
+        const bool escapes = std::any_of(bed.begin(), bed.end(), [](const std::filesystem::path &part) { return part == ".."; });
+        if (escapes && !std::filesystem::exists(output / c.bed_file))
           f.fail({"Particles", "Settling"}, "Bed file",
-                 "'" + c.bed_file + "' leads out of the output directory (a relative bed file is the run's own, "
-                 "inside it): name a bed shared between runs by its absolute path");
+                 "'" + c.bed_file + "' would be written out of the output directory (a relative bed file is the run's "
+                 "own, inside it): name a bed shared between runs by its absolute path");
+      }
     prm.leave_subsection();
     prm.leave_subsection();
     apply_coarse_graining(f, c);

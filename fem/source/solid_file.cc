@@ -29,7 +29,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <fstream>
 #include <map>
 #include <set>
@@ -536,8 +535,10 @@ namespace abrade::fem
       std::vector<std::size_t> parent(triangles.size());
       for (std::size_t t = 0; t < parent.size(); ++t)
         parent[t] = t;
-      std::function<std::size_t(std::size_t)> root = [&](std::size_t t) {
-        return parent[t] == t ? t : parent[t] = root(parent[t]);
+      auto root = [&](std::size_t t) { // (iterative, halving the paths: no recursion on a large STL)
+        while (parent[t] != t)
+          t = parent[t] = parent[parent[t]];
+        return t;
       };
       for (const auto &[e, ts] : edges)
         parent[root(ts[0])] = root(ts[1]);

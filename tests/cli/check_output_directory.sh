@@ -66,17 +66,19 @@ cmp whole.csv copied/trajectory.csv
 if command -v strace > /dev/null; then
   printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.geo
   "$abrade" convert block.geo --output block.step > /dev/null
-  strace -f -qq -e trace=openat,creat,rename,mkdir,unlink -o trace.txt "$abrade" run --quiet --output knife_job \
+  strace -f -qq -e trace=%file -o trace.txt "$abrade" run --quiet --output knife_job \
     --set Job=knife --set Knife/Geometry=file --set "Knife/File=$PWD/block.step" \
     --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
-  # files opened for writing (O_WRONLY, O_RDWR, O_CREAT), made or removed: inside knife_job/
-  # only (/dev/null and the terminal aside, and Open MPI's session directory ompi.* in the
-  # temporary folder: the MPI run time's own, removed by MPI_Finalize)
-  outside=$(grep -E 'openat\(.*(O_WRONLY|O_RDWR|O_CREAT)|creat\(|rename\(|mkdir\(|unlink\(' trace.txt |
+  # files opened for writing (O_WRONLY, O_RDWR, O_CREAT), made, moved, linked, cut or removed:
+  # inside knife_job/ only (/dev/null and the terminal aside, and Open MPI's run time: its
+  # session directory ompi.* in the temporary folder and its shared memory /dev/shm/open_mpi.*,
+  # removed by MPI_Finalize)
+  outside=$(grep -E '^[0-9]+ +(open|openat|openat2)\(.*(O_WRONLY|O_RDWR|O_CREAT)|^[0-9]+ +(creat|mkdir|mkdirat|rmdir|unlink|unlinkat|rename|renameat|renameat2|link|linkat|symlink|symlinkat|truncate)\(' trace.txt |
               grep -v -- "= -1 E" | grep -oE '"[^"]*"' | tr -d '"' |
               while read -r f; do
                 case $f in
-                  /dev/null|/dev/tty|/dev/pts/*|/dev/shm/*|"${TMPDIR:-/tmp}"/ompi.*) ;;
+                  AT_FDCWD) ;;
+                  /dev/null|/dev/tty|/dev/pts/*|/dev/shm/open_mpi.*|"${TMPDIR:-/tmp}"/ompi.*) ;;
                   knife_job|knife_job/*|"$PWD"/knife_job|"$PWD"/knife_job/*) ;;
                   *) echo "$f" ;;
                 esac
@@ -91,11 +93,49 @@ printf 'include %s\nset Walls = box\nsubsection Wall box\n  set Geometry = box\n
 "$abrade" sweep long.prm --vary "Particles/Generation/Count=20,21" --seeds 1,2 --jobs 2 \
   --wall box --output sweep --quiet --set "Simulation/Phases=long: 100" > /dev/null 2>&1 &
 sweep=$!
-for _ in $(seq 1 300); do (( $(pgrep -fc -- "--output $PWD/sweep/runs") >= 1 )) && break; sleep 0.1; done
-(( $(pgrep -fc -- "--output $PWD/sweep/runs") >= 1 )) || { echo "no child run started"; exit 1; }
+# (signalled once a child run is in its cycle: its log exists)
+for _ in $(seq 1 300); do compgen -G "sweep/runs/*/log.txt" > /dev/null && break; sleep 0.1; done
+compgen -G "sweep/runs/*/log.txt" > /dev/null || { echo "no child run started"; exit 1; }
+signalled=$(date +%s.%N)
 kill -TERM $sweep
 wait $sweep && { echo "the sweep ended 0 after SIGTERM"; exit 1; }
+took=$(python3 -c "import sys, time; print(round(time.time() - float(sys.argv[1]), 1))" "$signalled")
+python3 -c "import sys; sys.exit(float(sys.argv[1]) > 5)" "$took" ||
+  { echo "the sweep took $took s to end after SIGTERM (its children were not told, or new ones started)"; exit 1; }
 sleep 0.5
 left=$(pgrep -fc -- "--output $PWD/sweep/runs" || true)
 (( left == 0 )) || { echo "$left child run(s) still going after the sweep ended"; pkill -f -- "--output $PWD/sweep/runs"; exit 1; }
+# no child run started after the signal: every run that started says it was interrupted
+shopt -s nullglob
+for s in sweep/runs/*/summary.json; do
+  grep -q '"status": "interrupted' "$s" || { echo "$s: $(grep -o '"status": "[^"]*' "$s") (started after the signal?)"; exit 1; }
+done
+# SIGKILL to a sweep (nothing can be forwarded): its children end with it (parent-death signal)
+rm -rf sweep
+"$abrade" sweep long.prm --vary "Particles/Generation/Count=20,21" --seeds 1,2 --jobs 2 \
+  --wall box --output sweep --quiet --set "Simulation/Phases=long: 100" > /dev/null 2>&1 &
+sweep=$!
+for _ in $(seq 1 300); do (( $(pgrep -fc -- "--output $PWD/sweep/runs") >= 1 )) && break; sleep 0.1; done
+kill -KILL $sweep
+wait $sweep 2>/dev/null || true
+for _ in $(seq 1 50); do pgrep -f -- "--output $PWD/sweep/runs" > /dev/null || break; sleep 0.1; done
+left=$(pgrep -fc -- "--output $PWD/sweep/runs" || true)
+(( left == 0 )) || { echo "$left child run(s) still going 5 s after the sweep was killed"; pkill -f -- "--output $PWD/sweep/runs"; exit 1; }
+
+# under MPI the ranks agree: a directory in use ends every rank (rank 1 once went on alone and
+# the job hung)
+if command -v mpirun > /dev/null; then
+  "${life[@]}" --output mpi_busy --set "Lifetime/Maximum updates=3" > /dev/null 2>&1 &
+  first=$!
+  for _ in $(seq 1 300); do [[ -s mpi_busy/.abrade-lock ]] && break; sleep 0.05; done
+  set +e # (mpirun adds its own lines: not expect_error.sh's single line)
+  said=$(OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 timeout 60 mpirun -np 2 \
+         --oversubscribe "$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --quiet --output mpi_busy 2>&1)
+  rc=$?
+  set -e
+  [[ $rc -eq 2 ]] || { echo "mpirun on a directory in use: exit $rc (124: hung), not 2:"; echo "$said"; exit 1; }
+  grep -q "mpi_busy: another abrade run (pid $first)" <<< "$said" || { echo "no refusal named:"; echo "$said"; exit 1; }
+  echo "ok: under mpirun, a directory in use ends every rank (exit 2)"
+  wait $first
+fi
 echo "output directories: the run's own"

@@ -108,7 +108,7 @@ printf "$nodes"'$Elements\n2\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 5 6 7 8\n$EndElements
 $expect 2 "disjoint.msh: the mesh is in separate pieces: 1 of 2 cells share no face with cell 0" -- "${knife[@]}" \
   --output o_disjoint --set "Knife/File=$out/disjoint.msh" --set "Knife/Clamped faces=normal 0, 0, -1"
 printf "$nodes"'$Elements\n3\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 1 2 3 4\n3 4 2 1 1 1 2 3 4\n$EndElements\n' > thrice.msh
-$expect 2 "thrice.msh: (cell 1 \(at .*\) repeats cell 0|Gmsh could not read it)" -- "${knife[@]}" --output o_thrice \
+$expect 2 "thrice.msh: cell 1 \(at \(0.25, 0.25, 0.25\)\) repeats cell 0" -- "${knife[@]}" --output o_thrice \
   --set "Knife/File=$out/thrice.msh"
 
 life=("$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --quiet)
@@ -119,7 +119,7 @@ $expect 0 "Lifetime/Maximum depth 1 m is more than the part's plate thickness \(
 grep -q "Maximum depth 1 m is more than" o_d/summary.json || { echo "the warning is not in summary.json"; exit 1; }
 $expect 0 "Lifetime/Maximum recession 5 m is more than the part's largest extent" -- timeout 60 "${life[@]}" \
   --output o_r --set "Lifetime/Maximum recession=5" --set "Lifetime/Maximum updates=1"
-$expect 2 "Bed file: '../x.bed' leads out of the output directory" -- timeout 20 "$abrade" run \
+$expect 2 "Bed file: '../x.bed' would be written out of the output directory" -- timeout 20 "$abrade" run \
   "$src/tests/cli/small_bed.prm" --output o_bed --set "Particles/Settling/Bed file=../x.bed"
 [[ ! -e x.bed ]] || { echo "a bed was written outside the output directory"; exit 1; }
 

@@ -56,13 +56,21 @@ if grep -q "Wear source *= *analytic" "$prm" 2>/dev/null; then :; else
   at_event "at the first bed file (before the first update)" bed_exists "$out/bed"
 fi
 at_event "during a remesh" meshing "$out/remesh"
+killed=0
 for k in 1 2 3 4 5 6 7 8 9; do
   d="$out/at_$k"
   run "$d" > /dev/null 2>&1 &
   pid=$!
   sleep "$(python3 -c "import sys; print(float(sys.argv[1]) * int(sys.argv[2]) / 10)" "$whole" $k)"
-  kill -0 $pid 2>/dev/null || { echo "the run ended before $k tenths of the uninterrupted run's time"; wait $pid; check "$d" "never"; continue; }
+  if [[ -e $d/report.html ]] || ! kill -0 $pid 2>/dev/null; then
+    echo "(the run had ended before $k tenths of the uninterrupted run's time)"; wait $pid || true
+    continue
+  fi
   kill_run "$d" $pid
   check "$d" "at $k/10 of its time"
+  killed=$((killed + 1))
 done
+# a machine whose speed varies may finish a run early once; a kill point that never kills is
+# no check: eight of the nine must have met a run in progress
+(( killed >= 8 )) || { echo "only $killed of the nine timed kills met the run in progress"; exit 1; }
 echo "resume after a kill anywhere: identical at every kill point"

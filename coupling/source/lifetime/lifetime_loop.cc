@@ -287,7 +287,10 @@ namespace abrade::coupling::lifetime
       throw InputError(file, "a lifetime checkpoint of another abrade version (format '" +
                                (state.has("format") ? state.text("format") : std::string("1")) + "', this one reads '" +
                                state_format + "'); start afresh without --resume");
-    if (state.text("parameter_hash") != hash)
+    // (a checkpoint of an earlier abrade hashed the parameters with the output directory's
+    // name: resumed when made in the directory of this run's name)
+    if (state.text("parameter_hash") != hash &&
+        state.text("parameter_hash") != io::fnv1a_hex(ctx.parameters.canonical_text()))
       throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
                                ", now " + hash + "); resume with the same parameter file and --set options");
     if (state.number("update") != double(done))

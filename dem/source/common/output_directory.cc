@@ -4,7 +4,9 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <map>
+#include <set>
 #include <mutex>
 
 #include <fcntl.h>
@@ -43,15 +45,30 @@ namespace abrade::io
       const int fd;
     };
 
-    /// The first symbolic link inside @p root (not following links), "" if none.
+    /// The first symbolic link in @p root or in the subdirectories abrade writes (walked
+    /// whole), "" if none. Other folders of the user's in the directory are not entered
+    /// (`--output .` in a home directory must not walk all of it).
     std::string first_link_inside(const std::string &root)
     {
       namespace fs = std::filesystem;
+      static const std::set<std::string> ours = {"knife",    "checkpoint", "beds",  "particles", "walls",
+                                                 "report",   "plots",      "runs",  "surfaces",  "lifetime",
+                                                 "compare", "calibration"};
       std::error_code ec;
-      for (fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec), end;
-           !ec && it != end; it.increment(ec))
-        if (it->is_symlink(ec))
-          return it->path().string();
+      for (fs::directory_iterator it(root, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end;
+           it.increment(ec))
+        {
+          if (it->is_symlink(ec))
+            return it->path().string();
+          const std::string name = it->path().filename().string();
+          if (!it->is_directory(ec) || (!ours.count(name) && name.rfind(".rank-", 0) != 0))
+            continue;
+          for (fs::recursive_directory_iterator sub(it->path(), fs::directory_options::skip_permission_denied, ec),
+               sub_end;
+               !ec && sub != sub_end; sub.increment(ec))
+            if (sub->is_symlink(ec))
+              return sub->path().string();
+        }
       return "";
     }
   } // namespace
@@ -76,7 +93,12 @@ namespace abrade::io
     if (fd < 0)
       throw InputError(lock_file, std::string("cannot create the output directory's lock file (") +
                                     std::strerror(errno) + ")");
-    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+    const int failed = ::flock(fd, LOCK_EX | LOCK_NB) == 0 ? 0 : errno;
+    if (failed != 0 && failed != EWOULDBLOCK)
+      // a file system without locks (NFS mounted nolock, Lustre noflock): the run goes on, said
+      std::cerr << "warning: " << root_path << ": the file system cannot lock the output directory ("
+                << std::strerror(failed) << "): a second run on it would not be refused" << std::endl;
+    if (failed == EWOULDBLOCK)
       {
         char          pid[32] = {};
         const ssize_t n       = ::pread(fd, pid, sizeof pid - 1, 0);

@@ -9,6 +9,7 @@
 // and scans need.
 #include <abrade/common/error.h>
 #include <abrade/common/finite_number.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/ply_file.h>
 
 #include <vtkCellArray.h>
@@ -212,9 +213,11 @@ namespace abrade::io
           double xyz[3] = {0, 0, 0};
           for (const auto &p : e.properties)
             {
-              const long count = p.count_type.empty() ? 1 : long(value(p.count_type));
-              if (count < 0 || count > 1000)
-                fail("a list of " + std::to_string(count) + " values");
+              // (checked as read: a count past a long's range, 1.8e19 say, has no long value)
+              const double counted = p.count_type.empty() ? 1 : value(p.count_type);
+              if (!(counted >= 0 && counted <= 1000))
+                fail("a list of " + format_number(counted) + " values");
+              const long count = long(counted);
               const bool indices = e.name == "face" && !p.count_type.empty() &&
                                    (p.name == "vertex_indices" || p.name == "vertex_index");
               if (indices && count < 3)

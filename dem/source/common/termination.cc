@@ -7,6 +7,8 @@
 #include <cstring>
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -21,23 +23,19 @@ namespace abrade::io
 
     constexpr int                 max_children = 256;
     std::atomic<int>              child_groups[max_children];
+    std::atomic<int>              ending{0}; ///< the signal that ends this process, once caught
 
     /// Sends @p signal to every registered child group and waits for them (async-signal-safe:
     /// kill, waitpid, nanosleep), 10 s at most, then kills what is left.
     void end_children(int signal)
     {
-      bool any = false;
-      for (auto &g : child_groups)
-        if (const int pgid = g.load(); pgid > 0)
-          ::kill(-pgid, signal), any = true;
-      if (!any)
-        return;
       for (int tick = 0; tick < 1000; ++tick)
         {
           bool running = false;
           for (auto &g : child_groups)
             if (const int pgid = g.load(); pgid > 0)
               {
+                ::kill(-pgid, signal); // every tick: a group started since is told too
                 ::waitpid(pgid, nullptr, WNOHANG); // an ended leader reaped (a zombie still counts)
                 if (::kill(-pgid, 0) != 0)
                   g.store(0); // nobody left in the group
@@ -56,6 +54,7 @@ namespace abrade::io
 
     extern "C" void on_termination(int signal)
     {
+      ending.store(signal); // no child run starts from now on (run_child_command)
       end_children(signal);
       static const char message[] = "\nabrade: interrupted; the last complete checkpoint is kept (a lifetime "
                                     "run continues with --resume)\n";
@@ -101,12 +100,30 @@ namespace abrade::io
 
   int run_child_command(const std::string &command)
   {
-    // what the child needs, made before fork (after it only async-signal-safe calls)
-    const char *argv[] = {"sh", "-c", command.c_str(), nullptr};
+    // what the child needs, made before fork (after it only async-signal-safe calls); `exec`:
+    // the shell becomes the command after its redirections, so the parent-death signal set
+    // below is the command's own (a shell that forked it died alone, leaving it running)
+    const std::string line   = "exec " + command;
+    const char       *argv[] = {"sh", "-c", line.c_str(), nullptr};
+    // the terminating signals held until the child is registered (and reset in the child): a
+    // signal in between neither runs the parent's handler in the child nor misses the child
+    sigset_t terminating, before;
+    sigemptyset(&terminating);
+    for (const int s : {SIGTERM, SIGINT, SIGHUP})
+      sigaddset(&terminating, s);
+    pthread_sigmask(SIG_BLOCK, &terminating, &before);
+    if (ending.load() != 0) // the run is ending: no new child
+      {
+        pthread_sigmask(SIG_SETMASK, &before, nullptr);
+        return -1;
+      }
     const pid_t parent = ::getpid();
     const pid_t pid    = ::fork();
     if (pid < 0)
-      return -1;
+      {
+        pthread_sigmask(SIG_SETMASK, &before, nullptr);
+        return -1;
+      }
     if (pid == 0)
       {
         ::setpgid(0, 0);
@@ -115,11 +132,13 @@ namespace abrade::io
           ::_exit(143);
         for (const int s : {SIGTERM, SIGINT, SIGHUP})
           std::signal(s, SIG_DFL);
+        pthread_sigmask(SIG_SETMASK, &before, nullptr);
         ::execv("/bin/sh", const_cast<char *const *>(argv));
         ::_exit(127);
       }
     ::setpgid(pid, pid); // (also here: the group exists before a signal can be forwarded to it)
     register_child_group(pid);
+    pthread_sigmask(SIG_SETMASK, &before, nullptr);
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
       ;
