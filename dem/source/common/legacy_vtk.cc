@@ -234,7 +234,9 @@ namespace abrade::io
                 long       p = 0;
                 for (long c = 0; c < n; ++c)
                   {
-                    const long k = p < size ? long(v[p]) : -1;
+                    // (compared as read: a count past a long's range has no long value)
+                    const double counted = p < size ? v[p] : -1;
+                    const long   k       = counted >= 1 && counted <= double(size - p - 1) ? long(counted) : -1;
                     if (k < 1 || p + 1 + k > size)
                       f.fail(key + ": cell " + std::to_string(c) + " of " + std::to_string(n) +
                              " does not fit into the section's " + std::to_string(size) + " values");

@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/input_file.h>
 #include <abrade/common/obj_file.h>
 #include <abrade/common/legacy_vtk.h>
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -128,6 +130,44 @@ namespace abrade::io
                                                         "not text");
     }
 
+    /// VTK's XML readers believe the counts a file declares: NumberOfComponents="35555555"
+    /// on three points kept one busy for minutes, and a NumberOfPoints of billions allocates
+    /// what it says. Every count must fit the file (a compressed file: a thousand times its
+    /// size) and an array has at most 64 components.
+    void check_xml_counts(const std::string &path)
+    {
+      std::ifstream      in(path, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      std::string head = text.str();
+      if (const auto appended = head.find("<AppendedData"); appended != std::string::npos)
+        head.resize(appended); // (the raw data after it is no XML)
+      const double size  = double(std::filesystem::file_size(path));
+      const double limit = (head.find("compressor=") != std::string::npos ? 1000 : 1) * size;
+      // every NumberOf...="value" attribute (found by hand: std::regex on a scan of tens of MB is slow)
+      for (std::size_t at = head.find("NumberOf"); at != std::string::npos; at = head.find("NumberOf", at + 8))
+        {
+          std::size_t name_end = at + 8;
+          while (name_end < head.size() && std::isalpha(static_cast<unsigned char>(head[name_end])))
+            ++name_end;
+          const std::string what = head.substr(at, name_end - at);
+          std::size_t       q    = head.find_first_not_of(" \t\r\n", name_end);
+          if (q == std::string::npos || head[q] != '=')
+            continue;
+          q = head.find_first_not_of(" \t\r\n", q + 1);
+          if (q == std::string::npos || (head[q] != '"' && head[q] != '\''))
+            continue;
+          const std::size_t close = head.find(head[q], q + 1);
+          const std::string value = head.substr(q + 1, close == std::string::npos ? 30 : close - q - 1);
+          char        *stop       = nullptr;
+          const double n          = std::strtod(value.c_str(), &stop);
+          const bool   components = what == "NumberOfComponents";
+          if (stop == value.c_str() || !(n >= 0) || n > (components ? 64 : limit))
+            throw InputError(path, what + "=\"" + value.substr(0, 30) + "\" is more than the file can hold" +
+                                     (components ? " (at most 64 components)" : " (" + format_number(size) + " bytes)"));
+        }
+    }
+
     vtkSmartPointer<vtkPolyData> checked(const std::string &path, vtkSmartPointer<vtkPolyData> p)
     {
       const vtkIdType n = p->GetNumberOfPoints();
@@ -165,9 +205,13 @@ namespace abrade::io
     if (ext == ".vtk")
       return read_legacy_vtk(path);
     if (ext == ".vtp")
-      return checked(path, read_with<vtkXMLPolyDataReader>(path));
+      {
+        check_xml_counts(path);
+        return checked(path, read_with<vtkXMLPolyDataReader>(path));
+      }
     if (ext == ".vtu")
       {
+        check_xml_counts(path);
         vtkNew<vtkXMLUnstructuredGridReader> r;
         r->SetFileName(path.c_str());
         r->Update();
