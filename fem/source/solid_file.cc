@@ -48,6 +48,8 @@ namespace abrade::fem
     const std::string warning_prefix = "warning: ";
     /// The number of solids in the file, among the notes.
     const std::string solids_prefix = "solids in the file: ";
+    /// ... and the name of a physical surface group of a .msh file: "face name: ID NAME"
+    const std::string face_name_prefix = "face name: ";
 
     void read_msh_file(const std::string &path, Triangulation<3> &tria)
     {
@@ -706,7 +708,20 @@ namespace abrade::fem
                                    ("abrade-msh-" + std::to_string(::getpid()) + "-" +
                                     std::filesystem::path(path).filename().string()))
                                     .string();
-        report.face_names = normalise_msh(path, clean);
+        // Gmsh reads the user's file in the mesher process (meshing_job.h): a file that makes
+        // its reader crash or loop costs the child
+        MeshingJob job{path, clean, 0, false, false, settings, settings.mesher_time_limit};
+        job.kind = "msh";
+        for (const auto &note : run_meshing_job(job))
+          if (note.rfind(face_name_prefix, 0) == 0)
+            {
+              std::istringstream words(note.substr(face_name_prefix.size()));
+              unsigned           id = 0;
+              std::string        name;
+              words >> id;
+              std::getline(words >> std::ws, name);
+              report.face_names[types::boundary_id(id)] = name;
+            }
         try
           {
             read_msh_file(clean, tria);
@@ -887,6 +902,13 @@ namespace abrade::fem
       {
         convert_to_step_here(job.input, job.output);
         return {};
+      }
+    if (job.kind == "msh")
+      {
+        std::vector<std::string> notes;
+        for (const auto &[id, name] : normalise_msh(job.input, job.output))
+          notes.push_back(face_name_prefix + std::to_string(id) + " " + name);
+        return notes;
       }
     if (job.kind != "volume")
       throw RunError("the mesher knows no job '" + job.kind + "'");

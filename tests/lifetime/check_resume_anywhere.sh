@@ -4,7 +4,7 @@
 #    settled state in memory, the resumed one from the file, and the life came out 1.38e7 t
 #    against 4.99e6 t),
 #  - while the mesher remeshes the worn knife (an abrade-mesher process of the run exists),
-#  - and at nine moments spread over the run (a tenth ... nine tenths of its uninterrupted time),
+#  - as each update's checkpoint appears, and 0.3 s after (inside the next update's cycles),
 # then resumed with --resume to the end: trajectory, profiles and prediction are byte-identical
 # to the uninterrupted run's at every kill point.
 #   check_resume_anywhere.sh ABRADE PRM OUTDIR [--set ...]...
@@ -15,9 +15,7 @@ sets=("$@")
 rm -rf "$out" && mkdir -p "$out"
 run() { "$abrade" run "$prm" --quiet "${sets[@]}" --output "$@"; }
 prediction() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results']['lifetime']['predicted_tonnes_to_end_of_life'])" "$1"; }
-start=$(date +%s.%N)
 run "$out/whole" > /dev/null
-whole=$(python3 -c "import sys; print(float(sys.argv[2]) - float(sys.argv[1]))" "$start" "$(date +%s.%N)")
 p_whole=$(prediction "$out/whole/summary.json")
 grep -q "remeshed" "$out/whole/log.txt" || { echo "the case does not remesh: no kill during a remesh"; exit 1; }
 
@@ -56,21 +54,11 @@ if grep -q "Wear source *= *analytic" "$prm" 2>/dev/null; then :; else
   at_event "at the first bed file (before the first update)" bed_exists "$out/bed"
 fi
 at_event "during a remesh" meshing "$out/remesh"
-killed=0
-for k in 1 2 3 4 5 6 7 8 9; do
-  d="$out/at_$k"
-  run "$d" > /dev/null 2>&1 &
-  pid=$!
-  sleep "$(python3 -c "import sys; print(float(sys.argv[1]) * int(sys.argv[2]) / 10)" "$whole" $k)"
-  if [[ -e $d/report.html ]] || ! kill -0 $pid 2>/dev/null; then
-    echo "(the run had ended before $k tenths of the uninterrupted run's time)"; wait $pid || true
-    continue
-  fi
-  kill_run "$d" $pid
-  check "$d" "at $k/10 of its time"
-  killed=$((killed + 1))
-done
-# a machine whose speed varies may finish a run early once; a kill point that never kills is
-# no check: eight of the nine must have met a run in progress
-(( killed >= 8 )) || { echo "only $killed of the nine timed kills met the run in progress"; exit 1; }
+# at each checkpoint's appearance (u = 1 ... 4: between two updates) and 0.3 s after it
+# (u = 0 ... 3: inside the next update's cycles, the first of them included): points set by the
+# run's own progress, not by a clock (a busy machine once let a timed point miss the run)
+checkpoint() { [[ -e $1/checkpoint/loop-$u.txt || ( $u -eq 0 && -e $1/checkpoint/knife-0.ckpt ) ]]; }
+for u in 1 2 3 4; do at_event "at checkpoint $u" checkpoint "$out/at_$u"; done
+after_checkpoint() { checkpoint "$1" && sleep 0.3; }
+for u in 0 1 2 3; do at_event "0.3 s after checkpoint $u" after_checkpoint "$out/after_$u"; done
 echo "resume after a kill anywhere: identical at every kill point"

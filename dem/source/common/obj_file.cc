@@ -63,18 +63,10 @@ namespace abrade::io
             // a corner: v, v/vt, v//vn or v/vt/vn; an index counts from 1, or back from -1
             auto index = [&](const std::string &corner, const std::string &number, long defined,
                              const char *what, const char *whats) -> long {
-              std::size_t used = 0;
-              long        i    = 0;
-              try
-                {
-                  i = std::stol(number, &used);
-                }
-              catch (const std::exception &)
-                {
-                  used = 0;
-                }
-              if (number.empty() || used != number.size())
+              const auto read = whole_number(number);
+              if (!read)
                 fail("'" + corner.substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn)");
+              const long i = *read;
               if (i == 0 || i > defined || i < -defined)
                 fail(std::string(what) + " index " + number + " out of range (" + std::to_string(defined) + " " +
                      whats + " defined before this line; indices count from 1, or back from -1)");

@@ -39,7 +39,8 @@ namespace abrade::fem
     double time_limit = 0;
     /// What the child makes of the input: "volume" (the tetrahedral mesh above), "surface" (a
     /// CAD file's surfaces as triangles of size mesh_size, written as a surface file:
-    /// write_surface_file) or "step" (the input's CAD model as STEP: abrade convert).
+    /// write_surface_file), "step" (the input's CAD model as STEP: abrade convert) or "msh" (a
+    /// user's .msh file read and written again as .msh 2.2, its face names in the notes).
     std::string kind = "volume";
   };
 
