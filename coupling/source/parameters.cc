@@ -471,8 +471,8 @@ namespace abrade::coupling
                       "Settled-bed file. If it exists, the bed is loaded from it and no particles "
                       "are generated; otherwise the bed is generated, settled and saved there, so "
                       "later runs (and every operating cycle) start from the same bed. A relative "
-                      "path is relative to the output directory and stays inside it (no '..'); a "
-                      "bed shared between runs is named by an absolute path. Empty: generate every time. "
+                      "path is relative to the output directory; a new bed is not written out of it "
+                      "('..'): a bed shared between runs is named by an absolute path. Empty: generate every time. "
                       "A file ending in .csv, .dump, .lammpstrj or .liggghts is a bed made elsewhere "
                       "and is imported as it is (not settled again, never written; relative to the "
                       "parameter file): a CSV table with columns x, y, z and radius or diameter [m] "
@@ -895,27 +895,23 @@ namespace abrade::coupling
                  "no bed to import at '" + c.bed_file + "' (a .csv table or a LIGGGHTS/LAMMPS dump is read, never "
                  "written; abrade's own beds end in .bed)");
       }
-    else if (std::filesystem::path(c.bed_file).is_relative())
+    prm.leave_subsection();
+    prm.leave_subsection();
+    if (!dem::is_imported_bed(c.bed_file) && std::filesystem::path(c.bed_file).is_relative())
       {
         // a relative bed is the run's own, in its output directory: one that would be written
         // out of it ('../x.bed', not there yet) is refused; reading one from anywhere is fine,
         // and a bed shared between runs is named by an absolute path, on purpose
-        prm.leave_subsection();
-        prm.leave_subsection();
         prm.enter_subsection("Output");
         const std::filesystem::path output = prm.get("Directory");
         prm.leave_subsection();
-        prm.enter_subsection("Particles");
-        prm.enter_subsection("Settling");
         const std::filesystem::path bed(c.bed_file);
         const bool escapes = std::any_of(bed.begin(), bed.end(), [](const std::filesystem::path &part) { return part == ".."; });
-        if (escapes && !std::filesystem::exists(output / c.bed_file))
+        if (escapes && !std::filesystem::exists(output / bed))
           f.fail({"Particles", "Settling"}, "Bed file",
                  "'" + c.bed_file + "' would be written out of the output directory (a relative bed file is the run's "
                  "own, inside it): name a bed shared between runs by its absolute path");
       }
-    prm.leave_subsection();
-    prm.leave_subsection();
     apply_coarse_graining(f, c);
     prm.enter_subsection("Simulation");
     c.max_particle_steps = prm.get_double("Maximum particle-steps");

@@ -216,8 +216,6 @@ namespace abrade::coupling
       for (std::size_t b = 0; b < a; ++b)
         if (o.varies[a].key == o.varies[b].key)
           throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice");
-    if (o.jobs < 0)
-      throw InputError("command line", "--jobs must be 0 (one per core) or more, got " + std::to_string(o.jobs));
     io::OutputDirectory out(o.output);
     out.claim();
     const std::string         root = std::filesystem::absolute(o.output).string();
@@ -246,29 +244,27 @@ namespace abrade::coupling
                                              "' comes twice (a value repeated, or values that differ only in "
                                              "characters a directory name cannot hold)");
     }
-    // every run's parameters checked before any run starts (a misspelt key or a value out of
-    // its range once failed only after the first runs had been launched, exit 3)
+    // every combination's parameters checked before any run starts (a misspelt key or a value
+    // out of its range once failed only after the first runs had been launched, exit 3); the
+    // seeds differ only in Particles/Generation/Seed, whose values the command line checked
     for (const auto &c : combos)
       {
         std::vector<std::string> sets = o.sets;
         for (std::size_t i = 0; i < o.varies.size(); ++i)
           sets.push_back(o.varies[i].key + "=" + c[i]);
-        for (int seed : o.seeds)
+        const int seed = o.seeds.empty() ? 1 : o.seeds.front();
+        sets.push_back("Particles/Generation/Seed=" + std::to_string(seed));
+        try
           {
-            sets.push_back("Particles/Generation/Seed=" + std::to_string(seed));
-            try
-              {
-                ParameterFile run(o.parameter_file, sets);
-                const auto    walls = dealii::Utilities::split_string_list(run.handler().get("Walls"));
-                if (std::find(walls.begin(), walls.end(), o.wall) == walls.end())
-                  throw InputError("--wall " + o.wall, "no such wall in the case (its walls: " +
-                                                         run.handler().get("Walls") + ")");
-              }
-            catch (const InputError &e)
-              {
-                throw InputError("sweep run " + name_of(c) + "-seed" + std::to_string(seed), e.what());
-              }
-            sets.pop_back();
+            ParameterFile run(o.parameter_file, sets);
+            const auto    walls = dealii::Utilities::split_string_list(run.handler().get("Walls"));
+            if (std::find(walls.begin(), walls.end(), o.wall) == walls.end())
+              throw InputError("--wall " + o.wall, "no such wall in the case (its walls: " + run.handler().get("Walls") +
+                                                     ")");
+          }
+        catch (const InputError &e)
+          {
+            throw InputError("sweep run " + name_of(c) + "-seed" + std::to_string(seed), e.what());
           }
       }
     out.subdirectory("plots");

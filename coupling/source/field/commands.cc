@@ -1,5 +1,6 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/file_extension.h>
 #include <abrade/common/finite_number.h>
 #include <abrade/common/external.h>
 #include <abrade/common/json.h>
@@ -35,12 +36,6 @@ namespace abrade::field
 
   namespace
   {
-    std::string trimmed(const std::string &t)
-    {
-      const auto first = t.find_first_not_of(" \t"), last = t.find_last_not_of(" \t");
-      return first == std::string::npos ? "" : t.substr(first, last - first + 1);
-    }
-
     std::vector<double> numbers(const std::string &flag, const std::string &text, std::size_t count = 0)
     {
       std::vector<double> v;
@@ -48,7 +43,7 @@ namespace abrade::field
       std::string         item;
       while (std::getline(s, item, ','))
         {
-          const auto x = io::finite_number(trimmed(item));
+          const auto x = io::finite_number(io::trimmed(item));
           if (!x)
             throw InputError(flag, "'" + item + "' is not a finite number");
           v.push_back(*x);

@@ -17,6 +17,8 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/base/bounding_box.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -237,11 +239,8 @@ namespace abrade::coupling::lifetime
                   "thickness (" + io::format_number(knife->thickness()) + " m): no depth below the design reaches it, "
                   "and a life to it is an extrapolation beyond the part (a length in millimetres?)");
     {
-      double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-      for (const auto &v : knife->design_surface().vertices)
-        for (int d = 0; d < 3; ++d)
-          lo[d] = std::min(lo[d], v[d]), hi[d] = std::max(hi[d], v[d]);
-      const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+      const dealii::BoundingBox<3> box(knife->design_surface().vertices);
+      const double size = std::max({box.side_length(0), box.side_length(1), box.side_length(2)});
       if (s.max_recession > size)
         unreachable("Lifetime/Maximum recession " + io::format_number(s.max_recession) + " m is more than the part's "
                     "largest extent (" + io::format_number(size) + " m): no edge recedes that far, and a life to it "

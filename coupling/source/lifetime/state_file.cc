@@ -1,4 +1,5 @@
 #include <abrade/common/error.h>
+#include <abrade/common/file_extension.h>
 #include <abrade/common/finite_number.h>
 #include <abrade/common/hash.h>
 #include <abrade/coupling/lifetime/state_file.h>
@@ -21,13 +22,6 @@ namespace abrade::coupling
       return buffer;
     }
 
-    std::string trim(const std::string &s)
-    {
-      const auto a = s.find_first_not_of(" \t\r\n");
-      if (a == std::string::npos)
-        return "";
-      return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
-    }
   } // namespace
 
   namespace
@@ -46,7 +40,7 @@ namespace abrade::coupling
     const auto last = all.rfind(checksum_key + " = ");
     if (last == std::string::npos || (last > 0 && all[last - 1] != '\n'))
       throw InputError(path, "no checksum line (cut short, or written by an older abrade): start afresh without --resume");
-    const std::string stored = trim(all.substr(last + checksum_key.size() + 3));
+    const std::string stored = io::trimmed(all.substr(last + checksum_key.size() + 3));
     if (stored != io::fnv1a_hex(all.substr(0, last)))
       throw InputError(path, "corrupt state file (its checksum does not match: changed or cut); start afresh "
                              "without --resume");
@@ -57,13 +51,13 @@ namespace abrade::coupling
     for (std::string line; std::getline(lines, line);)
       {
         ++n;
-        if (trim(line).empty() || trim(line)[0] == '#')
+        if (io::trimmed(line).empty() || io::trimmed(line)[0] == '#')
           continue;
         const auto eq = line.find('=');
         if (eq == std::string::npos)
           throw InputError(path + ":" + std::to_string(n), "expected 'key = value', found '" + line.substr(0, 80) + "'");
-        const std::string key = trim(line.substr(0, eq));
-        s.set(key, trim(line.substr(eq + 1)));
+        const std::string key = io::trimmed(line.substr(0, eq));
+        s.set(key, io::trimmed(line.substr(eq + 1)));
         s.line_of[key] = n;
       }
     return s;

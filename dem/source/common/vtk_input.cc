@@ -65,12 +65,12 @@ namespace abrade::io
           const double o = offsets->GetTuple1(c);
           if (!(o >= previous && o <= double(size)) || (c == 0 && o != 0) || (c == n && o != double(size)))
             throw InputError(path, std::string("the ") + kind + "' offsets are broken at " + kind + " " +
-                                     std::to_string(c) + " (offset " + std::to_string(long(o)) + " of a connectivity of " +
+                                     std::to_string(c) + " (offset " + format_number(o, 17) + " of a connectivity of " +
                                      std::to_string(size) + " indices)");
           // VTK cannot build its cell map of a polygon of two points (and then reads a null one)
           if (c > 0 && o - previous < double(least))
             throw InputError(path, "cell " + std::to_string(c - 1) + " of the " + kind + " has " +
-                                     std::to_string(long(o - previous)) + " point(s), fewer than " +
+                                     format_number(o - previous, 17) + " point(s), fewer than " +
                                      std::to_string(least));
           previous = o;
         }
@@ -78,7 +78,7 @@ namespace abrade::io
         {
           const double i = connectivity->GetTuple1(k);
           if (!(i >= 0 && i < double(n_points)))
-            throw InputError(path, std::string("point index ") + std::to_string(long(i)) + " in the " + kind +
+            throw InputError(path, std::string("point index ") + format_number(i, 17) + " in the " + kind +
                                      "' connectivity (entry " + std::to_string(k) + ") is out of range (" +
                                      std::to_string(n_points) + " points, counted from 0)");
         }
