@@ -315,6 +315,7 @@ namespace abrade::coupling
                                     sim.parallel().size();
         ph["centre_of_mass_z"] = sim.centre_of_mass_height();
         ph["threads"]      = static_cast<long>(sim.threads());
+        ph["shares"]       = static_cast<long>(sim.shares());
         ph["mean_threads"] = mean_threads;
         if (c.payload_height)
           {

@@ -264,7 +264,10 @@ namespace abrade::coupling
                       "a unit mistake).");
     prm.declare_entry("Seeds", "1", List(Integer(0)),
                       "Bed seeds of the replicate DEM cycles run at every update; their wear is "
-                      "averaged (one settled bed per seed, saved and reused).");
+                      "averaged. Every update settles fresh beds, their seeds derived from these and the "
+                      "update number (the first update's are these seeds themselves, whose beds are kept in "
+                      "beds/), so that the updates are independent samples for the life's interval "
+                      "(docs/lifetime.md). Three or more give an interval from the first update on.");
     prm.declare_entry("Cycles per update", "0", Integer(0),
                       "Real cycles one update stands for; 0: adaptive, so that the largest depth "
                       "increment is 'Depth increment fraction' of the mesh size. Range: >= 0.");
@@ -304,9 +307,16 @@ namespace abrade::coupling
                       "knife's own frame, see Recession points) and of t, the tonnes handled so far, e.g. "
                       "'1e-6*exp(-z/0.01)' or '1e-6*(1+t/5000)'; evaluated at the surface's vertices. muparser syntax.");
     prm.declare_entry("Analytic seed scatter", "0", Double(0, 1),
-                      "[-] Wear source = analytic: each seed's rate is multiplied by 1 + this x z, z a "
-                      "standard normal number drawn from the seed: a known bed-to-bed scatter (verification "
-                      "of the interval over the seeds). Range: [0, 1].");
+                      "[-] Wear source = analytic: each bed's rate is multiplied by 1 + this x z, z a "
+                      "standard normal number drawn from the bed's seed (a fresh one every update): a known "
+                      "bed-to-bed scatter (verification of the life's interval). Range: [0, 1].");
+    prm.declare_entry("Target interval", "0", Double(0, 1),
+                      "[-] The life's 95 % interval asked for, as a relative half-width (0.1: +-10 %); "
+                      "while the interval is wider, the next updates draw more beds (the seeds' beds "
+                      "settled again in further rounds), up to Maximum beds. The summary says what was "
+                      "achieved. 0: the Seeds' beds at every update. Range: [0, 1).");
+    prm.declare_entry("Maximum beds", "12", Integer(1, 1000),
+                      "Target interval: the most beds an update draws. Range: [1, 1000].");
     prm.declare_entry("Profile planes", "0.5", List(Double(0, 1)),
                       "Cross-sections of the knife written per update (knife/profile_N.csv and .png), "
                       "at these fractions of the knife's length (planes normal to its length).");
@@ -372,10 +382,17 @@ namespace abrade::coupling
                       "The contact law's cohesion (docs/physics.md): " + model_documentation<dem::CohesionModels>() +
                         ". Its strength comes from each Interaction's entries.");
     prm.declare_entry("Threads", "0", Integer(0, 1024),
-                      "Number of threads; 0: all available (OMP_NUM_THREADS). Range: >= 0. Under "
-                      "mpirun: threads per MPI rank (0: the machine's share of each rank). The work "
-                      "is cut into this many shares, which fixes the arithmetic: a run's results "
-                      "depend on this number, not on how many threads end up working.");
+                      "Most threads that work on a step; 0: all available (OMP_NUM_THREADS or the "
+                      "cores). Range: >= 0. Under mpirun: threads per MPI rank (0: the machine's share "
+                      "of each rank). At most Shares of them are used. The results do not depend on "
+                      "it: the same case gives the same bits with any number of threads.");
+    prm.declare_entry("Shares", "4", Integer(1, 1024),
+                      "The shares each step's work is cut into, each summed in a fixed order: they "
+                      "fix the arithmetic, so a case gives the same bits on any machine and with "
+                      "any Threads (the exception: the number of MPI ranks, which cuts the domain). "
+                      "More threads than shares are not used: on a machine with more cores per rank, "
+                      "raise it (8 shares cost 7-10 % on one or two threads against 2, 4 shares 0-3 %; "
+                      "docs/benchmarks.md) or run more MPI ranks. Range: >= 1.");
     prm.declare_entry("Adapt threads", "true", Bool(),
                       "Work with fewer of the threads while that is faster: on a busy machine (another "
                       "process on a core) a thread that shares a core holds the others up at every "
@@ -796,6 +813,7 @@ namespace abrade::coupling
     s.contact.rolling  = prm.get("Rolling model");
     s.contact.cohesion = prm.get("Cohesion model");
     s.threads   = prm.get_integer("Threads");
+    s.shares    = prm.get_integer("Shares");
     s.adapt_threads = prm.get_bool("Adapt threads");
     s.rebalance_threshold = prm.get_double("Rebalance threshold");
     s.domain_min = get_vector(prm, "Domain min");

@@ -1,9 +1,8 @@
 // The lifetime loop's steps, each alone (coupling/include/abrade/coupling/lifetime/):
 //  - end of life: the crossing of linear wear is exact for any update size; accelerating wear
-//    sampled at the updates is crossed within 1 %; past the last update the recent rate is used;
-//  - the interval over the beds: Student t quantiles; with a known normal scatter between the
-//    seeds of the analytic wear source, the 95 % interval contains the true life in 90-99 % of
-//    400 runs (coverage), and one seed gives no interval;
+//    sampled at the updates is crossed within 1 %; past the last update the recent course (a
+//    power law through the last point) is used;
+//  - the analytic source's bed scatter is standard normal (the interval: test_life_interval.cc);
 //  - the update size, the key = value state file (bit-exact numbers, errors that name the line);
 //  - the wear filter on the knife's surface: volume conserved, nothing crosses the 30 mm plate
 //    (wear on one face leaves the other face below 1 %, where a straight-distance filter moved it
@@ -71,14 +70,15 @@ TEST(EndOfLife, AcceleratingWearIsCrossedWithinOnePercent)
   EXPECT_GT(std::abs(e.tonnes / exact - 1), 1e-6) << "a chord of a curve is not exact: is the test sampling it?";
 }
 
-TEST(EndOfLife, PastTheRunTheRecentRateExtrapolates)
+TEST(EndOfLife, PastTheRunTheRecentCourseExtrapolates)
 {
   // linear: exact from any last update
   EndOfLife e = end_of_life({{"maximum depth", 0.012}}, sampled({0, 1000, 2500}, linear));
   EXPECT_TRUE(e.extrapolated);
   EXPECT_FALSE(e.reached);
   EXPECT_NEAR(e.tonnes, 12000, 1e-8);
-  // accelerating: the last update's rate is closer to the truth than the mean rate since the start
+  // accelerating: the recent course's power law is closer to the truth than the mean rate since
+  // the start
   const double exact = (-1e-6 + std::sqrt(1e-12 + 4 * 2e-10 * 0.012)) / (2 * 2e-10);
   const auto   run   = sampled({0, 1000, 2000, 3000, 4000}, accelerating);
   e                  = end_of_life({{"maximum depth", 0.012}}, run);
@@ -100,77 +100,6 @@ TEST(EndOfLife, TheFirstCriterionToCrossEndsLife)
   e = end_of_life(c, {{0, {0, 0, 0}}, {1000, {0, 0, 0}}});
   EXPECT_EQ(e.criterion, EndOfLife::none);
   EXPECT_EQ(e.tonnes, 0);
-}
-
-TEST(LifeInterval, StudentQuantilesAndOneSeed)
-{
-  EXPECT_NEAR(student_t_quantile(0.975, 2), 4.302652730, 1e-8);
-  EXPECT_NEAR(student_t_quantile(0.975, 9), 2.262157163, 1e-8);
-  const LifeInterval one = life_interval(12000, {1.0});
-  EXPECT_EQ(one.low, 0);
-  EXPECT_EQ(one.high, 0);
-  // three seeds 0.9, 1.0, 1.1: s = 0.1, h = 4.303 x 0.1 / sqrt(3)
-  const LifeInterval three = life_interval(12000, {0.9, 1.0, 1.1});
-  const double       h     = 4.302652730 * 0.1 / std::sqrt(3.0);
-  EXPECT_NEAR(three.low, 12000 / (1 + h), 1e-6);
-  EXPECT_NEAR(three.high, 12000 / (1 - h), 1e-6);
-  EXPECT_NEAR(three.spread_low, 12000 / 1.1, 1e-6);
-}
-
-TEST(LifeInterval, SeedFactorsAreCycleWeightedAndMeanOne)
-{
-  SeedFactors f(2);
-  f.add(100, 1.0, {0.8, 1.2});
-  f.add(300, 2.0, {2.2, 1.8});
-  const auto q = f.factors(); // (80 + 660) / 700, (120 + 540) / 700
-  EXPECT_NEAR(q[0], 740.0 / 700, 1e-15);
-  EXPECT_NEAR(q[1], 660.0 / 700, 1e-15);
-  EXPECT_NEAR(0.5 * (q[0] + q[1]), 1, 1e-15);
-  SeedFactors g(2);
-  g.set_sums(f.sums());
-  EXPECT_EQ(g.factors(), q);
-  EXPECT_THROW(g.set_sums({1, 2}), std::invalid_argument);
-}
-
-// The interval's coverage, through the loop's own steps (analytic source -> depth_rates ->
-// cycles_for_update -> SeedFactors -> life_interval): each run has three seeds whose rate
-// scatters by 10 % (normal) around a known 1 um/t; the life to 12 mm at the seeds' mean rate is
-// predicted; the truth is 12,000 t. 2000 runs: the binomial standard deviation of a 95 %
-// coverage is 0.5 %, so the band 93.5-96.5 % (3 sigma) fails a 90 % interval (92 %) and the
-// t quantile of n instead of n - 1 degrees of freedom (93.4 %). (The issue asks for 90-99 % in
-// at least 200 runs.)
-TEST(LifeInterval, NinetyFivePercentIntervalCoversTheTrueLife)
-{
-  fem::SolidSurface square; // 1 m^2, two triangles
-  square.vertices    = {dealii::Point<3>(0, 0, 0), dealii::Point<3>(1, 0, 0), dealii::Point<3>(1, 1, 0),
-                        dealii::Point<3>(0, 1, 0)};
-  square.triangles   = {{0, 1, 2}, {0, 2, 3}};
-  square.boundary_id = {fem::KnifeGeometry::wearable_boundary, fem::KnifeGeometry::wearable_boundary};
-  const int trials = 2000;
-  int       covered = 0, low_side = 0;
-  for (int trial = 0; trial < trials; ++trial)
-    {
-      const std::vector<int> seeds = {3 * trial + 1, 3 * trial + 2, 3 * trial + 3};
-      auto                   source = make_analytic_wear_source("1e-6", 10, seeds, 0.1);
-      const Rates            r      = depth_rates(square, source->cycle(square, 0), 0.0);
-      const long             n      = cycles_for_update(0, 0.1, 0.015, r.largest);
-      SeedFactors            f(seeds.size());
-      std::vector<double>    at_deepest;
-      for (const auto &seed : r.seed)
-        at_deepest.push_back(seed[0]);
-      f.add(double(n), r.mean[0], at_deepest);
-      const double       life = end_of_life({{"maximum depth", 0.012}}, {{0, {0}}, {n * 10.0, {n * r.mean[0]}}}).tonnes;
-      const LifeInterval li   = life_interval(life, f.factors());
-      covered += li.low <= 12000 && (li.high == 0 || 12000 <= li.high);
-      low_side += 12000 < li.low;
-    }
-  const double coverage = double(covered) / trials;
-  std::cout << "coverage of the 95 % interval: " << covered << " of " << trials << " runs (" << 100 * coverage
-            << " %), true life below the interval in " << low_side << "\n";
-  EXPECT_GE(coverage, 0.935);
-  EXPECT_LE(coverage, 0.965);
-  EXPECT_GT(low_side, 0); // misses on both sides
-  EXPECT_LT(low_side, trials - covered);
 }
 
 TEST(LifeInterval, SeedScatterIsStandardNormal)

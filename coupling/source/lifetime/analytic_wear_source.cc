@@ -26,9 +26,8 @@ namespace abrade::coupling::lifetime
     class AnalyticWearSource : public WearSource
     {
     public:
-      AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, const std::vector<int> &seeds,
-                         double scatter)
-        : tonnes_per_cycle(tonnes_per_cycle)
+      AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, double scatter)
+        : tonnes_per_cycle(tonnes_per_cycle), scatter(scatter)
       {
         try
           {
@@ -39,16 +38,9 @@ namespace abrade::coupling::lifetime
           {
             throw std::invalid_argument("cannot evaluate '" + expression + "' as a function of x, y, z and t");
           }
-        for (int s : seeds)
-          {
-            factor.push_back(1 + scatter * standard_normal_of_seed(s));
-            if (!(factor.back() >= 0))
-              throw std::invalid_argument("the scatter makes seed " + std::to_string(s) +
-                                          "'s rate negative: a smaller Seed scatter");
-          }
       }
 
-      CycleWear cycle(const fem::SolidSurface &surface, double tonnes) override
+      CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) override
       {
         CycleWear w;
         w.tonnes_per_cycle = tonnes_per_cycle;
@@ -68,8 +60,12 @@ namespace abrade::coupling::lifetime
                 }
               volume[v] = r * tonnes_per_cycle * area[v];
             }
-        for (double f : factor)
+        for (int seed : bed_seeds)
           {
+            const double f = 1 + scatter * standard_normal_of_seed(seed);
+            if (!(f >= 0))
+              throw std::domain_error("Analytic seed scatter " + io::format_number(scatter) + " makes bed seed " +
+                                      std::to_string(seed) + "'s rate negative: a smaller scatter");
             w.seed_volume.push_back(volume);
             for (double &x : w.seed_volume.back())
               x *= f;
@@ -82,13 +78,13 @@ namespace abrade::coupling::lifetime
     private:
       dealii::FunctionParser<3> rate;
       double                    tonnes_per_cycle;
-      std::vector<double>       factor; // per seed
+      double                    scatter; // relative, per bed
     };
   } // namespace
 
   std::unique_ptr<WearSource> make_analytic_wear_source(const std::string &expression, double tonnes_per_cycle,
-                                                        const std::vector<int> &seeds, double seed_scatter)
+                                                        double seed_scatter)
   {
-    return std::make_unique<AnalyticWearSource>(expression, tonnes_per_cycle, seeds, seed_scatter);
+    return std::make_unique<AnalyticWearSource>(expression, tonnes_per_cycle, seed_scatter);
   }
 } // namespace abrade::coupling::lifetime

@@ -5,6 +5,7 @@
 #include <abrade/dem/wear.h>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace abrade::coupling::lifetime
 {
@@ -13,18 +14,18 @@ namespace abrade::coupling::lifetime
     class DemWearSource : public WearSource
     {
     public:
-      DemWearSource(const DemCase &c, const std::vector<int> &seeds, double tonnes_per_cycle, JobContext &ctx)
-        : c(c), seeds(seeds), tonnes_per_cycle(tonnes_per_cycle), ctx(ctx)
+      DemWearSource(const DemCase &c, const std::vector<int> &base_seeds, double tonnes_per_cycle, JobContext &ctx)
+        : c(c), base_seeds(base_seeds), tonnes_per_cycle(tonnes_per_cycle), ctx(ctx)
       {}
 
-      CycleWear cycle(const fem::SolidSurface &surface, double) override
+      CycleWear cycle(const fem::SolidSurface &surface, double, const std::vector<int> &seeds) override
       {
         io::ScopedTimer t(ctx.timers, "dem cycles");
         CycleWear       w;
         w.phase_volume.assign(c.phases.size(), 0.0);
         double payload = 0;
         for (int seed : seeds)
-          payload += run_one(surface, seed, w) / seeds.size();
+          payload += run_one(surface, seed, double(seeds.size()), w) / seeds.size();
         w.tonnes_per_cycle = tonnes_per_cycle;
         if (tonnes_per_cycle == 0) // a grab: the tonnes are the DEM's payload
           {
@@ -54,12 +55,13 @@ namespace abrade::coupling::lifetime
 
     private:
       DemCase          c;
-      std::vector<int> seeds;
+      std::vector<int> base_seeds; ///< their beds are kept (the first update's); derived ones deleted
       double           tonnes_per_cycle;
       JobContext      &ctx;
 
-      /// One cycle of bed @p seed, its knife wear appended to @p w; returns the payload [kg].
-      double run_one(const fem::SolidSurface &surface, int seed, CycleWear &w)
+      /// One cycle of bed @p seed (one of @p beds), its knife wear appended to @p w; returns the
+      /// payload [kg].
+      double run_one(const fem::SolidSurface &surface, int seed, double beds, CycleWear &w)
       {
         DemCase run = c;
         run.fill.seed = static_cast<std::uint64_t>(seed);
@@ -77,7 +79,8 @@ namespace abrade::coupling::lifetime
         io::Log    quiet; // the bed's lines stay out of the loop's log; its warnings do not
         quiet.set_echo(false);
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
-        prepare_bed(run, sim, cycle_ctx, "beds/bed-seed" + std::to_string(seed) + ".bed");
+        const std::string bed = "beds/bed-seed" + std::to_string(seed) + ".bed";
+        prepare_bed(run, sim, cycle_ctx, bed);
         sim.set_time(0);
         std::vector<dem::WallWearLaws> laws;
         for (const auto &wc : run.walls)
@@ -104,17 +107,22 @@ namespace abrade::coupling::lifetime
               volume[i] += v[i] / knives.size();
             for (std::size_t p = 0; p < run.phases.size(); ++p)
               w.phase_volume[p] += wear->total(k, run.wear_field, run.phases[p].first) /
-                                   (knives.size() * seeds.size());
+                                   (knives.size() * beds);
           }
         w.seed_volume.push_back(std::move(volume));
+        // a derived seed's bed serves this cycle only (the next update draws fresh ones; a
+        // resumed run settles it again, to the same bits): rank 0 wrote it, rank 0 removes it
+        // after every rank has run the cycle from it
+        if (std::find(base_seeds.begin(), base_seeds.end(), seed) == base_seeds.end() && sim.parallel().rank() == 0)
+          std::filesystem::remove(ctx.output.shared_file(bed));
         return payload;
       }
     };
   } // namespace
 
-  std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &seeds,
+  std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &base_seeds,
                                                    double tonnes_per_cycle, JobContext &ctx)
   {
-    return std::make_unique<DemWearSource>(c, seeds, tonnes_per_cycle, ctx);
+    return std::make_unique<DemWearSource>(c, base_seeds, tonnes_per_cycle, ctx);
   }
 } // namespace abrade::coupling::lifetime

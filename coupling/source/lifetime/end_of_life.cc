@@ -1,4 +1,5 @@
 #include <abrade/coupling/lifetime/end_of_life.h>
+#include <abrade/coupling/lifetime/life_interval.h>
 
 #include <sstream>
 
@@ -14,31 +15,27 @@ namespace abrade::coupling::lifetime
   EndOfLife end_of_life(const std::vector<Criterion> &criteria, const std::vector<TrajectoryPoint> &trajectory)
   {
     EndOfLife e;
-    // within the run: the first update in which any criterion reaches its limit; within it, the
-    // criterion that reaches it at the fewest tonnes
-    for (std::size_t u = 1; u < trajectory.size() && !e.reached; ++u)
-      for (std::size_t c = 0; c < criteria.size(); ++c)
-        {
-          const double limit = criteria[c].limit;
-          const auto  &a = trajectory[u - 1], &b = trajectory[u];
-          if (limit <= 0 || !(b.values[c] >= limit))
-            continue;
-          const double t = a.values[c] >= limit ? a.tonnes : crossing(a.tonnes, a.values[c], b.tonnes, b.values[c], limit);
-          if (!e.reached || t < e.tonnes)
-            e.tonnes = t, e.criterion = c, e.reached = true, e.update = long(u);
-        }
-    if (e.reached || trajectory.size() < 2)
+    if (trajectory.size() < 2)
       return e;
-    // past the run: each criterion at the rate of the last update; the first to reach its limit
-    const auto &a = trajectory[trajectory.size() - 2], &b = trajectory.back();
+    // each criterion's life on the whole trajectory (life_interval.h): reached ones first, then
+    // the earliest
     for (std::size_t c = 0; c < criteria.size(); ++c)
       {
-        const double rate = (b.values[c] - a.values[c]) / (b.tonnes - a.tonnes);
-        if (criteria[c].limit <= 0 || !(rate > 0) || !(b.tonnes > a.tonnes))
+        if (criteria[c].limit <= 0)
           continue;
-        const double t = b.tonnes + (criteria[c].limit - b.values[c]) / rate;
-        if (!e.extrapolated || t < e.tonnes)
-          e.tonnes = t, e.criterion = c, e.extrapolated = true;
+        std::vector<double> tonnes, values;
+        for (std::size_t u = 1; u < trajectory.size(); ++u)
+          tonnes.push_back(trajectory[u].tonnes), values.push_back(trajectory[u].values[c]);
+        const LifeOnTrajectory l = life_from_trajectory(tonnes, values, criteria[c].limit);
+        if (!(l.tonnes > 0) && !l.reached)
+          continue;
+        const bool better = e.criterion == EndOfLife::none || (l.reached && !e.reached) ||
+                            (l.reached == e.reached && l.tonnes < e.tonnes);
+        if (better)
+          {
+            e.tonnes = l.tonnes, e.criterion = c, e.reached = l.reached, e.extrapolated = !l.reached;
+            e.update = l.update, e.exponent = l.exponent;
+          }
       }
     return e;
   }
@@ -52,7 +49,7 @@ namespace abrade::coupling::lifetime
     if (e.reached)
       s << "reached within update " << e.update << " (interpolated linearly within it)";
     else
-      s << "extrapolated from the last update's rate";
+      s << "extrapolated past the last update by its recent course (power law, exponent " << e.exponent << ")";
     return s.str();
   }
 } // namespace abrade::coupling::lifetime

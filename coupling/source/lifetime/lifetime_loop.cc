@@ -38,8 +38,9 @@ namespace abrade::coupling::lifetime
       n_criteria
     };
 
-    /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum.
-    const std::string state_format = "abrade lifetime state 2";
+    /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum; 3 the
+    /// updates' records of every criterion (beds, relative variance) and the beds of the next.
+    const std::string state_format = "abrade lifetime state 3";
   } // namespace
 
   LifetimeLoop::LifetimeLoop(JobContext &ctx) : ctx(ctx) {}
@@ -77,6 +78,7 @@ namespace abrade::coupling::lifetime
         if (worn_through)
           break;
         record(wear, rates, step);
+        choose_beds();
         checkpoint();
         progress.update(double(update), "update " + std::to_string(update) + "/" + std::to_string(s.max_updates) +
                                           ", " + std::to_string(long(tonnes)) + " t");
@@ -114,7 +116,13 @@ namespace abrade::coupling::lifetime
     s.analytic        = prm.get("Wear source") == "analytic";
     s.rate_expression = prm.get("Analytic wear rate");
     s.seed_scatter    = prm.get_double("Analytic seed scatter");
+    s.target_interval = prm.get_double("Target interval");
+    s.max_beds        = prm.get_integer("Maximum beds");
     prm.leave_subsection();
+    if (s.target_interval > 0 && s.max_beds < long(s.seeds.size()))
+      ctx.parameters.fail({"Lifetime"}, "Maximum beds",
+                          "fewer than the " + std::to_string(s.seeds.size()) + " Seeds: a target interval adds beds, "
+                          "it does not take them away");
 
     if (s.seeds.empty())
       ctx.parameters.fail({"Lifetime"}, "Seeds", "at least one seed is needed");
@@ -158,7 +166,7 @@ namespace abrade::coupling::lifetime
     if (s.analytic)
       try
         {
-          source = make_analytic_wear_source(s.rate_expression, s.tonnes_per_cycle, s.seeds, s.seed_scatter);
+          source = make_analytic_wear_source(s.rate_expression, s.tonnes_per_cycle, s.seed_scatter);
         }
       catch (const std::invalid_argument &e)
         {
@@ -176,7 +184,8 @@ namespace abrade::coupling::lifetime
                          {"maximum recession", s.max_recession},
                          {"maximum worn mass", s.max_worn_mass}};
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
-    seed_factors.assign(n_criteria, SeedFactors(s.seeds.size()));
+    records.assign(n_criteria, {});
+    beds_now          = long(s.seeds.size());
 
     std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth",
                                         "max_vertex_displacement", "worn_volume", "worn_mass", "archard_volume",
@@ -186,7 +195,7 @@ namespace abrade::coupling::lifetime
       columns.push_back("archard_volume_" + phase); // this update's wear per phase of the cycle
     for (std::size_t p = 1; p < s.recession_points.size(); ++p)
       columns.push_back("point_recession_" + std::to_string(p + 1));
-    columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z", "dem_warnings"});
+    columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z", "dem_warnings", "beds"});
     // the wear depth (below the design) at the followed points: what a gauge there measures
     for (std::size_t p = 0; p < s.recession_points.size(); ++p)
       columns.push_back(p == 0 ? std::string("point_depth") : "point_depth_" + std::to_string(p + 1));
@@ -200,7 +209,7 @@ namespace abrade::coupling::lifetime
       trajectory.raw_row(row);
     trajectory.flush();
     ctx.log.line("Lifetime: knife of " + std::to_string(knife->triangulation().n_active_cells()) + " cells, " +
-                 std::to_string(s.seeds.size()) + " bed seed(s) per update, wear from " +
+                 std::to_string(beds_now) + " fresh bed(s) per update, wear from " +
                  (s.analytic ? "the analytic rate " + s.rate_expression : std::string("the DEM")));
   }
 
@@ -301,6 +310,9 @@ namespace abrade::coupling::lifetime
     s.smoothing   = state.number("smoothing_radius");
     volume0       = state.number("design_volume");
     deepest       = state.numbers("deepest_point");
+    beds_now      = long(state.number("beds_next"));
+    if (beds_now < long(s.seeds.size()))
+      throw InputError(file, "corrupt lifetime checkpoint (" + state.text("beds_next") + " beds for the next update)");
     const auto t  = state.numbers("history_tonnes");
     if (long(t.size()) != done + 1 || deepest.size() != 3)
       throw InputError(file, "corrupt lifetime checkpoint (history of " + std::to_string(t.size()) + " points)");
@@ -316,14 +328,13 @@ namespace abrade::coupling::lifetime
           throw InputError(file, "corrupt lifetime checkpoint (criterion history " + std::to_string(c) + ")");
         for (std::size_t k = 0; k < v.size(); ++k)
           history[k].values[c] = v[k];
-        try
-          {
-            seed_factors[c].set_sums(state.numbers("seed_factor_sums_" + std::to_string(c)));
-          }
-        catch (const std::invalid_argument &e)
-          {
-            throw InputError(file, e.what());
-          }
+        const auto beds = state.numbers("record_beds_" + std::to_string(c));
+        const auto var  = state.numbers("record_relative_variance_" + std::to_string(c));
+        if (long(beds.size()) != done || var.size() != beds.size())
+          throw InputError(file, "corrupt lifetime checkpoint (update records of criterion " + std::to_string(c) + ")");
+        records[c].clear();
+        for (long k = 0; k < done; ++k)
+          records[c].push_back({t[k + 1], v[k + 1], std::size_t(beds[k]), var[k]});
       }
     trajectory_rows.clear();
     for (long k = 1; k <= done; ++k)
@@ -343,13 +354,17 @@ namespace abrade::coupling::lifetime
   }
 
   // ---------------------------------------------------------------------------------------------
-  // 1. One cycle's wear, per seed.
+  // 1. One cycle's wear, per bed: fresh beds for every update, their seeds derived from the
+  //    run's seeds, the update number and (for beds beyond the seeds) a round.
   CycleWear LifetimeLoop::run_cycles()
   {
+    std::vector<int> beds;
+    for (long k = 0; k < beds_now; ++k)
+      beds.push_back(bed_seed(s.seeds[k % s.seeds.size()], update, k / long(s.seeds.size())));
     CycleWear wear;
     try
       {
-        wear = source->cycle(knife->surface(), tonnes);
+        wear = source->cycle(knife->surface(), tonnes, beds);
       }
     catch (const std::domain_error &e) // an analytic rate that is negative or not a number
       {
@@ -492,35 +507,67 @@ namespace abrade::coupling::lifetime
     return st;
   }
 
-  // 5. Record: the wear depth below the design, volumes, followed points; the seeds' rates of
-  //    every criterion's quantity (for the interval).
-  double LifetimeLoop::add_seed_rates(const Rates &rates, const Step &st)
+  // 5. Record: the wear depth below the design, volumes, followed points; each criterion's
+  //    update record (its value, the beds' relative variance of its rate at the place that ends
+  //    life, chosen on the beds' mean) for the interval.
+  double LifetimeLoop::add_update_records(const Rates &rates, const Step &st)
   {
-    const long n = st.cycles;
+    const long  n    = st.cycles;
+    const auto &now  = history.back();
+    auto        keep = [&](std::size_t c, const std::vector<double> &bed_rates) {
+      records[c].push_back({now.tonnes, now.values[c], bed_rates.size(), relative_variance(bed_rates)});
+    };
     // depth: at the vertex that is deepest after this update
     std::size_t deepest_vertex = 0;
     double      most           = -1;
     for (std::size_t v = 0; v < rates.mean.size(); ++v)
       if (st.depth_before[v] + n * rates.mean[v] > most)
         most = st.depth_before[v] + n * rates.mean[v], deepest_vertex = v;
-    std::vector<double> seed(rates.seed.size());
-    for (std::size_t k = 0; k < seed.size(); ++k)
-      seed[k] = rates.seed[k][deepest_vertex];
-    seed_factors[depth_criterion].add(double(n), rates.mean[deepest_vertex], seed);
-    std::vector<double> relative(seed.size());
-    for (std::size_t k = 0; k < seed.size(); ++k)
-      relative[k] = rates.mean[deepest_vertex] > 0 ? seed[k] / rates.mean[deepest_vertex] : 1.0;
-    const double spread = life_interval(1.0, relative).relative_sd;
-    // recession: at the followed point that has receded most after this update (the seeds'
-    // relative rates there; the tip recedes faster than its depth, by a factor the same for all)
+    std::vector<double> bed(rates.seed.size());
+    for (std::size_t k = 0; k < bed.size(); ++k)
+      bed[k] = rates.seed[k][deepest_vertex];
+    keep(depth_criterion, bed);
+    const double spread = std::sqrt(relative_variance(bed));
+    // recession: at the followed point that has receded most after this update (the tip
+    // recedes faster than its depth, by a factor the same for all beds)
     const auto  recession = knife->recession_at(s.recession_points);
     std::size_t followed  = std::max_element(recession.begin(), recession.end()) - recession.begin();
-    for (std::size_t k = 0; k < seed.size(); ++k)
-      seed[k] = st.followed_seed[k][followed];
-    seed_factors[recession_criterion].add(double(n), st.followed_mean[followed], seed);
+    for (std::size_t k = 0; k < bed.size(); ++k)
+      bed[k] = st.followed_seed[k][followed];
+    keep(recession_criterion, bed);
     // worn mass: the whole knife's volume
-    seed_factors[mass_criterion].add(double(n), rates.archard_volume, rates.seed_volume);
+    keep(mass_criterion, rates.seed_volume);
     return spread;
+  }
+
+  LifeInterval LifetimeLoop::current_interval(const EndOfLife &e) const
+  {
+    if (e.criterion == EndOfLife::none)
+      return {};
+    return life_interval(criteria[e.criterion].limit, records[e.criterion]);
+  }
+
+  // Lifetime/Target interval: while the life's interval is wider than asked, the next updates
+  //    draw more beds (the variance an update adds falls as 1 / beds), up to Maximum beds.
+  void LifetimeLoop::choose_beds()
+  {
+    if (!(s.target_interval > 0))
+      return;
+    const LifeInterval li   = current_interval(end_of_life(criteria, history));
+    long               want = beds_now;
+    if (li.dof < 1)
+      want = std::max(beds_now, 3L);
+    else if (li.relative_half_width > s.target_interval)
+      want = long(std::ceil(beds_now * std::pow(li.relative_half_width / s.target_interval, 2)));
+    want = std::min(want, s.max_beds);
+    if (want > beds_now)
+      {
+        ctx.log.line("update " + std::to_string(update) + ": the life's interval is +-" +
+                     io::format_number(100 * li.relative_half_width, 3) + " %, the target +-" +
+                     io::format_number(100 * s.target_interval, 3) + " %: " + std::to_string(want) +
+                     " beds from the next update");
+        beds_now = want;
+      }
   }
 
   void LifetimeLoop::record(const CycleWear &wear, const Rates &rates, const Step &st)
@@ -529,7 +576,6 @@ namespace abrade::coupling::lifetime
     cycles += n;
     tonnes += n * wear.tonnes_per_cycle;
     archard_total += n * rates.archard_volume;
-    const double spread = add_seed_rates(rates, st);
 
     const fem::SolidSurface &surface = knife->surface();
     const auto               depth   = knife->wear_depth();
@@ -550,6 +596,7 @@ namespace abrade::coupling::lifetime
     const double swept     = st.volume_before - knife->volume();
     history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),
                                 worn * knife_parameters.density}});
+    const double spread = add_update_records(rates, st);
 
     std::vector<double> row = {double(update), double(cycles), tonnes, dmax, area_sum > 0 ? depth_area / area_sum : 0.0,
                                *std::max_element(travel.begin(), travel.end()), worn, worn * knife_parameters.density,
@@ -559,7 +606,8 @@ namespace abrade::coupling::lifetime
     for (double pv : wear.phase_volume)
       row.push_back(n * pv);
     row.insert(row.end(), recession.begin() + 1, recession.end());
-    row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2], double(dem_warnings_now)});
+    row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2], double(dem_warnings_now),
+                           double(rates.seed.size())});
     const auto point_depth = knife->wear_depth_below(s.recession_points);
     row.insert(row.end(), point_depth.begin(), point_depth.end());
     trajectory_rows.push_back(trajectory.row(row));
@@ -592,6 +640,7 @@ namespace abrade::coupling::lifetime
     state.set("smoothing_radius", s.smoothing);
     state.set("design_volume", volume0);
     state.set("deepest_point", deepest);
+    state.set("beds_next", double(beds_now));
     std::vector<double> t;
     for (const auto &p : history)
       t.push_back(p.tonnes);
@@ -602,7 +651,11 @@ namespace abrade::coupling::lifetime
         for (const auto &p : history)
           v.push_back(p.values[c]);
         state.set("history_criterion_" + std::to_string(c), v);
-        state.set("seed_factor_sums_" + std::to_string(c), seed_factors[c].sums());
+        std::vector<double> beds, var;
+        for (const auto &r : records[c])
+          beds.push_back(double(r.beds)), var.push_back(r.relative_variance);
+        state.set("record_beds_" + std::to_string(c), beds);
+        state.set("record_relative_variance_" + std::to_string(c), var);
       }
     for (std::size_t k = 0; k < trajectory_rows.size(); ++k)
       state.set("trajectory_row_" + std::to_string(k + 1), trajectory_rows[k]);
@@ -633,9 +686,11 @@ namespace abrade::coupling::lifetime
     EndOfLife   e = end_of_life(criteria, history);
     std::string criterion = e.criterion == EndOfLife::none ? "none" : criteria[e.criterion].name;
     std::string method    = e.reached ? "interpolated within update " + std::to_string(e.update)
-                                      : (e.extrapolated ? "extrapolated from the last update's rate" : "none");
+                                      : (e.extrapolated ? "extrapolated past the last update by the recent course's power "
+                                                          "law (exponent " + io::format_number(e.exponent, 3) + ")"
+                                                        : "none");
     std::vector<double> where = deepest;
-    std::size_t         factors_of = e.criterion == EndOfLife::none ? std::size_t(depth_criterion) : e.criterion;
+    LifeInterval        li    = current_interval(e);
     if (worn_through)
       if (const EndOfLife rival = end_of_life(criteria, worn_through_rival);
           rival.reached && rival.tonnes < worn_through_tonnes)
@@ -645,14 +700,22 @@ namespace abrade::coupling::lifetime
           end    = criterion + " reached";
           if (e.criterion != depth_criterion)
             where = {};
-          factors_of = e.criterion;
+          // its interval: relative, from the updates recorded before the last one
+          li = life_interval(criteria[e.criterion].limit, records[e.criterion]);
+          const double scale = li.life.tonnes > 0 ? e.tonnes / li.life.tonnes : 0.0;
+          li.life.tonnes = e.tonnes, li.low *= scale, li.high *= scale;
           worn_through = false;
         }
     if (worn_through && (!e.reached || worn_through_tonnes < e.tonnes))
       {
         e.tonnes = worn_through_tonnes, e.reached = true, e.extrapolated = false;
         criterion = "worn through", method = "interpolated within update " + std::to_string(update);
-        factors_of = depth_criterion;
+        // its interval: the depth's, relative, at the last update recorded before it
+        li = records[depth_criterion].empty()
+               ? LifeInterval{}
+               : life_interval(history.back().values[depth_criterion], records[depth_criterion]);
+        const double scale = li.life.tonnes > 0 ? worn_through_tonnes / li.life.tonnes : 0.0;
+        li.life.tonnes = worn_through_tonnes, li.low *= scale, li.high *= scale;
       }
     if (e.criterion == mass_criterion && !worn_through)
       where = {}; // the whole knife
@@ -662,7 +725,6 @@ namespace abrade::coupling::lifetime
         const auto p = s.recession_points[std::max_element(r.begin(), r.end()) - r.begin()];
         where        = {p[0], p[1], p[2]};
       }
-    const LifeInterval li = life_interval(e.tonnes, seed_factors[factors_of].factors());
 
     const auto  &depth = knife->wear_depth();
     const auto  &travel = knife->vertex_displacement();
@@ -693,29 +755,55 @@ namespace abrade::coupling::lifetime
     r["end_of_life_method"]              = method;
     r["end_of_life_where"]               = where;
     r["extrapolated"]                    = e.extrapolated;
-    r["seeds"]                           = static_cast<long>(li.seeds);
-    r["seed_factors"]                    = seed_factors[factors_of].factors();
-    r["wear_rate_relative_spread"]       = li.relative_sd;
-    // the beds' spread of the whole knife's worn volume (abrade calibrate's replicate part)
-    r["worn_volume_relative_spread"] = life_interval(1.0, seed_factors[mass_criterion].factors()).relative_sd;
-    r["confidence"]                      = li.confidence;
-    r["predicted_tonnes_low"]            = li.low;
-    r["predicted_tonnes_high"]           = li.high;
-    r["predicted_tonnes_spread_low"]     = li.spread_low;
-    r["predicted_tonnes_spread_high"]    = li.spread_high;
-    r["interval"] = "t-interval of the beds' mean wear rate of the quantity that ends life, carried to the life "
-                    "(n - 1 degrees of freedom; docs/lifetime.md)";
-    if (li.seeds < 2)
-      warnings.push_back("one bed seed: the predicted life has no interval; set Lifetime/Seeds = 1, 2, 3 (three or "
-                         "more beds) for a 95 % t-interval over the beds");
-    else if (li.high == 0 && e.tonnes > 0)
-      warnings.push_back("the beds scatter so much that the life's interval has no upper bound (high = 0): more "
-                         "seeds narrow it");
+    r["seeds"]                           = static_cast<long>(s.seeds.size());
+    std::vector<double> beds_per_update;
+    for (const auto &u : records[depth_criterion])
+      beds_per_update.push_back(double(u.beds));
+    r["beds_per_update"]                 = beds_per_update;
+    r["wear_rate_relative_spread"]       = li.bed_relative_sd; // one bed's, at the place that ends life
+    // the beds' relative standard deviation of the whole knife's worn volume, as one bed's over
+    // the run (abrade calibrate divides it by sqrt(seeds) for its replicate part)
+    if (!records[mass_criterion].empty())
+      {
+        const LifeInterval v =
+          life_interval(history.back().values[mass_criterion] * (1 + 1e-9), records[mass_criterion]);
+        r["worn_volume_relative_spread"] = v.relative_sd_beds * std::sqrt(double(s.seeds.size()));
+      }
+    r["confidence"] = li.confidence;
+    if (li.dof >= 1 && li.life.tonnes > 0)
+      {
+        r["predicted_tonnes_low"]  = li.low;
+        r["predicted_tonnes_high"] = li.high;
+        r["relative_half_width"]   = li.relative_half_width;
+      }
+    io::Json &iv                = r["interval"];
+    iv["method"]                = "the life from the whole trajectory (crossing, or a power law past the last update); "
+                                  "its variance from every update's beds, carried by the gradient, interval on ln L "
+                                  "with t(dof) (docs/lifetime.md)";
+    iv["degrees_of_freedom"]    = li.dof;
+    iv["bed_relative_sd"]       = li.bed_relative_sd;
+    iv["relative_sd"]           = li.relative_sd;
+    iv["components"]["beds"]          = li.relative_sd_beds;
+    iv["components"]["extrapolation"] = li.relative_sd_extrapolation;
+    iv["components"]["calibration"]   = 0.0; // W and the footprint: not yet carried (abrade calibrate)
+    if (s.target_interval > 0)
+      {
+        const bool met = li.dof >= 1 && li.relative_half_width <= s.target_interval;
+        iv["target_relative_half_width"] = s.target_interval;
+        iv["target_met"]                 = met;
+        if (!met)
+          warnings.push_back("Lifetime/Target interval +-" + io::format_number(100 * s.target_interval, 3) +
+                             " % not met (+-" + io::format_number(100 * li.relative_half_width, 3) + " % with at most " +
+                             std::to_string(s.max_beds) + " beds per update): a larger Maximum beds narrows it");
+      }
+    if (li.dof < 1)
+      warnings.push_back("one bed per update: the predicted life has no interval; set Lifetime/Seeds = 1, 2, 3 (three "
+                         "or more beds) or a Lifetime/Target interval");
     r["warnings"] = std::vector<double>{};
     for (const auto &w : warnings)
       {
         r["warnings"].push_back(w);
-        if (w.rfind("one bed seed", 0) == 0 || w.rfind("the beds scatter", 0) == 0)
+        if (w.rfind("one bed per update", 0) == 0 || w.rfind("Lifetime/Target interval", 0) == 0)
           ctx.log.warning(w);
       }
     if (dem_warnings_total > 0)
@@ -756,9 +844,9 @@ namespace abrade::coupling::lifetime
       }
     line << "Lifetime: " << end << " after " << cycles << " cycles; predicted life " << e.tonnes << " t ("
          << describe(e, criteria) << ")";
-    if (li.seeds > 1 && e.tonnes > 0)
-      line << ", " << 100 * li.confidence << " % interval " << li.low << " ... "
-           << (li.high > 0 ? io::format_number(li.high, 6) : std::string("unbounded")) << " t over " << li.seeds << " beds";
+    if (li.dof >= 1 && e.tonnes > 0)
+      line << ", " << 100 * li.confidence << " % interval " << li.low << " ... " << li.high << " t (+-"
+           << io::format_number(100 * li.relative_half_width, 3) << " %, " << li.dof << " degrees of freedom)";
     ctx.log.line(line.str());
   }
 } // namespace abrade::coupling::lifetime

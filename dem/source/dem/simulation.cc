@@ -162,12 +162,15 @@ namespace abrade::dem
   Simulation::Simulation(const Settings &s) : config(s), impl(std::make_unique<Impl>())
   {
     impl->parallel  = config.distribute ? Parallel::world() : Parallel();
-    impl->n_threads = config.threads > 0 ? config.threads : default_thread_count(impl->parallel);
-    impl->governor  = ThreadGovernor(impl->n_threads, config.adapt_threads);
+    // n_threads is the count of shares (the arithmetic); the governor's team works on them
+    const int threads = config.threads > 0 ? config.threads : default_thread_count(impl->parallel);
+    impl->n_threads   = config.shares > 0 ? config.shares : threads;
+    impl->governor    = ThreadGovernor(std::min(threads, impl->n_threads), config.adapt_threads);
     with_contact_law(config.contact, [&](auto law) { impl->history = decltype(law)::history; });
   }
 
-  int Simulation::threads() const { return impl->n_threads; }
+  int Simulation::shares() const { return impl->n_threads; }
+  int Simulation::threads() const { return impl->governor.threads(); }
 
   void Simulation::pin_thread_team(int team) { impl->governor.pin(team); }
 

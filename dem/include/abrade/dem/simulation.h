@@ -48,9 +48,14 @@ namespace abrade::dem
     double skin = 0;                ///< Verlet skin [m]; 0: 0.2 x smallest radius
     DampingModel damping = DampingModel::edem;
     ContactModel contact; ///< rolling and cohesion sub-models (contact_law.h)
-    int    threads = 0;             ///< 0: all available
+    int    threads = 0;             ///< at most this many threads work; 0: all available
+    /// The shares each step's work is cut into (0: as many as threads). The shares and the order
+    /// their results are summed in fix the arithmetic: a run gives the same bits with any number
+    /// of threads working on the same shares, so a fixed count makes a case's results the same
+    /// on any machine. More threads than shares are not used.
+    int    shares = 0;
     /// Work with fewer of the threads while that is faster (a busy machine; thread_governor.h).
-    /// The results do not depend on it: the work is cut into `threads` shares either way.
+    /// The results do not depend on it: the work is cut into `shares` shares either way.
     bool   adapt_threads = true;
     /// Particles outside this box are lost.
     Vec3   domain_min = Vec3::Constant(-1e3), domain_max = Vec3::Constant(1e3);
@@ -145,9 +150,11 @@ namespace abrade::dem
     const std::vector<Material> &materials() const { return mats; }
     const PairCoefficients &pair(int a, int b) const { return coefficients[a * mats.size() + b]; }
     const StepStatistics &statistics() const { return stats; }
-    /// The threads each step's work is cut into (Settings::threads, or the default).
+    /// The shares each step's work is cut into (Settings::shares, or the thread count).
+    int shares() const;
+    /// The most threads that work on them (Settings::threads or the machine's, at most shares()).
     int threads() const;
-    /// Works with @p team of threads() from now on, without adapting (tests, benchmarks).
+    /// Works with @p team of shares() from now on, without adapting (tests, benchmarks).
     void pin_thread_team(int team);
     const Settings       &settings() const { return config; }
     /// Messages (warnings) collected so far; the caller decides where they are printed.

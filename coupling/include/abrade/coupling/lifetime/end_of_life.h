@@ -6,8 +6,9 @@
 //  - within the run: interpolated linearly inside the update that crossed it. The loop applies a
 //    constant wear rate per cycle within one update, so every point's depth grows linearly in
 //    tonnes there; the interpolation is the model's own answer, not an approximation of it.
-//  - past the last update: extrapolated with the rate of the last update (the recent rate, not
-//    the mean since the start: wear that accelerates as the edge blunts, or slows, shows in it).
+//  - past the last update: extrapolated by the trajectory's recent course, a power law through
+//    the last point (life_interval.h: wear that slows as an edge rounds, or speeds up, shows in
+//    its exponent; with one update it is the update's rate).
 //
 // Pure arithmetic on the trajectory (no mesh, no DEM): tests/unit/test_lifetime_steps.cc checks it
 // against exact crossings of linear and accelerating wear.
@@ -36,7 +37,8 @@ namespace abrade::coupling::lifetime
     double      tonnes       = 0;     ///< predicted tonnes to end of life; 0: no wear, no prediction
     std::size_t criterion    = none;  ///< the criterion that ends life first
     bool        reached      = false; ///< crossed within the run (interpolated)
-    bool        extrapolated = false; ///< past the last update, at the last update's rate
+    bool        extrapolated = false; ///< past the last update, by the recent course's power law
+    double      exponent     = 1;     ///< extrapolated: the power law's exponent
     long        update       = 0;     ///< reached: the update (1-based) within which it was crossed
   };
 

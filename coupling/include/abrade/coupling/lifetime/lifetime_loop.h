@@ -17,8 +17,14 @@
 //     record()                   wear depth below the design (the definition `abrade compare`
 //                                uses), volumes, followed points: trajectory.csv, knife series
 //     checkpoint()               the knife and the loop's state (key = value, state_file.h)
-//   finish()                     end of life interpolated or extrapolated (end_of_life.h), its
-//                                interval over the beds (life_interval.h): summary.json
+//   finish()                     the life from the whole trajectory, reached or extrapolated
+//                                (end_of_life.h), its interval over all updates' beds
+//                                (life_interval.h): summary.json
+//
+// Every update draws its wear from fresh beds: each seed's bed is settled anew from a seed
+// derived from it and the update number (bed_seed()), so the updates are independent samples
+// and all of them count in the interval; Lifetime/Target interval adds beds to the updates
+// until the life's interval is as narrow as asked.
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
@@ -61,6 +67,8 @@ namespace abrade::coupling::lifetime
       bool                          analytic    = false;
       std::string                   rate_expression;
       double                        seed_scatter = 0;
+      double                        target_interval = 0; ///< relative half-width; 0: none
+      long                          max_beds = 0;        ///< per update, with a target interval
     };
 
     /// The outcome of moving the knife by one update.
@@ -92,9 +100,14 @@ namespace abrade::coupling::lifetime
     void build_knife();
     bool resume();
     void start_afresh();
-    /// Adds this update's seed rates of every criterion's quantity to seed_factors; returns the
-    /// update's relative bed-to-bed spread of the deepest point's rate.
-    double add_seed_rates(const Rates &rates, const Step &step);
+    /// This update's record of every criterion's quantity (its value after the update, the
+    /// beds' relative variance of its rate at the place that ends life); returns the relative
+    /// bed-to-bed spread of the deepest point's rate.
+    double add_update_records(const Rates &rates, const Step &step);
+    /// The life of the criterion that ends it and its interval, from the trajectory so far.
+    LifeInterval current_interval(const EndOfLife &e) const;
+    /// The beds of the next update under Lifetime/Target interval.
+    void choose_beds();
 
     JobContext                           &ctx;
     Settings                              s;
@@ -117,7 +130,8 @@ namespace abrade::coupling::lifetime
     std::vector<Criterion>       criteria;
     std::vector<TrajectoryPoint> history;      ///< per update (and the fresh knife) the criteria's values
     std::vector<std::string>     trajectory_rows; ///< trajectory.csv's rows as written (rebuilt from them on resume)
-    std::vector<SeedFactors>     seed_factors; ///< per criterion
+    std::vector<std::vector<UpdateRecord>> records; ///< per criterion, per update (life_interval.h)
+    long                         beds_now = 0; ///< beds of the next update
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
     long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)

@@ -27,13 +27,18 @@ namespace abrade::coupling::lifetime
     std::vector<std::string> warnings;
   };
 
+  /// The bed seed of base seed @p seed in @p update (1-based), round @p round (extra beds of a
+  /// target interval): the seed itself in update 1, round 0 (a case's settled beds stay valid);
+  /// otherwise a 31-bit mix of the three (SplitMix64), the same on every machine.
+  int bed_seed(int seed, long update, long round = 0);
+
   class WearSource
   {
   public:
     virtual ~WearSource() = default;
     /// The wear of one cycle on the knife's current @p surface (its vertex order), after
-    /// @p tonnes handled so far.
-    virtual CycleWear cycle(const fem::SolidSurface &surface, double tonnes) = 0;
+    /// @p tonnes handled so far, on one bed per seed of @p bed_seeds.
+    virtual CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) = 0;
     /// The phases of the cycle (trajectory columns archard_volume_<phase>).
     virtual std::vector<std::string> phases() const = 0;
     /// The coefficient the wear scales with (the knife's law of Output/Wear field: Archard's W;
@@ -44,16 +49,17 @@ namespace abrade::coupling::lifetime
   /// A known wear rate: @p expression, depth per tonne [m/t] as a function of x, y, z [m] (the
   /// current surface) and t (the tonnes handled so far), at every vertex of the wearable
   /// surface; times the tonnes per cycle and the vertex's area (a third of its wearable
-  /// triangles'). With @p seed_scatter > 0 each seed's rate is multiplied by 1 + scatter z,
-  /// z a standard normal number drawn from the seed (a known bed-to-bed scatter, to test the
-  /// interval). Throws std::invalid_argument when the expression cannot be evaluated.
+  /// triangles'). With @p seed_scatter > 0 each bed's rate is multiplied by 1 + scatter z,
+  /// z a standard normal number drawn from the bed's seed (a known bed-to-bed scatter, to test
+  /// the interval). Throws std::invalid_argument when the expression cannot be evaluated.
   std::unique_ptr<WearSource> make_analytic_wear_source(const std::string &expression, double tonnes_per_cycle,
-                                                        const std::vector<int> &seeds, double seed_scatter);
+                                                        double seed_scatter);
 
-  /// The DEM: one cycle per seed from that seed's saved bed (beds/bed-seedN.bed in the output
-  /// directory, made on first use), on every knife wall (a grab's two knives are averaged vertex
-  /// by vertex). @p tonnes_per_cycle 0: the DEM's payload (Simulation/Payload height).
-  std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &seeds,
+  /// The DEM: one cycle per bed seed from that seed's settled bed (beds/bed-seedN.bed in the
+  /// output directory, settled on first use; the beds of derived seeds are deleted after their
+  /// cycle), on every knife wall (a grab's two knives are averaged vertex by vertex).
+  /// @p tonnes_per_cycle 0: the DEM's payload (Simulation/Payload height).
+  std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &base_seeds,
                                                    double tonnes_per_cycle, JobContext &ctx);
 
   /// The standard normal number that seed @p seed draws (Box-Muller on a 64-bit Mersenne
