@@ -4,7 +4,8 @@
 # the plots and surfaces exist; one bed per seed and particle size (the friction reuses them);
 # the per-metre wear against the prescribed motion (the knife moves 1.5 m/s x 0.1 s = 0.15 m in
 # penetration: wear / wear per metre must give that path, from the job's wall positions); the
-# wear shares of the height bands and of the faces each sum to one.
+# wear shares of the height bands and of the faces each sum to one; each combination's total wear
+# against the first's, pair by pair on the same seeds (computed again from the runs' tables).
 #   check_sweep.sh ABRADE PRM OUTDIR
 set -euo pipefail
 abrade=$1 prm=$2 out=$3
@@ -41,6 +42,23 @@ for d in [d for d in glob.glob(os.path.join(out, "runs", "*")) if os.path.isdir(
     assert len(peaks) == 2 and all(p > 0 for p in peaks), f"{d}: filtered peaks {peaks}"
 for r in csv.DictReader(open(os.path.join(out, "study.csv"))):
     assert abs(float(r["wear_penetration_mean"]) / float(r["wear_per_m_penetration_mean"]) - 0.15) < 1e-3
+# each combination's total wear against the first's, pair by pair on the same seeds: the
+# geometric mean of the per-seed ratios and its t-interval (1 degree of freedom), again here
+# from the runs' own wear tables
+import math
+def total(d):
+    return next(float(w["archard_volume"]) for w in csv.DictReader(open(os.path.join(out, "runs", d, "walls", "knife_wear.csv")))
+                if w["phase"] == "total")
+study = list(csv.DictReader(open(os.path.join(out, "study.csv"))))
+first = study[0]
+assert float(first["wear_total_ratio"]) == 1 and first["wear_total_ratio_significant"] == "0", first
+for r in study[1:]:
+    name = r["Wall knife/Interaction/Friction"] + "_" + r["Particles/Coarse graining/Factor"]
+    logs = [math.log(total(f"{name}-seed{s}") / total(f"0_1-seed{s}")) for s in (1, 2)]
+    m, h = sum(logs) / 2, 12.70620474 * abs(logs[0] - logs[1]) / 2
+    for key, want in (("wear_total_ratio", math.exp(m)), ("wear_total_ratio_low", math.exp(m - h)),
+                      ("wear_total_ratio_high", math.exp(m + h))):
+        assert abs(float(r[key]) / want - 1) < 1e-6, (name, key, r[key], want)
 print("ok: per-metre wear over the prescribed path, profile rows sum to the total")
 PY
 echo "ok: sweep wrote study.csv (2 x 2 combinations), plots, surfaces and 4 beds"

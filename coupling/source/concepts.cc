@@ -4,9 +4,13 @@
 // over the knives: the grab's two knives are replicates) and the payload (payload.csv: the most
 // mass above Simulation/Payload height at the end of a phase). Per concept: mean and standard
 // deviation over the seeds of the wear per phase and in total, the payload, and the wear per
-// tonne (per seed, then averaged). The change against the baseline is the ratio of the means
-// minus one, with the uncertainty of the ratio from the two standard errors (independent
-// beds: first-order propagation).
+// tonne (per seed, then averaged). Every concept runs on the same beds (common random numbers),
+// so a change against the baseline is taken pair by pair: per bed the ratio concept / baseline,
+// their geometric mean, and the 95 % t-interval of the mean log ratio over the beds (n - 1
+// degrees of freedom); a change is significant when its interval excludes 1. The bed-to-bed
+// scatter that both share cancels in the ratio (independent comparisons of the means did not
+// rank the concepts: their intervals overlapped). With lifetime runs the lives' ratio comes with
+// the interval of the two lives' intervals combined (conservative: common beds correlate them).
 #include <abrade/common/error.h>
 #include <abrade/common/input_file.h>
 #include <abrade/common/external.h>
@@ -14,6 +18,7 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/coupling/child_runs.h>
 #include <abrade/coupling/concepts.h>
+#include <abrade/coupling/paired_change.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +27,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
+#include <array>
 
 namespace abrade::coupling
 {
@@ -79,14 +86,7 @@ namespace abrade::coupling
       return s;
     }
 
-    /// Relative change of @p c against @p b [%] and its uncertainty.
-    std::pair<double, double> change(const Stat &c, const Stat &b)
-    {
-      if (!(b.mean != 0) || !(c.mean != 0))
-        return {0, 0};
-      const double r = c.mean / b.mean;
-      return {100 * (r - 1), 100 * r * std::hypot(c.se / c.mean, b.se / b.mean)};
-    }
+    using Change = PairedChange;
   } // namespace
 
   int run_concepts(const ConceptOptions &o, const std::string &abrade)
@@ -134,6 +134,7 @@ namespace abrade::coupling
 
     // --- optional: each concept's knife life ---
     std::map<std::string, std::string> life; // label -> predicted tonnes (text)
+    std::map<std::string, std::array<double, 3>> life_value; // label -> life, low, high [t] (0: none)
     if (o.lifetime_updates > 0)
       {
         std::vector<ChildRun> runs;
@@ -164,6 +165,9 @@ namespace abrade::coupling
             if (tonnes)
               std::snprintf(text, sizeof text, "%.3g", *tonnes);
             life[l] = text;
+            const std::string summary = root + "/lifetime/" + l + "/summary.json";
+            life_value[l] = {tonnes.value_or(0), io::summary_number(summary, "predicted_tonnes_low").value_or(0),
+                             io::summary_number(summary, "predicted_tonnes_high").value_or(0)};
           }
         std::ofstream gp(out.file("lifetime.gp"));
         gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'lifetime.png'\nset datafile separator ','\nset grid\n"
@@ -184,6 +188,7 @@ namespace abrade::coupling
     {
       std::map<std::string, Stat> wear;
       Stat                        payload, per_tonne;
+      std::vector<double>         total_of_bed, payload_of_bed, per_tonne_of_bed; // per bed, for the pairs
     };
     std::vector<Summary> sum(o.files.size());
     for (std::size_t k = 0; k < o.files.size(); ++k)
@@ -204,6 +209,7 @@ namespace abrade::coupling
         sum[k].wear["total"] = stat(tot);
         sum[k].payload       = stat(pay);
         sum[k].per_tonne     = stat(per_t);
+        sum[k].total_of_bed = tot, sum[k].payload_of_bed = pay, sum[k].per_tonne_of_bed = per_t;
       }
 
     std::ofstream csv(out.file("concepts.csv"));
@@ -212,12 +218,19 @@ namespace abrade::coupling
     for (const auto &p : phases)
       csv << ",wear_" << p << ",wear_" << p << "_std";
     csv << ",wear_total,wear_total_std,payload,payload_std,wear_per_tonne,wear_per_tonne_std,"
-           "change_wear_total_percent,change_wear_total_uncertainty,change_payload_percent,change_payload_uncertainty,"
-           "change_wear_per_tonne_percent,change_wear_per_tonne_uncertainty,predicted_life_tonnes\n";
+           "change_wear_total_percent,change_wear_total_uncertainty,change_wear_total_low_percent,"
+           "change_wear_total_high_percent,change_wear_total_significant,"
+           "change_payload_percent,change_payload_uncertainty,change_payload_low_percent,change_payload_high_percent,"
+           "change_payload_significant,change_wear_per_tonne_percent,change_wear_per_tonne_uncertainty,"
+           "change_wear_per_tonne_low_percent,change_wear_per_tonne_high_percent,change_wear_per_tonne_significant,"
+           "predicted_life_tonnes,predicted_life_low,predicted_life_high,change_life_percent,change_life_low_percent,"
+           "change_life_high_percent,change_life_significant\n";
     std::ofstream md(out.file("concepts.md"));
     md << "# Knife concepts (" << o.seeds.size() << " beds each; baseline: " << labels[0] << ")\n\n"
        << "Knife wear per cycle (Archard volume, mean of the knives) in mm^3, payload in kg per cycle, mean +- "
-          "standard deviation over the beds; changes against the baseline with their uncertainty (standard errors).\n\n"
+          "standard deviation over the beds. Changes against the baseline pair by pair on the same beds: the "
+          "geometric mean of the per-bed ratios and its 95 % interval [low, high]; * marks a significant change "
+          "(the interval excludes no change).\n\n"
        << "| concept |";
     for (const auto &p : phases)
       md << " wear " << p << " |";
@@ -231,14 +244,41 @@ namespace abrade::coupling
       std::snprintf(buf, sizeof buf, "%.3g +- %.2g", scale * s.mean, scale * s.std);
       return std::string(buf);
     };
-    auto pct = [&](std::pair<double, double> c) {
-      std::snprintf(buf, sizeof buf, "%+.1f +- %.1f %%", c.first, c.second);
+    auto pct = [&](const Change &c) {
+      std::snprintf(buf, sizeof buf, "%+.1f %% [%+.1f, %+.1f]%s", 100 * (c.ratio - 1), 100 * (c.low - 1),
+                    100 * (c.high - 1), c.significant ? " *" : "");
       return std::string(buf);
+    };
+    auto columns = [&](const Change &c) {
+      std::ostringstream o;
+      o.precision(8);
+      o << ',' << 100 * (c.ratio - 1) << ',' << 50 * (c.high - c.low) << ',' << 100 * (c.low - 1) << ','
+        << 100 * (c.high - 1) << ',' << (c.significant ? 1 : 0);
+      return o.str();
+    };
+    // the lives: the ratio with both intervals combined on the log scale (each interval is
+    // L exp(+-t s); common beds correlate the lives, so this is wider than a paired interval)
+    auto life_change = [&](std::size_t k) {
+      Change c;
+      const auto &a = life_value[labels[k]], &b = life_value[labels[0]];
+      if (!(a[0] > 0 && b[0] > 0))
+        return c;
+      c.ratio = a[0] / b[0];
+      if (a[1] > 0 && a[2] > 0 && b[1] > 0 && b[2] > 0)
+        {
+          const double h = std::hypot(0.5 * std::log(a[2] / a[1]), 0.5 * std::log(b[2] / b[1]));
+          c.low = c.ratio * std::exp(-h), c.high = c.ratio * std::exp(h);
+          c.significant = k > 0 && (c.low > 1 || c.high < 1);
+        }
+      else
+        c.low = c.high = c.ratio;
+      return c;
     };
     for (std::size_t k = 0; k < o.files.size(); ++k)
       {
-        const auto cw = change(sum[k].wear["total"], sum[0].wear["total"]), cp = change(sum[k].payload, sum[0].payload),
-                   ct = change(sum[k].per_tonne, sum[0].per_tonne);
+        const Change cw = paired_change(sum[k].total_of_bed, sum[0].total_of_bed),
+                     cp = paired_change(sum[k].payload_of_bed, sum[0].payload_of_bed),
+                     ct = paired_change(sum[k].per_tonne_of_bed, sum[0].per_tonne_of_bed), cl = life_change(k);
         csv << labels[k];
         md << "| " << labels[k] << " |";
         for (const auto &p : phases)
@@ -247,14 +287,26 @@ namespace abrade::coupling
             md << ' ' << pm(sum[k].wear[p], 1e9) << " |";
           }
         csv << ',' << sum[k].wear["total"].mean << ',' << sum[k].wear["total"].std << ',' << sum[k].payload.mean << ','
-            << sum[k].payload.std << ',' << sum[k].per_tonne.mean << ',' << sum[k].per_tonne.std << ',' << cw.first << ','
-            << cw.second << ',' << cp.first << ',' << cp.second << ',' << ct.first << ',' << ct.second << ','
-            << (life.count(labels[k]) ? life[labels[k]] : "") << '\n';
+            << sum[k].payload.std << ',' << sum[k].per_tonne.mean << ',' << sum[k].per_tonne.std << columns(cw)
+            << columns(cp) << columns(ct) << ',' << (life.count(labels[k]) ? life[labels[k]] : "");
+        if (life_value.count(labels[k]))
+          csv << ',' << life_value[labels[k]][1] << ',' << life_value[labels[k]][2] << columns(cl) << '\n';
+        else
+          csv << ",,,,,,,\n";
         md << ' ' << pm(sum[k].wear["total"], 1e9) << " | " << pm(sum[k].payload, 1e3) << " | "
            << pm(sum[k].per_tonne, 1e9) << " | " << (k ? pct(cw) : "baseline") << " | " << (k ? pct(cp) : "baseline")
            << " | " << (k ? pct(ct) : "baseline") << " |";
         if (o.lifetime_updates > 0)
-          md << ' ' << life[labels[k]] << " |";
+          {
+            const auto &v = life_value[labels[k]];
+            md << ' ' << life[labels[k]];
+            if (v[1] > 0)
+              {
+                std::snprintf(buf, sizeof buf, " (%.3g ... %.3g)", v[1], v[2]);
+                md << buf;
+              }
+            md << (k ? "; " + pct(cl) : std::string()) << " |";
+          }
         md << '\n';
       }
     csv.close(), md.close();

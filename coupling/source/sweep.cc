@@ -25,6 +25,7 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/child_runs.h>
+#include <abrade/coupling/paired_change.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/sweep.h>
 
@@ -333,9 +334,23 @@ namespace abrade::coupling
     if (phases.empty())
       throw RunError("sweep: no phases in the runs' wear tables (is wear enabled for wall '" + o.wall + "'?)");
     std::vector<std::vector<RunMetrics>> by_combo(combos.size());
+    std::vector<std::map<int, double>>   wear_of_seed(combos.size()); // for the pairs
     for (const auto &list : {first, rest})
       for (const auto &r : list)
-        by_combo[r.combo].push_back(reduce_run(r.dir, o.wall, phases, o.edge_height));
+        {
+          by_combo[r.combo].push_back(reduce_run(r.dir, o.wall, phases, o.edge_height));
+          wear_of_seed[r.combo][r.seed] = by_combo[r.combo].back().value.at("wear_total");
+        }
+    // each combination's total wear against the first's, pair by pair on the same seeds (the
+    // same beds where no particle parameter varies: then the beds' scatter cancels)
+    std::vector<PairedChange> against_first(combos.size());
+    for (std::size_t c = 0; c < combos.size(); ++c)
+      {
+        std::vector<double> a, b;
+        for (int seed : o.seeds)
+          a.push_back(wear_of_seed[c][seed]), b.push_back(wear_of_seed[0][seed]);
+        against_first[c] = paired_change(a, b);
+      }
 
     // the metrics, in the table's order (those every run has)
     std::vector<std::string> metrics = {"wear_total"};
@@ -369,6 +384,8 @@ namespace abrade::coupling
       header.push_back(v.key);
     for (const auto &m : metrics)
       header.push_back(m + "_mean"), header.push_back(m + "_std");
+    for (const char *h : {"wear_total_ratio", "wear_total_ratio_low", "wear_total_ratio_high", "wear_total_ratio_significant"})
+      header.push_back(h);
     std::ofstream csv(out.file("study.csv"));
     std::ofstream md(out.file("study.md"));
     for (std::size_t k = 0; k < header.size(); ++k)
@@ -384,8 +401,8 @@ namespace abrade::coupling
       md << " " << v.key << " |";
     for (const auto &m : metrics)
       md << " " << m << " |";
-    md << "\n|";
-    for (std::size_t k = 0; k < o.varies.size() + metrics.size(); ++k)
+    md << " wear_total / first (paired, 95 %) |\n|";
+    for (std::size_t k = 0; k < o.varies.size() + metrics.size() + 1; ++k)
       md << "---|";
     md << "\n";
     std::vector<std::map<std::string, std::pair<double, double>>> stats(combos.size());
@@ -405,6 +422,11 @@ namespace abrade::coupling
             md << " " << buf << " |";
             csv << "," << stats[c][m].first << "," << stats[c][m].second;
           }
+        const PairedChange &p = against_first[c];
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%.4g [%.4g, %.4g]%s", p.ratio, p.low, p.high, p.significant ? " *" : "");
+        md << " " << (c ? std::string(buf) : std::string("1 (first)")) << " |";
+        csv << "," << p.ratio << "," << p.low << "," << p.high << "," << (p.significant ? 1 : 0);
         md << "\n", csv << "\n";
       }
     md << "\nWear is the Archard volume (W as in the parameter file); per metre: over the distance the wall's "
@@ -416,7 +438,10 @@ namespace abrade::coupling
           "values are averages over the second half of phase '"
        << phases.back() << "'; the peak force is over phase '" << phases.front()
        << "'. Layer velocity in m/s along the probe axis; slip = wall velocity - layer velocity; contacts: "
-          "contacts with the wall, a particle on two faces counting twice (mean over the probe's samples).\n";
+          "contacts with the wall, a particle on two faces counting twice (mean over the probe's samples). "
+          "wear_total / first: each combination's total wear against the first combination's, pair by pair on "
+          "the same seeds (the same beds where no particle parameter varies), the geometric mean of the per-seed "
+          "ratios with its 95 % t-interval; * marks a significant difference.\n";
     md.close();
     if (!csv)
       throw RunError("sweep: could not write " + out.file("study.csv"));
