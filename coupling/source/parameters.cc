@@ -292,6 +292,26 @@ namespace abrade::coupling
                       "others. Default: the middle of the edge of the default knife.");
     prm.declare_entry("Maximum recession", "0", Double(0, huge),
                       "[m] End of life: the largest recession of the Recession points; 0: no limit. Range: >= 0.");
+    prm.declare_entry("Maximum edge recession", "0", Double(0, huge),
+                      "[m] End of life: the edge's recession as a height gauge reads it along the whole "
+                      "edge -- at Gauge stations stations from end to end, corners included, the rise of "
+                      "the part's lowest point in the cross-section above the design's -- at its worst "
+                      "station; 0: no limit. Unlike Maximum recession it needs no points and misses no "
+                      "corner. Range: >= 0.");
+    prm.declare_entry("Minimum plate thickness", "0", Double(0, huge),
+                      "[m] End of life: the plate's remaining thickness, as calipers across it read it at "
+                      "Gauge height above the design's edge, at the thinnest of the Gauge stations; 0: no "
+                      "limit. Range: >= 0.");
+    prm.declare_entry("Gauge height", "0", Double(0, huge),
+                      "[m] Where the plate's thickness is gauged, above the design's edge; 0: one plate "
+                      "thickness above where the design's middle section first reaches its full thickness "
+                      "(a chisel's bevel top, whose worn corner rises as the faces beside it wear). "
+                      "Range: >= 0.");
+    prm.declare_entry("Gauge stations", "41", Integer(2, 10000),
+                      "Stations along the part's length (its x axis) where the edge recession and the plate "
+                      "thickness are gauged, evenly spaced from end to end of the part as it is (the end ones "
+                      "one Knife/Mesh size inside its ends: the corners as far as the mesh resolves them). "
+                      "Range: [2, 10000].");
     prm.declare_entry("Maximum worn mass", "0", Double(0, huge),
                       "[kg] End of life: the mass worn off the knife; 0: no limit. Range: >= 0.");
     prm.declare_entry("Target tonnes", "0", Double(0, huge),

@@ -8,7 +8,9 @@
 #            vertices fold and the worn surface is built as a set: from then on the depth to 4 %
 #            and the life to 4 %, the followed points unchecked; the run stopped at 9.4 mm with a
 #            failed remesh before); the flat faces recede by rate x
-#            tonnes (1e-6), the chisel tip by rate x tonnes / sin(half edge angle) (1e-4).
+#            tonnes (1e-6), the chisel tip by rate x tonnes / sin(half edge angle) (1e-4); the
+#            edge gauged along its whole length, corners included, rises as the tip does, and
+#            the plate gauged above the bevel is 60 mm - 2 x rate x tonnes (1e-3).
 #            With three seeds scattered by 10 % (fresh beds every update): each update's depth
 #            increment is the mean of the three seeds' increments run alone (1e-3), and the life
 #            and its interval are what docs/lifetime.md derives, computed here again from the
@@ -89,6 +91,11 @@ for case, life in (("uniform", 12000), ("uniform_crossed", 6000), ("uniform_coar
         check(case, "tip", 1e-6 * t / sin_half, float(r["point_recession"]), 1e-4)
         check(case, "face +y", 1e-6 * t, float(r["point_recession_2"]), 1e-6)
         check(case, "face -y", 1e-6 * t, float(r["point_recession_3"]), 1e-4)
+        # the gauges along the whole edge: the edge rises like the tip (the inner parallel body
+        # of a prism is a prism: no station, the corners' included, differs), the plate at the
+        # gauge height loses the rate on both faces
+        check(case, "gauged edge recession", 1e-6 * t / sin_half, float(r["edge_recession"]), 1e-3)
+        check(case, "gauged plate thickness", 0.06 - 2e-6 * t, float(r["plate_thickness"]), 1e-3)
         assert 0.93 < float(r["swept_over_archard"]) <= 1.0, r["swept_over_archard"]
         assert float(r["max_vertex_displacement"]) > 2.5 * float(r["max_depth"]), "the tip moves further than the depth"
     s = summary(case)

@@ -25,6 +25,7 @@
 #include <fstream>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 namespace abrade::coupling::lifetime
 {
@@ -35,6 +36,8 @@ namespace abrade::coupling::lifetime
       depth_criterion,
       recession_criterion,
       mass_criterion,
+      edge_criterion,      ///< the edge's recession gauged along its length (edge_gauge.h)
+      thickness_criterion, ///< the plate thickness lost at the gauge height (the thinnest station)
       n_criteria
     };
 
@@ -118,6 +121,10 @@ namespace abrade::coupling::lifetime
     s.seed_scatter    = prm.get_double("Analytic seed scatter");
     s.target_interval = prm.get_double("Target interval");
     s.max_beds        = prm.get_integer("Maximum beds");
+    s.max_edge_recession  = prm.get_double("Maximum edge recession");
+    s.min_plate_thickness = prm.get_double("Minimum plate thickness");
+    s.gauge_height        = prm.get_double("Gauge height");
+    s.gauge_stations      = prm.get_integer("Gauge stations");
     prm.leave_subsection();
     if (s.target_interval > 0 && s.max_beds < long(s.seeds.size()))
       ctx.parameters.fail({"Lifetime"}, "Maximum beds",
@@ -150,9 +157,11 @@ namespace abrade::coupling::lifetime
           }
     if (s.analytic && s.tonnes_per_cycle <= 0)
       ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle", "the analytic wear rate is per tonne: set Tonnes per cycle > 0");
-    if (s.max_depth <= 0 && s.max_recession <= 0 && s.max_worn_mass <= 0)
+    if (s.max_depth <= 0 && s.max_recession <= 0 && s.max_worn_mass <= 0 && s.max_edge_recession <= 0 &&
+        s.min_plate_thickness <= 0)
       ctx.parameters.fail({"Lifetime"}, "Maximum depth",
-                          "no end-of-life criterion: set Maximum depth, Maximum recession or Maximum worn mass > 0");
+                          "no end-of-life criterion: set Maximum depth, Maximum recession, Maximum edge recession, "
+                          "Minimum plate thickness or Maximum worn mass > 0");
   }
 
   void LifetimeLoop::set_up()
@@ -182,7 +191,11 @@ namespace abrade::coupling::lifetime
     volume0           = knife->volume();
     criteria          = {{"maximum depth", s.max_depth},
                          {"maximum recession", s.max_recession},
-                         {"maximum worn mass", s.max_worn_mass}};
+                         {"maximum worn mass", s.max_worn_mass},
+                         {"maximum edge recession", s.max_edge_recession},
+                         // the thickness lost at the thinnest station reaching design - minimum
+                         {"minimum plate thickness",
+                          s.min_plate_thickness > 0 ? design_thickness - s.min_plate_thickness : 0.0}};
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
     records.assign(n_criteria, {});
     beds_now          = long(s.seeds.size());
@@ -195,7 +208,8 @@ namespace abrade::coupling::lifetime
       columns.push_back("archard_volume_" + phase); // this update's wear per phase of the cycle
     for (std::size_t p = 1; p < s.recession_points.size(); ++p)
       columns.push_back("point_recession_" + std::to_string(p + 1));
-    columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z", "dem_warnings", "beds"});
+    columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z", "dem_warnings", "beds",
+                                   "edge_recession", "edge_recession_x", "plate_thickness", "plate_thickness_x"});
     // the wear depth (below the design) at the followed points: what a gauge there measures
     for (std::size_t p = 0; p < s.recession_points.size(); ++p)
       columns.push_back(p == 0 ? std::string("point_depth") : "point_depth_" + std::to_string(p + 1));
@@ -235,6 +249,24 @@ namespace abrade::coupling::lifetime
     else
       knife = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
     frame = profile_frame(knife->design_surface());
+    // the gauges' stations on the design: its edge heights and the plate's thickness at the
+    // gauge height
+    if (s.gauge_height <= 0)
+      {
+        // a plate thickness above where the design is first whole (a chisel's bevel top, whose
+        // worn corner rises as the faces beside it wear): where calipers read the flat plate
+        const double whole = full_thickness_height(knife->design_surface(), frame.x0, frame.x1, frame.z0, frame.z1);
+        s.gauge_height     = whole + knife->thickness();
+      }
+    design_sections = worn_and_design_sections(knife->design_surface(), knife->design_surface(),
+                                               int(s.gauge_stations), frame.z0 + s.gauge_height, knife_parameters.mesh_size)
+                        .second;
+    design_thickness = *std::max_element(design_sections.thickness.begin(), design_sections.thickness.end());
+    if (s.min_plate_thickness > 0 && !(s.min_plate_thickness < design_thickness))
+      ctx.parameters.fail({"Lifetime"}, "Minimum plate thickness",
+                          io::format_number(s.min_plate_thickness) + " m is not less than the design's plate thickness at "
+                          "the gauge height (" + io::format_number(design_thickness) + " m at " +
+                          io::format_number(s.gauge_height) + " m above the edge)");
     // a limit the part cannot reach is "reached" only by an extrapolation far beyond anything
     // the run followed (Maximum depth = 1 m on a 30 mm knife gave 5.5e8 t without a word): said
     // on the terminal, in the summary's warnings and beside the life (a run that only wants a
@@ -276,7 +308,8 @@ namespace abrade::coupling::lifetime
 
   void LifetimeLoop::start_afresh()
   {
-    update = 0;
+    update   = 0;
+    sections = design_at_sections = design_sections;
     checkpoints->clear();
     knife_output->adopt({});
     knife->write(*knife_output, 0);
@@ -340,6 +373,9 @@ namespace abrade::coupling::lifetime
     for (long k = 1; k <= done; ++k)
       trajectory_rows.push_back(state.text("trajectory_row_" + std::to_string(k)));
     knife->load(checkpoints->knife_file(done));
+    std::tie(sections, design_at_sections) = worn_and_design_sections(knife->surface(), knife->design_surface(),
+                                                                      int(s.gauge_stations), frame.z0 + s.gauge_height,
+                                                                      knife_parameters.mesh_size);
     std::vector<double> output_times;
     for (const auto &p : history)
       output_times.push_back(p.tonnes);
@@ -419,6 +455,7 @@ namespace abrade::coupling::lifetime
     for (const auto &seed : rates.seed)
       st.followed_seed.push_back(knife->at_followed_points(seed, s.recession_points));
     const fem::SolidSurface before = knife->surface();
+    st.before                      = before;
     const dem::Parallel     ranks  = dem::Parallel::world();
     auto depth = [&](long cycles) {
       std::vector<double> d(rates.mean.size());
@@ -537,6 +574,28 @@ namespace abrade::coupling::lifetime
     keep(recession_criterion, bed);
     // worn mass: the whole knife's volume
     keep(mass_criterion, rates.seed_volume);
+    // the gauges: the beds' rates at the surface vertex (of the surface the rates were found
+    // on) closest to where the worst station's edge is, and the mean of the two faces' at the
+    // thinnest station's gauge height
+    const EdgeGauge g = gauge(sections, design_at_sections);
+    auto rates_near = [&](const std::vector<dealii::Point<3>> &points) {
+      std::vector<double> r(rates.seed.size(), 0.0);
+      for (const auto &p : points)
+        {
+          std::size_t best = 0;
+          for (std::size_t v = 1; v < st.before.vertices.size(); ++v)
+            if (st.before.vertices[v].distance_square(p) < st.before.vertices[best].distance_square(p))
+              best = v;
+          for (std::size_t k = 0; k < r.size(); ++k)
+            r[k] += rates.seed[k][best] / points.size();
+        }
+      return r;
+    };
+    keep(edge_criterion, rates_near({sections.lowest[g.recession_station]}));
+    const std::size_t t = g.thinnest_station;
+    const double      z = frame.z0 + s.gauge_height;
+    keep(thickness_criterion, rates_near({dealii::Point<3>(sections.x[t], sections.y_low[t], z),
+                                          dealii::Point<3>(sections.x[t], sections.y_high[t], z)}));
     return spread;
   }
 
@@ -594,8 +653,12 @@ namespace abrade::coupling::lifetime
     const auto   recession = knife->recession_at(s.recession_points);
     const double worn      = volume0 - knife->volume();
     const double swept     = st.volume_before - knife->volume();
+    std::tie(sections, design_at_sections) = worn_and_design_sections(surface, knife->design_surface(),
+                                                                      int(s.gauge_stations), frame.z0 + s.gauge_height,
+                                                                      knife_parameters.mesh_size);
+    const EdgeGauge g      = gauge(sections, design_at_sections);
     history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),
-                                worn * knife_parameters.density}});
+                                worn * knife_parameters.density, g.recession, design_thickness - g.thinnest}});
     const double spread = add_update_records(rates, st);
 
     std::vector<double> row = {double(update), double(cycles), tonnes, dmax, area_sum > 0 ? depth_area / area_sum : 0.0,
@@ -607,7 +670,8 @@ namespace abrade::coupling::lifetime
       row.push_back(n * pv);
     row.insert(row.end(), recession.begin() + 1, recession.end());
     row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2], double(dem_warnings_now),
-                           double(rates.seed.size())});
+                           double(rates.seed.size()), g.recession, sections.x[g.recession_station], g.thinnest,
+                           sections.x[g.thinnest_station]});
     const auto point_depth = knife->wear_depth_below(s.recession_points);
     row.insert(row.end(), point_depth.begin(), point_depth.end());
     trajectory_rows.push_back(trajectory.row(row));
@@ -719,6 +783,16 @@ namespace abrade::coupling::lifetime
       }
     if (e.criterion == mass_criterion && !worn_through)
       where = {}; // the whole knife
+    if ((e.criterion == edge_criterion || e.criterion == thickness_criterion) && !worn_through)
+      {
+        const EdgeGauge   g = gauge(sections, design_at_sections);
+        const std::size_t k = e.criterion == edge_criterion ? g.recession_station : g.thinnest_station;
+        const auto        p = e.criterion == edge_criterion
+                                ? sections.lowest[k]
+                                : dealii::Point<3>(sections.x[k], 0.5 * (sections.y_low[k] + sections.y_high[k]),
+                                                   frame.z0 + s.gauge_height);
+        where = {p[0], p[1], p[2]};
+      }
     if (e.criterion == recession_criterion && !worn_through)
       {
         const auto r = knife->recession_at(s.recession_points);
@@ -815,13 +889,15 @@ namespace abrade::coupling::lifetime
         TrajectoryMarks marks;
         marks.depth_limit     = s.max_depth;
         marks.recession_limit = s.max_recession;
-        if (e.extrapolated && (e.criterion == depth_criterion || e.criterion == recession_criterion))
+        marks.edge_limit      = s.max_edge_recession;
+        if (e.extrapolated &&
+            (e.criterion == depth_criterion || e.criterion == recession_criterion || e.criterion == edge_criterion))
           {
             marks.extrapolated = true;
             marks.last_tonnes  = history.back().tonnes;
             marks.last_value   = history.back().values[e.criterion];
             marks.life         = e.tonnes;
-            marks.limit        = e.criterion == depth_criterion ? s.max_depth : s.max_recession;
+            marks.limit        = criteria[e.criterion].limit;
           }
         plot_lifetime(ctx.output.root(), s.planes, frame, marks);
       }

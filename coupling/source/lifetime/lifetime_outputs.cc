@@ -131,6 +131,10 @@ namespace abrade::coupling::lifetime
       extra << ", " << 1000 * marks.recession_limit
             << " with lines dt 3 lw 2 lc rgb 'dark-orange' title 'end of life: recession "
             << io::format_number(1000 * marks.recession_limit) << " mm'";
+    if (marks.edge_limit > 0)
+      extra << ", " << 1000 * marks.edge_limit
+            << " with lines dt 4 lw 2 lc rgb 'dark-violet' title 'end of life: edge recession "
+            << io::format_number(1000 * marks.edge_limit) << " mm'";
     if (marks.extrapolated && marks.life > marks.last_tonnes)
       extra << ", '-' using ($1/T):2 with lines dt 2 lw 2 lc rgb 'black' title 'extrapolated to the predicted life'";
     std::ofstream gp(dir + "/lifetime.gp");
@@ -146,6 +150,7 @@ namespace abrade::coupling::lifetime
           "fs transparent solid 0.25 noborder title 'largest depth +- spread of the beds', "
           "'' using (column('tonnes')/T):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
           "'' using (column('tonnes')/T):(column('point_recession')*1000) with linespoints title 'recession of the followed point', "
+          "'' using (column('tonnes')/T):(column('edge_recession')*1000) with linespoints title 'edge recession (gauged along the edge)', "
           "'' using (column('tonnes')/T):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'"
        << extra.str() << "\n";
     if (marks.extrapolated && marks.life > marks.last_tonnes)

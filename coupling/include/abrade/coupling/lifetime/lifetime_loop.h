@@ -27,6 +27,7 @@
 // until the life's interval is as narrow as asked.
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/lifetime/edge_gauge.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
 #include <abrade/coupling/lifetime/life_interval.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
@@ -68,6 +69,8 @@ namespace abrade::coupling::lifetime
       std::string                   rate_expression;
       double                        seed_scatter = 0;
       double                        target_interval = 0; ///< relative half-width; 0: none
+      double                        max_edge_recession = 0, min_plate_thickness = 0, gauge_height = 0;
+      long                          gauge_stations = 41;
       long                          max_beds = 0;        ///< per update, with a target interval
     };
 
@@ -82,6 +85,7 @@ namespace abrade::coupling::lifetime
       // before the move: the wear depth, and the depth rates at the followed points (mean and
       // per seed)
       std::vector<double>              depth_before, followed_mean;
+      fem::SolidSurface                before; ///< the surface the rates were found on
       std::vector<std::vector<double>> followed_seed;
     };
 
@@ -115,6 +119,10 @@ namespace abrade::coupling::lifetime
     KnifeParameters                       knife_parameters;
     std::unique_ptr<fem::KnifeModel>      knife;
     ProfileFrame                          frame; ///< where the profiles are cut
+    EdgeSections                          design_sections; ///< the design's, for the gauges (edge_gauge.h)
+    EdgeSections                          sections;        ///< the worn knife's, after the last update
+    EdgeSections                          design_at_sections; ///< the design's at the same stations
+    double                                design_thickness = 0; ///< the design's largest at the gauge height
     std::unique_ptr<fem::SolidOutput>     knife_output;
     std::unique_ptr<WearSource>           source;
     std::unique_ptr<LifetimeCheckpoints>  checkpoints;

@@ -32,11 +32,11 @@ namespace abrade::coupling::lifetime
   std::vector<std::string> truncate_profiles(const std::vector<double> &planes, long update, const std::string &directory);
 
   /// What trajectory.png marks besides the data: the end-of-life limits on the depth and the
-  /// recession [m] (0: none), and an extrapolated life, drawn dashed from the last update's
+  /// recession and the gauged edge recession [m] (0: none), and an extrapolated life, drawn dashed from the last update's
   /// point (tonnes, value of the criterion's quantity [m]) to (life, limit).
   struct TrajectoryMarks
   {
-    double depth_limit = 0, recession_limit = 0;
+    double depth_limit = 0, recession_limit = 0, edge_limit = 0;
     bool   extrapolated = false;
     double last_tonnes = 0, last_value = 0, life = 0, limit = 0;
   };
