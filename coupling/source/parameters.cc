@@ -327,9 +327,10 @@ namespace abrade::coupling
                       "knife's own frame, see Recession points) and of t, the tonnes handled so far, e.g. "
                       "'1e-6*exp(-z/0.01)' or '1e-6*(1+t/5000)'; evaluated at the surface's vertices. muparser syntax.");
     prm.declare_entry("Analytic seed scatter", "0", Double(0, 1),
-                      "[-] Wear source = analytic: each bed's rate is multiplied by 1 + this x z, z a "
-                      "standard normal number drawn from the bed's seed (a fresh one every update): a known "
-                      "bed-to-bed scatter (verification of the life's interval). Range: [0, 1].");
+                      "[-] Wear source = analytic: each bed's rate is multiplied by a lognormal factor "
+                      "of mean 1 and this relative standard deviation, drawn from the bed's seed (a fresh "
+                      "one every update): a known bed-to-bed scatter (verification of the life's "
+                      "interval). Range: [0, 1].");
     prm.declare_entry("Target interval", "0", Double(0, 1),
                       "[-] The life's 95 % interval asked for, as a relative half-width (0.1: +-10 %); "
                       "while the interval is wider, the next updates draw more beds (the seeds' beds "

@@ -62,10 +62,9 @@ namespace abrade::coupling::lifetime
             }
         for (int seed : bed_seeds)
           {
-            const double f = 1 + scatter * standard_normal_of_seed(seed);
-            if (!(f >= 0))
-              throw std::domain_error("Analytic seed scatter " + io::format_number(scatter) + " makes bed seed " +
-                                      std::to_string(seed) + "'s rate negative: a smaller scatter");
+            // lognormal, mean 1, relative standard deviation `scatter`: never negative
+            const double sigma = std::sqrt(std::log1p(scatter * scatter));
+            const double f     = std::exp(sigma * standard_normal_of_seed(seed) - 0.5 * sigma * sigma);
             w.seed_volume.push_back(volume);
             for (double &x : w.seed_volume.back())
               x *= f;

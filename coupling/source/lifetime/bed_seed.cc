@@ -7,7 +7,7 @@ namespace abrade::coupling::lifetime
 {
   int bed_seed(int seed, long update, long round)
   {
-    if (update <= 1 && round == 0)
+    if (update == 1 && round == 0)
       return seed;
     // SplitMix64 over the three numbers: well mixed, so that no two (seed, update, round) of a
     // run or of runs with neighbouring seeds meet (a collision would repeat a bed)

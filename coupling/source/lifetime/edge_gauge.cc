@@ -16,6 +16,7 @@ namespace abrade::coupling::lifetime
     {
       std::vector<std::array<double, 4>> segments;
       dealii::Point<3>                   lowest;
+      double                             top   = -std::numeric_limits<double>::infinity();
       bool                               empty = true;
     };
 
@@ -38,6 +39,8 @@ namespace abrade::coupling::lifetime
           if (points.size() < 2)
             continue;
           r.segments.push_back({points[0][1], points[0][2], points[1][1], points[1][2]});
+          for (const auto &p : points)
+            r.top = std::max(r.top, p[2]);
           for (const auto &p : points)
             if (p[2] < low)
               low = p[2], r.lowest = p, r.empty = false;
@@ -78,6 +81,7 @@ namespace abrade::coupling::lifetime
         const Section sec = cut(s, x);
         r.x.push_back(x);
         r.height.push_back(sec.empty ? std::numeric_limits<double>::infinity() : sec.lowest[2]);
+        r.top.push_back(sec.top);
         r.lowest.push_back(sec.lowest);
         const auto [lo, hi] = crossing_at(sec, h);
         r.thickness.push_back(hi - lo), r.y_low.push_back(lo), r.y_high.push_back(hi);
@@ -115,8 +119,10 @@ namespace abrade::coupling::lifetime
     EdgeGauge g;
     for (std::size_t k = 0; k < worn.x.size() && k < design.x.size(); ++k)
       {
-        // a section the wear has cut away entirely has receded past the design's top
-        const double r = std::isfinite(worn.height[k]) ? worn.height[k] - design.height[k] : 0.0;
+        // a section the wear has cut away entirely has receded past everything: as far as
+        // the design's section reaches (its top: the largest z of its lowest point's plane)
+        const double r = std::isfinite(worn.height[k]) ? worn.height[k] - design.height[k]
+                                                       : design.top[k] - design.height[k];
         if (r > g.recession)
           g.recession = r, g.recession_station = k;
         if (k == 0 || worn.thickness[k] < g.thinnest)

@@ -68,7 +68,19 @@ namespace abrade::coupling::lifetime
     const double n    = double(rates.size());
     const double mean = std::accumulate(rates.begin(), rates.end(), 0.0) / n;
     if (!(mean > 0))
-      return 0;
+      return -1; // no wear at the place: no estimate of the scatter
+    // on the logarithms where every bed wore there: their spread does not follow their mean
+    // (a skewed scatter's low means come with low sample variances: the interval was narrow
+    // exactly when the life came out long); c^2 = exp(var ln r) - 1, exact for a lognormal
+    if (std::all_of(rates.begin(), rates.end(), [](double x) { return x > 0; }))
+      {
+        double ml = 0, vl = 0;
+        for (double x : rates)
+          ml += std::log(x) / n;
+        for (double x : rates)
+          vl += (std::log(x) - ml) * (std::log(x) - ml) / (n - 1);
+        return std::expm1(vl);
+      }
     double var = 0;
     for (double x : rates)
       var += (x - mean) * (x - mean) / (n - 1);
@@ -79,7 +91,7 @@ namespace abrade::coupling::lifetime
   {
     double sum = 0, dof = 0;
     for (const auto &u : updates)
-      if (u.beds > 1)
+      if (u.beds > 1 && u.relative_variance >= 0) // (< 0: the place did not wear, nothing to pool)
         sum += (u.beds - 1) * u.relative_variance, dof += double(u.beds - 1);
     return {dof > 0 ? sum / dof : 0.0, dof};
   }

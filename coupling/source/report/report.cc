@@ -173,14 +173,20 @@ namespace abrade::report
           headline << "End of life after <span id=\"headline-tonnes\" data-value=\"" << value << "\"><b>"
                    << tonnes(*predicted) << "</b></span> of handled material";
           const double low = r.get<double>("predicted_tonnes_low", 0), high = r.get<double>("predicted_tonnes_high", 0);
-          // (summary.json writes an unbounded end of the interval as 0)
-          if (r.get<int>("seeds", 1) < 2)
-            headline << " (no interval: one bed)";
+          // (no interval without two beds in an update: summary.json then has no bounds)
+          if (!(low > 0 && high > 0))
+            headline << " (no interval: one bed per update)";
           else
-            headline << " (" << number(100 * r.get<double>("confidence", 0.95), 3) << " % interval "
-                     << (low > 0 ? tonnes(low) : std::string("0")) << " to "
-                     << (high > 0 ? tonnes(high) : std::string("unbounded")) << " over " << r.get<int>("seeds", 1)
-                     << " beds)";
+            {
+              headline << " (" << number(100 * r.get<double>("confidence", 0.95), 3) << " % interval "
+                       << tonnes(low) << " to " << tonnes(high) << ", +-"
+                       << number(100 * r.get<double>("relative_half_width", 0), 2) << " %, from every update's beds";
+              const double extrapolation = r.get<double>("interval.components.extrapolation", 0);
+              if (extrapolation > 0)
+                headline << "; the extrapolation's share " << number(100 * extrapolation, 2) << " % of "
+                         << number(100 * r.get<double>("interval.relative_sd", 0), 2) << " % (standard deviations)";
+              headline << ")";
+            }
           headline << ", by " << escape_html(criterion);
           std::vector<double> where;
           if (const auto w = r.get_child_optional("end_of_life_where"))

@@ -27,7 +27,8 @@ namespace abrade::coupling::lifetime
   struct EdgeSections
   {
     std::vector<double> x;         ///< the stations
-    std::vector<double> height;    ///< lowest z of the section (its design value where absent)
+    std::vector<double> height;    ///< lowest z of the section (+infinity: no section there)
+    std::vector<double> top;       ///< highest z of the section
     std::vector<double> thickness; ///< width at the gauge height (0 where the section does not reach it)
     std::vector<double> y_low, y_high; ///< where the section crosses the gauge height
     std::vector<dealii::Point<3>> lowest; ///< the lowest point of each section

@@ -6,9 +6,10 @@
 // every update from a seed derived from it and the update number), so the updates' bed means
 // are independent samples. In update u the quantity that ends life grows by dQ_u (the depth at
 // the deepest point, the recession of the followed point, the worn mass); its beds' rates at
-// the place that ends life (chosen on the beds' mean field) scatter with a relative sample
-// variance v_u over n_u beds. The beds' relative variance is taken to be the same in every
-// update (the cycle is the same, the geometry changes slowly) and pooled:
+// the place that ends life (chosen on the beds' mean field) scatter with a relative variance
+// v_u over n_u beds (from their logarithms: relative_variance()). The beds' relative variance is
+// taken to be the same in every update (the cycle is the same, the geometry changes slowly) and
+// pooled:
 //
 //   c^2  = sum_u (n_u - 1) v_u / sum_u (n_u - 1)        dof = sum_u (n_u - 1)
 //   Var(dQ_u) = c^2 dQ_u^2 / n_u                         (independent between updates)
@@ -30,6 +31,11 @@
 //
 // tests/unit/test_life_interval.cc checks its coverage over 4,000 trajectories drawn through the
 // loop's own update-size rule with a known scatter, reached and extrapolated lives alike.
+// Assumed and not covered by it: a power law past the last update (a course that slows faster
+// is extrapolated short, and its interval does not hold that model error); a scatter with a
+// heavier tail than a lognormal's (a few beds of many times the mean) is under-covered with
+// three beds an update; and the deepest of many near-equal places is biased deep (the maximum
+// of noisy values: a short life, the safe side).
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -43,7 +49,8 @@ namespace abrade::coupling::lifetime
     double      value  = 0; ///< the quantity after the update (the trajectory's value)
     std::size_t beds   = 1; ///< beds whose mean moved the knife in this update
     /// the beds' sample variance of their rate at the place that ends life, relative to the
-    /// square of their mean (n - 1 in the denominator; 0 for one bed)
+    /// square of their mean (n - 1 in the denominator; 0 for one bed; -1: the place did not
+    /// wear, left out of the pool)
     double relative_variance = 0;
   };
 
@@ -83,6 +90,10 @@ namespace abrade::coupling::lifetime
   /// The pooled relative variance c^2 of @p updates and its degrees of freedom.
   std::pair<double, double> pooled_relative_variance(const std::vector<UpdateRecord> &updates);
 
-  /// The relative sample variance of @p rates about their mean (0 for fewer than two).
+  /// The relative variance of @p rates: exp(var ln r) - 1 from their logarithms' sample variance
+  /// where every one is positive (a skewed scatter's sample variance follows its mean, and the
+  /// interval was narrow exactly when the life came out long: 92.6 % coverage at 30 % lognormal
+  /// scatter, 93.8 % from the logarithms), else their sample variance over their mean squared;
+  /// 0 for fewer than two; -1 where their mean is not positive (no wear there, left out).
   double relative_variance(const std::vector<double> &rates);
 } // namespace abrade::coupling::lifetime

@@ -5,6 +5,7 @@
 // its own with a unit test (tests/unit/test_lifetime_steps.cc):
 //
 //   set_up()                     knife, wear source, outputs; resume from the last checkpoint
+//   size_first_update()          a pilot cycle on beds of its own sizes the first update
 //   for every update:
 //     run_cycles()               one cycle's wear per bed seed, per surface vertex (wear_source.h)
 //     filter()                   smoothed over the surface, volume conserving (surface_filter.h),
@@ -112,6 +113,8 @@ namespace abrade::coupling::lifetime
     LifeInterval current_interval(const EndOfLife &e) const;
     /// The beds of the next update under Lifetime/Target interval.
     void choose_beds();
+    /// The pilot cycle that sizes the first update (previous_largest).
+    void size_first_update();
 
     JobContext                           &ctx;
     Settings                              s;
@@ -140,6 +143,7 @@ namespace abrade::coupling::lifetime
     std::vector<std::string>     trajectory_rows; ///< trajectory.csv's rows as written (rebuilt from them on resume)
     std::vector<std::vector<UpdateRecord>> records; ///< per criterion, per update (life_interval.h)
     long                         beds_now = 0; ///< beds of the next update
+    double                       previous_largest = 0; ///< the last update's largest depth rate (its size)
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
     long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)

@@ -9,4 +9,11 @@ namespace abrade::coupling::lifetime
   /// @p fixed > 0: that many; otherwise max(1, floor(fraction x mesh size / largest depth rate)).
   /// @p largest_rate: the largest depth per cycle over the knife [m] (> 0).
   long cycles_for_update(long fixed, double fraction, double mesh_size, double largest_rate);
+
+  /// The loop's choice: adaptive updates sized from the previous update's largest rate
+  /// @p previous_rate (0: none, the first update: from @p current_rate), not from the beds that
+  /// then move the knife (their own size would make the update's tonnes carry their scatter as
+  /// 1 / rate and bias the life long by about c^2 / beds), and at most twice the increment at
+  /// the @p current_rate (the mesh must follow).
+  long cycles_for_update(long fixed, double fraction, double mesh_size, double previous_rate, double current_rate);
 } // namespace abrade::coupling::lifetime

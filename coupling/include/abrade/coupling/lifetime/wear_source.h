@@ -27,9 +27,10 @@ namespace abrade::coupling::lifetime
     std::vector<std::string> warnings;
   };
 
-  /// The bed seed of base seed @p seed in @p update (1-based), round @p round (extra beds of a
-  /// target interval): the seed itself in update 1, round 0 (a case's settled beds stay valid);
-  /// otherwise a 31-bit mix of the three (SplitMix64), the same on every machine.
+  /// The bed seed of base seed @p seed in @p update (1-based; 0: the pilot cycle that sizes the
+  /// first update), round @p round (extra beds of a target interval): the seed itself in update
+  /// 1, round 0 (a case's settled beds stay valid); otherwise a 30-bit mix of the three
+  /// (SplitMix64) plus one, the same on every machine.
   int bed_seed(int seed, long update, long round = 0);
 
   class WearSource
@@ -49,9 +50,11 @@ namespace abrade::coupling::lifetime
   /// A known wear rate: @p expression, depth per tonne [m/t] as a function of x, y, z [m] (the
   /// current surface) and t (the tonnes handled so far), at every vertex of the wearable
   /// surface; times the tonnes per cycle and the vertex's area (a third of its wearable
-  /// triangles'). With @p seed_scatter > 0 each bed's rate is multiplied by 1 + scatter z,
-  /// z a standard normal number drawn from the bed's seed (a known bed-to-bed scatter, to test
-  /// the interval). Throws std::invalid_argument when the expression cannot be evaluated.
+  /// triangles'). With @p seed_scatter > 0 each bed's rate is multiplied by a lognormal factor
+  /// of mean 1 and relative standard deviation @p seed_scatter, exp(sigma z - sigma^2 / 2) with
+  /// sigma^2 = ln(1 + scatter^2) and z a standard normal number drawn from the bed's seed (a
+  /// known bed-to-bed scatter, to test the interval). Throws std::invalid_argument when the
+  /// expression cannot be evaluated.
   std::unique_ptr<WearSource> make_analytic_wear_source(const std::string &expression, double tonnes_per_cycle,
                                                         double seed_scatter);
 
