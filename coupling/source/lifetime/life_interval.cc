@@ -69,18 +69,6 @@ namespace abrade::coupling::lifetime
     const double mean = std::accumulate(rates.begin(), rates.end(), 0.0) / n;
     if (!(mean > 0))
       return -1; // no wear at the place: no estimate of the scatter
-    // on the logarithms where every bed wore there: their spread does not follow their mean
-    // (a skewed scatter's low means come with low sample variances: the interval was narrow
-    // exactly when the life came out long); c^2 = exp(var ln r) - 1, exact for a lognormal
-    if (std::all_of(rates.begin(), rates.end(), [](double x) { return x > 0; }))
-      {
-        double ml = 0, vl = 0;
-        for (double x : rates)
-          ml += std::log(x) / n;
-        for (double x : rates)
-          vl += (std::log(x) - ml) * (std::log(x) - ml) / (n - 1);
-        return std::expm1(vl);
-      }
     double var = 0;
     for (double x : rates)
       var += (x - mean) * (x - mean) / (n - 1);
