@@ -223,7 +223,7 @@ namespace abrade::coupling
            "change_payload_percent,change_payload_uncertainty,change_payload_low_percent,change_payload_high_percent,"
            "change_payload_significant,change_wear_per_tonne_percent,change_wear_per_tonne_uncertainty,"
            "change_wear_per_tonne_low_percent,change_wear_per_tonne_high_percent,change_wear_per_tonne_significant,"
-           "predicted_life_tonnes,predicted_life_low,predicted_life_high,change_life_percent,change_life_low_percent,"
+           "predicted_life_tonnes,predicted_life_low,predicted_life_high,change_life_percent,change_life_uncertainty,change_life_low_percent,"
            "change_life_high_percent,change_life_significant\n";
     std::ofstream md(out.file("concepts.md"));
     md << "# Knife concepts (" << o.seeds.size() << " beds each; baseline: " << labels[0] << ")\n\n"

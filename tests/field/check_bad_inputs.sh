@@ -53,6 +53,12 @@ $expect 2 "locations.csv:3: location 'tip' is defined twice \(first on line 2\)"
   "$abrade" calibrate --run run --measurements by_name.csv --locations locations.csv --output cal_bad
 cp -r run text_time && sed -i '0,/timestep="0"/s//timestep="abc"/' text_time/knife/knife.pvd
 cal "text_time/knife/knife.pvd:[0-9]+: timestep \"abc\" is not a number of tonnes" good.csv text_time
-cp -r run back_in_time && sed -i 's/timestep="2999"/timestep="1000"/' back_in_time/knife/knife.pvd
+cp -r run back_in_time && python3 - back_in_time/knife/knife.pvd <<'PY' # the third time step (after 1500 t) back to 1000 t
+import re, sys
+text = open(sys.argv[1]).read()
+steps = re.findall(r'timestep="[^"]*"', text)
+i = text.index(steps[2], text.index(steps[1]) + len(steps[1]))
+open(sys.argv[1], "w").write(text[:i] + 'timestep="1000"' + text[i + len(steps[2]):])
+PY
 cal "back_in_time/knife/knife.pvd:[0-9]+: timestep 1000 t does not follow 1500" good.csv back_in_time
 echo "calibrate inputs: all refused with their file and line"

@@ -17,6 +17,8 @@ c="$src/cases/grab/concepts"
 python3 - "$out" <<'PY'
 import csv, sys, os
 out = sys.argv[1]
+table = list(csv.reader(open(os.path.join(out, "concepts.csv"))))
+assert all(len(r) == len(table[0]) for r in table), [len(r) for r in table]  # every row has the header's cells
 rows = {r["concept"]: r for r in csv.DictReader(open(os.path.join(out, "concepts.csv")))}
 assert list(rows) == ["baseline", "flow_redirect", "ridge", "blunt_edge"], list(rows)
 for name, r in rows.items():

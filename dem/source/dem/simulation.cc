@@ -863,7 +863,10 @@ namespace abrade::dem
           step();
         if (progress)
           progress(*this);
-        if (kinetic_energy() < ke_per_particle * std::max<std::size_t>(1, store.size()))
+        // the kinetic energy and the count are both global: every rank stops at the same step
+        // (with this rank's own count the ranks compared one sum with different thresholds, and
+        // one went on settling while the other saved the bed: a hang)
+        if (kinetic_energy() < ke_per_particle * std::max<std::size_t>(1, n_particles()))
           break;
       }
     return t - t0;
