@@ -377,9 +377,7 @@ namespace abrade::coupling::lifetime
     for (long k = 1; k <= done; ++k)
       trajectory_rows.push_back(state.text("trajectory_row_" + std::to_string(k)));
     knife->load(checkpoints->knife_file(done));
-    std::tie(sections, design_at_sections) = worn_and_design_sections(knife->surface(), knife->design_surface(),
-                                                                      int(s.gauge_stations), frame.z0 + s.gauge_height,
-                                                                      knife_parameters.mesh_size);
+    gauge_the_knife();
     std::vector<double> output_times;
     for (const auto &p : history)
       output_times.push_back(p.tonnes);
@@ -629,6 +627,13 @@ namespace abrade::coupling::lifetime
     return spread;
   }
 
+  void LifetimeLoop::gauge_the_knife()
+  {
+    std::tie(sections, design_at_sections) = worn_and_design_sections(knife->surface(), knife->design_surface(),
+                                                                      int(s.gauge_stations), frame.z0 + s.gauge_height,
+                                                                      knife_parameters.mesh_size);
+  }
+
   LifeInterval LifetimeLoop::current_interval(const EndOfLife &e) const
   {
     if (e.criterion == EndOfLife::none)
@@ -686,9 +691,7 @@ namespace abrade::coupling::lifetime
     const auto   recession = knife->recession_at(s.recession_points);
     const double worn      = volume0 - knife->volume();
     const double swept     = st.volume_before - knife->volume();
-    std::tie(sections, design_at_sections) = worn_and_design_sections(surface, knife->design_surface(),
-                                                                      int(s.gauge_stations), frame.z0 + s.gauge_height,
-                                                                      knife_parameters.mesh_size);
+    gauge_the_knife();
     const EdgeGauge g      = gauge(sections, design_at_sections);
     history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),
                                 worn * knife_parameters.density, g.recession, design_thickness - g.thinnest}});
@@ -789,6 +792,12 @@ namespace abrade::coupling::lifetime
                                                         : "none");
     std::vector<double> where = deepest;
     LifeInterval        li    = current_interval(e);
+    // an interval found for another life, carried to @p tonnes (relative, as it is)
+    auto carried_to = [](LifeInterval i, double tonnes) {
+      const double scale = i.life.tonnes > 0 ? tonnes / i.life.tonnes : 0.0;
+      i.life.tonnes = tonnes, i.low *= scale, i.high *= scale;
+      return i;
+    };
     if (worn_through)
       if (const EndOfLife rival = end_of_life(criteria, worn_through_rival);
           rival.reached && rival.tonnes < worn_through_tonnes)
@@ -799,9 +808,7 @@ namespace abrade::coupling::lifetime
           if (e.criterion != depth_criterion)
             where = {};
           // its interval: relative, from the updates recorded before the last one
-          li = life_interval(criteria[e.criterion].limit, records[e.criterion]);
-          const double scale = li.life.tonnes > 0 ? e.tonnes / li.life.tonnes : 0.0;
-          li.life.tonnes = e.tonnes, li.low *= scale, li.high *= scale;
+          li = carried_to(life_interval(criteria[e.criterion].limit, records[e.criterion]), e.tonnes);
           worn_through = false;
         }
     if (worn_through && (!e.reached || worn_through_tonnes < e.tonnes))
@@ -809,11 +816,10 @@ namespace abrade::coupling::lifetime
         e.tonnes = worn_through_tonnes, e.reached = true, e.extrapolated = false;
         criterion = "worn through", method = "interpolated within update " + std::to_string(update);
         // its interval: the depth's, relative, at the last update recorded before it
-        li = records[depth_criterion].empty()
-               ? LifeInterval{}
-               : life_interval(history.back().values[depth_criterion], records[depth_criterion]);
-        const double scale = li.life.tonnes > 0 ? worn_through_tonnes / li.life.tonnes : 0.0;
-        li.life.tonnes = worn_through_tonnes, li.low *= scale, li.high *= scale;
+        li = carried_to(records[depth_criterion].empty()
+                          ? LifeInterval{}
+                          : life_interval(history.back().values[depth_criterion], records[depth_criterion]),
+                        worn_through_tonnes);
       }
     if (e.criterion == mass_criterion && !worn_through)
       where = {}; // the whole knife

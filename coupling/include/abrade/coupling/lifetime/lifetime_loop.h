@@ -113,6 +113,8 @@ namespace abrade::coupling::lifetime
     LifeInterval current_interval(const EndOfLife &e) const;
     /// The beds of the next update under Lifetime/Target interval.
     void choose_beds();
+    /// The gauges' sections of the knife as it is and of its design at the same stations.
+    void gauge_the_knife();
     /// The pilot cycle that sizes the first update (previous_largest).
     void size_first_update();
 
