@@ -24,6 +24,8 @@
 #include <cmath>
 #include <algorithm>
 #include <iostream>
+#include <numeric>
+#include <random>
 #include <set>
 
 using namespace abrade;
@@ -198,6 +200,78 @@ TEST(LifeInterval, BedsReusedAtEveryUpdateAreOverConfident)
   const Coverage c = coverage(2000, 100, true);
   std::cout << "beds reused: coverage " << 100 * c.covered << " %\n";
   EXPECT_LT(c.covered, 0.85);
+}
+
+namespace
+{
+  /// The deepest of many places (issue 33's DEM benchmark: the stated standard deviation was
+  /// twice the disjoint groups' own). @p places places wear at 1 um/t less 0.5 % per place (the
+  /// edge's nearly equal vertices), each bed scattering each place independently (lognormal,
+  /// relative sd 40 %: one DEM bed at a vertex); 3 beds an update, sized as the loop sizes it;
+  /// the record is the deepest place's depth and the beds' relative variance at that place (the
+  /// loop's add_update_records). Returns the ratio of the lives' real relative standard
+  /// deviation over the trials to the stated one (rms of relative_sd).
+  double spread_ratio(int places, int trials = 3000)
+  {
+    std::mt19937_64                  random(42);
+    std::normal_distribution<double> normal;
+    const double                     sigma = std::sqrt(std::log(1 + 0.4 * 0.4));
+    std::vector<double>              lives;
+    double                           stated = 0;
+    for (int trial = 0; trial < trials; ++trial)
+      {
+        std::vector<double>       depth(places, 0.0);
+        std::vector<UpdateRecord> records;
+        double                    tonnes = 0, previous = 1e-5;
+        for (int update = 1; update <= 40 && *std::max_element(depth.begin(), depth.end()) < 0.012; ++update)
+          {
+            std::vector<std::vector<double>> bed(3, std::vector<double>(places));
+            std::vector<double>              mean(places, 0.0);
+            for (auto &b : bed)
+              for (int j = 0; j < places; ++j)
+                {
+                  b[j] = 1e-5 * (1 - 0.005 * j) * std::exp(sigma * normal(random) - sigma * sigma / 2);
+                  mean[j] += b[j] / 3;
+                }
+            const long n = cycles_for_update(0, 0.1, 0.015, previous, *std::max_element(mean.begin(), mean.end()));
+            previous     = *std::max_element(mean.begin(), mean.end());
+            for (int j = 0; j < places; ++j)
+              depth[j] += n * mean[j];
+            const int           deepest = std::max_element(depth.begin(), depth.end()) - depth.begin();
+            std::vector<double> at_place;
+            for (const auto &b : bed)
+              at_place.push_back(b[deepest]);
+            tonnes += n * 10.0;
+            records.push_back({tonnes, depth[deepest], 3, relative_variance(at_place)});
+          }
+        const LifeInterval li = life_interval(0.012, records);
+        lives.push_back(li.life.tonnes);
+        stated += li.relative_sd * li.relative_sd / trials;
+      }
+    const double mean = std::accumulate(lives.begin(), lives.end(), 0.0) / trials;
+    double       var  = 0;
+    for (double l : lives)
+      var += (l - mean) * (l - mean) / (trials - 1);
+    return std::sqrt(var) / mean / std::sqrt(stated);
+  }
+} // namespace
+
+// What the interval assumes of the place that ends life, and where it is conservative: with one
+// place the lives scatter as stated (ratio of real to stated standard deviation 1 within 15 %);
+// with 20 nearly equal places the deepest of them (a maximum of random walks: when the leader
+// lags another takes over) scatters about half as much as one place, and the stated spread is
+// about twice the real one (0.48 here; the DEM benchmark's disjoint groups: 0.52). Conservative,
+// never over-confident: the ratio must stay at or below 1. Two per-update cures were tried and
+// do not help, because the maximum's increments are negatively correlated between updates
+// (docs/lifetime.md): the spread of each bed's own deepest place (0.53) and Gaussian
+// multipliers on the update's mean field given the depth before it (0.51).
+TEST(LifeInterval, TheDeepestOfManyPlacesIsStatedConservatively)
+{
+  const double one = spread_ratio(1), many = spread_ratio(20);
+  std::cout << "real / stated standard deviation of the life: one place " << one << ", 20 places " << many << "\n";
+  EXPECT_NEAR(one, 1, 0.15);
+  EXPECT_LE(many, 1.0);
+  EXPECT_GE(many, 0.35);
 }
 
 TEST(BedSeed, TheFirstUpdateKeepsTheSeedLaterOnesAreFreshAndDistinct)
