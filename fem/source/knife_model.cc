@@ -96,15 +96,25 @@ namespace abrade::fem
         return r; // end of life: reported, not carried into the mesh
       }
 
-    // inward, as the offset surface moves (SolidSurface::inward_offsets), on the wearable surface
-    // only (clamped vertices stay)
-    const auto                             offsets = current_surface.inward_offsets(depth);
-    std::vector<bool>                      clamped(current_surface.vertices.size(), false);
+    // inward, as the offset surface moves (SolidSurface::inward_offsets), the wearable faces
+    // only: a vertex of clamped faces only stays, one on a clamped face's rim moves within the
+    // clamped plane as the worn faces beside it recede (held still, the rim took 1.6 % of a
+    // uniform update's volume from the 30 mm knife)
+    std::vector<bool> held(current_surface.triangles.size(), false);
+    std::vector<int>  wearing_triangles(current_surface.vertices.size(), 0);
     for (std::size_t t = 0; t < current_surface.triangles.size(); ++t)
-      if (current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary)
+      {
+        held[t] = current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary;
         for (unsigned v : current_surface.triangles[t])
-          clamped[v] = true;
-    // what the update starts from, for the construction that cannot fold (rebuild_eroded)
+          wearing_triangles[v] += held[t] ? 0 : 1;
+      }
+    const auto        offsets = current_surface.inward_offsets(depth, &held);
+    std::vector<bool> clamped(current_surface.vertices.size(), false);
+    for (std::size_t v = 0; v < clamped.size(); ++v)
+      clamped[v] = wearing_triangles[v] == 0;
+    // what the update starts from, for the construction that cannot fold (rebuild_eroded; a rim
+    // point's ball cuts the clamped face's rim as the faces beside it recede, and nothing below
+    // the clamped plane that the faces' own balls do not)
     std::vector<double> wearing = depth;
     for (std::size_t v = 0; v < clamped.size(); ++v)
       if (clamped[v])
@@ -157,6 +167,7 @@ namespace abrade::fem
             rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r);
             return r;
           }
+        set_ids_from_design(*fresh, design, 0.05 * settings.mesh_size, KnifeGeometry::wearable_boundary);
         tria = std::move(fresh);
         ++remeshes;
         r.remeshed = true;
@@ -206,6 +217,7 @@ namespace abrade::fem
       {
         throw RunError(std::string("the worn knife could not be meshed: ") + e.what());
       }
+    set_ids_from_design(*fresh, design, 0.05 * settings.mesh_size, KnifeGeometry::wearable_boundary);
     r.quality = mesh_quality(*fresh);
     if (r.quality.n_inverted > 0)
       throw RunError("the remeshed knife has inverted cells");

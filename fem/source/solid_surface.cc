@@ -60,21 +60,25 @@ namespace abrade::fem
     return n;
   }
 
-  std::vector<Tensor<1, 3>> SolidSurface::inward_offsets(const std::vector<double> &depth) const
+  std::vector<Tensor<1, 3>> SolidSurface::inward_offsets(const std::vector<double> &depth,
+                                                         const std::vector<bool>   *held) const
   {
     // per vertex: M = sum A n n^T, b = -sum A n depth (n outward); u minimises sum A (n.u + depth)^2
+    // (a held triangle's plane with depth 0)
     std::vector<SymmetricTensor<2, 3>> m(vertices.size());
     std::vector<Tensor<1, 3>>          b(vertices.size());
-    for (const auto &t : triangles)
+    for (std::size_t k = 0; k < triangles.size(); ++k)
       {
+        const auto  &t    = triangles[k];
         Tensor<1, 3> n    = cross_product_3d(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]);
         const double area = 0.5 * n.norm();
         if (area <= 0)
           continue;
         n /= 2 * area;
-        const SymmetricTensor<2, 3> nn = symmetrize(outer_product(n, n));
+        const SymmetricTensor<2, 3> nn    = symmetrize(outer_product(n, n));
+        const double                wears = held && (*held)[k] ? 0.0 : 1.0;
         for (unsigned v : t)
-          m[v] += area * nn, b[v] -= area * depth[v] * n;
+          m[v] += area * nn, b[v] -= area * wears * depth[v] * n;
       }
     std::vector<Tensor<1, 3>> u(vertices.size());
     for (std::size_t v = 0; v < vertices.size(); ++v)
@@ -344,5 +348,40 @@ namespace abrade::fem
   {
     const SolidSurface old = extract_surface(tria);
     return mesh_closed_surface(old.as_polydata(), h, new_tria, dir, old);
+  }
+
+  std::size_t set_ids_from_design(Triangulation<3> &tria, const SolidSurface &design, double tolerance,
+                                  types::boundary_id worn_id)
+  {
+    SolidSurface                                                      centres;
+    std::vector<TriaIterator<TriaAccessor<2, 3, 3>>>                  faces;
+    std::vector<Tensor<1, 3>>                                         normals;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            faces.push_back(cell->face(f));
+            centres.vertices.push_back(cell->face(f)->center());
+            // outward: from the cell's centre towards the face's
+            Tensor<1, 3> n = cross_product_3d(cell->face(f)->vertex(1) - cell->face(f)->vertex(0),
+                                              cell->face(f)->vertex(2) - cell->face(f)->vertex(0));
+            if (n * (cell->face(f)->center() - cell->center()) < 0)
+              n = -n;
+            normals.push_back(n / n.norm());
+          }
+    const SurfaceTransfer closest(design, centres);
+    std::size_t           on_design = 0;
+    for (std::size_t k = 0; k < faces.size(); ++k)
+      {
+        const unsigned t  = closest.triangles_of()[k];
+        const auto    &tv = design.triangles[t];
+        Tensor<1, 3>   n  = cross_product_3d(design.vertices[tv[1]] - design.vertices[tv[0]],
+                                             design.vertices[tv[2]] - design.vertices[tv[0]]);
+        const bool on = centres.vertices[k].distance(closest.feet()[k]) <= tolerance && n.norm() > 0 &&
+                        n * normals[k] >= std::cos(30 * numbers::PI / 180) * n.norm();
+        faces[k]->set_boundary_id(on ? design.boundary_id[t] : worn_id);
+        on_design += on && design.boundary_id[t] != worn_id;
+      }
+    return on_design;
   }
 } // namespace abrade::fem

@@ -8,6 +8,7 @@
 #include <abrade/fem/solid_surface.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
 
 #include "fem_test_helpers.h"
 
@@ -207,6 +208,30 @@ TEST(SolidSurface, RemeshKeepsTheShapeAndBoundaryIds)
   const auto moved = transfer_surface_field(before, depth, after);
   for (std::size_t v = 0; v < moved.size(); ++v)
     EXPECT_NEAR(moved[v], 0.001 + 0.01 * after.vertices[v][0] - 0.004 * after.vertices[v][2], 1e-9);
+}
+
+// The worn box's new mesh takes its boundary ids from the design: a 0.1 m cube with its top
+// clamped, worn 20 mm on every other face (the rim moved within the clamped plane), meshed in
+// 5 mm cells. Clamped: exactly the top's unworn (0.06 m)^2; everything else wears. The rule
+// without its distance and direction test (the design triangle nearest the face's centre) clamps
+// the side faces' top row (their centres 2.5 mm below the clamped plane and 20 mm inside the
+// sides); so did the nearest face of a surface the wear had moved on from.
+TEST(SolidSurface, IdsFromTheDesignKeepTheClampedFaceExactly)
+{
+  Triangulation<3> design_tria, worn;
+  GridGenerator::hyper_cube(design_tria, 0, 0.1);
+  for (const auto &face : design_tria.active_face_iterators())
+    if (face->at_boundary())
+      face->set_boundary_id(face->center()[2] > 0.1 - 1e-9 ? KnifeGeometry::clamped_boundary
+                                                          : KnifeGeometry::wearable_boundary);
+  const SolidSurface design = extract_surface(design_tria);
+  GridGenerator::subdivided_hyper_rectangle(worn, {12, 12, 16}, Point<3>(0.02, 0.02, 0.02), Point<3>(0.08, 0.08, 0.1));
+  const std::size_t on = set_ids_from_design(worn, design, 0.05 * 0.02, KnifeGeometry::wearable_boundary);
+  EXPECT_EQ(on, 144u);
+  EXPECT_NEAR(boundary_area(worn, KnifeGeometry::clamped_boundary), 0.06 * 0.06, 1e-12);
+  for (const auto &face : worn.active_face_iterators())
+    if (face->at_boundary() && face->boundary_id() == KnifeGeometry::clamped_boundary)
+      EXPECT_NEAR(face->center()[2], 0.1, 1e-12);
 }
 
 TEST(SolidSurface, LocalThicknessAndWornThrough)

@@ -33,7 +33,12 @@ namespace abrade::fem
     /// depth / sin(half angle) as the offset surface does, instead of by the depth alone (which
     /// leaves a growing spike). Directions the planes hardly constrain (eigenvalues below 1e-3 of
     /// the largest) are left out; the displacement is capped at 4 x depth.
-    std::vector<dealii::Tensor<1, 3>> inward_offsets(const std::vector<double> &depth) const;
+    /// Triangles with @p held true do not wear: their planes stay (offset 0), so a vertex on the
+    /// rim of a held face moves within its plane as the worn faces beside it recede (the inner
+    /// parallel body of the worn faces, the held plane kept), and a vertex of held triangles
+    /// only does not move.
+    std::vector<dealii::Tensor<1, 3>> inward_offsets(const std::vector<double> &depth,
+                                                     const std::vector<bool>   *held = nullptr) const;
     io::PolyData as_polydata() const;
   };
 
@@ -100,4 +105,16 @@ namespace abrade::fem
 
   std::string remesh(const dealii::Triangulation<3> &tria, double mesh_size, dealii::Triangulation<3> &new_tria,
                      const std::string &work_directory);
+
+  /// The boundary ids of a worn part's new mesh @p tria, from its design (unworn) surface
+  /// @p design: a boundary face that lies on the design triangle closest to its centre (within
+  /// @p tolerance) and faces the same way (within 30 degrees) takes that triangle's id; every
+  /// other face has worn and takes @p worn_id. Exact however often the part is remeshed: an
+  /// unworn face keeps its design id (a clamped face, also where its rim moved within its
+  /// plane), a worn one wears. (The nearest face of the surface before the update, which the
+  /// remeshes used until session 19, is a clamped face for a worn face's centre nearer the rim
+  /// than the wear is deep.) Returns the number of faces that lie on a clamped or other
+  /// non-worn design face.
+  std::size_t set_ids_from_design(dealii::Triangulation<3> &tria, const SolidSurface &design, double tolerance,
+                                  dealii::types::boundary_id worn_id);
 } // namespace abrade::fem
