@@ -12,6 +12,7 @@
 #include <abrade/fem/meshing_job.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
+#include <abrade/fem/surface_repair.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
@@ -19,6 +20,8 @@
 #include <deal.II/physics/transformations.h>
 
 #include <gmsh.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
 #include <vtkPolyData.h>
 
 #include "quiet_stdout.h"
@@ -566,8 +569,48 @@ namespace abrade::fem
         double b[6];
         poly->GetBounds(b);
         check_extent(path, {b[0], b[2], b[4], b[1], b[3], b[5]}, settings.scale, settings, false);
+        // overlapping facets (a planar face tessellated as a fan from a point outside it, a flap
+        // folded back) stop Gmsh's volume mesher: such planes are triangulated again from their
+        // outlines (surface_repair.h) and Gmsh reads the repaired copy
+        io::PolyData facets;
+        for (vtkIdType p = 0; p < poly->GetNumberOfPoints(); ++p)
+          {
+            const double *x = poly->GetPoint(p);
+            facets.points.insert(facets.points.end(), {x[0], x[1], x[2]});
+          }
+        vtkNew<vtkIdList> cell;
+        for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+          {
+            poly->GetCellPoints(c, cell);
+            if (cell->GetNumberOfIds() == 3)
+              facets.triangles.push_back({long(cell->GetId(0)), long(cell->GetId(1)), long(cell->GetId(2))});
+          }
+        const double size = std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
+        SurfaceRepair repair;
+        try
+          {
+            repair = repair_overlapping_facets(facets, 1e-9 * size);
+          }
+        catch (const std::runtime_error &e)
+          {
+            throw InputError(path, std::string("overlapping facets: ") + e.what());
+          }
+        if (repair.folds > 0)
+          {
+            const std::string repaired = io::private_temporary_directory() + "/repaired-" +
+                                         std::filesystem::path(path).filename().string();
+            io::write_stl(repaired, repair.surface);
+            if (report)
+              report->notes.push_back(std::to_string(repair.folds) + " overlapping facet pair(s) in " +
+                                      std::to_string(repair.planes) +
+                                      " planar face(s) re-triangulated from their outlines, the first at (" +
+                                      format_number(repair.first_fold[0]) + ", " + format_number(repair.first_fold[1]) +
+                                      ", " + format_number(repair.first_fold[2]) + ") in the file's unit");
+            gmsh::merge(repaired);
+          }
+        else
+          gmsh::merge(path);
       }
-      gmsh::merge(path);
       {
         // a coordinate that is not a number sends Gmsh's meshers into an endless loop
         std::vector<std::size_t> tags;

@@ -21,12 +21,20 @@
 #  through:  one update of 40 mm on one side of the plate: the 12 mm depth limit, crossed in
 #            the same update before the plate wears through, ends life at 12,000 t (1 %).
 #  edge:     2 um/t x exp(-z / 50 mm): points of the flat faces at three heights recede by the
-#            rate at their height times the tonnes (to 2 %).
+#            rate at their height times the tonnes (to 2 %); the worn section at mid-length lies
+#            within 0.5 mm of an independent solution of the same front motion, both ways, at
+#            every update (front_2d.py: the eikonal equation by fast marching on a 0.2 mm grid;
+#            measured 0.14-0.33 mm, the largest at the tip, which the vertex offsets raise a little
+#            too fast: the offset planes there move by the tip's own depth, the largest).
 #  tip:      1 um/t on the edge line only: the tip's vertices carry it (the followed tip point
 #            recedes by rate x tonnes / sin(half angle), to 2 %).
 #  one face: 1 um/t on the +y side, filtered over 27.5 mm: the -y face moves less than 1 % of it.
-# uniform and edge: the swept volume is the Archard volume of the update within 7 % (what is
-# missing is the wear on the border of the clamped top, where vertices cannot move).
+# uniform: the swept volume of every update whose vertices moved (remeshed or not) is the exact
+# inner parallel body's (the plate's pentagon section offset by the depth on every side but the
+# clamped top, the length by the depth at both ends; over the depth times the worn area: 0.977-
+# 0.978, a uniform depth removes less than that at convex edges) within 0.1 %: the clamped top's
+# rim moves within its plane (held still, it took 1 % more: 0.969); edge: within 3 % of the
+# Archard volume.
 #   check_analytic.sh ABRADE TESTDIR OUTDIR
 set -euo pipefail
 abrade=$1 dir=$2 out=$3
@@ -56,6 +64,9 @@ seeds uniform_seeds_resumed 4,5,6 --resume
 # in the same update: the depth limit ends life, at 12,000 t
 "$abrade" run "$dir/analytic_one_face.prm" --output "$out/one_face_through" --quiet \
   --set "Lifetime/Cycles per update=40000" --set "Lifetime/Smoothing radius=0" > /dev/null
+for ((u = 1; u < $(wc -l < "$out/edge/trajectory.csv"); ++u)); do
+  python3 "$dir/front_2d.py" "$out/edge" --update $u --tolerance 0.0005 --top 0.08
+done
 python3 - "$out" <<'PY'
 import csv, json, math, os, re, sys
 out = sys.argv[1]
@@ -73,8 +84,19 @@ def rebuilt_from(case):
     """The first update whose worn surface was built anew as a set (fem/eroded_surface.h)."""
     found = re.findall(r"^update (\d+): the worn surface built anew", open(os.path.join(out, case, "log.txt")).read(), re.M)
     return min(map(int, found)) if found else None
+def swept_exact(D, d, L=0.15, H=0.25, T=0.06, B=0.08):
+    """The inner parallel body's volume lost from depth D to D + d over d x its worn area at D."""
+    sin_a = (T / 2) / math.hypot(T / 2, B)
+    def section(D):  # area and worn perimeter of the pentagon offset by D (the top held)
+        tip, w = D / sin_a, T / 2 - D
+        knee = tip + w * B / (T / 2)
+        area = 2 * w * (H - knee) + w * (knee - tip)
+        return area, 2 * math.hypot(w, knee - tip) + 2 * (H - knee)
+    (a0, p0), (a1, _) = section(D), section(D + d)
+    return ((L - 2 * D) * a0 - (L - 2 * D - 2 * d) * a1) / (d * (2 * a0 + (L - 2 * D) * p0))
 for case, life in (("uniform", 12000), ("uniform_crossed", 6000), ("uniform_coarse", 7000)):
     u = rows(case)
+    before = 0.0
     assert len(u) >= 3 and any(r["remeshed"] == "1" for r in u), f"{case}: too few updates or no remesh"
     first = rebuilt_from(case)
     for r in u:
@@ -96,7 +118,8 @@ for case, life in (("uniform", 12000), ("uniform_crossed", 6000), ("uniform_coar
         # gauge height loses the rate on both faces
         check(case, "gauged edge recession", 1e-6 * t / sin_half, float(r["edge_recession"]), 1e-3)
         check(case, "gauged plate thickness", 0.06 - 2e-6 * t, float(r["plate_thickness"]), 1e-3)
-        assert 0.93 < float(r["swept_over_archard"]) <= 1.0, r["swept_over_archard"]
+        check(case, "swept volume", swept_exact(before, 1e-6 * t - before), float(r["swept_over_archard"]), 1e-3)
+        before = 1e-6 * t
         assert float(r["max_vertex_displacement"]) > 2.5 * float(r["max_depth"]), "the tip moves further than the depth"
     s = summary(case)
     check(case, "life", life, s["predicted_tonnes_to_end_of_life"], 0.04 if first else 0.01)
@@ -110,7 +133,7 @@ for r in e:
     t = float(r["tonnes"])
     for col, z in (("point_recession", 0.06), ("point_recession_2", 0.1), ("point_recession_3", 0.15)):
         check("edge", f"z = {z}", 2e-6 * math.exp(-z / 0.05) * t, float(r[col]), 0.02)
-    assert 0.93 < float(r["swept_over_archard"]) <= 1.0, r["swept_over_archard"]
+    assert 0.97 < float(r["swept_over_archard"]) <= 1.0, r["swept_over_archard"]
 for r in rows("tip"):
     check("tip", "tip", 1e-6 * float(r["tonnes"]) / sin_half, float(r["point_recession"]), 0.02)
 for r in rows("one_face"):

@@ -193,7 +193,7 @@ def main():
                 worst, where = d, (y, z)
     # and back: every point of the front (where T crosses t along a grid line) to the worn section
     T_grid, y_lo, z_lo, h, ny, nz = grid
-    back = 0.0
+    back, back_at = 0.0, (0.0, 0.0)
     for i in range(ny - 1):
         for j in range(nz - 1):
             for k, l in ((i + 1, j), (i, j + 1)):
@@ -203,8 +203,9 @@ def main():
                 s = (tonnes - t0) / (t1 - t0)
                 y, z = y_lo + (i + s * (k - i)) * h, z_lo + (j + s * (l - j)) * h
                 if z < z0 + a.top - 5 * h:
-                    back = max(back, distance_to_segments(worn, y, z))
-    worst = max(worst, back)
+                    d = distance_to_segments(worn, y, z)
+                    if d > back:
+                        back, back_at = d, (y, z)
     # the edge: the lowest point of the worn section, and where the front crosses y = tip's y
     lowest = min(worn, key=lambda s: min(s[1], s[3]))
     abrade_tip = min(lowest[1], lowest[3])
@@ -220,10 +221,11 @@ def main():
     print(f"update {update} ({tonnes:g} t), section at x = {x_mid:.4f} m: {count} points, the front "
           f"{1000 * total / max(count, 1):.3f} mm away on average, {1000 * worst:.3f} mm at most "
           f"(the section's points to the front, the largest at y = {1000 * where[0]:.2f}, z = {1000 * where[1]:.2f} mm; "
-          f"the front's points to the section: {1000 * back:.3f} mm at most); edge's lowest point: abrade "
+          f"the front's points to the section: {1000 * back:.3f} mm at most, at y = {1000 * back_at[0]:.2f}, "
+          f"z = {1000 * back_at[1]:.2f} mm); edge's lowest point: abrade "
           f"{1000 * (abrade_tip - z0):.3f} mm above the design's, the front "
           f"{'-' if front_tip is None else f'{1000 * (front_tip - z0):.3f}'} mm")
-    return 0 if worst <= a.tolerance else 1
+    return 0 if max(worst, back) <= a.tolerance else 1
 
 
 if __name__ == "__main__":

@@ -691,6 +691,15 @@ namespace abrade::coupling::lifetime
     const auto   recession = knife->recession_at(s.recession_points);
     const double worn      = volume0 - knife->volume();
     const double swept     = st.volume_before - knife->volume();
+    // the volume the knife lost against the volume the wear took (a uniform depth removes 1-3 %
+    // less than depth x area at convex edges: the exact inner parallel body; more than 5 % off
+    // is the construction's, not the wear's)
+    if (const double archard = n * rates.archard_volume; archard > 0 && std::abs(swept / archard - 1) > 0.05)
+      ctx.log.warning("update " + std::to_string(update) + ": the knife lost " + io::format_number(swept / archard, 3) +
+                      " times the volume the wear took (" +
+                      (st.result.rebuilt.empty() ? std::string(st.result.remeshed ? "remeshed" : "moved")
+                                                 : std::string("its worn surface built anew as a set")) +
+                      "; more than 5 % off: the worn geometry is that much off)");
     gauge_the_knife();
     const EdgeGauge g      = gauge(sections, design_at_sections);
     history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),
@@ -851,6 +860,7 @@ namespace abrade::coupling::lifetime
     r["worn_volume"]   = volume0 - knife->volume();
     r["worn_mass"]     = (volume0 - knife->volume()) * knife_parameters.density;
     r["archard_volume"] = archard_total;
+    r["worn_over_archard"] = archard_total > 0 ? (volume0 - knife->volume()) / archard_total : 0.0;
     r["remeshes"]      = static_cast<long>(knife->n_remeshes());
     r["dem_warnings"]  = dem_warnings_total; // overlaps, lost particles, time step (this run; per update: trajectory.csv)
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
