@@ -2,6 +2,8 @@
 #include <abrade/common/error.h>
 #include <abrade/common/surface_distance.h>
 #include <abrade/fem/eroded_surface.h>
+#include <abrade/fem/surface_repair.h>
+#include <abrade/fem/worn_front.h>
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -48,82 +50,6 @@ namespace abrade::fem
         v += volume_share(&s.points[3 * t[0]], &s.points[3 * t[1]], &s.points[3 * t[2]]);
       return v;
     }
-
-    /// The balls of the wear: points sampled on the worn triangles (at most @p step apart)
-    /// with the depth there as radius, in a hash grid for the nearest sphere.
-    struct Balls
-    {
-      std::vector<double> centre, radius;
-      double              cell = 0;
-      std::unordered_map<long long, std::vector<unsigned>> cells;
-
-      Balls(const io::PolyData &s, const std::vector<double> &depth, double step, double margin)
-      {
-        for (const auto &t : s.triangles)
-          {
-            const double d0 = depth[t[0]], d1 = depth[t[1]], d2 = depth[t[2]];
-            if (std::max({d0, d1, d2}) <= 0)
-              continue;
-            const double *a = &s.points[3 * t[0]], *b = &s.points[3 * t[1]], *c = &s.points[3 * t[2]];
-            const double  longest = std::max({std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]),
-                                              std::hypot(b[0] - c[0], b[1] - c[1], b[2] - c[2]),
-                                              std::hypot(c[0] - a[0], c[1] - a[1], c[2] - a[2])});
-            const long    m       = std::max(1L, static_cast<long>(std::ceil(longest / step)));
-            for (long u = 0; u <= m; ++u)
-              for (long v = 0; u + v <= m; ++v)
-                {
-                  const double wa = double(m - u - v) / m, wb = double(u) / m, wc = double(v) / m;
-                  const double d  = wa * d0 + wb * d1 + wc * d2;
-                  if (d <= 0)
-                    continue;
-                  for (int q = 0; q < 3; ++q)
-                    centre.push_back(wa * a[q] + wb * b[q] + wc * c[q]);
-                  radius.push_back(d);
-                }
-          }
-        double largest = 0;
-        for (const double r : radius)
-          largest = std::max(largest, r);
-        cell = largest + margin;
-        for (unsigned q = 0; q < radius.size(); ++q)
-          cells[key(&centre[3 * q], 0, 0, 0)].push_back(q);
-      }
-
-      long long key(const double *x, int di, int dj, int dk) const
-      {
-        const long long i = static_cast<long long>(std::floor(x[0] / cell)) + di,
-                        j = static_cast<long long>(std::floor(x[1] / cell)) + dj,
-                        k = static_cast<long long>(std::floor(x[2] / cell)) + dk;
-        return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL);
-      }
-
-      /// min over the balls of |x - p| - d(p) (infinity beyond every ball's reach), and the point
-      /// of that ball's sphere nearest to @p x.
-      double nearest_sphere_point(const double *x, double *on_sphere) const
-      {
-        double   best = std::numeric_limits<double>::infinity();
-        unsigned which = 0;
-        for (int di = -1; di <= 1; ++di)
-          for (int dj = -1; dj <= 1; ++dj)
-            for (int dk = -1; dk <= 1; ++dk)
-              if (const auto it = cells.find(key(x, di, dj, dk)); it != cells.end())
-                for (const unsigned q : it->second)
-                  {
-                    const double *p = &centre[3 * q];
-                    const double  g = std::hypot(x[0] - p[0], x[1] - p[1], x[2] - p[2]) - radius[q];
-                    if (g < best)
-                      best = g, which = q;
-                  }
-        if (std::isfinite(best))
-          {
-            const double *p = &centre[3 * which];
-            const double  r = best + radius[which];
-            for (int c = 0; c < 3; ++c)
-              on_sphere[c] = r > 0 ? p[c] + radius[which] * (x[c] - p[c]) / r : x[c];
-          }
-        return best;
-      }
-    };
 
     /// The triangles of @p s that face against the surface they approximate, @p reference (their
     /// normal opposed to the one of the reference triangle closest to their centre: turned over
@@ -242,26 +168,28 @@ namespace abrade::fem
               }
       }
 
-    // the balls: points at half a spacing on every worn triangle, depth interpolated
-    const Balls balls(surface, depth, 0.5 * h, 2 * h);
-    for (std::size_t q = 0; q < balls.radius.size(); ++q)
+    // the wear: the union of the balls of radius d(p) about every point of the worn triangles,
+    // continuous over each (worn_front.h: balls sampled at half a spacing left a layer thinner
+    // than that unworn between them), on the nodes within the reach of each triangle's deepest ball
+    const WornFront worn(surface, depth, 2 * h);
+    for (const SweptTriangle &t : worn.triangles())
       {
-        const double *p     = &balls.centre[3 * q];
-        const double  d     = balls.radius[q];
-        const double  reach = d + 2 * h;
-        long          from[3], to[3];
+        const auto   box   = t.box();
+        const double reach = t.largest_depth() + 2 * h;
+        long         from[3], to[3];
         for (int c = 0; c < 3; ++c)
           {
-            from[c] = std::max(0L, static_cast<long>(std::floor((p[c] - reach - lo[c]) / h)));
-            to[c]   = std::min(n[c] - 1, static_cast<long>(std::ceil((p[c] + reach - lo[c]) / h)));
+            from[c] = std::max(0L, static_cast<long>(std::floor((box[c] - reach - lo[c]) / h)));
+            to[c]   = std::min(n[c] - 1, static_cast<long>(std::ceil((box[c + 3] + reach - lo[c]) / h)));
           }
         for (long k = from[2]; k <= to[2]; ++k)
           for (long j = from[1]; j <= to[1]; ++j)
             for (long i = from[0]; i <= to[0]; ++i)
               {
-                const double dx = lo[0] + i * h - p[0], dy = lo[1] + j * h - p[1], dz = lo[2] + k * h - p[2];
+                const double x[3] = {lo[0] + i * h, lo[1] + j * h, lo[2] + k * h};
+                double       foot[3];
                 float       &gn   = g[node(i, j, k)];
-                const double ball = std::sqrt(dx * dx + dy * dy + dz * dz) - d;
+                const double ball = t.distance(x, foot);
                 if (ball < gn)
                   gn = float(ball);
               }
@@ -343,7 +271,7 @@ namespace abrade::fem
               bool         rim = false;
               double       on_surface[3], on_ball[3];
               const double phi  = -distance.signed_distance(x, rim, on_surface);
-              const double ball = balls.nearest_sphere_point(x, on_ball);
+              const double ball = worn.distance(x, on_ball);
               const double gx   = std::min(phi, ball);
               std::copy_n(phi <= ball ? on_surface : on_ball, 3, x);
               if (std::abs(gx) < 1e-6 * h)
@@ -412,6 +340,16 @@ namespace abrade::fem
             out = std::move(decimated);
             break;
           }
+      }
+    // the last projection can put two vertices onto one point (beside a sharp edge): one vertex,
+    // the facets between them dropped (an STL of them has edges of no length, a hole for Gmsh)
+    try
+      {
+        out = repair_overlapping_facets(out, 1e-4 * h).surface;
+      }
+    catch (const std::runtime_error &)
+      {
+        // (a folded plane whose outline could not be triangulated: Gmsh will say what is wrong)
       }
     double volume = enclosed_volume(out);
     if (volume < 0) // flying edges orients towards larger values, here inward: turn the triangles

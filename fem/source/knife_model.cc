@@ -82,7 +82,7 @@ namespace abrade::fem
     }
   } // namespace
 
-  KnifeModel::UpdateResult KnifeModel::apply_wear(const std::vector<double> &depth)
+  KnifeModel::UpdateResult KnifeModel::apply_wear(const std::vector<double> &depth, bool may_rebuild)
   {
     if (depth.size() != current_surface.vertices.size())
       throw std::logic_error("apply_wear: one depth per surface vertex expected");
@@ -127,7 +127,10 @@ namespace abrade::fem
       moves[v] = clamped[v] ? Tensor<1, 3>() : offsets[v];
     if (const std::size_t folds = folding_triangles(current_surface, moves); folds > 0)
       {
-        rebuild_eroded(before, std::to_string(folds) + " triangle(s) of the moved surface would fold", r);
+        const std::string why = std::to_string(folds) + " triangle(s) of the moved surface would fold";
+        if (!may_rebuild)
+          throw RunError(why);
+        rebuild_eroded(before, why, r);
         return r;
       }
 

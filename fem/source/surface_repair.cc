@@ -61,7 +61,13 @@ namespace abrade::fem
     };
     std::vector<std::array<long, 3>> triangles;
     for (const auto &t : surface.triangles)
-      triangles.push_back({weld(t[0]), weld(t[1]), weld(t[2])});
+      {
+        const std::array<long, 3> w = {weld(t[0]), weld(t[1]), weld(t[2])};
+        if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0])
+          ++r.collapsed; // two corners welded: an edge collapsed, no facet
+        else
+          triangles.push_back(w);
+      }
 
     // each facet's area vector, and the facets on either side of each edge
     std::vector<Vec> area(triangles.size());

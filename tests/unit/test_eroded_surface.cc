@@ -121,6 +121,20 @@ namespace
       }
     return v;
   }
+  /// The volume worn from box(a, b, c, n) when its top face's points wear by d: the top slab
+  /// and, on the four sides, the wedges of their top row of triangles (depth d at the top edge
+  /// to 0 a row, L = c / n, below; Huygens' envelope of a depth with slope k = d / L lies
+  /// d(z) / sqrt(1 - k^2) deep), by inclusion and exclusion of where they overlap (the slab and
+  /// a wedge; two wedges at a vertical edge; all three at a corner).
+  double worn_top_of_box(double a, double b, double c, double d, int n)
+  {
+    const double L = c / n, k = d / L, w = d / std::sqrt(1 - k * k); // the wedge's depth at the top
+    const double wedges    = 2 * (a + b) * w * L / 2;
+    const double in_slab   = 2 * (a + b) * (w / L) * (L * L - (L - d) * (L - d)) / 2;
+    const double two       = 4 * w * w * L / 3;
+    const double three     = 4 * (w / L) * (w / L) * (L * L * L - (L - d) * (L - d) * (L - d)) / 3;
+    return a * b * d + wedges - in_slab - two + three;
+  }
 } // namespace
 
 TEST(ErodedSurface, UniformWearOfABoxIsTheInnerBox)
@@ -170,6 +184,31 @@ TEST(ErodedSurface, ALinearlyGrowingDepthTiltsTheFaceByHuygens)
         worst          = std::max(worst, std::abs((c - z) - (d0 + k * x) / std::sqrt(1 - k * k)));
       }
   EXPECT_LT(worst, 0.05 * h) << "not the envelope of the balls";
+}
+
+TEST(ErodedSurface, ALayerThinnerThanTheGridIsWornWhole)
+{
+  // the top face worn by 0.3 mm on a grid of 1.5 mm (the first updates of an edge-concentrated
+  // rate, far from the edge): every point of the worn top at 0.3 mm, none left on the design
+  // (balls sampled at half a spacing, 0.75 mm apart, left the surface between them unworn)
+  const double a = 0.05, b = 0.05, c = 0.04, d = 0.0003, h = 0.0015;
+  const auto   s = box(a, b, c, 10);
+  std::vector<double> depth(s.points.size() / 3, 0.0);
+  for (std::size_t v = 0; v < depth.size(); ++v)
+    if (s.points[3 * v + 2] == c)
+      depth[v] = d;
+  const auto e = eroded_surface(s, depth, h, 0.008);
+  double     worst = 0;
+  for (double x = 0.005; x <= 0.045; x += 0.001)
+    for (double y = 0.005; y <= 0.045; y += 0.001)
+      worst = std::max(worst, std::abs((c - highest_point_above(e.surface, x, y)) - d));
+  EXPECT_LT(worst, 0.02 * d) << "the thin layer is not worn evenly";
+  // the volume: at least the exact one, at most that and the chamfer marching cubes cuts along
+  // every convex edge of the box, worn or not (legs of up to 3/4 of a spacing; the projection
+  // puts the vertices on the edge's faces, the triangles between them still cut across it)
+  const double worn = worn_top_of_box(a, b, c, d, 10);
+  EXPECT_GT(a * b * c - e.volume, 0.99 * worn);
+  EXPECT_LT(a * b * c - e.volume, worn + 4 * (a + b + c) * std::pow(0.75 * h, 2) / 2);
 }
 
 TEST(ErodedSurface, FrontsThatMeetMerge)

@@ -500,7 +500,9 @@ namespace abrade::coupling::lifetime
             io::ScopedTimer t(ctx.timers, "fem update");
             if (attempt > 0)
               knife->load(checkpoints->knife_file(update - 1));
-            st.result = knife->apply_wear(depth(n));
+            // the moved vertices are exact where they do not fold, and a smaller step often
+            // does not: the surface is built anew as a set only from the third attempt on
+            st.result = knife->apply_wear(depth(n), attempt >= 2 || n == 1);
           }
         catch (const std::exception &e)
           {

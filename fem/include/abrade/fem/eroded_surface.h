@@ -18,7 +18,7 @@
 // How. The implicit function g(x) = min( phi(x), min_p (|x - p| - d(p)) ), phi the signed
 // distance to S (> 0 inside; SurfaceDistance, exact, by blocks of the grid: a block whose centre
 // is farther from S than its half-diagonal and two spacings takes the sign without its nodes'
-// distances), the balls from points sampled on the worn triangles at half a grid spacing, is
+// distances), the balls continuous over each worn triangle (worn_front.h), is
 // sampled on a regular grid of spacing h (offset by an irrational fraction of h, so that no
 // node lies on a flat face), and its zero set extracted by VTK's flying edges (a marching-cubes
 // variant). W is { g > 0 }. Flat faces, where g is the exact distance to a plane, are

@@ -82,8 +82,12 @@ namespace abrade::fem
       double                volume = 0;
     };
 
-    /// @p depth: this update's inward wear depth per vertex of surface() [m].
-    UpdateResult apply_wear(const std::vector<double> &depth);
+    /// @p depth: this update's inward wear depth per vertex of surface() [m]. Where the moved
+    /// vertices would fold, the surface is built anew as a set (eroded_surface.h) if
+    /// @p may_rebuild, else RunError ("... would fold"): the moved vertices are exact wherever
+    /// they do not fold, and a smaller step often does not (the lifetime loop halves the step
+    /// twice before it lets the surface be built anew).
+    UpdateResult apply_wear(const std::vector<double> &depth, bool may_rebuild = true);
 
     const SolidSurface           &surface() const { return current_surface; }
     /// The wear depth of every vertex of surface(): its distance inside the design surface [m].

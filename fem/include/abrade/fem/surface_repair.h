@@ -23,12 +23,14 @@ namespace abrade::fem
     io::PolyData          surface;     ///< the repaired triangles (points welded)
     std::size_t           folds  = 0;  ///< coplanar facet pairs facing opposite ways across an edge
     std::size_t           planes = 0;  ///< planar faces re-triangulated
+    std::size_t           collapsed = 0; ///< facets dropped: two of their corners welded into one
     std::array<double, 3> first_fold{}; ///< the midpoint of the first fold's edge
   };
 
   /// Repairs the overlapping facets of @p surface (closed triangles, points possibly repeated per
   /// facet as an STL has them); @p tolerance [m]: points closer than it are one point, and a
-  /// facet within it of a plane lies in that plane. Without folds the surface comes back with
+  /// facet within it of a plane lies in that plane; a facet two of whose corners weld into one is
+  /// dropped (its edge collapsed). Without folds the surface comes back with
   /// its points welded and folds = 0. Throws std::runtime_error where a folded
   /// plane's outline cannot be triangulated (the caller names the file).
   SurfaceRepair repair_overlapping_facets(const io::PolyData &surface, double tolerance);
