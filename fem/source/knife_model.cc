@@ -170,7 +170,7 @@ namespace abrade::fem
             rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r);
             return r;
           }
-        set_ids_from_design(*fresh, design, 0.05 * settings.mesh_size, KnifeGeometry::wearable_boundary);
+        set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, KnifeGeometry::wearable_boundary);
         tria = std::move(fresh);
         ++remeshes;
         r.remeshed = true;
@@ -220,7 +220,7 @@ namespace abrade::fem
       {
         throw RunError(std::string("the worn knife could not be meshed: ") + e.what());
       }
-    set_ids_from_design(*fresh, design, 0.05 * settings.mesh_size, KnifeGeometry::wearable_boundary);
+    set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, KnifeGeometry::wearable_boundary);
     r.quality = mesh_quality(*fresh);
     if (r.quality.n_inverted > 0)
       throw RunError("the remeshed knife has inverted cells");

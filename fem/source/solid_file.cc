@@ -589,7 +589,9 @@ namespace abrade::fem
         SurfaceRepair repair;
         try
           {
-            repair = repair_overlapping_facets(facets, 1e-9 * size);
+            // (an STL's single-precision corners lie up to ~1e-7 of the part's size off their
+            // plane: a tolerance of 1e-6 of it)
+            repair = repair_overlapping_facets(facets, 1e-6 * size);
           }
         catch (const std::runtime_error &e)
           {

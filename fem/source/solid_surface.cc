@@ -353,35 +353,43 @@ namespace abrade::fem
   std::size_t set_ids_from_design(Triangulation<3> &tria, const SolidSurface &design, double tolerance,
                                   types::boundary_id worn_id)
   {
-    SolidSurface                                                      centres;
-    std::vector<TriaIterator<TriaAccessor<2, 3, 3>>>                  faces;
-    std::vector<Tensor<1, 3>>                                         normals;
+    // the boundary faces, their centres, and their vertices (each once)
+    SolidSurface                                     centres, corners;
+    std::vector<TriaIterator<TriaAccessor<2, 3, 3>>> faces;
+    std::vector<std::vector<std::size_t>>            face_corners;
+    std::map<unsigned, std::size_t>                  corner_of;
     for (const auto &cell : tria.active_cell_iterators())
       for (const unsigned f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           {
             faces.push_back(cell->face(f));
             centres.vertices.push_back(cell->face(f)->center());
-            // outward: from the cell's centre towards the face's
-            Tensor<1, 3> n = cross_product_3d(cell->face(f)->vertex(1) - cell->face(f)->vertex(0),
-                                              cell->face(f)->vertex(2) - cell->face(f)->vertex(0));
-            if (n * (cell->face(f)->center() - cell->center()) < 0)
-              n = -n;
-            normals.push_back(n / n.norm());
+            face_corners.emplace_back();
+            for (const unsigned v : cell->face(f)->vertex_indices())
+              {
+                const auto [it, added] = corner_of.emplace(cell->face(f)->vertex_index(v), corners.vertices.size());
+                if (added)
+                  corners.vertices.push_back(cell->face(f)->vertex(v));
+                face_corners.back().push_back(it->second);
+              }
           }
-    const SurfaceTransfer closest(design, centres);
-    std::size_t           on_design = 0;
+    // a face lies on the design where all its corners do (a face's centre lies off a curved
+    // design face by its sagitta, its corners on it); the id is that of the design triangle
+    // nearest its centre
+    const SurfaceTransfer to_corners(design, corners), to_centres(design, centres);
+    std::vector<bool>     on_design(corners.vertices.size());
+    for (std::size_t v = 0; v < on_design.size(); ++v)
+      on_design[v] = corners.vertices[v].distance(to_corners.feet()[v]) <= tolerance;
+    std::size_t kept = 0;
     for (std::size_t k = 0; k < faces.size(); ++k)
       {
-        const unsigned t  = closest.triangles_of()[k];
-        const auto    &tv = design.triangles[t];
-        Tensor<1, 3>   n  = cross_product_3d(design.vertices[tv[1]] - design.vertices[tv[0]],
-                                             design.vertices[tv[2]] - design.vertices[tv[0]]);
-        const bool on = centres.vertices[k].distance(closest.feet()[k]) <= tolerance && n.norm() > 0 &&
-                        n * normals[k] >= std::cos(30 * numbers::PI / 180) * n.norm();
-        faces[k]->set_boundary_id(on ? design.boundary_id[t] : worn_id);
-        on_design += on && design.boundary_id[t] != worn_id;
+        bool on = true;
+        for (const std::size_t v : face_corners[k])
+          on = on && on_design[v];
+        const types::boundary_id id = design.boundary_id[to_centres.triangles_of()[k]];
+        faces[k]->set_boundary_id(on ? id : worn_id);
+        kept += on && id != worn_id;
       }
-    return on_design;
+    return kept;
   }
 } // namespace abrade::fem

@@ -108,7 +108,17 @@ namespace abrade::fem
         if (std::abs(dot(sub(points[far], points[edge.first]), u)) > tolerance)
           continue;
         planes.join(i, j);
-        if (c < 0)
+        // facing opposite ways: a fold when both far corners lie on the same side of the edge
+        // (the facets overlap); on opposite sides it is one facet turned the wrong way round,
+        // which overlaps nothing (left to the closed-surface check)
+        long far_i = triangles[i][0];
+        for (long p : triangles[i])
+          if (p != edge.first && p != edge.second)
+            far_i = p;
+        const Vec along = sub(points[edge.second], points[edge.first]);
+        const bool same_side = dot(cross(along, sub(points[far_i], points[edge.first])), u) *
+                                 dot(cross(along, sub(points[far], points[edge.first])), u) > 0;
+        if (c < 0 && same_side)
           {
             if (r.folds++ == 0)
               for (int d = 0; d < 3; ++d)

@@ -9,6 +9,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/manifold_lib.h>
 
 #include "fem_test_helpers.h"
 
@@ -212,10 +213,10 @@ TEST(SolidSurface, RemeshKeepsTheShapeAndBoundaryIds)
 
 // The worn box's new mesh takes its boundary ids from the design: a 0.1 m cube with its top
 // clamped, worn 20 mm on every other face (the rim moved within the clamped plane), meshed in
-// 5 mm cells. Clamped: exactly the top's unworn (0.06 m)^2; everything else wears. The rule
-// without its distance and direction test (the design triangle nearest the face's centre) clamps
-// the side faces' top row (their centres 2.5 mm below the clamped plane and 20 mm inside the
-// sides); so did the nearest face of a surface the wear had moved on from.
+// 5 mm cells. Clamped: exactly the top's unworn (0.06 m)^2; everything else wears. The nearest
+// design triangle's id alone clamps the side faces' top row (their centres 2.5 mm below the
+// clamped plane and 20 mm inside the sides); so did the nearest face of a surface the wear had
+// moved on from.
 TEST(SolidSurface, IdsFromTheDesignKeepTheClampedFaceExactly)
 {
   Triangulation<3> design_tria, worn;
@@ -226,12 +227,49 @@ TEST(SolidSurface, IdsFromTheDesignKeepTheClampedFaceExactly)
                                                           : KnifeGeometry::wearable_boundary);
   const SolidSurface design = extract_surface(design_tria);
   GridGenerator::subdivided_hyper_rectangle(worn, {12, 12, 16}, Point<3>(0.02, 0.02, 0.02), Point<3>(0.08, 0.08, 0.1));
-  const std::size_t on = set_ids_from_design(worn, design, 0.05 * 0.02, KnifeGeometry::wearable_boundary);
+  const std::size_t on = set_ids_from_design(worn, design, 1e-5, KnifeGeometry::wearable_boundary);
   EXPECT_EQ(on, 144u);
   EXPECT_NEAR(boundary_area(worn, KnifeGeometry::clamped_boundary), 0.06 * 0.06, 1e-12);
   for (const auto &face : worn.active_face_iterators())
     if (face->at_boundary() && face->boundary_id() == KnifeGeometry::clamped_boundary)
       EXPECT_NEAR(face->center()[2], 0.1, 1e-12);
+}
+
+// A curved clamped face (a cylinder's hull, 50 mm radius, clamped; its ends wear): the design
+// faceted finely (two refinements onto the cylinder), the new mesh coarse (its hull faces span
+// 90 degrees, their centres 15 mm inside the hull). Every hull face stays clamped, every end
+// face wears: the corners lie on the design. (Judged by the centres' distance, every hull face
+// had worn.)
+TEST(SolidSurface, IdsFromTheDesignKeepACurvedClampedFace)
+{
+  Triangulation<3> design_tria, coarse;
+  GridGenerator::cylinder(coarse, 0.05, 0.1);
+  design_tria.copy_triangulation(coarse);
+  design_tria.set_all_manifold_ids_on_boundary(0, 0);
+  design_tria.set_manifold(0, CylindricalManifold<3>(0));
+  design_tria.refine_global(2);
+  for (auto *t : {&design_tria, &coarse})
+    for (const auto &face : t->active_face_iterators())
+      if (face->at_boundary())
+        face->set_boundary_id(std::abs(std::abs(face->center()[0]) - 0.1) < 1e-9 ? KnifeGeometry::wearable_boundary
+                                                                                 : KnifeGeometry::clamped_boundary);
+  const SolidSurface design = extract_surface(design_tria);
+  Triangulation<3>   fresh;
+  fresh.copy_triangulation(coarse);
+  for (const auto &face : fresh.active_face_iterators())
+    if (face->at_boundary())
+      face->set_boundary_id(KnifeGeometry::wearable_boundary);
+  set_ids_from_design(fresh, design, 1e-6, KnifeGeometry::wearable_boundary);
+  unsigned hull = 0;
+  for (const auto &face : fresh.active_face_iterators())
+    if (face->at_boundary())
+      {
+        const bool end = std::abs(std::abs(face->center()[0]) - 0.1) < 1e-9;
+        EXPECT_EQ(face->boundary_id(), end ? KnifeGeometry::wearable_boundary : KnifeGeometry::clamped_boundary)
+          << "face at " << face->center();
+        hull += !end;
+      }
+  EXPECT_GT(hull, 3u);
 }
 
 TEST(SolidSurface, LocalThicknessAndWornThrough)

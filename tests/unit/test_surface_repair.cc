@@ -99,9 +99,45 @@ TEST(SurfaceRepair, AFlapFoldedBackIsDroppedAndAGoodSurfaceStays)
   t.push_back({P{0.05, 0.05, 0.05}, P{0.1, 0.08, 0.05}, P{0.1, 0.05, 0.05}});
   const fem::SurfaceRepair flap = fem::repair_overlapping_facets(facets(t), 1e-12);
   EXPECT_GE(flap.folds, 1u);
+  EXPECT_EQ(flap.surface.triangles.size(), 12u); // the flap gone, the box as it was
+  EXPECT_TRUE(closed_and_oriented(flap.surface));
   EXPECT_NEAR(volume(flap.surface), 0.001, 1e-15);
   const fem::SurfaceRepair good = fem::repair_overlapping_facets(facets(box(false)), 1e-12);
   EXPECT_EQ(good.folds, 0u);
   EXPECT_EQ(good.surface.triangles.size(), 12u);
   EXPECT_TRUE(closed_and_oriented(good.surface));
+}
+
+// A facet turned the wrong way round inside a flat face (its far corner on the other side of the
+// shared edge from its neighbour's) overlaps nothing: not a fold, left as it is (the closed-
+// surface check is the place for it), never a refusal.
+TEST(SurfaceRepair, AFacetTurnedRoundIsNotAFold)
+{
+  auto t = box(false);
+  std::swap(t.back()[1], t.back()[2]);
+  const fem::SurfaceRepair r = fem::repair_overlapping_facets(facets(t), 1e-12);
+  EXPECT_EQ(r.folds, 0u);
+  EXPECT_EQ(r.surface.triangles.size(), 12u);
+}
+
+// The fan box turned about two axes and written in single precision, as a binary STL holds it:
+// its corners lie up to ~1e-8 m off their planes, and the folds are found with the tolerance the
+// STL reader uses (1e-6 of the part's size; 1e-9 of it missed them).
+TEST(SurfaceRepair, FoldsOnATiltedSinglePrecisionFaceAreFound)
+{
+  const double a = 0.5, b = 0.3, ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
+  auto         t = box(true);
+  for (auto &tri : t)
+    for (auto &p : tri)
+      {
+        const P q = {ca * p[0] - sa * p[1], sa * p[0] + ca * p[1], p[2]};
+        const P r = {q[0], cb * q[1] - sb * q[2], sb * q[1] + cb * q[2]};
+        for (int c = 0; c < 3; ++c)
+          p[c] = double(float(r[c] + 1.0)); // (1 m away from the origin, as a part's coordinates are)
+      }
+  const fem::SurfaceRepair r = fem::repair_overlapping_facets(facets(t), 1e-6 * 0.3);
+  EXPECT_EQ(r.folds, 2u);
+  EXPECT_EQ(r.planes, 1u);
+  EXPECT_TRUE(closed_and_oriented(r.surface));
+  EXPECT_NEAR(volume(r.surface), 0.001, 1e-9);
 }

@@ -693,15 +693,6 @@ namespace abrade::coupling::lifetime
     const auto   recession = knife->recession_at(s.recession_points);
     const double worn      = volume0 - knife->volume();
     const double swept     = st.volume_before - knife->volume();
-    // the volume the knife lost against the volume the wear took (a uniform depth removes 1-3 %
-    // less than depth x area at convex edges: the exact inner parallel body; more than 5 % off
-    // is the construction's, not the wear's)
-    if (const double archard = n * rates.archard_volume; archard > 0 && std::abs(swept / archard - 1) > 0.05)
-      ctx.log.warning("update " + std::to_string(update) + ": the knife lost " + io::format_number(swept / archard, 3) +
-                      " times the volume the wear took (" +
-                      (st.result.rebuilt.empty() ? std::string(st.result.remeshed ? "remeshed" : "moved")
-                                                 : std::string("its worn surface built anew as a set")) +
-                      "; more than 5 % off: the worn geometry is that much off)");
     gauge_the_knife();
     const EdgeGauge g      = gauge(sections, design_at_sections);
     history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),

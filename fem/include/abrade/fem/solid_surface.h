@@ -107,14 +107,14 @@ namespace abrade::fem
                      const std::string &work_directory);
 
   /// The boundary ids of a worn part's new mesh @p tria, from its design (unworn) surface
-  /// @p design: a boundary face that lies on the design triangle closest to its centre (within
-  /// @p tolerance) and faces the same way (within 30 degrees) takes that triangle's id; every
-  /// other face has worn and takes @p worn_id. Exact however often the part is remeshed: an
-  /// unworn face keeps its design id (a clamped face, also where its rim moved within its
-  /// plane), a worn one wears. (The nearest face of the surface before the update, which the
-  /// remeshes used until session 19, is a clamped face for a worn face's centre nearer the rim
-  /// than the wear is deep.) Returns the number of faces that lie on a clamped or other
-  /// non-worn design face.
+  /// @p design: a boundary face whose corners all lie on the design (within @p tolerance) takes
+  /// the id of the design triangle nearest its centre; every other face has worn and takes
+  /// @p worn_id. Exact however often the part is remeshed: an unworn face keeps its design id (a
+  /// clamped face, also where its rim moved within its plane; a curved one too, whose faces'
+  /// centres lie off it by their sagitta), a worn one wears. (The nearest face of the surface
+  /// before the update, which the remeshes used until session 19, is a clamped face for a worn
+  /// face's centre nearer the rim than the wear is deep.) Returns the number of faces that keep
+  /// an id other than @p worn_id.
   std::size_t set_ids_from_design(dealii::Triangulation<3> &tria, const SolidSurface &design, double tolerance,
                                   dealii::types::boundary_id worn_id);
 } // namespace abrade::fem
