@@ -1,6 +1,7 @@
 // The worn surface as the zero set of an implicit function on a grid (eroded_surface.h).
 #include <abrade/common/error.h>
 #include <abrade/common/surface_distance.h>
+#include <abrade/common/vtk_input.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/surface_repair.h>
 #include <abrade/fem/worn_front.h>
@@ -101,22 +102,6 @@ namespace abrade::fem
       for (const auto &[edge, n] : edges)
         bad += n != 2;
       return bad;
-    }
-
-    io::PolyData from_vtk(vtkPolyData *p)
-    {
-      io::PolyData out;
-      out.points.resize(3 * p->GetNumberOfPoints());
-      for (vtkIdType k = 0; k < p->GetNumberOfPoints(); ++k)
-        p->GetPoint(k, &out.points[3 * k]);
-      vtkNew<vtkIdList> ids;
-      for (vtkIdType c = 0; c < p->GetNumberOfCells(); ++c)
-        {
-          p->GetCellPoints(c, ids);
-          if (ids->GetNumberOfIds() == 3)
-            out.triangles.push_back({long(ids->GetId(0)), long(ids->GetId(1)), long(ids->GetId(2))});
-        }
-      return out;
     }
 
   } // namespace
@@ -303,7 +288,7 @@ namespace abrade::fem
 
     // to about the target edge length (equilateral triangles of that edge over the area)
     double area = 0;
-    const io::PolyData kept = from_vtk(front);
+    const io::PolyData kept = io::triangles_of(front);
     for (const auto &t : kept.triangles)
       {
         const double *a = &kept.points[3 * t[0]], *b = &kept.points[3 * t[1]], *c = &kept.points[3 * t[2]];
@@ -325,9 +310,9 @@ namespace abrade::fem
         vtkNew<vtkTriangleFilter> triangles;
         triangles->SetInputConnection(decimate->GetOutputPort());
         triangles->Update();
-        const io::PolyData placed = from_vtk(triangles->GetOutput()); // where the quadrics put them
+        const io::PolyData placed = io::triangles_of(triangles->GetOutput()); // where the quadrics put them
         project(triangles->GetOutput()->GetPoints());
-        io::PolyData             decimated = from_vtk(triangles->GetOutput());
+        io::PolyData             decimated = io::triangles_of(triangles->GetOutput());
         std::vector<std::size_t> turned;
         // the projection can turn a small triangle beside a sharp edge: its corners stay
         // where the quadrics put them

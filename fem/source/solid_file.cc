@@ -20,8 +20,6 @@
 #include <deal.II/physics/transformations.h>
 
 #include <gmsh.h>
-#include <vtkIdList.h>
-#include <vtkNew.h>
 #include <vtkPolyData.h>
 
 #include "quiet_stdout.h"
@@ -572,19 +570,7 @@ namespace abrade::fem
         // overlapping facets (a planar face tessellated as a fan from a point outside it, a flap
         // folded back) stop Gmsh's volume mesher: such planes are triangulated again from their
         // outlines (surface_repair.h) and Gmsh reads the repaired copy
-        io::PolyData facets;
-        for (vtkIdType p = 0; p < poly->GetNumberOfPoints(); ++p)
-          {
-            const double *x = poly->GetPoint(p);
-            facets.points.insert(facets.points.end(), {x[0], x[1], x[2]});
-          }
-        vtkNew<vtkIdList> cell;
-        for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
-          {
-            poly->GetCellPoints(c, cell);
-            if (cell->GetNumberOfIds() == 3)
-              facets.triangles.push_back({long(cell->GetId(0)), long(cell->GetId(1)), long(cell->GetId(2))});
-          }
+        const io::PolyData facets = io::triangles_of(poly);
         const double size = std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
         SurfaceRepair repair;
         try

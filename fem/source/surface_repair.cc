@@ -99,11 +99,15 @@ namespace abrade::fem
         const double c = dot(area[i], area[j]) / (ai * aj);
         if (std::abs(c) < parallel)
           continue;
+        // a facet's corner off the shared edge
+        auto far_corner = [&, e = edge](std::size_t k) {
+          for (long p : triangles[k])
+            if (p != e.first && p != e.second)
+              return p;
+          return triangles[k][0];
+        };
         // the other facet's far corner within the tolerance of this facet's plane
-        long far = triangles[j][0];
-        for (long p : triangles[j])
-          if (p != edge.first && p != edge.second)
-            far = p;
+        const long far = far_corner(j);
         const Vec u = {area[i][0] / ai, area[i][1] / ai, area[i][2] / ai};
         if (std::abs(dot(sub(points[far], points[edge.first]), u)) > tolerance)
           continue;
@@ -111,10 +115,7 @@ namespace abrade::fem
         // facing opposite ways: a fold when both far corners lie on the same side of the edge
         // (the facets overlap); on opposite sides it is one facet turned the wrong way round,
         // which overlaps nothing (left to the closed-surface check)
-        long far_i = triangles[i][0];
-        for (long p : triangles[i])
-          if (p != edge.first && p != edge.second)
-            far_i = p;
+        const long far_i = far_corner(i);
         const Vec along = sub(points[edge.second], points[edge.first]);
         const bool same_side = dot(cross(along, sub(points[far_i], points[edge.first])), u) *
                                  dot(cross(along, sub(points[far], points[edge.first])), u) > 0;

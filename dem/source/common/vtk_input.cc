@@ -8,6 +8,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkIdList.h>
 #include <vtkPoints.h>
 #include <vtkCleanPolyData.h>
 #include <vtkDataSetSurfaceFilter.h>
@@ -257,5 +258,21 @@ namespace abrade::io
         return p;
       }
     throw InputError(path, "unknown geometry format '" + ext + "' (use .stl, .obj, .ply, .vtk, .vtp or .vtu)");
+  }
+
+  PolyData triangles_of(vtkPolyData *p)
+  {
+    PolyData out;
+    out.points.resize(3 * p->GetNumberOfPoints());
+    for (vtkIdType k = 0; k < p->GetNumberOfPoints(); ++k)
+      p->GetPoint(k, &out.points[3 * k]);
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < p->GetNumberOfCells(); ++c)
+      {
+        p->GetCellPoints(c, ids);
+        if (ids->GetNumberOfIds() == 3)
+          out.triangles.push_back({long(ids->GetId(0)), long(ids->GetId(1)), long(ids->GetId(2))});
+      }
+    return out;
   }
 } // namespace abrade::io

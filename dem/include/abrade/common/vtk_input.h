@@ -3,6 +3,7 @@
 // every reader of the project (wall meshes, knife solids' surfaces, field scans). Needs VTK's
 // include directories (the libraries that call it link VTK).
 #include <abrade/common/file_extension.h>
+#include <abrade/common/vtk_output.h>
 
 #include <vtkSmartPointer.h>
 
@@ -17,5 +18,8 @@ namespace abrade::io
   /// result may hold no cells (a point cloud) or nothing (an empty or malformed file): callers
   /// check what they need. VTK's own error messages are silenced while reading.
   vtkSmartPointer<vtkPolyData> read_polydata(const std::string &path);
+
+  /// The points and the triangles of @p p (its other cells left out), as plain arrays.
+  PolyData triangles_of(vtkPolyData *p);
 
 } // namespace abrade::io
