@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace abrade::fem
@@ -128,6 +129,35 @@ namespace abrade::fem
     if (const std::size_t folds = folding_triangles(current_surface, moves); folds > 0)
       {
         const std::string why = std::to_string(folds) + " triangle(s) of the moved surface would fold";
+        // Most folds are vertices the receding fronts overtake: a vertex of the bevel near a
+        // chisel tip, which shrinks the bevel by three times the depth. The surface meshed anew
+        // before the step has its vertices a triangle's height from its edges again, and its
+        // planes and edges exactly (Gmsh keeps the edges it classifies); the step is tried
+        // once more from there, its depth carried to the new vertices.
+        if (*std::max_element(since_remesh.begin(), since_remesh.end()) > 0)
+          {
+            UpdateResult                   first;
+            std::optional<SurfaceTransfer> transfer;
+            try
+              {
+                transfer.emplace(remesh_current(first));
+              }
+            catch (const InputError &)
+              {
+                // Gmsh could not mesh it: the knife is as it was, and built anew below
+              }
+            if (transfer)
+              {
+                if (first.quality.n_inverted > 0)
+                  throw RunError("the remeshed knife has inverted cells");
+                UpdateResult again = apply_wear((*transfer)(depth), may_rebuild);
+                again.remeshed     = true;
+                again.meshed_first = why;
+                if (again.surface_kept.empty())
+                  again.surface_kept = first.surface_kept;
+                return again;
+              }
+          }
         if (!may_rebuild)
           throw RunError(why);
         rebuild_eroded(before, why, r);
@@ -155,13 +185,9 @@ namespace abrade::fem
     if (r.quality.n_inverted > 0 || r.quality.min_scaled_jacobian < quality_threshold ||
         moved_most > 0.5 * settings.mesh_size)
       {
-        const SolidSurface old_surface = extract_surface(*tria);
-        auto               fresh       = std::make_unique<Triangulation<3>>();
         try
           {
-            if (const std::string failed = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory);
-                !failed.empty())
-              r.surface_kept = failed + "; the knife was meshed again inside its worn surface's own triangles";
+            remesh_current(r);
           }
         catch (const InputError &e)
           {
@@ -170,23 +196,6 @@ namespace abrade::fem
             rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r);
             return r;
           }
-        set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, KnifeGeometry::wearable_boundary);
-        tria = std::move(fresh);
-        ++remeshes;
-        r.remeshed = true;
-        r.quality  = mesh_quality(*tria);
-        current_surface = extract_surface(*tria);
-        const SurfaceTransfer transfer(old_surface, current_surface);
-        accumulated = transfer(accumulated);
-        std::vector<double> moved(3 * current_surface.vertices.size());
-        for (unsigned c = 0; c < 3; ++c)
-          {
-            const auto new_c = transfer(displacement, 3, c);
-            for (std::size_t v = 0; v < new_c.size(); ++v)
-              moved[3 * v + c] = new_c[v];
-          }
-        displacement.swap(moved);
-        since_remesh.assign(current_surface.vertices.size(), 0.0);
         if (r.quality.n_inverted > 0)
           throw RunError("the remeshed knife has inverted cells");
       }
@@ -194,6 +203,32 @@ namespace abrade::fem
       current_surface = extract_surface(*tria);
     r.volume = volume();
     return r;
+  }
+
+  SurfaceTransfer KnifeModel::remesh_current(UpdateResult &r)
+  {
+    const SolidSurface old_surface = extract_surface(*tria);
+    auto               fresh       = std::make_unique<Triangulation<3>>();
+    if (const std::string failed = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory); !failed.empty())
+      r.surface_kept = failed + "; the knife was meshed again inside its worn surface's own triangles";
+    set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, KnifeGeometry::wearable_boundary);
+    tria = std::move(fresh);
+    ++remeshes;
+    r.remeshed      = true;
+    r.quality       = mesh_quality(*tria);
+    current_surface = extract_surface(*tria);
+    SurfaceTransfer transfer(old_surface, current_surface);
+    accumulated = transfer(accumulated);
+    std::vector<double> moved(3 * current_surface.vertices.size());
+    for (unsigned c = 0; c < 3; ++c)
+      {
+        const auto new_c = transfer(displacement, 3, c);
+        for (std::size_t v = 0; v < new_c.size(); ++v)
+          moved[3 * v + c] = new_c[v];
+      }
+    displacement.swap(moved);
+    since_remesh.assign(current_surface.vertices.size(), 0.0);
+    return transfer;
   }
 
   double KnifeModel::erosion_spacing() const

@@ -68,7 +68,7 @@ seeds uniform_seeds_resumed 4,5,6 --resume
 for ((u = 1; u < $(wc -l < "$out/edge/trajectory.csv"); ++u)); do
   python3 "$dir/front_2d.py" "$out/edge" --update $u --tolerance 0.0005 --top 0.08
 done
-python3 - "$out" <<'PY'
+python3 - "$out" "$dir" <<'PY'
 import csv, json, math, os, re, sys
 out = sys.argv[1]
 def rows(case):
@@ -85,16 +85,10 @@ def rebuilt_from(case):
     """The first update whose worn surface was built anew as a set (fem/eroded_surface.h)."""
     found = re.findall(r"^update (\d+): the worn surface built anew", open(os.path.join(out, case, "log.txt")).read(), re.M)
     return min(map(int, found)) if found else None
-def swept_exact(D, d, L=0.15, H=0.25, T=0.06, B=0.08):
-    """The inner parallel body's volume lost from depth D to D + d over d x its worn area at D."""
-    sin_a = (T / 2) / math.hypot(T / 2, B)
-    def section(D):  # area and worn perimeter of the pentagon offset by D (the top held)
-        tip, w = D / sin_a, T / 2 - D
-        knee = tip + w * B / (T / 2)
-        area = 2 * w * (H - knee) + w * (knee - tip)
-        return area, 2 * math.hypot(w, knee - tip) + 2 * (H - knee)
-    (a0, p0), (a1, _) = section(D), section(D + d)
-    return ((L - 2 * D) * a0 - (L - 2 * D - 2 * d) * a1) / (d * (2 * a0 + (L - 2 * D) * p0))
+sys.path.insert(0, sys.argv[2])
+from offset_body import swept_over_archard
+def swept_exact(D, d):
+    return swept_over_archard(D, d, L=0.15, H=0.25, T=0.06, B=0.08)
 for case, life in (("uniform", 12000), ("uniform_crossed", 6000), ("uniform_coarse", 7000)):
     u = rows(case)
     before = 0.0

@@ -511,6 +511,9 @@ namespace abrade::coupling::lifetime
         if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
           {
             st.moved = true;
+            if (!st.result.meshed_first.empty())
+              ctx.log.line("update " + std::to_string(update) + ": the knife meshed anew before its vertices moved (" +
+                           st.result.meshed_first + " on the old mesh)");
             if (!st.result.rebuilt.empty())
               ctx.log.line("update " + std::to_string(update) + ": the worn surface built anew (" +
                            st.result.rebuilt + ")" +

@@ -78,6 +78,9 @@ namespace abrade::fem
       /// vertices would have folded, or the moved surface could not be remeshed); empty when
       /// the vertices moved.
       std::string           rebuilt;
+      /// Why the surface before the update was meshed anew before its vertices moved (they
+      /// would have folded on the old mesh); empty when it was not.
+      std::string           meshed_first;
       double                volume_cut_off = 0; ///< [m^3] pieces the wear separated from the part
       double                volume = 0;
     };
@@ -144,6 +147,11 @@ namespace abrade::fem
     /// The worn surface as eroded_surface() builds it from @p before (it cannot fold), meshed
     /// anew; the followed points carried over. Throws RunError when Gmsh cannot mesh it.
     void rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r);
+    /// The knife meshed anew inside its current surface (Gmsh remeshes the surface, keeping
+    /// the edges it classifies), the followed points carried over; @p r gets the quality and
+    /// how it was meshed. Returns the transfer from the old surface to the new one (for fields
+    /// given on the old one). Throws InputError, the knife unchanged, when Gmsh cannot mesh it.
+    SurfaceTransfer remesh_current(UpdateResult &r);
 
     /// The design surface, the fields and the quality threshold of the fresh mesh.
     void start();
