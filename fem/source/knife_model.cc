@@ -4,6 +4,7 @@
 #include <abrade/fem/knife_model.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/mesh_motion.h>
+#include <abrade/fem/surface_filter.h>
 
 #include <deal.II/grid/tria_description.h>
 
@@ -81,6 +82,27 @@ namespace abrade::fem
         }
       return folds;
     }
+
+    /// The depth of an update given on the vertices of @p from, carried to those of @p to (the
+    /// same surface meshed anew): interpolated at each new vertex's closest point, then scaled so
+    /// that the depth over the wearable area, the update's Archard volume, is the one given
+    /// (interpolation flattens a sharply varying field's peaks).
+    std::vector<double> carried_depth(const SurfaceTransfer &transfer, const SolidSurface &from, const SolidSurface &to,
+                                      const std::vector<double> &depth)
+    {
+      std::vector<double> carried = transfer(depth);
+      const auto          a_from = vertex_areas(from, KnifeGeometry::wearable_boundary);
+      const auto          a_to   = vertex_areas(to, KnifeGeometry::wearable_boundary);
+      double              given = 0, now = 0;
+      for (std::size_t v = 0; v < depth.size(); ++v)
+        given += a_from[v] * depth[v];
+      for (std::size_t v = 0; v < carried.size(); ++v)
+        now += a_to[v] * carried[v];
+      if (now > 0)
+        for (double &d : carried)
+          d *= given / now;
+      return carried;
+    }
   } // namespace
 
   KnifeModel::UpdateResult KnifeModel::apply_wear(const std::vector<double> &depth, bool may_rebuild)
@@ -96,7 +118,12 @@ namespace abrade::fem
         r.volume  = volume();
         return r; // end of life: reported, not carried into the mesh
       }
+    move_surface(depth, may_rebuild, r);
+    return r;
+  }
 
+  void KnifeModel::move_surface(const std::vector<double> &depth, bool may_rebuild, UpdateResult &r)
+  {
     // inward, as the offset surface moves (SolidSurface::inward_offsets), the wearable faces
     // only: a vertex of clamped faces only stays, one on a clamped face's rim moves within the
     // clamped plane as the worn faces beside it recede (held still, the rim took 1.6 % of a
@@ -146,22 +173,23 @@ namespace abrade::fem
               {
                 // Gmsh could not mesh it: the knife is as it was, and built anew below
               }
-            if (transfer)
+            if (transfer && first.quality.n_inverted > 0)
+              throw RunError("the remeshed knife has inverted cells");
+            // where Gmsh only filled the surface's own triangles, the vertices are the old ones
+            // and would fold the same way
+            if (transfer && first.surface_kept.empty())
               {
-                if (first.quality.n_inverted > 0)
-                  throw RunError("the remeshed knife has inverted cells");
-                UpdateResult again = apply_wear((*transfer)(depth), may_rebuild);
-                again.remeshed     = true;
-                again.meshed_first = why;
-                if (again.surface_kept.empty())
-                  again.surface_kept = first.surface_kept;
-                return again;
+                move_surface(carried_depth(*transfer, before.surface, current_surface, depth), may_rebuild, r);
+                r.remeshed     = true;
+                r.meshed_first = why;
+                r.remesh_volume_change += first.remesh_volume_change;
+                return;
               }
           }
         if (!may_rebuild)
           throw RunError(why);
         rebuild_eroded(before, why, r);
-        return r;
+        return;
       }
 
     std::map<unsigned, Tensor<1, 3>> prescribed;
@@ -194,7 +222,7 @@ namespace abrade::fem
             // Gmsh can mesh neither the moved surface nor inside its triangles: from the
             // surface before the update, built so that it cannot fold
             rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r);
-            return r;
+            return;
           }
         if (r.quality.n_inverted > 0)
           throw RunError("the remeshed knife has inverted cells");
@@ -202,12 +230,12 @@ namespace abrade::fem
     else
       current_surface = extract_surface(*tria);
     r.volume = volume();
-    return r;
   }
 
   SurfaceTransfer KnifeModel::remesh_current(UpdateResult &r)
   {
     const SolidSurface old_surface = extract_surface(*tria);
+    const double       old_volume  = volume();
     auto               fresh       = std::make_unique<Triangulation<3>>();
     if (const std::string failed = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory); !failed.empty())
       r.surface_kept = failed + "; the knife was meshed again inside its worn surface's own triangles";
@@ -215,9 +243,22 @@ namespace abrade::fem
     tria = std::move(fresh);
     ++remeshes;
     r.remeshed      = true;
-    r.quality       = mesh_quality(*tria);
     current_surface = extract_surface(*tria);
     SurfaceTransfer transfer(old_surface, current_surface);
+    // the new surface's vertices lie on the old surface but went to Gmsh through a binary STL,
+    // in single precision (up to 1.5e-8 m at 0.4 m): each is put back on the old surface, at its
+    // closest point there in double precision
+    std::vector<Tensor<1, 3>> onto(tria->n_vertices());
+    for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
+      if (const Tensor<1, 3> d = transfer.feet()[v] - current_surface.vertices[v];
+          d.norm() < 1e-5 * settings.mesh_size)
+        {
+          onto[current_surface.tria_vertex[v]] = d;
+          current_surface.vertices[v]          = transfer.feet()[v];
+        }
+    move_vertices(*tria, onto);
+    r.quality = mesh_quality(*tria);
+    r.remesh_volume_change += volume() - old_volume;
     accumulated = transfer(accumulated);
     std::vector<double> moved(3 * current_surface.vertices.size());
     for (unsigned c = 0; c < 3; ++c)

@@ -727,6 +727,10 @@ namespace abrade::coupling::lifetime
     line << "update " << update << ": " << n << " cycles (" << tonnes << " t), wear depth " << dmax
          << " m (largest vertex displacement " << *std::max_element(travel.begin(), travel.end())
          << " m), swept/Archard volume " << swept / (n * rates.archard_volume) << (st.result.remeshed ? ", remeshed" : "");
+    // the remesh's own share of the swept volume (Gmsh's new surface inscribed in the old one)
+    if (st.result.remesh_volume_change != 0)
+      line << " (the remesh's own share " << io::format_number(-st.result.remesh_volume_change / (n * rates.archard_volume))
+           << ")";
     ctx.log.line(line.str());
   }
 

@@ -82,6 +82,10 @@ namespace abrade::fem
       /// would have folded on the old mesh); empty when it was not.
       std::string           meshed_first;
       double                volume_cut_off = 0; ///< [m^3] pieces the wear separated from the part
+      /// [m^3] What the remeshes of this update changed of the enclosed volume themselves (new
+      /// minus old: Gmsh's new surface vertices lie on the old surface, so a rounded convex
+      /// region loses the chords' sagitta); the update's swept volume includes it.
+      double                remesh_volume_change = 0;
       double                volume = 0;
     };
 
@@ -152,6 +156,10 @@ namespace abrade::fem
     /// how it was meshed. Returns the transfer from the old surface to the new one (for fields
     /// given on the old one). Throws InputError, the knife unchanged, when Gmsh cannot mesh it.
     SurfaceTransfer remesh_current(UpdateResult &r);
+    /// apply_wear after its worn-through check: the vertices moved by @p depth, the knife meshed
+    /// anew first where they would fold on the mesh as it stands, built as a set where they
+    /// fold on a fresh mesh too (if @p may_rebuild).
+    void move_surface(const std::vector<double> &depth, bool may_rebuild, UpdateResult &r);
 
     /// The design surface, the fields and the quality threshold of the fresh mesh.
     void start();
