@@ -508,6 +508,19 @@ namespace abrade::coupling::lifetime
           {
             error = e.what();
           }
+        // every rank moved its own copy: one whose Gmsh failed where another's did not (a time
+        // limit) took another way, and the copies would part; the same volume and vertex count
+        // on all ranks, or the step is rejected everywhere
+        // (collective: every rank asks, a failed one with -1)
+        if (ranks.size() > 1)
+          {
+            const bool   moved    = error.empty();
+            const double volume   = moved ? knife->volume() : -1;
+            const double vertices = moved ? double(knife->surface().vertices.size()) : -1;
+            const bool   differ   = ranks.max(volume) != ranks.min(volume) || ranks.max(vertices) != ranks.min(vertices);
+            if (moved && differ)
+              error = "the MPI ranks' knives differ after the update (a remesh went another way on one)";
+          }
         if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
           {
             st.moved = true;
