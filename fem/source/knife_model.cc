@@ -83,6 +83,19 @@ namespace abrade::fem
       return folds;
     }
 
+    /// A field of 3-vectors per vertex of a transfer's old surface, carried to its new one.
+    std::vector<double> transferred_vectors(const SurfaceTransfer &transfer, const std::vector<double> &field)
+    {
+      std::vector<double> carried(3 * transfer.feet().size());
+      for (unsigned c = 0; c < 3; ++c)
+        {
+          const auto component = transfer(field, 3, c);
+          for (std::size_t v = 0; v < component.size(); ++v)
+            carried[3 * v + c] = component[v];
+        }
+      return carried;
+    }
+
     /// The depth of an update given on the vertices of @p from, carried to those of @p to (the
     /// same surface meshed anew): interpolated at each new vertex's closest point, then scaled so
     /// that the depth over the wearable area, the update's Archard volume, is the one given
@@ -157,7 +170,7 @@ namespace abrade::fem
       {
         const std::string why = std::to_string(folds) + " triangle(s) of the moved surface would fold";
         // Most folds are vertices the receding fronts overtake: a vertex of the bevel near a
-        // chisel tip, which shrinks the bevel by three times the depth. The surface meshed anew
+        // chisel tip, which shrinks the bevel by 2.67 times the depth. The surface meshed anew
         // before the step has its vertices a triangle's height from its edges again, and its
         // planes and edges exactly (Gmsh keeps the edges it classifies); the step is tried
         // once more from there, its depth carried to the new vertices.
@@ -173,8 +186,6 @@ namespace abrade::fem
               {
                 // Gmsh could not mesh it: the knife is as it was, and built anew below
               }
-            if (transfer && first.quality.n_inverted > 0)
-              throw RunError("the remeshed knife has inverted cells");
             // where Gmsh only filled the surface's own triangles, the vertices are the old ones
             // and would fold the same way
             if (transfer && first.surface_kept.empty())
@@ -224,8 +235,6 @@ namespace abrade::fem
             rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r);
             return;
           }
-        if (r.quality.n_inverted > 0)
-          throw RunError("the remeshed knife has inverted cells");
       }
     else
       current_surface = extract_surface(*tria);
@@ -259,16 +268,11 @@ namespace abrade::fem
     move_vertices(*tria, onto);
     r.quality = mesh_quality(*tria);
     r.remesh_volume_change += volume() - old_volume;
-    accumulated = transfer(accumulated);
-    std::vector<double> moved(3 * current_surface.vertices.size());
-    for (unsigned c = 0; c < 3; ++c)
-      {
-        const auto new_c = transfer(displacement, 3, c);
-        for (std::size_t v = 0; v < new_c.size(); ++v)
-          moved[3 * v + c] = new_c[v];
-      }
-    displacement.swap(moved);
+    accumulated  = transfer(accumulated);
+    displacement = transferred_vectors(transfer, displacement);
     since_remesh.assign(current_surface.vertices.size(), 0.0);
+    if (r.quality.n_inverted > 0)
+      throw RunError("the remeshed knife has inverted cells");
     return transfer;
   }
 
@@ -310,13 +314,7 @@ namespace abrade::fem
     // closest to it (its fields there), moved on by the step between them
     const SurfaceTransfer transfer(before.surface, current_surface);
     accumulated = transfer(before.accumulated);
-    displacement.assign(3 * current_surface.vertices.size(), 0.0);
-    for (unsigned c = 0; c < 3; ++c)
-      {
-        const auto old_c = transfer(before.displacement, 3, c);
-        for (std::size_t v = 0; v < old_c.size(); ++v)
-          displacement[3 * v + c] = old_c[v];
-      }
+    displacement = transferred_vectors(transfer, before.displacement);
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
       {
         const Tensor<1, 3> step = current_surface.vertices[v] - transfer.feet()[v];

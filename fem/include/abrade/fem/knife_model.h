@@ -154,7 +154,8 @@ namespace abrade::fem
     /// The knife meshed anew inside its current surface (Gmsh remeshes the surface, keeping
     /// the edges it classifies), the followed points carried over; @p r gets the quality and
     /// how it was meshed. Returns the transfer from the old surface to the new one (for fields
-    /// given on the old one). Throws InputError, the knife unchanged, when Gmsh cannot mesh it.
+    /// given on the old one). Throws InputError, the knife unchanged, when Gmsh cannot mesh it;
+    /// RunError when the new mesh has inverted cells.
     SurfaceTransfer remesh_current(UpdateResult &r);
     /// apply_wear after its worn-through check: the vertices moved by @p depth, the knife meshed
     /// anew first where they would fold on the mesh as it stands, built as a set where they
