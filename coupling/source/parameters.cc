@@ -326,6 +326,12 @@ namespace abrade::coupling
                       "inward normal, as a function of the knife's current coordinates x, y, z (the "
                       "knife's own frame, see Recession points) and of t, the tonnes handled so far, e.g. "
                       "'1e-6*exp(-z/0.01)' or '1e-6*(1+t/5000)'; evaluated at the surface's vertices. muparser syntax.");
+    prm.declare_entry("Analytic wear is", "depth", Selection("depth|volume"),
+                      "Wear source = analytic: depth: the surface recedes by the rate x tonnes along its "
+                      "normal (the offset surface, exact: verification of the motion); volume: the rate x "
+                      "tonnes x each vertex's area is a volume removed, as the DEM's Archard volume is, "
+                      "and every update's moved surface is corrected so that the knife loses exactly it "
+                      "(an offset surface loses less at convex edges).");
     prm.declare_entry("Analytic seed scatter", "0", Double(0, 1),
                       "[-] Wear source = analytic: each bed's rate is multiplied by a lognormal factor "
                       "of mean 1 and this relative standard deviation, drawn from the bed's seed (a fresh "

@@ -156,14 +156,24 @@ namespace abrade::field
     const std::size_t coarse_points = std::min<std::size_t>(settings.max_points, 2000);
     Mat4              best          = Mat4::Identity();
     double            best_rms      = std::numeric_limits<double>::infinity();
+    // The scan as it is wins unless another start fits clearly better (by 5 %): a part
+    // symmetric under a half turn (a double-bevel knife) fits its design turned round almost as
+    // well, and which of the two a worn scan's noise preferred flipped a scan already in the
+    // model's frame (field/round_trip: registered on the unworn top, half turn about z)
+    double as_it_is = std::numeric_limits<double>::infinity();
+    Mat4   kept     = Mat4::Identity();
     for (const Mat4 &start : candidates)
       {
         auto         src = landmarks(scan, coarse_points, start);
         const Mat4   m   = icp(src, model.data, 40);
         const double rms = rms_distance(src, model.data, m);
+        if (&start == &candidates.front())
+          as_it_is = rms, kept = m * start;
         if (rms < best_rms)
           best_rms = rms, best = m * start;
       }
+    if (as_it_is <= 1.05 * best_rms)
+      best = kept;
     // full ICP from the best candidate
     {
       auto src     = landmarks(scan, settings.max_points, best);

@@ -26,8 +26,8 @@ namespace abrade::coupling::lifetime
     class AnalyticWearSource : public WearSource
     {
     public:
-      AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, double scatter)
-        : tonnes_per_cycle(tonnes_per_cycle), scatter(scatter)
+      AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, double scatter, bool as_volume)
+        : tonnes_per_cycle(tonnes_per_cycle), scatter(scatter), as_volume(as_volume)
       {
         try
           {
@@ -74,16 +74,19 @@ namespace abrade::coupling::lifetime
 
       std::vector<std::string> phases() const override { return {}; }
 
+      bool removes_volume() const override { return as_volume; }
+
     private:
       dealii::FunctionParser<3> rate;
       double                    tonnes_per_cycle;
       double                    scatter; // relative, per bed
+      bool                      as_volume;
     };
   } // namespace
 
   std::unique_ptr<WearSource> make_analytic_wear_source(const std::string &expression, double tonnes_per_cycle,
-                                                        double seed_scatter)
+                                                        double seed_scatter, bool as_volume)
   {
-    return std::make_unique<AnalyticWearSource>(expression, tonnes_per_cycle, seed_scatter);
+    return std::make_unique<AnalyticWearSource>(expression, tonnes_per_cycle, seed_scatter, as_volume);
   }
 } // namespace abrade::coupling::lifetime

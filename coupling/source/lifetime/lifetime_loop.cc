@@ -122,6 +122,7 @@ namespace abrade::coupling::lifetime
     s.analytic        = prm.get("Wear source") == "analytic";
     s.rate_expression = prm.get("Analytic wear rate");
     s.seed_scatter    = prm.get_double("Analytic seed scatter");
+    s.rate_is_volume  = prm.get("Analytic wear is") == "volume";
     s.target_interval = prm.get_double("Target interval");
     s.max_beds        = prm.get_integer("Maximum beds");
     s.max_edge_recession  = prm.get_double("Maximum edge recession");
@@ -178,7 +179,7 @@ namespace abrade::coupling::lifetime
     if (s.analytic)
       try
         {
-          source = make_analytic_wear_source(s.rate_expression, s.tonnes_per_cycle, s.seed_scatter);
+          source = make_analytic_wear_source(s.rate_expression, s.tonnes_per_cycle, s.seed_scatter, s.rate_is_volume);
         }
       catch (const std::invalid_argument &e)
         {
@@ -502,7 +503,9 @@ namespace abrade::coupling::lifetime
               knife->load(checkpoints->knife_file(update - 1));
             // the moved vertices are exact where they do not fold, and a smaller step often
             // does not: the surface is built anew as a set only from the third attempt on
-            st.result = knife->apply_wear(depth(n), attempt >= 2 || n == 1);
+            // a source of volumes (the DEM's): the knife loses exactly the volume worn
+            st.result = knife->apply_wear(depth(n), attempt >= 2 || n == 1,
+                                          source->removes_volume() ? n * rates.archard_volume : 0.0);
           }
         catch (const std::exception &e)
           {
@@ -526,7 +529,7 @@ namespace abrade::coupling::lifetime
             st.moved = true;
             if (!st.result.meshed_first.empty())
               ctx.log.line("update " + std::to_string(update) + ": the knife meshed anew before its vertices moved (" +
-                           st.result.meshed_first + " on the old mesh)");
+                           st.result.meshed_first + ")");
             if (!st.result.rebuilt.empty())
               ctx.log.line("update " + std::to_string(update) + ": the worn surface built anew (" +
                            st.result.rebuilt + ")" +
@@ -740,6 +743,9 @@ namespace abrade::coupling::lifetime
     line << "update " << update << ": " << n << " cycles (" << tonnes << " t), wear depth " << dmax
          << " m (largest vertex displacement " << *std::max_element(travel.begin(), travel.end())
          << " m), swept/Archard volume " << swept / (n * rates.archard_volume) << (st.result.remeshed ? ", remeshed" : "");
+    // the depth scaled so that the offset surface removes the volume worn
+    if (st.result.offset_scale != 1)
+      line << " (the depth x " << io::format_number(st.result.offset_scale) << " to remove the volume worn)";
     // the remesh's own share of the swept volume (Gmsh's new surface inscribed in the old one)
     if (st.result.remesh_volume_change != 0)
       line << " (the remesh's own share " << io::format_number(-st.result.remesh_volume_change / (n * rates.archard_volume))

@@ -86,6 +86,9 @@ namespace abrade::fem
       /// minus old: Gmsh's new surface vertices lie on the old surface, so a rounded convex
       /// region loses the chords' sagitta); the update's swept volume includes it.
       double                remesh_volume_change = 0;
+      /// apply_wear with a volume to remove: the factor on the depth by which the offset surface
+      /// removes it (above 1 at convex edges); 1 otherwise.
+      double                offset_scale = 1;
       double                volume = 0;
     };
 
@@ -94,7 +97,14 @@ namespace abrade::fem
     /// @p may_rebuild, else RunError ("... would fold"): the moved vertices are exact wherever
     /// they do not fold, and a smaller step often does not (the lifetime loop halves the step
     /// twice before it lets the surface be built anew).
-    UpdateResult apply_wear(const std::vector<double> &depth, bool may_rebuild = true);
+    /// @p volume > 0: the update removes this volume of material [m^3] (a wear source that
+    /// gives volumes, as Archard's law does): the surface offset by @p depth removes less of it
+    /// at convex edges (the offset faces cut each other short) and a remesh's chords cut some
+    /// more: the depth is scaled as a whole so that the moved surface encloses @p volume less
+    /// (a remesh before the move included; one after it, where the moved mesh degraded, is
+    /// not: UpdateResult::remesh_volume_change says how much it changed). 0: @p depth is the
+    /// depth itself (a known rate, verification).
+    UpdateResult apply_wear(const std::vector<double> &depth, bool may_rebuild = true, double volume = 0);
 
     const SolidSurface           &surface() const { return current_surface; }
     /// The wear depth of every vertex of surface(): its distance inside the design surface [m].
@@ -157,10 +167,20 @@ namespace abrade::fem
     /// given on the old one). Throws InputError, the knife unchanged, when Gmsh cannot mesh it;
     /// RunError when the new mesh has inverted cells.
     SurfaceTransfer remesh_current(UpdateResult &r);
+    /// The knife meshed anew inside its current surface (@p from), then moved by @p depth
+    /// (given on @p from) carried to the new vertices, the remesh's change of the volume part of
+    /// @p volume; @p r says it was meshed first, and @p why. False, the knife as it was, where
+    /// Gmsh could not remesh it (or only filled its own triangles).
+    bool remesh_then_move(const SolidSurface &from, const std::vector<double> &depth, bool may_rebuild, UpdateResult &r,
+                          double volume, const std::string &why);
     /// apply_wear after its worn-through check: the vertices moved by @p depth, the knife meshed
     /// anew first where they would fold on the mesh as it stands, built as a set where they
     /// fold on a fresh mesh too (if @p may_rebuild).
-    void move_surface(const std::vector<double> &depth, bool may_rebuild, UpdateResult &r);
+    /// @p volume > 0: the depth scaled so that the moved surface encloses that much less.
+    /// @p may_mesh_first: whether a mesh that needs remeshing after the step may be meshed
+    /// anew before it instead (a volume to remove).
+    void move_surface(const std::vector<double> &depth, bool may_rebuild, UpdateResult &r, double volume = 0,
+                      bool may_mesh_first = true);
 
     /// The design surface, the fields and the quality threshold of the fresh mesh.
     void start();

@@ -69,6 +69,7 @@ namespace abrade::coupling::lifetime
       bool                          analytic    = false;
       std::string                   rate_expression;
       double                        seed_scatter = 0;
+      bool                          rate_is_volume = false; // Analytic wear is = volume
       double                        target_interval = 0; ///< relative half-width; 0: none
       double                        max_edge_recession = 0, min_plate_thickness = 0, gauge_height = 0;
       long                          gauge_stations = 41;

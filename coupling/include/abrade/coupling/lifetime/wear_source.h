@@ -45,6 +45,10 @@ namespace abrade::coupling::lifetime
     /// The coefficient the wear scales with (the knife's law of Output/Wear field: Archard's W;
     /// 0: none, or not the DEM's).
     virtual double wear_coefficient() const { return 0; }
+    /// Whether the wear is a volume of material removed (Archard's law measures one): the
+    /// loop then has the moved knife lose exactly that volume in every update
+    /// (KnifeModel::apply_wear). A known depth rate (verification) is not.
+    virtual bool removes_volume() const { return true; }
   };
 
   /// A known wear rate: @p expression, depth per tonne [m/t] as a function of x, y, z [m] (the
@@ -54,9 +58,10 @@ namespace abrade::coupling::lifetime
   /// of mean 1 and relative standard deviation @p seed_scatter, exp(sigma z - sigma^2 / 2) with
   /// sigma^2 = ln(1 + scatter^2) and z a standard normal number drawn from the bed's seed (a
   /// known bed-to-bed scatter, to test the interval). Throws std::invalid_argument when the
-  /// expression cannot be evaluated.
+  /// expression cannot be evaluated. @p as_volume: rate x tonnes x area is a volume removed
+  /// (WearSource::removes_volume), as the DEM's wear is; else the depth itself.
   std::unique_ptr<WearSource> make_analytic_wear_source(const std::string &expression, double tonnes_per_cycle,
-                                                        double seed_scatter);
+                                                        double seed_scatter, bool as_volume = false);
 
   /// The DEM: one cycle per bed seed from that seed's settled bed (beds/bed-seedN.bed in the
   /// output directory, settled on first use; the beds of derived seeds are deleted after their
