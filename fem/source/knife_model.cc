@@ -99,7 +99,9 @@ namespace abrade::fem
     }
 
     /// The factor on vertex @p moves of surface @p s by which the enclosed volume falls by
-    /// @p volume (a cubic in it: secant iterations from 1); 1 where none is found near it.
+    /// @p volume (a cubic in it: secant iterations from 1); 0 where none is found between 0.5
+    /// and 2 (the offset's own volume is within a few % of depth x area on a surface it does
+    /// not fold).
     double offset_scale_for_volume(const SolidSurface &s, const std::vector<Tensor<1, 3>> &moves, double volume)
     {
       const double v0   = enclosed_volume(s, moves, 0);
@@ -110,9 +112,7 @@ namespace abrade::fem
           const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
           x0 = x1, f0 = f1, x1 = x2, f1 = miss(x1);
         }
-      // the offset's own volume is within a few % of depth x area: a factor far from 1 is a
-      // surface the moves fold (the set-based rebuild then takes the depth as it is)
-      return std::isfinite(x1) && x1 > 0.5 && x1 < 2 ? x1 : 1.0;
+      return std::isfinite(x1) && x1 > 0.5 && x1 < 2 && std::abs(f1) <= 1e-6 * volume ? x1 : 0.0;
     }
 
     /// A field of 3-vectors per vertex of a transfer's old surface, carried to its new one.
@@ -194,27 +194,38 @@ namespace abrade::fem
     std::vector<Tensor<1, 3>> moves(offsets.size());
     for (std::size_t v = 0; v < offsets.size(); ++v)
       moves[v] = clamped[v] ? Tensor<1, 3>() : offsets[v];
-    // a volume to remove (Archard's): the offset surface removes less of it at convex edges,
-    // where the offset faces cut each other short (0.985 of depth x area on the 30 mm reference
-    // knife at 2 mm steps, 0.94 at 4 mm: it is first order in the step, as the area shrinks
-    // over it). The offsets are linear in the depth: the update's depth, scaled as a whole,
-    // removes the volume given (the rate per area the update began with, held over the area
-    // as it shrinks); the worn surface stays the offset of the scaled depth, planes plane.
-    if (volume > 0)
+    // A volume to remove (Archard's): the offset surface removes less than depth x area where
+    // the worn area shrinks as it recedes, at convex edges (0.985 of it on the 30 mm reference
+    // knife at 2 mm steps, 0.970 at 4 mm: first order in the step). The offsets are linear in
+    // the depth: the update's depth, scaled as a whole, removes the volume given (the volume
+    // rate the update began with held over it, where the depth alone holds the depth rate;
+    // one factor, so the wear stays distributed as deposited and planes stay planes). Not
+    // where the moves fold (the enclosed volume of a folded surface counts its turned loops
+    // negative): the fresh mesh below scales its own step, the set-based rebuild takes the
+    // depth as it is.
+    const std::size_t folds = folding_triangles(current_surface, moves);
+    if (volume > 0 && folds == 0)
       {
         const double scale = offset_scale_for_volume(current_surface, moves, volume);
-        for (std::size_t v = 0; v < moves.size(); ++v)
-          moves[v] *= scale, offsets[v] *= scale, depth[v] *= scale;
-        r.offset_scale = scale;
+        if (scale > 0)
+          {
+            for (std::size_t v = 0; v < moves.size(); ++v)
+              moves[v] *= scale, offsets[v] *= scale, depth[v] *= scale;
+            r.offset_scale = scale;
+          }
+        else
+          r.volume_note = "no factor between 0.5 and 2 on the depth removes the volume worn: the depth as it is";
       }
     std::vector<double> wearing = depth;
     for (std::size_t v = 0; v < clamped.size(); ++v)
       if (clamped[v])
         wearing[v] = 0;
     const Before before{current_surface, wearing, accumulated, displacement};
-    if (const std::size_t folds = folding_triangles(current_surface, moves); folds > 0)
+    if (folds > 0 || folding_triangles(current_surface, moves) > 0)
       {
-        const std::string why = std::to_string(folds) + " triangle(s) of the moved surface would fold";
+        const std::string why =
+          std::to_string(std::max(folds, folding_triangles(current_surface, moves))) +
+          " triangle(s) of the moved surface would fold";
         // Most folds are vertices the receding fronts overtake: a vertex of the bevel near a
         // chisel tip, which shrinks the bevel by 2.67 times the depth. The surface meshed anew
         // before the step has its vertices a triangle's height from its edges again, and its
@@ -237,15 +248,17 @@ namespace abrade::fem
     std::map<unsigned, Tensor<1, 3>> prescribed;
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
       prescribed[current_surface.tria_vertex[v]] = moves[v];
-    MeshMotion motion(*tria, {1, settings.stiffening, 1e-10});
-    motion.solve(prescribed, {});
-    move_vertices(*tria, motion.vertex_displacements());
+    {
+      // (its DoF handler holds on to the triangulation: gone before the step may be undone)
+      MeshMotion motion(*tria, {1, settings.stiffening, 1e-10});
+      motion.solve(prescribed, {});
+      move_vertices(*tria, motion.vertex_displacements());
+    }
     double moved_most = 0;
     for (std::size_t v = 0; v < accumulated.size(); ++v)
       {
         const Tensor<1, 3> d = prescribed[current_surface.tria_vertex[v]];
-        // how far the surface receded here (a volume correction may move it back out)
-        accumulated[v] += clamped[v] ? 0.0 : (depth[v] < 0 ? -1 : 1) * offsets[v].norm();
+        accumulated[v] += clamped[v] ? 0.0 : offsets[v].norm(); // how far the surface receded here
         for (unsigned c = 0; c < 3; ++c)
           displacement[3 * v + c] += d[c];
         since_remesh[v] += d.norm();
@@ -320,11 +333,15 @@ namespace abrade::fem
     if (!first.surface_kept.empty())
       return false;
     // (the remesh's own change of the volume is part of the update's)
-    move_surface(carried_depth(*transfer, from, current_surface, depth), may_rebuild, r,
-                 volume > 0 ? volume + first.remesh_volume_change : 0.0);
+    const double rest = volume > 0 ? volume + first.remesh_volume_change : 0.0;
+    if (volume > 0 && !(rest > 0))
+      r.volume_note = "the remesh before the step took more than the volume worn: the depth as it is";
+    move_surface(carried_depth(*transfer, from, current_surface, depth), may_rebuild, r, rest > 0 ? rest : 0.0);
     r.remeshed     = true;
     r.meshed_first = why;
     r.remesh_volume_change += first.remesh_volume_change;
+    if (rest > 0)
+      r.remesh_volume_taken_off += first.remesh_volume_change;
     return true;
   }
 

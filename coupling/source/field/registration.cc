@@ -156,17 +156,26 @@ namespace abrade::field
     const std::size_t coarse_points = std::min<std::size_t>(settings.max_points, 2000);
     Mat4              best          = Mat4::Identity();
     double            best_rms      = std::numeric_limits<double>::infinity();
-    // The scan as it is wins unless another start fits clearly better (by 5 %): a part
-    // symmetric under a half turn (a double-bevel knife) fits its design turned round almost as
-    // well, and which of the two a worn scan's noise preferred flipped a scan already in the
-    // model's frame (field/round_trip: registered on the unworn top, half turn about z)
+    // Each start is judged where the scan should fit: in the registration region if one is
+    // given (the unworn part), else everywhere. The scan as it is wins unless another start
+    // fits clearly better (by 5 %): a part symmetric under a half turn (a double-bevel knife)
+    // fits its design turned round almost as well, and which of the two a worn scan's noise
+    // preferred flipped a scan already in the model's frame (field/round_trip: registered on
+    // the unworn top, a half turn about z)
+    // (@p src: the scan's landmarks moved by the start, @p m: ICP's transform from there)
+    auto judged = [&](const Mat4 &start, vtkPolyData *src, const Mat4 &m) {
+      if (settings.region)
+        if (auto inside = landmarks(scan, coarse_points, m * start, settings.region); inside->GetNumberOfPoints() >= 10)
+          return rms_distance(inside, model.data);
+      return rms_distance(src, model.data, m);
+    };
     double as_it_is = std::numeric_limits<double>::infinity();
     Mat4   kept     = Mat4::Identity();
     for (const Mat4 &start : candidates)
       {
         auto         src = landmarks(scan, coarse_points, start);
         const Mat4   m   = icp(src, model.data, 40);
-        const double rms = rms_distance(src, model.data, m);
+        const double rms = judged(start, src, m);
         if (&start == &candidates.front())
           as_it_is = rms, kept = m * start;
         if (rms < best_rms)

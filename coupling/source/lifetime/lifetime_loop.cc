@@ -536,6 +536,8 @@ namespace abrade::coupling::lifetime
                            (st.result.volume_cut_off > 0
                               ? "; " + io::format_number(st.result.volume_cut_off * 1e6) + " cm^3 cut off by the wear"
                               : std::string()));
+            if (!st.result.volume_note.empty())
+              ctx.log.warning("update " + std::to_string(update) + ": " + st.result.volume_note);
             if (!st.result.surface_kept.empty())
               {
                 ++surfaces_kept;
@@ -746,10 +748,14 @@ namespace abrade::coupling::lifetime
     // the depth scaled so that the offset surface removes the volume worn
     if (st.result.offset_scale != 1)
       line << " (the depth x " << io::format_number(st.result.offset_scale) << " to remove the volume worn)";
-    // the remesh's own share of the swept volume (Gmsh's new surface inscribed in the old one)
-    if (st.result.remesh_volume_change != 0)
-      line << " (the remesh's own share " << io::format_number(-st.result.remesh_volume_change / (n * rates.archard_volume))
-           << ")";
+    // the remesh's own share of the swept volume (Gmsh's new surface inscribed in the old one):
+    // of a remesh before the step, taken off the step's volume; of one after it, not
+    const double taken_off = st.result.remesh_volume_taken_off;
+    if (taken_off != 0)
+      line << " (a remesh before the step took " << io::format_number(-taken_off / (n * rates.archard_volume))
+           << " of it, the step the rest)";
+    if (const double after = st.result.remesh_volume_change - taken_off; after != 0)
+      line << " (the remesh's own share " << io::format_number(-after / (n * rates.archard_volume)) << ")";
     ctx.log.line(line.str());
   }
 

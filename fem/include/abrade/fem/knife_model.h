@@ -89,6 +89,12 @@ namespace abrade::fem
       /// apply_wear with a volume to remove: the factor on the depth by which the offset surface
       /// removes it (above 1 at convex edges); 1 otherwise.
       double                offset_scale = 1;
+      /// [m^3] The part of remesh_volume_change of remeshes before the step, which the step's
+      /// volume took into account (the rest came after the step: not compensated).
+      double                remesh_volume_taken_off = 0;
+      /// Why the volume given could not be removed exactly (a sentence for the log); empty
+      /// otherwise.
+      std::string           volume_note;
       double                volume = 0;
     };
 
