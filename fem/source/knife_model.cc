@@ -274,7 +274,17 @@ namespace abrade::fem
         // remove, the step is undone, the knife meshed anew first and the step taken on the
         // fresh mesh, the remesh's change part of the volume (not again if that mesh, too,
         // needs a remesh after its step).
-        if (volume > 0 && may_mesh_first && *std::max_element(since_before.begin(), since_before.end()) > 0)
+        const bool fresh = *std::max_element(since_before.begin(), since_before.end()) == 0;
+        if (volume > 0 && fresh && r.quality.n_inverted == 0)
+          {
+            // a fresh mesh that needs remeshing after one step: meshing it anew before the step
+            // would not help; it is meshed anew before the next update's step instead (its
+            // change of the volume then taken off that step), unless its cells turned inside out
+            current_surface = extract_surface(*tria);
+            r.volume        = KnifeModel::volume();
+            return;
+          }
+        if (volume > 0 && may_mesh_first && !fresh)
           {
             tria->clear();
             tria->copy_triangulation(unmoved);

@@ -106,10 +106,13 @@ namespace abrade::fem
     /// @p volume > 0: the update removes this volume of material [m^3] (a wear source that
     /// gives volumes, as Archard's law does): the surface offset by @p depth removes less of it
     /// at convex edges (the offset faces cut each other short) and a remesh's chords cut some
-    /// more: the depth is scaled as a whole so that the moved surface encloses @p volume less
-    /// (a remesh before the move included; one after it, where the moved mesh degraded, is
-    /// not: UpdateResult::remesh_volume_change says how much it changed). 0: @p depth is the
-    /// depth itself (a known rate, verification).
+    /// more: the depth is scaled as a whole so that the moved surface encloses @p volume less,
+    /// and where the moved mesh would need remeshing the step is undone and taken on a mesh
+    /// made anew first, the remesh's change of the volume taken off the step's (a fresh mesh
+    /// keeps its first step until the next update; only inverted cells are remeshed after
+    /// the step, uncompensated: UpdateResult::remesh_volume_change minus
+    /// remesh_volume_taken_off). 0: @p depth is the depth itself (a known rate,
+    /// verification).
     UpdateResult apply_wear(const std::vector<double> &depth, bool may_rebuild = true, double volume = 0);
 
     const SolidSurface           &surface() const { return current_surface; }
