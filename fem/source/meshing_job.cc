@@ -120,7 +120,8 @@ namespace abrade::fem
                                      number(s.max_volume),
                                      number(s.max_cells),
                                      s.solid.empty() ? "-" : s.solid,
-                                     job.kind};
+                                     job.kind,
+                                     number(s.classify_angle)};
     std::vector<char *> argv;
     for (auto &a : args)
       argv.push_back(a.data());
@@ -216,7 +217,7 @@ namespace abrade::fem
 
   int meshing_job_main(int argc, char **argv)
   {
-    if (argc != 12 && argc != 13)
+    if (argc < 12 || argc > 14)
       {
         std::fprintf(stderr, "abrade-mesher: abrade's Gmsh child process (started by abrade, not by hand)\n");
         return 1;
@@ -233,7 +234,9 @@ namespace abrade::fem
     job.settings.max_volume    = std::atof(argv[9]);
     job.settings.max_cells     = std::atof(argv[10]);
     job.settings.solid         = std::string(argv[11]) == "-" ? "" : argv[11];
-    job.kind                   = argc == 13 ? argv[12] : "volume";
+    job.kind                   = argc >= 13 ? argv[12] : "volume";
+    if (argc == 14)
+      job.settings.classify_angle = std::atof(argv[13]);
     try
       {
         const auto    notes = run_meshing_job_here(job);

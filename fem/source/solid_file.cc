@@ -621,7 +621,7 @@ namespace abrade::fem
       check_volume(path, enclosed_volume_of_triangles() * std::pow(settings.scale, 3), h, settings);
       if (!keep_triangles)
         {
-          gmsh::model::mesh::classifySurfaces(15 * M_PI / 180, true, true, M_PI);
+          gmsh::model::mesh::classifySurfaces(settings.classify_angle * M_PI / 180, true, true, M_PI);
           gmsh::model::mesh::createGeometry();
         }
       gmsh::vectorpair surfaces;

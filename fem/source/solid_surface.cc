@@ -311,7 +311,27 @@ namespace abrade::fem
     // the two ways, in the order asked: Gmsh remeshes the surface (its triangles then need not
     // be good ones, but its reparametrisation can cut sharp edges between its new vertices), or
     // it fills the volume inside the surface's own triangles (exact, and as good as they are)
-    auto remeshed = [&] { read_solid(stl, h, new_tria, as_is); };
+    // Gmsh's classification of a worn surface into patches it can reparametrise is erratic: a
+    // bolted edge's worn surface that it refused at 15 degrees ("Invalid boundary mesh
+    // (overlapping facets)" inside one patch) meshed at 20, 25, 40 and more, and aborted Gmsh at
+    // 30 and 35 (in its child process). Larger angles in turn before the surface's own triangles
+    // (an edge of less than the angle is then cut by chords, within the surface's own points);
+    // a time limit is not tried again.
+    auto remeshed = [&] {
+      for (const double angle : {15.0, 20.0, 25.0, 40.0})
+        try
+          {
+            as_is.classify_angle = angle;
+            read_solid(stl, h, new_tria, as_is);
+            return;
+          }
+        catch (const InputError &e)
+          {
+            new_tria.clear();
+            if (angle == 40.0 || std::string(e.what()).find("did not finish meshing") != std::string::npos)
+              throw;
+          }
+    };
     auto filled   = [&] { read_closed_triangles(stl, h, new_tria, as_is.mesher_time_limit); };
     std::string kept;
     new_tria.clear();

@@ -1,6 +1,9 @@
 // The knife's boundary surface (outward, closed, the solid's volume by the divergence theorem),
 // solids read from STL and .msh files, and remeshing from the current boundary.
 #include <abrade/common/error.h>
+#include <abrade/common/vtk_input.h>
+
+#include <vtkPolyData.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_file.h>
@@ -187,6 +190,28 @@ TEST(SolidSurface, BadSolidFilesAreClearErrors)
     {
       EXPECT_NE(std::string(e.what()).find("abrade_open.stl"), std::string::npos) << e.what();
     }
+}
+
+// A bolted edge's worn surface (written by a DEM lifetime run of cases/bolted_edge, session 20)
+// that Gmsh refused to remesh with its facets classified at 15 degrees ("Invalid boundary mesh
+// (overlapping facets) on surface 6"): the run then filled the knife inside the surface's own
+// triangles, whose vertices fold again on the next step. The remesh tries larger angles in turn
+// (20 degrees meshes it) before it fills: remeshed, nothing kept.
+TEST(Remesh, WornSurfaceGmshRefusesAtFifteenDegrees)
+{
+  const abrade::io::PolyData surface =
+    abrade::io::triangles_of(abrade::io::read_polydata(std::string(ABRADE_TESTS_DIR) + "/lifetime/worn_bolted_edge.stl"));
+  SolidSurface       ids;
+  for (std::size_t k = 0; k < surface.points.size(); k += 3)
+    ids.vertices.emplace_back(surface.points[k], surface.points[k + 1], surface.points[k + 2]);
+  for (const auto &t : surface.triangles)
+    ids.triangles.push_back({unsigned(t[0]), unsigned(t[1]), unsigned(t[2])});
+  ids.boundary_id.assign(ids.triangles.size(), 0);
+  Triangulation<3>  fresh;
+  const std::string kept = mesh_closed_surface(surface, 0.02, fresh, tmp("abrade_worn_bolted"), ids);
+  EXPECT_EQ(kept, "") << "filled inside its own triangles instead of remeshed";
+  EXPECT_GT(fresh.n_active_cells(), 0u);
+  EXPECT_EQ(mesh_quality(fresh).n_inverted, 0u);
 }
 
 TEST(SolidSurface, RemeshKeepsTheShapeAndBoundaryIds)

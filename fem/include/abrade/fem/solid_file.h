@@ -56,6 +56,10 @@ namespace abrade::fem
     /// [s] How long Gmsh may mesh the part (it runs in a child process: fem/meshing_job.h); 0:
     /// ABRADE_MESHER_TIME_LIMIT, or 1800 s.
     double mesher_time_limit = 0;
+    /// [degrees] An STL remeshed by Gmsh keeps the facets' edges where they meet at more than
+    /// this (its surface classification; the patches between are reparametrised and meshed
+    /// anew).
+    double classify_angle = 15;
   };
 
   /// What reading a solid file found out, for the log and summary.json.
