@@ -84,28 +84,14 @@ namespace abrade::fem
       return folds;
     }
 
-    /// The volume that closed surface @p s encloses with each vertex moved by @p scale times
-    /// its @p moves (the divergence theorem over its triangles) [m^3].
-    double enclosed_volume(const SolidSurface &s, const std::vector<Tensor<1, 3>> &moves, double scale)
-    {
-      double six_v = 0;
-      for (const auto &t : s.triangles)
-        {
-          const Point<3> a = s.vertices[t[0]] + scale * moves[t[0]], b = s.vertices[t[1]] + scale * moves[t[1]],
-                         c = s.vertices[t[2]] + scale * moves[t[2]];
-          six_v += a * cross_product_3d(Tensor<1, 3>(b), Tensor<1, 3>(c));
-        }
-      return std::abs(six_v) / 6;
-    }
-
     /// The factor on vertex @p moves of surface @p s by which the enclosed volume falls by
     /// @p volume (a cubic in it: secant iterations from 1); 0 where none is found between 0.5
     /// and 2 (the offset's own volume is within a few % of depth x area on a surface it does
     /// not fold).
     double offset_scale_for_volume(const SolidSurface &s, const std::vector<Tensor<1, 3>> &moves, double volume)
     {
-      const double v0   = enclosed_volume(s, moves, 0);
-      auto         miss = [&](double x) { return v0 - enclosed_volume(s, moves, x) - volume; };
+      const double v0   = enclosed_volume(s);
+      auto         miss = [&](double x) { return v0 - enclosed_volume(s, &moves, x) - volume; };
       double       x0 = 1, x1 = 1.01, f0 = miss(x0), f1 = miss(x1);
       for (int k = 0; k < 30 && std::abs(f1) > 1e-10 * volume && f1 != f0; ++k)
         {
@@ -286,12 +272,15 @@ namespace abrade::fem
           }
         if (volume > 0 && may_mesh_first && !fresh)
           {
-            tria->clear();
-            tria->copy_triangulation(unmoved);
-            current_surface = before.surface;
-            accumulated     = before.accumulated;
-            displacement    = before.displacement;
-            since_remesh    = since_before;
+            auto undo = [&] {
+              tria->clear();
+              tria->copy_triangulation(unmoved);
+              current_surface = before.surface;
+              accumulated     = before.accumulated;
+              displacement    = before.displacement;
+              since_remesh    = since_before;
+            };
+            undo();
             std::ostringstream why;
             why << "after the step its mesh would need remeshing (moved " << io::format_number(1e3 * moved_most)
                 << " mm since the last remesh, minimum scaled Jacobian "
@@ -299,12 +288,7 @@ namespace abrade::fem
             if (remesh_then_move(before.surface, given_depth, may_rebuild, r, volume, why.str()))
               return;
             // Gmsh could not: the step on the old mesh again, remeshed after it
-            tria->clear();
-            tria->copy_triangulation(unmoved);
-            current_surface = before.surface;
-            accumulated     = before.accumulated;
-            displacement    = before.displacement;
-            since_remesh    = since_before;
+            undo();
             move_surface(given_depth, may_rebuild, r, volume, false);
             return;
           }

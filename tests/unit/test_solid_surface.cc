@@ -30,7 +30,7 @@ using namespace abrade::fem::testing;
 
 namespace
 {
-  double enclosed_volume(const SolidSurface &s)
+  double signed_volume(const SolidSurface &s)
   {
     double v = 0;
     for (const auto &t : s.triangles)
@@ -45,7 +45,7 @@ TEST(SolidSurface, OutwardClosedSurfaceOfTheKnife)
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_surface.msh"));
   const SolidSurface s = extract_surface(tria);
-  EXPECT_NEAR(enclosed_volume(s), 0.00576, 1e-12); // outward orientation everywhere
+  EXPECT_NEAR(signed_volume(s), 0.00576, 1e-12); // outward orientation everywhere
   // every edge is shared by exactly two triangles
   std::map<std::pair<unsigned, unsigned>, int> edges;
   for (const auto &t : s.triangles)
@@ -366,7 +366,7 @@ TEST(SolidSurface, LocalThicknessIsTheFirstWallTheRayMeets)
       kept.push_back(t);
   s.triangles = kept;
   s.boundary_id.assign(s.triangles.size(), 1);
-  EXPECT_NEAR(enclosed_volume(s), 1 - 0.4 * 0.4 * 0.4, 1e-12);
+  EXPECT_NEAR(signed_volume(s), 1 - 0.4 * 0.4 * 0.4, 1e-12);
   const auto thickness = local_thickness(s);
   EXPECT_NEAR(thickness[mid], 0.3, 1e-9);
   // and a cavity's corner looks into the solid along the diagonal, away from the cavity: to the

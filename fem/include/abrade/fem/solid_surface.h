@@ -42,6 +42,11 @@ namespace abrade::fem
     io::PolyData as_polydata() const;
   };
 
+  /// The volume the closed surface @p s encloses [m^3] (the divergence theorem over its
+  /// triangles), with each vertex moved by @p scale times its @p moves if given.
+  double enclosed_volume(const SolidSurface &s, const std::vector<dealii::Tensor<1, 3>> *moves = nullptr,
+                         double scale = 0);
+
   /// Local wall thickness at every surface vertex: the distance along the inward normal to the
   /// surface on the other side (ray cast; infinity where the ray leaves through no triangle).
   std::vector<double> local_thickness(const SolidSurface &surface);
