@@ -218,7 +218,7 @@ namespace abrade::fem
         // planes and edges exactly (Gmsh keeps the edges it classifies); the step is tried
         // once more from there, its depth carried to the new vertices.
         if (*std::max_element(since_remesh.begin(), since_remesh.end()) > 0 &&
-            remesh_then_move(before.surface, given_depth, may_rebuild, r, volume, why + " on the old mesh"))
+            remesh_then_move(before.surface, given_depth, may_rebuild, r, volume, why + " on the old mesh", true))
           return;
         if (!may_rebuild)
           throw RunError(why);
@@ -285,7 +285,7 @@ namespace abrade::fem
             why << "after the step its mesh would need remeshing (moved " << io::format_number(1e3 * moved_most)
                 << " mm since the last remesh, minimum scaled Jacobian "
                 << io::format_number(r.quality.min_scaled_jacobian) << ")";
-            if (remesh_then_move(before.surface, given_depth, may_rebuild, r, volume, why.str()))
+            if (remesh_then_move(before.surface, given_depth, may_rebuild, r, volume, why.str(), false))
               return;
             // Gmsh could not: the step on the old mesh again, remeshed after it
             undo();
@@ -310,7 +310,7 @@ namespace abrade::fem
   }
 
   bool KnifeModel::remesh_then_move(const SolidSurface &from, const std::vector<double> &depth, bool may_rebuild,
-                                    UpdateResult &r, double volume, const std::string &why)
+                                    UpdateResult &r, double volume, const std::string &why, bool new_vertices)
   {
     UpdateResult                   first;
     std::optional<SurfaceTransfer> transfer;
@@ -322,10 +322,13 @@ namespace abrade::fem
       {
         return false; // Gmsh could not mesh it: the knife is as it was
       }
-    // where Gmsh only filled the surface's own triangles, the vertices are the old ones (they
-    // would fold the same way): the caller goes on another way
-    if (!first.surface_kept.empty())
+    // where Gmsh only filled the surface's own triangles, the vertices are the old ones: they
+    // would fold the same way (the caller goes on another way); a step that needed only a fresh
+    // interior takes it (the surface unchanged, so is its volume)
+    if (!first.surface_kept.empty() && new_vertices)
       return false;
+    if (!first.surface_kept.empty())
+      r.surface_kept = first.surface_kept;
     // (the remesh's own change of the volume is part of the update's)
     const double rest = volume > 0 ? volume + first.remesh_volume_change : 0.0;
     if (volume > 0 && !(rest > 0))

@@ -179,9 +179,10 @@ namespace abrade::fem
     /// The knife meshed anew inside its current surface (@p from), then moved by @p depth
     /// (given on @p from) carried to the new vertices, the remesh's change of the volume part of
     /// @p volume; @p r says it was meshed first, and @p why. False, the knife as it was, where
-    /// Gmsh could not remesh it (or only filled its own triangles).
+    /// Gmsh could not remesh it, or only filled its own triangles where @p new_vertices are
+    /// needed (the step would fold on the old ones).
     bool remesh_then_move(const SolidSurface &from, const std::vector<double> &depth, bool may_rebuild, UpdateResult &r,
-                          double volume, const std::string &why);
+                          double volume, const std::string &why, bool new_vertices);
     /// apply_wear after its worn-through check: the vertices moved by @p depth, the knife meshed
     /// anew first where they would fold on the mesh as it stands, built as a set where they
     /// fold on a fresh mesh too (if @p may_rebuild).
