@@ -176,7 +176,6 @@ namespace abrade::fem
     // what the update starts from, for the construction that cannot fold (rebuild_eroded; a rim
     // point's ball cuts the clamped face's rim as the faces beside it recede, and nothing below
     // the clamped plane that the faces' own balls do not)
-    // moved vertices cannot follow where the surface folds: the worn surface is built anew
     std::vector<Tensor<1, 3>> moves(offsets.size());
     for (std::size_t v = 0; v < offsets.size(); ++v)
       moves[v] = clamped[v] ? Tensor<1, 3>() : offsets[v];
@@ -207,11 +206,10 @@ namespace abrade::fem
       if (clamped[v])
         wearing[v] = 0;
     const Before before{current_surface, wearing, accumulated, displacement};
-    if (folds > 0 || folding_triangles(current_surface, moves) > 0)
+    // (unscaled where they fold already; the scaled moves checked too)
+    if (const std::size_t folding = folds > 0 ? folds : folding_triangles(current_surface, moves); folding > 0)
       {
-        const std::string why =
-          std::to_string(std::max(folds, folding_triangles(current_surface, moves))) +
-          " triangle(s) of the moved surface would fold";
+        const std::string why = std::to_string(folding) + " triangle(s) of the moved surface would fold";
         // Most folds are vertices the receding fronts overtake: a vertex of the bevel near a
         // chisel tip, which shrinks the bevel by 2.67 times the depth. The surface meshed anew
         // before the step has its vertices a triangle's height from its edges again, and its
