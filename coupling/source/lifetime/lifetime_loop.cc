@@ -421,8 +421,7 @@ namespace abrade::coupling::lifetime
             warnings.push_back("update " + std::to_string(update) + ", DEM: " + w);
           }
       }
-    if (s.smoothing <= 0 && !s.analytic)
-      s.smoothing = wear.particle_radius; // the particle's footprint (analytic rates: no filter unless asked)
+    resolve_smoothing(wear);
     return wear;
   }
 
@@ -443,11 +442,25 @@ namespace abrade::coupling::lifetime
       {
         ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
       }
-    if (s.smoothing <= 0 && !s.analytic)
-      s.smoothing = wear.particle_radius;
+    resolve_smoothing(wear);
     previous_largest = depth_rates(knife->surface(), wear, s.smoothing).largest;
     ctx.log.line("pilot cycle on " + std::to_string(beds.size()) + " bed(s) of its own: the first update is sized "
                  "by its largest wear depth rate, " + io::format_number(previous_largest) + " m per cycle");
+  }
+
+  // The wear filter's length: the particle's footprint unless given (analytic rates: no filter
+  // unless asked). Wear narrower than half a cell is carried by single vertices: on the chisel's
+  // tip they blunt it into a flat that Gmsh cannot remesh (docs/lifetime.md, the tip check).
+  void LifetimeLoop::resolve_smoothing(const CycleWear &wear)
+  {
+    if (s.smoothing <= 0 && !s.analytic)
+      s.smoothing = wear.particle_radius;
+    if (!smoothing_checked && s.smoothing > 0 && s.smoothing < 0.5 * knife_parameters.mesh_size)
+      ctx.log.warning("Lifetime/Smoothing radius (" + io::format_number(s.smoothing) + " m) is below half the "
+                      "Knife/Mesh size (" + io::format_number(knife_parameters.mesh_size) + " m): wear narrower "
+                      "than a cell is carried by single vertices, which can fold the worn surface where it "
+                      "concentrates (an edge, a tip)");
+    smoothing_checked = true;
   }
 
   // 2. Filtered on the surface (volume conserving), divided by the vertex areas: depth per cycle.

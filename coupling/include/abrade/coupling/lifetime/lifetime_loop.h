@@ -118,6 +118,9 @@ namespace abrade::coupling::lifetime
     void gauge_the_knife();
     /// The pilot cycle that sizes the first update (previous_largest).
     void size_first_update();
+    /// The wear filter's length from the first cycle (the particle's footprint unless given);
+    /// warns once where it is below half the mesh size.
+    void resolve_smoothing(const CycleWear &wear);
 
     JobContext                           &ctx;
     Settings                              s;
@@ -147,6 +150,7 @@ namespace abrade::coupling::lifetime
     std::vector<std::vector<UpdateRecord>> records; ///< per criterion, per update (life_interval.h)
     long                         beds_now = 0; ///< beds of the next update
     double                       previous_largest = 0; ///< the last update's largest depth rate (its size)
+    bool                         smoothing_checked = false; ///< the filter's length warned about (once)
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
     long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)
