@@ -324,8 +324,10 @@ namespace abrade::coupling
     prm.declare_entry("Analytic wear rate", "1e-6", Anything(),
                       "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
                       "inward normal, as a function of the knife's current coordinates x, y, z (the "
-                      "knife's own frame, see Recession points) and of t, the tonnes handled so far, e.g. "
-                      "'1e-6*exp(-z/0.01)' or '1e-6*(1+t/5000)'; evaluated at the surface's vertices. muparser syntax.");
+                      "knife's own frame, see Recession points), of t, the tonnes handled so far, and of "
+                      "zlow, the z of the knife's lowest wearable point now, e.g. '1e-6*exp(-z/0.01)', "
+                      "'1e-6*(1+t/5000)' or '1e-6*(z < zlow + 0.003)' (a band on the edge that follows it "
+                      "up); evaluated at the surface's vertices. muparser syntax.");
     prm.declare_entry("Analytic wear is", "depth", Selection("depth|volume"),
                       "Wear source = analytic: depth: the surface recedes by the rate x tonnes along its "
                       "normal (the offset surface, exact: verification of the motion); volume: the rate x "

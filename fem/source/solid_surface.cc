@@ -293,6 +293,17 @@ namespace abrade::fem
     return s;
   }
 
+  SolidSurface surface_of(const io::PolyData &polydata)
+  {
+    SolidSurface s;
+    for (std::size_t k = 0; k + 2 < polydata.points.size(); k += 3)
+      s.vertices.emplace_back(polydata.points[k], polydata.points[k + 1], polydata.points[k + 2]);
+    for (const auto &t : polydata.triangles)
+      s.triangles.push_back({unsigned(t[0]), unsigned(t[1]), unsigned(t[2])});
+    s.boundary_id.assign(s.triangles.size(), 0);
+    return s;
+  }
+
   double enclosed_volume(const SolidSurface &s, const std::vector<Tensor<1, 3>> *moves, double scale)
   {
     auto at = [&](unsigned v) { return moves ? Point<3>(s.vertices[v] + scale * (*moves)[v]) : s.vertices[v]; };
@@ -331,12 +342,7 @@ namespace abrade::fem
     // DEM update's wear) and gained 1e-4 at 20, 4e-5 at 40. A larger angle's mesh is taken
     // only where it keeps the enclosed volume to 5e-5 (a 15-degree remesh of a worn knife
     // changes it by up to 2e-5); a time limit is not tried again.
-    SolidSurface written; // (the surface as it went to Gmsh)
-    for (std::size_t k = 0; k + 2 < surface.points.size(); k += 3)
-      written.vertices.emplace_back(surface.points[k], surface.points[k + 1], surface.points[k + 2]);
-    for (const auto &t : surface.triangles)
-      written.triangles.push_back({unsigned(t[0]), unsigned(t[1]), unsigned(t[2])});
-    const double enclosed = enclosed_volume(written);
+    const double enclosed = enclosed_volume(surface_of(surface)); // (the surface as it went to Gmsh)
     auto         remeshed = [&] {
       std::string refused;
       for (const double angle : {15.0, 20.0, 25.0, 40.0})

@@ -201,12 +201,7 @@ TEST(Remesh, WornSurfaceGmshRefusesAtFifteenDegrees)
 {
   const abrade::io::PolyData surface =
     abrade::io::triangles_of(abrade::io::read_polydata(std::string(ABRADE_TESTS_DIR) + "/lifetime/worn_bolted_edge.stl"));
-  SolidSurface       ids;
-  for (std::size_t k = 0; k < surface.points.size(); k += 3)
-    ids.vertices.emplace_back(surface.points[k], surface.points[k + 1], surface.points[k + 2]);
-  for (const auto &t : surface.triangles)
-    ids.triangles.push_back({unsigned(t[0]), unsigned(t[1]), unsigned(t[2])});
-  ids.boundary_id.assign(ids.triangles.size(), 0);
+  const SolidSurface ids = surface_of(surface);
   Triangulation<3>  fresh;
   const std::string kept = mesh_closed_surface(surface, 0.02, fresh, tmp("abrade_worn_bolted"), ids);
   EXPECT_EQ(kept, "") << "filled inside its own triangles instead of remeshed";

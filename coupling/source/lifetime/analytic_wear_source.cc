@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <limits>
 #include <stdexcept>
 
 namespace abrade::coupling::lifetime
@@ -27,16 +28,17 @@ namespace abrade::coupling::lifetime
     {
     public:
       AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, double scatter, bool as_volume)
-        : tonnes_per_cycle(tonnes_per_cycle), scatter(scatter), as_volume(as_volume)
+        : expression(expression), tonnes_per_cycle(tonnes_per_cycle), scatter(scatter), as_volume(as_volume)
       {
         try
           {
-            rate.initialize("x,y,z,t", expression, {}, true);
+            parse(0);
             rate.value(dealii::Point<3>());
           }
         catch (const std::exception &)
           {
-            throw std::invalid_argument("cannot evaluate '" + expression + "' as a function of x, y, z and t");
+            throw std::invalid_argument("cannot evaluate '" + expression +
+                                        "' as a function of x, y, z, t and zlow");
           }
       }
 
@@ -44,8 +46,14 @@ namespace abrade::coupling::lifetime
       {
         CycleWear w;
         w.tonnes_per_cycle = tonnes_per_cycle;
+        const auto area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
+        // zlow: the lowest wearable point now (a band on the edge line that follows the tip up)
+        double zlow = std::numeric_limits<double>::max();
+        for (std::size_t v = 0; v < area.size(); ++v)
+          if (area[v] > 0)
+            zlow = std::min(zlow, surface.vertices[v][2]);
+        parse(zlow < std::numeric_limits<double>::max() ? zlow : 0.0);
         rate.set_time(tonnes);
-        const auto          area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
         std::vector<double> volume(surface.vertices.size(), 0.0);
         for (std::size_t v = 0; v < volume.size(); ++v)
           if (area[v] > 0)
@@ -77,6 +85,12 @@ namespace abrade::coupling::lifetime
       bool removes_volume() const override { return as_volume; }
 
     private:
+      void parse(double zlow)
+      {
+        rate.initialize("x,y,z,t", expression, {{"zlow", zlow}}, true);
+      }
+
+      std::string               expression;
       dealii::FunctionParser<3> rate;
       double                    tonnes_per_cycle;
       double                    scatter; // relative, per bed

@@ -42,6 +42,10 @@ namespace abrade::fem
     io::PolyData as_polydata() const;
   };
 
+  /// The triangles of @p polydata as a surface (no mesh behind it: tria_vertex and face empty),
+  /// every triangle with boundary id 0.
+  SolidSurface surface_of(const io::PolyData &polydata);
+
   /// The volume the closed surface @p s encloses [m^3] (the divergence theorem over its
   /// triangles), with each vertex moved by @p scale times its @p moves if given.
   double enclosed_volume(const SolidSurface &s, const std::vector<dealii::Tensor<1, 3>> *moves = nullptr,
