@@ -14,6 +14,7 @@
 //    arithmetic on them covers far less than 95 % (the reason every update draws fresh beds).
 #include <abrade/coupling/lifetime/end_of_life.h>
 #include <abrade/coupling/lifetime/life_interval.h>
+#include <abrade/coupling/lifetime/place_scatter.h>
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
@@ -211,32 +212,47 @@ namespace
   /// the record is the deepest place's depth and the beds' relative variance at that place (the
   /// loop's add_update_records). Returns the ratio of the lives' real relative standard
   /// deviation over the trials to the stated one (rms of relative_sd).
-  double spread_ratio(int places, int trials = 3000)
+  struct Spread
+  {
+    double at_one_place = 0; ///< real / stated with the leading place's scatter alone
+    double worst_of_many = 0; ///< real / stated with the factor of place_scatter.h
+    double factor = 0;        ///< the mean phi
+  };
+  Spread spread_ratio(int places, int trials = 3000, double leader = 0, double correlation = 0)
   {
     std::mt19937_64                  random(42);
     std::normal_distribution<double> normal;
     const double                     sigma = std::sqrt(std::log(1 + 0.4 * 0.4));
     std::vector<double>              lives;
-    double                           stated = 0;
+    double                           stated = 0, stated_many = 0, factors = 0;
     for (int trial = 0; trial < trials; ++trial)
       {
         std::vector<double>       depth(places, 0.0);
         std::vector<UpdateRecord> records;
+        PlaceScatter              scatter;
         double                    tonnes = 0, previous = 1e-5;
         for (int update = 1; update <= 40 && *std::max_element(depth.begin(), depth.end()) < 0.012; ++update)
           {
             std::vector<std::vector<double>> bed(3, std::vector<double>(places));
             std::vector<double>              mean(places, 0.0);
             for (auto &b : bed)
-              for (int j = 0; j < places; ++j)
-                {
-                  b[j] = 1e-5 * (1 - 0.005 * j) * std::exp(sigma * normal(random) - sigma * sigma / 2);
-                  mean[j] += b[j] / 3;
-                }
+              {
+                double z = normal(random);
+                for (int j = 0; j < places; ++j)
+                  {
+                    // (neighbouring places correlated: an AR(1) chain along them)
+                    if (j > 0)
+                      z = correlation * z + std::sqrt(1 - correlation * correlation) * normal(random);
+                    b[j] = 1e-5 * (j == 0 ? 1 + leader : 1 - 0.005 * j) * std::exp(sigma * z - sigma * sigma / 2);
+                    mean[j] += b[j] / 3;
+                  }
+              }
             const long n = cycles_for_update(0, 0.1, 0.015, previous, *std::max_element(mean.begin(), mean.end()));
             previous     = *std::max_element(mean.begin(), mean.end());
+            std::vector<double> increment(places);
             for (int j = 0; j < places; ++j)
-              depth[j] += n * mean[j];
+              depth[j] += increment[j] = n * mean[j];
+            scatter.add_update(increment, bed);
             const int           deepest = std::max_element(depth.begin(), depth.end()) - depth.begin();
             std::vector<double> at_place;
             for (const auto &b : bed)
@@ -247,32 +263,93 @@ namespace
         const LifeInterval li = life_interval(0.012, records);
         lives.push_back(li.life.tonnes);
         stated += li.relative_sd * li.relative_sd / trials;
+        const double       phi2 = scatter.maximum_factor(depth, 400);
+        const LifeInterval many = life_interval(0.012, records, 0.95, phi2);
+        stated_many += many.relative_sd * many.relative_sd / trials;
+        factors += std::sqrt(phi2) / trials;
       }
     const double mean = std::accumulate(lives.begin(), lives.end(), 0.0) / trials;
     double       var  = 0;
     for (double l : lives)
       var += (l - mean) * (l - mean) / (trials - 1);
-    return std::sqrt(var) / mean / std::sqrt(stated);
+    const double real = std::sqrt(var) / mean;
+    return {real / std::sqrt(stated), real / std::sqrt(stated_many), factors};
   }
 } // namespace
 
-// What the interval assumes of the place that ends life, and where it is conservative: with one
-// place the lives scatter as stated (ratio of real to stated standard deviation 1 within 15 %);
-// with 20 nearly equal places the deepest of them (a maximum of random walks: when the leader
-// lags another takes over) scatters about half as much as one place, and the stated spread is
-// about twice the real one (0.48 here; the DEM benchmark's disjoint groups: 0.52). Conservative,
-// never over-confident: the ratio must stay at or below 1. Two per-update cures were tried and
-// do not help, because the maximum's increments are negatively correlated between updates
-// (docs/lifetime.md): the spread of each bed's own deepest place (0.53) and Gaussian
-// multipliers on the update's mean field given the depth before it (0.51); a bootstrap of the
-// whole run's accumulated deviations gives 0.70 (it keeps the observed leader's margin).
-TEST(LifeInterval, TheDeepestOfManyPlacesIsStatedConservatively)
+// What the interval assumes of the place that ends life: it takes the beds' scatter at the
+// leading place, as if that place had been chosen beforehand. With one place the lives scatter
+// as stated (real / stated standard deviation 1 within 15 %). With many nearly equal places the
+// worst of them (a maximum of random walks: when the leader lags another takes over) scatters
+// about half as much as one place: at the leading place alone the stated spread is twice the
+// real one (0.49 here; the DEM benchmark's disjoint groups: 0.52). The factor of
+// place_scatter.h (a double wild bootstrap of the run's bed deviations at every place) brings
+// it to 0.76 (20 independent places), 0.86 (correlated 0.8 between neighbours, as a filtered
+// field is), 0.79 (5 places); where one place leads by 10-20 % it is 0.86-0.97. It must never
+// be over-confident by more than 10 % (above 1.1), and must take at least a third of the
+// excess off (above 0.7; at the leading place alone: below 0.6, the test fails). The bootstrap
+// centred on the observed field keeps the margin by which the observed leader won (noise spread
+// the places apart), so fewer places compete in its draws than in reality: what is left of the
+// conservatism (docs/lifetime.md). Tried before, in this model (session 19): the spread of each
+// bed's own deepest place (0.53), Gaussian multipliers on the update's mean field (0.51), and
+// the life's spread over a whole-run bootstrap's own lives (0.70).
+TEST(LifeInterval, TheWorstOfManyPlacesIsStatedAsItScatters)
 {
-  const double one = spread_ratio(1), many = spread_ratio(20);
-  std::cout << "real / stated standard deviation of the life: one place " << one << ", 20 places " << many << "\n";
-  EXPECT_NEAR(one, 1, 0.15);
-  EXPECT_LE(many, 1.0);
-  EXPECT_GE(many, 0.35);
+  struct Case
+  {
+    int    places;
+    double leader, correlation, low, high;
+  };
+  for (const Case c : {Case{1, 0, 0, 0.85, 1.15}, Case{5, 0, 0, 0.7, 1.1}, Case{20, 0, 0, 0.7, 1.1},
+                       Case{20, 0, 0.8, 0.7, 1.1}, Case{20, 0.1, 0, 0.7, 1.1}, Case{20, 0.2, 0, 0.7, 1.1}})
+    {
+      const Spread r = spread_ratio(c.places, 1000, c.leader, c.correlation);
+      std::cout << c.places << " places, leader +" << c.leader << ", correlation " << c.correlation
+                << ": real / stated standard deviation of the life: at the leading place " << r.at_one_place
+                << ", with the factor for the worst place " << r.worst_of_many << " (phi " << r.factor << ")\n";
+      EXPECT_GE(r.worst_of_many, c.low) << c.places << " places, leader " << c.leader << ", correlation " << c.correlation;
+      EXPECT_LE(r.worst_of_many, c.high) << c.places << " places, leader " << c.leader << ", correlation " << c.correlation;
+      if (c.places == 1)
+        EXPECT_NEAR(r.factor, 1, 1e-12);
+      if (c.places == 20 && c.leader == 0 && c.correlation == 0)
+        EXPECT_LT(r.at_one_place, 0.6); // the conservatism the factor takes off
+    }
+}
+
+// Places that scatter together (the same relative deviation of every bed at every place, as the
+// analytic source's one multiplier per bed gives) scatter as one: factor 1. The state survives
+// a checkpoint's numbers, and malformed numbers are refused.
+TEST(PlaceScatter, PlacesThatScatterTogetherScatterAsOneAndTheStateRoundTrips)
+{
+  PlaceScatter together, apart;
+  std::mt19937_64 random(3);
+  std::normal_distribution<double> normal;
+  for (int u = 0; u < 6; ++u)
+    {
+      std::vector<std::vector<double>> same(3, std::vector<double>(10)), own(3, std::vector<double>(10));
+      for (auto b = 0; b < 3; ++b)
+        {
+          const double f = 1 + 0.3 * normal(random);
+          for (int p = 0; p < 10; ++p)
+            same[b][p] = f * (1 + 0.01 * p), own[b][p] = 1 + 0.3 * normal(random);
+        }
+      together.add_update(std::vector<double>(10, 1e-3), same);
+      apart.add_update(std::vector<double>(10, 1e-3), own);
+    }
+  std::vector<double> values(10, 6e-3);
+  values[4] += 1e-6;
+  EXPECT_NEAR(together.maximum_factor(values), 1, 1e-9);
+  const double f = apart.maximum_factor(values);
+  EXPECT_LT(f, 0.9); // ten independent places of equal wear: the worst scatters less
+  PlaceScatter copy;
+  copy.set_numbers(apart.numbers());
+  EXPECT_EQ(copy.maximum_factor(values), f);
+  EXPECT_EQ(copy.updates(), 6u);
+  auto cut = apart.numbers();
+  cut.pop_back();
+  EXPECT_THROW(copy.set_numbers(cut), std::invalid_argument);
+  EXPECT_THROW(copy.set_numbers({}), std::invalid_argument);
+  EXPECT_THROW(apart.add_update(std::vector<double>(9, 1e-3), {}), std::logic_error);
 }
 
 TEST(BedSeed, TheFirstUpdateKeepsTheSeedLaterOnesAreFreshAndDistinct)

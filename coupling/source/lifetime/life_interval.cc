@@ -84,10 +84,12 @@ namespace abrade::coupling::lifetime
     return {dof > 0 ? sum / dof : 0.0, dof};
   }
 
-  LifeInterval life_interval(double limit, const std::vector<UpdateRecord> &updates, double confidence)
+  LifeInterval life_interval(double limit, const std::vector<UpdateRecord> &updates, double confidence,
+                             double place_factor)
   {
     LifeInterval r;
-    r.confidence = confidence;
+    r.confidence   = confidence;
+    r.place_factor = place_factor;
     std::vector<double> tonnes, values, step;
     double              before = 0;
     for (const auto &u : updates)
@@ -116,7 +118,7 @@ namespace abrade::coupling::lifetime
         const double        h = 1e-6 * step[u];
         std::vector<double> up = step, down = step;
         up[u] += h, down[u] -= h;
-        const double var_u = c2 * step[u] * step[u] / double(std::max<std::size_t>(1, updates[u].beds));
+        const double var_u = place_factor * c2 * step[u] * step[u] / double(std::max<std::size_t>(1, updates[u].beds));
         const double g_free = (life_of(up, 0) - life_of(down, 0)) / (2 * h);
         const double held   = r.life.reached ? 0 : r.life.exponent;
         const double g_held = (life_of(up, held) - life_of(down, held)) / (2 * h);

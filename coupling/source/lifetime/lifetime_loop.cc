@@ -42,8 +42,9 @@ namespace abrade::coupling::lifetime
     };
 
     /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum; 3 the
-    /// updates' records of every criterion (beds, relative variance) and the beds of the next.
-    const std::string state_format = "abrade lifetime state 3";
+    /// updates' records of every criterion (beds, relative variance) and the beds of the next;
+    /// 4 the beds' deviations at every criterion's places (place_scatter.h).
+    const std::string state_format = "abrade lifetime state 4";
   } // namespace
 
   LifetimeLoop::LifetimeLoop(JobContext &ctx) : ctx(ctx) {}
@@ -202,6 +203,9 @@ namespace abrade::coupling::lifetime
                           s.min_plate_thickness > 0 ? design_thickness - s.min_plate_thickness : 0.0}};
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
     records.assign(n_criteria, {});
+    place_scatter.assign(n_criteria, {});
+    place_values.assign(n_criteria, {});
+    place_factor.assign(n_criteria, 1.0);
     beds_now          = long(s.seeds.size());
 
     std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth",
@@ -373,6 +377,20 @@ namespace abrade::coupling::lifetime
         records[c].clear();
         for (long k = 0; k < done; ++k)
           records[c].push_back({t[k + 1], v[k + 1], std::size_t(beds[k]), var[k]});
+        try
+          {
+            place_scatter[c].set_numbers(state.numbers("place_scatter_" + std::to_string(c)));
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw InputError(file,
+                             std::string("corrupt lifetime checkpoint (") + e.what() + ")");
+          }
+        place_values[c] = state.numbers("place_values_" + std::to_string(c));
+        place_factor[c] = state.number("place_factor_" + std::to_string(c));
+        if (place_scatter[c].updates() != std::size_t(done) || place_values[c].size() != place_scatter[c].places() ||
+            !(place_factor[c] >= 0 && place_factor[c] <= 1))
+          throw InputError(file, "corrupt lifetime checkpoint (the places of criterion " + std::to_string(c) + ")");
       }
     trajectory_rows.clear();
     for (long k = 1; k <= done; ++k)
@@ -496,6 +514,35 @@ namespace abrade::coupling::lifetime
     st.followed_mean    = knife->at_followed_points(rates.mean, s.recession_points);
     for (const auto &seed : rates.seed)
       st.followed_seed.push_back(knife->at_followed_points(seed, s.recession_points));
+    if (rates.seed.size() > 1) // (one bed: no scatter to keep)
+      for (const auto &seed : rates.seed)
+        st.design_seed.push_back(knife->at_followed_points(seed, knife->design_surface().vertices));
+    {
+      // where the gauges read the knife now (its sections after the last update)
+      const std::size_t stations = sections.x.size();
+      const double      z        = frame.z0 + s.gauge_height;
+      fem::SolidSurface at;
+      std::vector<bool> edge(stations), faces(stations);
+      for (std::size_t i = 0; i < stations; ++i)
+        {
+          edge[i]  = std::isfinite(sections.height[i]);
+          faces[i] = std::isfinite(sections.y_low[i]) && std::isfinite(sections.y_high[i]);
+          at.vertices.push_back(edge[i] ? sections.lowest[i] : knife->surface().vertices.front());
+          at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_low[i], z) : at.vertices.back());
+          at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_high[i], z) : at.vertices.back());
+        }
+      const fem::SurfaceTransfer transfer(knife->surface(), at);
+      for (const auto &seed : rates.seed)
+        {
+          const auto there = transfer(seed);
+          st.edge_seed.emplace_back(stations, 0.0), st.faces_seed.emplace_back(stations, 0.0);
+          for (std::size_t i = 0; i < stations; ++i)
+            {
+              st.edge_seed.back()[i]  = edge[i] ? there[3 * i] : 0.0;
+              st.faces_seed.back()[i] = faces[i] ? 0.5 * (there[3 * i + 1] + there[3 * i + 2]) : 0.0;
+            }
+        }
+    }
     const fem::SolidSurface before = knife->surface();
     st.before                      = before;
     const dem::Parallel     ranks  = dem::Parallel::world();
@@ -638,29 +685,60 @@ namespace abrade::coupling::lifetime
     keep(recession_criterion, bed);
     // worn mass: the whole knife's volume
     keep(mass_criterion, rates.seed_volume);
-    // the gauges: the beds' rates at the surface vertex (of the surface the rates were found
-    // on) closest to where the worst station's edge is, and the mean of the two faces' at the
-    // thinnest station's gauge height
+    // the gauges: the beds' rates where the worst station's edge was gauged before the move,
+    // and the mean of the two faces' at the thinnest station's gauge height (interpolated on
+    // the surface: a gauge's point moves as the triangle under it does; the nearest vertex's
+    // rate alone overstated the gauged edge's bed scatter)
     const EdgeGauge g = gauge(sections, design_at_sections);
-    auto rates_near = [&](const std::vector<dealii::Point<3>> &points) {
-      std::vector<double> r(rates.seed.size(), 0.0);
-      for (const auto &p : points)
-        {
-          std::size_t best = 0;
-          for (std::size_t v = 1; v < st.before.vertices.size(); ++v)
-            if (st.before.vertices[v].distance_square(p) < st.before.vertices[best].distance_square(p))
-              best = v;
-          for (std::size_t k = 0; k < r.size(); ++k)
-            r[k] += rates.seed[k][best] / points.size();
-        }
+    auto at_station = [&](const std::vector<std::vector<double>> &seed, std::size_t i) {
+      std::vector<double> r;
+      for (const auto &bed : seed)
+        r.push_back(bed[i]);
       return r;
     };
-    keep(edge_criterion, rates_near({sections.lowest[g.recession_station]}));
-    const std::size_t t = g.thinnest_station;
-    const double      z = frame.z0 + s.gauge_height;
-    keep(thickness_criterion, rates_near({dealii::Point<3>(sections.x[t], sections.y_low[t], z),
-                                          dealii::Point<3>(sections.x[t], sections.y_high[t], z)}));
+    keep(edge_criterion, at_station(st.edge_seed, g.recession_station));
+    keep(thickness_criterion, at_station(st.faces_seed, g.thinnest_station));
     return spread;
+  }
+
+  // 5b. The worst of many places: each criterion's quantity at all its places and the beds'
+  //     rates there, for the factor on its interval (place_scatter.h): the depth at the points
+  //     the design's vertices moved to, the followed points' recession, the gauge's stations'
+  //     edge recession and plate thickness lost. (The worn mass is one quantity: factor 1.)
+  void LifetimeLoop::add_place_scatter(const Rates &rates, const Step &st)
+  {
+    const std::size_t beds = rates.seed.size();
+    auto add = [&](std::size_t c, std::vector<double> now, const std::vector<std::vector<double>> &bed_rates) {
+      std::vector<double> &before = place_values[c];
+      if (before.empty())
+        before.assign(now.size(), 0.0);
+      if (before.size() != now.size())
+        return; // (the places cannot change: a criterion without them)
+      std::vector<double> increment(now.size());
+      for (std::size_t p = 0; p < now.size(); ++p)
+        {
+          if (!std::isfinite(now[p]))
+            now[p] = before[p]; // (no section there)
+          increment[p] = now[p] - before[p];
+        }
+      place_scatter[c].add_update(increment, beds > 1 ? bed_rates : std::vector<std::vector<double>>());
+      before          = now;
+      place_factor[c] = place_scatter[c].maximum_factor(now);
+    };
+    add(depth_criterion, knife->at_followed_points(knife->wear_depth(), knife->design_surface().vertices),
+        st.design_seed);
+    add(recession_criterion, knife->recession_at(s.recession_points), st.followed_seed);
+    add(mass_criterion, {}, {}); // (one quantity: no places)
+    // the gauge's stations (the beds' rates where they were gauged before the move: move_knife)
+    const std::size_t   stations = sections.x.size();
+    std::vector<double> recession(stations), lost(stations);
+    for (std::size_t i = 0; i < stations; ++i)
+      {
+        recession[i] = sections.height[i] - design_at_sections.height[i];
+        lost[i]      = design_at_sections.thickness[i] - sections.thickness[i];
+      }
+    add(edge_criterion, recession, st.edge_seed);
+    add(thickness_criterion, lost, st.faces_seed);
   }
 
   void LifetimeLoop::gauge_the_knife()
@@ -674,7 +752,7 @@ namespace abrade::coupling::lifetime
   {
     if (e.criterion == EndOfLife::none)
       return {};
-    return life_interval(criteria[e.criterion].limit, records[e.criterion]);
+    return life_interval(criteria[e.criterion].limit, records[e.criterion], 0.95, place_factor[e.criterion]);
   }
 
   // Lifetime/Target interval: while the life's interval is wider than asked, the next updates
@@ -732,6 +810,7 @@ namespace abrade::coupling::lifetime
     history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),
                                 worn * knife_parameters.density, g.recession, design_thickness - g.thinnest}});
     const double spread = add_update_records(rates, st);
+    add_place_scatter(rates, st);
 
     std::vector<double> row = {double(update), double(cycles), tonnes, dmax, area_sum > 0 ? depth_area / area_sum : 0.0,
                                *std::max_element(travel.begin(), travel.end()), worn, worn * knife_parameters.density,
@@ -804,6 +883,9 @@ namespace abrade::coupling::lifetime
           beds.push_back(double(r.beds)), var.push_back(r.relative_variance);
         state.set("record_beds_" + std::to_string(c), beds);
         state.set("record_relative_variance_" + std::to_string(c), var);
+        state.set("place_scatter_" + std::to_string(c), place_scatter[c].numbers());
+        state.set("place_values_" + std::to_string(c), place_values[c]);
+        state.set("place_factor_" + std::to_string(c), place_factor[c]);
       }
     for (std::size_t k = 0; k < trajectory_rows.size(); ++k)
       state.set("trajectory_row_" + std::to_string(k + 1), trajectory_rows[k]);
@@ -953,6 +1035,9 @@ namespace abrade::coupling::lifetime
     iv["components"]["beds"]          = li.relative_sd_beds;
     iv["components"]["extrapolation"] = li.relative_sd_extrapolation;
     iv["components"]["calibration"]   = 0.0; // W and the footprint: not yet carried (abrade calibrate)
+    // the worst of many places scatters less than one: the beds' variance at the leading place
+    // scaled by phi^2 (place_scatter.h)
+    iv["worst_place_factor"] = std::sqrt(li.place_factor);
     if (s.target_interval > 0)
       {
         const bool met = li.dof >= 1 && li.relative_half_width <= s.target_interval;

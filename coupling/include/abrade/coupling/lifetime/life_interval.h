@@ -21,7 +21,10 @@
 // T_U / 2; b = 1 with one update), which follows wear that slows as an edge rounds. Its
 // variance is carried by the gradient (first order):
 //
-//   Var(L) = sum_u (dL/d dQ_u)^2 c^2 dQ_u^2 / n_u
+//   Var(L) = phi^2 sum_u (dL/d dQ_u)^2 c^2 dQ_u^2 / n_u
+//
+// (phi^2 <= 1: the place that ends life is the worst of many, which scatters less than the
+// leading place does; place_scatter.h gives it from the run's beds at every place, 1 for one)
 //
 // split into the beds' part with the exponent held (what the quantity at the last point
 // carries) and the extrapolation's (what the exponent's own scatter adds past the last point).
@@ -36,7 +39,8 @@
 // skewed scatter is under-covered a little (its low bed means come with low sample variances:
 // 93.1 % at 30 % lognormal scatter), a heavier tail (a few beds of many times the mean) more,
 // with three beds an update; and the deepest of many near-equal places is biased deep (the maximum
-// of noisy values: a short life, the safe side).
+// of noisy values: a short life, the safe side) and, with phi, still stated 10-30 % wider than
+// it scatters (tests/unit/test_life_interval.cc).
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -76,6 +80,9 @@ namespace abrade::coupling::lifetime
     double           confidence    = 0.95;
     double           dof           = 0; ///< sum of (beds - 1) over the updates; 0: no interval
     double           bed_relative_sd = 0; ///< c: one bed's rate at the place, relative
+    /// phi^2: the beds' variance at the leading place scaled for the worst of many places
+    /// (place_scatter.h); 1: one place, or not known
+    double           place_factor  = 1;
     double           relative_sd   = 0; ///< s: of the life, all components
     double           relative_sd_beds = 0, relative_sd_extrapolation = 0; ///< the components
     double           low = 0, high = 0; ///< the interval [t]; 0: none (dof 0)
@@ -85,8 +92,11 @@ namespace abrade::coupling::lifetime
   /// The two-sided Student t quantile t_{p, dof} (Boost.Math; dof may be fractional).
   double student_t_quantile(double p, double dof);
 
-  /// The life at @p limit of the trajectory @p updates and its interval.
-  LifeInterval life_interval(double limit, const std::vector<UpdateRecord> &updates, double confidence = 0.95);
+  /// The life at @p limit of the trajectory @p updates and its interval. @p place_factor (phi^2,
+  /// place_scatter.h) scales the beds' variance where the place that ends life is the worst of
+  /// many.
+  LifeInterval life_interval(double limit, const std::vector<UpdateRecord> &updates, double confidence = 0.95,
+                             double place_factor = 1);
 
   /// The pooled relative variance c^2 of @p updates and its degrees of freedom.
   std::pair<double, double> pooled_relative_variance(const std::vector<UpdateRecord> &updates);

@@ -31,6 +31,7 @@
 #include <abrade/coupling/lifetime/edge_gauge.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
 #include <abrade/coupling/lifetime/life_interval.h>
+#include <abrade/coupling/lifetime/place_scatter.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
@@ -89,6 +90,12 @@ namespace abrade::coupling::lifetime
       std::vector<double>              depth_before, followed_mean;
       fem::SolidSurface                before; ///< the surface the rates were found on
       std::vector<std::vector<double>> followed_seed;
+      /// each seed's depth rate at the points the design's vertices moved to (place_scatter.h)
+      std::vector<std::vector<double>> design_seed;
+      /// each seed's depth rate where the gauges read the knife before the move, per station:
+      /// at the section's lowest point, and the mean of the two faces' at the gauge height
+      /// (interpolated on the surface: what moves those points; 0 where there is no section)
+      std::vector<std::vector<double>> edge_seed, faces_seed;
     };
 
     // the steps of run()
@@ -110,6 +117,9 @@ namespace abrade::coupling::lifetime
     /// beds' relative variance of its rate at the place that ends life); returns the relative
     /// bed-to-bed spread of the deepest point's rate.
     double add_update_records(const Rates &rates, const Step &step);
+    /// Each criterion's quantity at its places after this update and the beds' rates there
+    /// (place_scatter.h); the factors for the worst place.
+    void add_place_scatter(const Rates &rates, const Step &step);
     /// The life of the criterion that ends it and its interval, from the trajectory so far.
     LifeInterval current_interval(const EndOfLife &e) const;
     /// The beds of the next update under Lifetime/Target interval.
@@ -148,6 +158,12 @@ namespace abrade::coupling::lifetime
     std::vector<TrajectoryPoint> history;      ///< per update (and the fresh knife) the criteria's values
     std::vector<std::string>     trajectory_rows; ///< trajectory.csv's rows as written (rebuilt from them on resume)
     std::vector<std::vector<UpdateRecord>> records; ///< per criterion, per update (life_interval.h)
+    /// per criterion: the beds' deviations at each of its places (the design's vertices, the
+    /// followed points, the gauge's stations; none for the worn mass), the quantity there after
+    /// the last update, and the factor for the worst of them on the interval (place_scatter.h)
+    std::vector<PlaceScatter>        place_scatter;
+    std::vector<std::vector<double>> place_values;
+    std::vector<double>              place_factor;
     long                         beds_now = 0; ///< beds of the next update
     double                       previous_largest = 0; ///< the last update's largest depth rate (its size)
     bool                         smoothing_checked = false; ///< the filter's length warned about (once)
