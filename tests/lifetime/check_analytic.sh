@@ -167,9 +167,8 @@ t4 = 2.776445105
 check("seeds", "life", L, s["predicted_tonnes_to_end_of_life"], 1e-3)
 check("seeds", "bed relative sd", math.sqrt(c2), s["interval"]["bed_relative_sd"], 1e-2)
 assert s["interval"]["degrees_of_freedom"] == dof, s["interval"]
-# one multiplier per bed moves every place together: the worst place scatters as one does
-# (place_scatter.h; the factor is taken from the run's own places, not written again here)
-assert s["interval"]["worst_place_factor"] > 0.99, s["interval"]
+# (one multiplier per bed moves every place together: the worst place factor of place_scatter.h
+# is 1 by construction here and the estimator above needs none)
 check("seeds", "interval low", L * math.exp(-t4 * sd), s["predicted_tonnes_low"], 1e-2)
 check("seeds", "interval high", L * math.exp(t4 * sd), s["predicted_tonnes_high"], 1e-2)
 assert s["extrapolated"] and s["interval"]["components"]["extrapolation"] > 0, s

@@ -218,7 +218,7 @@ namespace
     double worst_of_many = 0; ///< real / stated with the factor of place_scatter.h
     double factor = 0;        ///< the mean phi
   };
-  Spread spread_ratio(int places, int trials = 3000, double leader = 0, double correlation = 0)
+  Spread spread_ratio(int places, int trials = 3000, double leader = 0, double correlation = 0, int updates = 40)
   {
     std::mt19937_64                  random(42);
     std::normal_distribution<double> normal;
@@ -231,7 +231,7 @@ namespace
         std::vector<UpdateRecord> records;
         PlaceScatter              scatter;
         double                    tonnes = 0, previous = 1e-5;
-        for (int update = 1; update <= 40 && *std::max_element(depth.begin(), depth.end()) < 0.012; ++update)
+        for (int update = 1; update <= updates && *std::max_element(depth.begin(), depth.end()) < 0.012; ++update)
           {
             std::vector<std::vector<double>> bed(3, std::vector<double>(places));
             std::vector<double>              mean(places, 0.0);
@@ -282,12 +282,15 @@ namespace
 // as stated (real / stated standard deviation 1 within 15 %). With many nearly equal places the
 // worst of them (a maximum of random walks: when the leader lags another takes over) scatters
 // about half as much as one place: at the leading place alone the stated spread is twice the
-// real one (0.49 here; the DEM benchmark's disjoint groups: 0.52). The factor of
+// real one (0.49 here; the knife-bed's disjoint bed groups end at a clear leader, the corner,
+// where the factor is 1: docs/lifetime.md). The factor of
 // place_scatter.h (a double wild bootstrap of the run's bed deviations at every place) brings
-// it to 0.76 (20 independent places), 0.86 (correlated 0.8 between neighbours, as a filtered
-// field is), 0.79 (5 places); where one place leads by 10-20 % it is 0.86-0.97. It must never
+// it to 0.78 (20 independent places), 0.88 (correlated 0.8 between neighbours, as a filtered
+// field is), 0.81 (5 places); where one place leads by 10-20 % it is 0.88-0.99. It must never
 // be over-confident by more than 10 % (above 1.1), and must take at least a third of the
-// excess off (above 0.7; at the leading place alone: below 0.6, the test fails). The bootstrap
+// excess off (above 0.7; at the leading place alone: below 0.6, the test fails). Stopped after
+// 5 updates, the life is extrapolated: the factor scales only the beds' part, not the
+// exponent's (scaled too, the referee measured 1.28 here: over-confident). The bootstrap
 // centred on the observed field keeps the margin by which the observed leader won (noise spread
 // the places apart), so fewer places compete in its draws than in reality: what is left of the
 // conservatism (docs/lifetime.md). Tried before, in this model (session 19): the spread of each
@@ -299,19 +302,22 @@ TEST(LifeInterval, TheWorstOfManyPlacesIsStatedAsItScatters)
   {
     int    places;
     double leader, correlation, low, high;
+    int    updates = 40; ///< fewer: the life extrapolated past the last update
   };
   for (const Case c : {Case{1, 0, 0, 0.85, 1.15}, Case{5, 0, 0, 0.7, 1.1}, Case{20, 0, 0, 0.7, 1.1},
-                       Case{20, 0, 0.8, 0.7, 1.1}, Case{20, 0.1, 0, 0.7, 1.1}, Case{20, 0.2, 0, 0.7, 1.1}})
+                       Case{20, 0, 0.8, 0.7, 1.1}, Case{20, 0.1, 0, 0.7, 1.1}, Case{20, 0.2, 0, 0.7, 1.1},
+                       Case{20, 0, 0, 0.5, 1.1, 5}, Case{20, 0, 0.8, 0.5, 1.1, 5}})
     {
-      const Spread r = spread_ratio(c.places, 1000, c.leader, c.correlation);
+      const Spread r = spread_ratio(c.places, 1000, c.leader, c.correlation, c.updates);
       std::cout << c.places << " places, leader +" << c.leader << ", correlation " << c.correlation
+                << (c.updates < 40 ? ", extrapolated after " + std::to_string(c.updates) + " updates" : std::string())
                 << ": real / stated standard deviation of the life: at the leading place " << r.at_one_place
                 << ", with the factor for the worst place " << r.worst_of_many << " (phi " << r.factor << ")\n";
       EXPECT_GE(r.worst_of_many, c.low) << c.places << " places, leader " << c.leader << ", correlation " << c.correlation;
       EXPECT_LE(r.worst_of_many, c.high) << c.places << " places, leader " << c.leader << ", correlation " << c.correlation;
       if (c.places == 1)
         EXPECT_NEAR(r.factor, 1, 1e-12);
-      if (c.places == 20 && c.leader == 0 && c.correlation == 0)
+      if (c.places == 20 && c.leader == 0 && c.correlation == 0 && c.updates == 40)
         EXPECT_LT(r.at_one_place, 0.6); // the conservatism the factor takes off
     }
 }

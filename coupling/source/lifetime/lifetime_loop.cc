@@ -734,8 +734,11 @@ namespace abrade::coupling::lifetime
     std::vector<double> recession(stations), lost(stations);
     for (std::size_t i = 0; i < stations; ++i)
       {
-        recession[i] = sections.height[i] - design_at_sections.height[i];
-        lost[i]      = design_at_sections.thickness[i] - sections.thickness[i];
+        // as the gauge reads them (edge_gauge.cc): a section cut away entirely has receded to
+        // the design's top; the thickness lost from the design's largest
+        recession[i] = (std::isfinite(sections.height[i]) ? sections.height[i] : design_at_sections.top[i]) -
+                       design_at_sections.height[i];
+        lost[i]      = design_thickness - sections.thickness[i];
       }
     add(edge_criterion, recession, st.edge_seed);
     add(thickness_criterion, lost, st.faces_seed);

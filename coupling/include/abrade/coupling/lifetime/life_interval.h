@@ -21,10 +21,12 @@
 // T_U / 2; b = 1 with one update), which follows wear that slows as an edge rounds. Its
 // variance is carried by the gradient (first order):
 //
-//   Var(L) = phi^2 sum_u (dL/d dQ_u)^2 c^2 dQ_u^2 / n_u
+//   Var(L) = sum_u (dL/d dQ_u)^2 c^2 dQ_u^2 / n_u
 //
-// (phi^2 <= 1: the place that ends life is the worst of many, which scatters less than the
-// leading place does; place_scatter.h gives it from the run's beds at every place, 1 for one)
+// split into the beds' part with the exponent held and the extrapolation's (below); the beds'
+// part is scaled by phi^2 <= 1: the place that ends life is the worst of many, whose level
+// scatters less than the leading place's (place_scatter.h gives it from the run's beds at
+// every place; 1 for one place). The extrapolation's part is not scaled.
 //
 // split into the beds' part with the exponent held (what the quantity at the last point
 // carries) and the extrapolation's (what the exponent's own scatter adds past the last point).
@@ -93,8 +95,8 @@ namespace abrade::coupling::lifetime
   double student_t_quantile(double p, double dof);
 
   /// The life at @p limit of the trajectory @p updates and its interval. @p place_factor (phi^2,
-  /// place_scatter.h) scales the beds' variance where the place that ends life is the worst of
-  /// many.
+  /// place_scatter.h) scales the beds' part of the variance (the exponent held) where the place
+  /// that ends life is the worst of many.
   LifeInterval life_interval(double limit, const std::vector<UpdateRecord> &updates, double confidence = 0.95,
                              double place_factor = 1);
 
