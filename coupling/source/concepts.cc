@@ -9,8 +9,10 @@
 // their geometric mean, and the 95 % t-interval of the mean log ratio over the beds (n - 1
 // degrees of freedom); a change is significant when its interval excludes 1. The bed-to-bed
 // scatter that both share cancels in the ratio (independent comparisons of the means did not
-// rank the concepts: their intervals overlapped). With lifetime runs the lives' ratio comes with
-// the interval of the two lives' intervals combined (conservative: common beds correlate them).
+// rank the concepts: their intervals overlapped). With lifetime runs every concept's lifetime
+// draws the same beds in every update (the same Lifetime/Seeds), and the lives' ratio is paired
+// the same way: through each update's beds at the place that ends life and the life's
+// elasticity to the update (life_beds.csv; lifetime/paired_life.h).
 #include <abrade/common/error.h>
 #include <abrade/common/input_file.h>
 #include <abrade/common/external.h>
@@ -18,6 +20,7 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/coupling/child_runs.h>
 #include <abrade/coupling/concepts.h>
+#include <abrade/coupling/lifetime/paired_life.h>
 #include <abrade/coupling/paired_change.h>
 
 #include <algorithm>
@@ -135,6 +138,7 @@ namespace abrade::coupling
     // --- optional: each concept's knife life ---
     std::map<std::string, std::string> life; // label -> predicted tonnes (text)
     std::map<std::string, std::array<double, 3>> life_value; // label -> life, low, high [t] (0: none)
+    std::map<std::string, lifetime::LifeBeds> life_beds; // label -> its updates' beds (life_beds.csv)
     if (o.lifetime_updates > 0)
       {
         std::vector<ChildRun> runs;
@@ -168,6 +172,8 @@ namespace abrade::coupling
             const std::string summary = root + "/lifetime/" + l + "/summary.json";
             life_value[l] = {tonnes.value_or(0), io::summary_number(summary, "predicted_tonnes_low").value_or(0),
                              io::summary_number(summary, "predicted_tonnes_high").value_or(0)};
+            if (const std::string beds = root + "/lifetime/" + l + "/life_beds.csv"; std::filesystem::exists(beds))
+              life_beds[l] = lifetime::read_life_beds(beds);
           }
         std::ofstream gp(out.file("lifetime.gp"));
         gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'lifetime.png'\nset datafile separator ','\nset grid\n"
@@ -230,7 +236,9 @@ namespace abrade::coupling
        << "Knife wear per cycle (Archard volume, mean of the knives) in mm^3, payload in kg per cycle, mean +- "
           "standard deviation over the beds. Changes against the baseline pair by pair on the same beds: the "
           "geometric mean of the per-bed ratios and its 95 % interval [low, high]; * marks a significant change "
-          "(the interval excludes no change).\n\n"
+          "(the interval excludes no change). The predicted life: its 95 % interval in parentheses, its change against the "
+          "baseline paired the same way, through every update's beds at the place that ends life (docs/lifetime.md, "
+          "\"Two lives on the same beds\").\n\n"
        << "| concept |";
     for (const auto &p : phases)
       md << " wear " << p << " |";
@@ -256,13 +264,19 @@ namespace abrade::coupling
         << 100 * (c.high - 1) << ',' << (c.significant ? 1 : 0);
       return o.str();
     };
-    // the lives: the ratio with both intervals combined on the log scale (each interval is
-    // L exp(+-t s); common beds correlate the lives, so this is wider than a paired interval)
+    // the lives: paired on the beds both drew (paired_life.h); without the beds' table (a run
+    // that found no life) the ratio with both intervals combined on the log scale
     auto life_change = [&](std::size_t k) {
       Change c;
       const auto &a = life_value[labels[k]], &b = life_value[labels[0]];
       if (!(a[0] > 0 && b[0] > 0))
         return c;
+      if (life_beds.count(labels[k]) && life_beds.count(labels[0]))
+        {
+          c = lifetime::paired_life_change(life_beds[labels[k]], life_beds[labels[0]]);
+          c.significant = c.significant && k > 0;
+          return c;
+        }
       c.ratio = a[0] / b[0];
       if (a[1] > 0 && a[2] > 0 && b[1] > 0 && b[2] > 0)
         {

@@ -171,6 +171,20 @@ def main():
         if int(head["value"]) != rows:
             fail("headline counts %s variants, the table has %d" % (head["value"], rows))
         print("ok: headline %s variants = the table's rows" % head["value"])
+        # the significant changes in words: one item per 1 in a *_significant column (the first
+        # row, the baseline, is not compared)
+        import csv as csvmod
+        table = list(csvmod.DictReader(open(os.path.join(a.run, "concepts.csv" if os.path.exists(
+            os.path.join(a.run, "concepts.csv")) else "study.csv"))))
+        want = sum(1 for r in table[1:] for k, v in r.items() if k.endswith("_significant") and v == "1")
+        html = open(os.path.join(a.run, "report.html")).read()
+        section = html[html.find(">Significant changes<"):]
+        section = section[:section.find("<h2")] if "<h2" in section else section
+        if ">Significant changes<" not in html:
+            fail("no 'Significant changes' section")
+        if section.count("<li>") != want:
+            fail("the 'Significant changes' section lists %d changes, the table has %d" % (section.count("<li>"), want))
+        print("ok: the significant changes listed (%d) = the table's" % want)
     else:
         print("ok: headline %s" % head["text"])
 

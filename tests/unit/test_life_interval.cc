@@ -316,9 +316,13 @@ TEST(LifeInterval, TheWorstOfManyPlacesIsStatedAsItScatters)
       EXPECT_GE(r.worst_of_many, c.low) << c.places << " places, leader " << c.leader << ", correlation " << c.correlation;
       EXPECT_LE(r.worst_of_many, c.high) << c.places << " places, leader " << c.leader << ", correlation " << c.correlation;
       if (c.places == 1)
-        EXPECT_NEAR(r.factor, 1, 1e-12);
+        {
+          EXPECT_NEAR(r.factor, 1, 1e-12);
+        }
       if (c.places == 20 && c.leader == 0 && c.correlation == 0 && c.updates == 40)
-        EXPECT_LT(r.at_one_place, 0.6); // the conservatism the factor takes off
+        {
+          EXPECT_LT(r.at_one_place, 0.6); // the conservatism the factor takes off
+        }
     }
 }
 

@@ -110,7 +110,8 @@ namespace abrade::coupling::lifetime
       std::partial_sum(d.begin(), d.end(), v.begin());
       return life_from_trajectory(tonnes, v, limit, held).tonnes;
     };
-    double var_free = 0, var_held = 0;
+    double              var_free = 0, var_held = 0;
+    std::vector<double> g_free_of(step.size(), 0.0), g_held_of(step.size(), 0.0);
     for (std::size_t u = 0; u < step.size(); ++u)
       {
         if (!(step[u] > 0))
@@ -123,6 +124,7 @@ namespace abrade::coupling::lifetime
         const double held   = r.life.reached ? 0 : r.life.exponent;
         const double g_held = (life_of(up, held) - life_of(down, held)) / (2 * h);
         var_free += g_free * g_free * var_u, var_held += g_held * g_held * var_u;
+        g_free_of[u] = g_free * step[u], g_held_of[u] = g_held * step[u];
       }
     // the worst of many places scatters less than the leading one: the beds' part (the level
     // the quantity reached) scaled by phi^2; not the extrapolation's (the exponent's own scatter,
@@ -134,6 +136,9 @@ namespace abrade::coupling::lifetime
     r.relative_sd               = std::sqrt(var_held + extrapolation) / L;
     r.relative_sd_beds          = std::sqrt(var_held) / L;
     r.relative_sd_extrapolation = std::sqrt(extrapolation) / L;
+    r.elasticity_held.resize(step.size()), r.elasticity_free.resize(step.size());
+    for (std::size_t u = 0; u < step.size(); ++u)
+      r.elasticity_held[u] = g_held_of[u] / L, r.elasticity_free[u] = g_free_of[u] / L;
     if (dof < 1)
       return r;
     const double t        = student_t_quantile(0.5 + 0.5 * confidence, dof);

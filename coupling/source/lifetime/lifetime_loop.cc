@@ -8,6 +8,7 @@
 #include <abrade/common/timer.h>
 #include <abrade/coupling/lifetime/lifetime_loop.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
+#include <abrade/coupling/lifetime/paired_life.h>
 #include <abrade/coupling/lifetime/state_file.h>
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
@@ -44,7 +45,7 @@ namespace abrade::coupling::lifetime
     /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum; 3 the
     /// updates' records of every criterion (beds, relative variance) and the beds of the next;
     /// 4 the beds' deviations at every criterion's places (place_scatter.h).
-    const std::string state_format = "abrade lifetime state 4";
+    const std::string state_format = "abrade lifetime state 5";
   } // namespace
 
   LifetimeLoop::LifetimeLoop(JobContext &ctx) : ctx(ctx) {}
@@ -374,9 +375,16 @@ namespace abrade::coupling::lifetime
         const auto var  = state.numbers("record_relative_variance_" + std::to_string(c));
         if (long(beds.size()) != done || var.size() != beds.size())
           throw InputError(file, "corrupt lifetime checkpoint (update records of criterion " + std::to_string(c) + ")");
+        const auto seeds = state.numbers("record_bed_seeds_" + std::to_string(c));
+        const auto rates = state.numbers("record_bed_rates_" + std::to_string(c));
+        const double all = std::accumulate(beds.begin(), beds.end(), 0.0);
+        if (seeds.size() != rates.size() || double(seeds.size()) != all)
+          throw InputError(file, "corrupt lifetime checkpoint (the beds of criterion " + std::to_string(c) + ")");
         records[c].clear();
-        for (long k = 0; k < done; ++k)
-          records[c].push_back({t[k + 1], v[k + 1], std::size_t(beds[k]), var[k]});
+        for (long k = 0, first = 0; k < done; first += long(beds[k]), ++k)
+          records[c].push_back({t[k + 1], v[k + 1], std::size_t(beds[k]), var[k],
+                                std::vector<int>(seeds.begin() + first, seeds.begin() + first + long(beds[k])),
+                                std::vector<double>(rates.begin() + first, rates.begin() + first + long(beds[k]))});
         try
           {
             place_scatter[c].set_numbers(state.numbers("place_scatter_" + std::to_string(c)));
@@ -415,7 +423,8 @@ namespace abrade::coupling::lifetime
   //    run's seeds, the update number and (for beds beyond the seeds) a round.
   CycleWear LifetimeLoop::run_cycles()
   {
-    std::vector<int> beds;
+    std::vector<int> &beds = beds_of_update;
+    beds.clear();
     for (long k = 0; k < beds_now; ++k)
       beds.push_back(bed_seed(s.seeds[k % s.seeds.size()], update, k / long(s.seeds.size())));
     CycleWear wear;
@@ -663,7 +672,8 @@ namespace abrade::coupling::lifetime
     const long  n    = st.cycles;
     const auto &now  = history.back();
     auto        keep = [&](std::size_t c, const std::vector<double> &bed_rates) {
-      records[c].push_back({now.tonnes, now.values[c], bed_rates.size(), relative_variance(bed_rates)});
+      records[c].push_back(
+        {now.tonnes, now.values[c], bed_rates.size(), relative_variance(bed_rates), beds_of_update, bed_rates});
     };
     // depth: at the vertex that is deepest after this update
     std::size_t deepest_vertex = 0;
@@ -881,11 +891,17 @@ namespace abrade::coupling::lifetime
         for (const auto &p : history)
           v.push_back(p.values[c]);
         state.set("history_criterion_" + std::to_string(c), v);
-        std::vector<double> beds, var;
+        std::vector<double> beds, var, seeds, rates; // (the last two: every update's beds, one after another)
         for (const auto &r : records[c])
-          beds.push_back(double(r.beds)), var.push_back(r.relative_variance);
+          {
+            beds.push_back(double(r.beds)), var.push_back(r.relative_variance);
+            seeds.insert(seeds.end(), r.bed_seeds.begin(), r.bed_seeds.end());
+            rates.insert(rates.end(), r.bed_rates.begin(), r.bed_rates.end());
+          }
         state.set("record_beds_" + std::to_string(c), beds);
         state.set("record_relative_variance_" + std::to_string(c), var);
+        state.set("record_bed_seeds_" + std::to_string(c), seeds);
+        state.set("record_bed_rates_" + std::to_string(c), rates);
         state.set("place_scatter_" + std::to_string(c), place_scatter[c].numbers());
         state.set("place_values_" + std::to_string(c), place_values[c]);
         state.set("place_factor_" + std::to_string(c), place_factor[c]);
@@ -924,6 +940,8 @@ namespace abrade::coupling::lifetime
                                                         : "none");
     std::vector<double> where = deepest;
     LifeInterval        li    = current_interval(e);
+    // the updates the interval came from (their beds pair this run with another: life_beds.csv)
+    const std::vector<UpdateRecord> *interval_records = e.criterion == EndOfLife::none ? nullptr : &records[e.criterion];
     // an interval found for another life, carried to @p tonnes (relative, as it is)
     auto carried_to = [](LifeInterval i, double tonnes) {
       const double scale = i.life.tonnes > 0 ? tonnes / i.life.tonnes : 0.0;
@@ -941,6 +959,7 @@ namespace abrade::coupling::lifetime
             where = {};
           // its interval: relative, from the updates recorded before the last one
           li = carried_to(life_interval(criteria[e.criterion].limit, records[e.criterion]), e.tonnes);
+          interval_records = &records[e.criterion];
           worn_through = false;
         }
     if (worn_through && (!e.reached || worn_through_tonnes < e.tonnes))
@@ -952,6 +971,7 @@ namespace abrade::coupling::lifetime
                           ? LifeInterval{}
                           : life_interval(history.back().values[depth_criterion], records[depth_criterion]),
                         worn_through_tonnes);
+        interval_records = &records[depth_criterion];
       }
     if (e.criterion == mass_criterion && !worn_through)
       where = {}; // the whole knife
@@ -1022,6 +1042,10 @@ namespace abrade::coupling::lifetime
           std::sqrt(c2 * sum) / history.back().values[mass_criterion] * std::sqrt(double(s.seeds.size()));
       }
     r["confidence"] = li.confidence;
+    // every update's beds at the place that ends life and the life's elasticity to each update:
+    // `abrade concepts` pairs two runs' lives on them (paired_life.h)
+    if (interval_records && li.life.tonnes > 0)
+      write_life_beds(ctx.output.file("life_beds.csv"), life_beds(*interval_records, li));
     if (li.dof >= 1 && li.life.tonnes > 0)
       {
         r["predicted_tonnes_low"]  = li.low;

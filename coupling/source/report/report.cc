@@ -310,6 +310,43 @@ namespace abrade::report
       return files.empty() ? "" : files.back().second;
     }
 
+    /// The changes against the first row whose 95 % interval excludes no change, in words: every
+    /// column NAME_significant that is 1, with NAME_percent and its _low_percent/_high_percent
+    /// (concepts.csv) or the ratio NAME and its NAME_low/NAME_high (study.csv).
+    std::string significant_changes(const io::CsvTable &csv)
+    {
+      const std::string tail = "_significant";
+      std::string       list;
+      for (std::size_t r = 1; r < csv.rows.size(); ++r)
+        for (std::size_t c = 0; c < csv.header.size(); ++c)
+          {
+            const std::string &h = csv.header[c];
+            if (h.size() <= tail.size() || h.compare(h.size() - tail.size(), tail.size(), tail) != 0 ||
+                csv.rows[r][c] != "1")
+              continue;
+            const std::string name = h.substr(0, h.size() - tail.size());
+            auto              cell = [&](const std::string &column) {
+              const int k = csv.find(column);
+              return k >= 0 ? std::strtod(csv.rows[r][k].c_str(), nullptr) : std::nan("");
+            };
+            char text[160];
+            if (csv.find(name + "_percent") >= 0)
+              std::snprintf(text, sizeof text, "%+.3g %% [%+.3g, %+.3g]", cell(name + "_percent"),
+                            cell(name + "_low_percent"), cell(name + "_high_percent"));
+            else
+              std::snprintf(text, sizeof text, "x %.4g [%.4g, %.4g]", cell(name), cell(name + "_low"),
+                            cell(name + "_high"));
+            std::string what = name.rfind("change_", 0) == 0 ? name.substr(7) : name;
+            std::replace(what.begin(), what.end(), '_', ' ');
+            list += "<li><b>" + escape_html(csv.rows[r][0]) + "</b>: " + escape_html(what) + " " + escape_html(text) +
+                    "</li>";
+          }
+      return list.empty() ? "No change against the first row is significant: every 95 % interval holds no change "
+                            "(pair by pair on the same beds)."
+                          : "Against the first row, pair by pair on the same beds, the 95 % interval excludes no "
+                            "change for:<ul>" + list + "</ul>";
+    }
+
     std::string table_page(const std::string &dir, const std::string &title, const std::string &csv_file,
                            const std::vector<std::string> &pngs)
     {
@@ -338,6 +375,8 @@ namespace abrade::report
                          "t per cycle, wear per tonne in m^3/t; columns ending in _std are the standard deviations over the "
                          "bed seeds, _uncertainty the uncertainty of a change against the first row, in per cent "
                          "(docs/user-guide.md).");
+          page.heading("Significant changes");
+          page.paragraph(significant_changes(csv));
         }
       page.heading("Plots");
       for (const auto &p : pngs)

@@ -27,9 +27,8 @@
 // part is scaled by phi^2 <= 1: the place that ends life is the worst of many, whose level
 // scatters less than the leading place's (place_scatter.h gives it from the run's beds at
 // every place; 1 for one place). The extrapolation's part is not scaled.
-//
-// split into the beds' part with the exponent held (what the quantity at the last point
-// carries) and the extrapolation's (what the exponent's own scatter adds past the last point).
+// (The beds' part is what the quantity at the last point carries; the extrapolation's what the
+// exponent's own scatter adds past the last point.)
 // The interval is formed on ln L, so that it is never unbounded and never negative:
 //
 //   [L exp(-t s), L exp(t s)],  s = sqrt(Var(L)) / L,  t = t_{1-a/2, dof}
@@ -59,6 +58,10 @@ namespace abrade::coupling::lifetime
     /// square of their mean (n - 1 in the denominator; 0 for one bed; -1: the place did not
     /// wear, left out of the pool)
     double relative_variance = 0;
+    /// each bed's seed (bed_seed()) and its rate at the place that ends life, in the same order:
+    /// what pairs two runs on common beds (paired_life.h)
+    std::vector<int>    bed_seeds = {};
+    std::vector<double> bed_rates = {};
   };
 
   /// How a life was found on a trajectory.
@@ -89,6 +92,12 @@ namespace abrade::coupling::lifetime
     double           relative_sd_beds = 0, relative_sd_extrapolation = 0; ///< the components
     double           low = 0, high = 0; ///< the interval [t]; 0: none (dof 0)
     double           relative_half_width = 0; ///< (high - low) / (2 life)
+    /// per update u, the life's relative change per relative change of the update's increment
+    /// dQ_u (dL/d dQ_u dQ_u / L; 0 where the update did not move the quantity), with the
+    /// exponent held (the beds' part) and fitted (free); the variance above is
+    /// phi^2 sum_u held_u^2 c^2 / n_u + max(0, sum_u (free_u^2 - held_u^2) c^2 / n_u). What pairs
+    /// two runs' bed deviations (paired_life.h).
+    std::vector<double> elasticity_held, elasticity_free;
   };
 
   /// The two-sided Student t quantile t_{p, dof} (Boost.Math; dof may be fractional).

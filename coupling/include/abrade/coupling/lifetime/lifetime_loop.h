@@ -165,6 +165,7 @@ namespace abrade::coupling::lifetime
     std::vector<std::vector<double>> place_values;
     std::vector<double>              place_factor;
     long                         beds_now = 0; ///< beds of the next update
+    std::vector<int>             beds_of_update; ///< the seeds of the update's beds (bed_seed())
     double                       previous_largest = 0; ///< the last update's largest depth rate (its size)
     bool                         smoothing_checked = false; ///< the filter's length warned about (once)
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)

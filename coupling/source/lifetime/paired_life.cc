@@ -1,0 +1,163 @@
+// Two lives compared pair by pair on common beds (paired_life.h).
+#include <abrade/common/atomic_file.h>
+#include <abrade/common/csv_reader.h>
+#include <abrade/common/error.h>
+#include <abrade/common/finite_number.h>
+#include <abrade/coupling/lifetime/life_interval.h>
+#include <abrade/coupling/lifetime/paired_life.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace abrade::coupling::lifetime
+{
+  namespace
+  {
+    /// e_j = r_j / mean - 1; empty where the update has fewer than two beds or no wear there.
+    std::vector<double> deviations(const UpdateBeds &u)
+    {
+      if (u.rates.size() < 2)
+        return {};
+      const double mean = std::accumulate(u.rates.begin(), u.rates.end(), 0.0) / double(u.rates.size());
+      if (!(mean > 0))
+        return {};
+      std::vector<double> e;
+      for (double r : u.rates)
+        e.push_back(r / mean - 1);
+      return e;
+    }
+
+    /// The pooled c^2 = sum e^2 / sum (n - 1) of a run, and its degrees of freedom.
+    std::pair<double, double> pooled(const LifeBeds &run)
+    {
+      double sum = 0, dof = 0;
+      for (const auto &u : run.updates)
+        if (const auto e = deviations(u); !e.empty())
+          {
+            for (double x : e)
+              sum += x * x;
+            dof += double(e.size() - 1);
+          }
+      return {dof > 0 ? sum / dof : 0.0, dof};
+    }
+
+    /// The variance of the log ratio for the elasticities chosen by @p g (held or free, each
+    /// run's scaled by its factor), with the runs' pooled c^2 and covariance k (paired_life.h).
+    template <class Elasticity>
+    double log_ratio_variance(const LifeBeds &a, const LifeBeds &b, double ca2, double cb2, double k,
+                              const std::vector<bool> &common, Elasticity g)
+    {
+      double v = 0;
+      for (const auto &u : a.updates)
+        if (!u.rates.empty())
+          v += ca2 * g(u) * g(u) / double(u.rates.size());
+      for (const auto &u : b.updates)
+        if (!u.rates.empty())
+          v += cb2 * g(u) * g(u) / double(u.rates.size());
+      for (std::size_t u = 0; u < common.size(); ++u)
+        if (common[u])
+          v -= 2 * k * g(a.updates[u]) * g(b.updates[u]) / double(a.updates[u].rates.size());
+      return v;
+    }
+  } // namespace
+
+  PairedChange paired_life_change(const LifeBeds &variant, const LifeBeds &baseline, double confidence)
+  {
+    PairedChange r;
+    if (!(variant.life > 0 && baseline.life > 0))
+      return r;
+    r.ratio = r.low = r.high = variant.life / baseline.life;
+    const auto [ca2, dof_a] = pooled(variant);
+    const auto [cb2, dof_b] = pooled(baseline);
+    if (dof_a < 1 || dof_b < 1)
+      return r; // a run without an interval: none for the change either
+    // the covariance of the two runs' deviations on the beds they shared
+    const std::size_t both = std::min(variant.updates.size(), baseline.updates.size());
+    std::vector<bool> common(both, false);
+    double            cross = 0, dof_c = 0;
+    for (std::size_t u = 0; u < both; ++u)
+      {
+        if (variant.updates[u].seeds != baseline.updates[u].seeds)
+          continue;
+        const auto ea = deviations(variant.updates[u]), eb = deviations(baseline.updates[u]);
+        if (ea.empty() || eb.empty())
+          continue;
+        for (std::size_t j = 0; j < ea.size(); ++j)
+          cross += ea[j] * eb[j];
+        dof_c += double(ea.size() - 1), r.pairs += ea.size(), common[u] = true;
+      }
+    const double k = dof_c > 0 ? cross / dof_c : 0.0;
+    // V(phi H) + max(0, V(F) - V(H)); phi scales each run's own elasticities
+    const double fa = std::sqrt(variant.place_factor), fb = std::sqrt(baseline.place_factor);
+    const double held_scaled =
+      log_ratio_variance(variant, baseline, ca2 * fa * fa, cb2 * fb * fb, k * fa * fb, common,
+                         [](const UpdateBeds &u) { return u.held; });
+    const double held = log_ratio_variance(variant, baseline, ca2, cb2, k, common,
+                                           [](const UpdateBeds &u) { return u.held; });
+    const double free = log_ratio_variance(variant, baseline, ca2, cb2, k, common,
+                                           [](const UpdateBeds &u) { return u.free; });
+    const double var = std::max(0.0, held_scaled) + std::max(0.0, free - held);
+    const double dof = dof_c > 0 ? std::min({dof_a, dof_b, dof_c}) : std::min(dof_a, dof_b);
+    const double h   = student_t_quantile(0.5 + 0.5 * confidence, dof) * std::sqrt(var);
+    r.low = r.ratio * std::exp(-h), r.high = r.ratio * std::exp(h);
+    r.significant = r.low > 1 || r.high < 1;
+    return r;
+  }
+
+  LifeBeds life_beds(const std::vector<UpdateRecord> &records, const LifeInterval &interval)
+  {
+    LifeBeds b;
+    b.life = interval.life.tonnes, b.place_factor = interval.place_factor;
+    for (std::size_t u = 0; u < records.size(); ++u)
+      b.updates.push_back({u < interval.elasticity_held.size() ? interval.elasticity_held[u] : 0.0,
+                           u < interval.elasticity_free.size() ? interval.elasticity_free[u] : 0.0,
+                           records[u].bed_seeds, records[u].bed_rates});
+    return b;
+  }
+
+  void write_life_beds(const std::string &path, const LifeBeds &beds)
+  {
+    std::ostringstream out;
+    out.precision(17);
+    out << "life,place_factor,update,elasticity_held,elasticity_free,bed_seed,rate\n";
+    for (std::size_t u = 0; u < beds.updates.size(); ++u)
+      {
+        const auto &b = beds.updates[u];
+        for (std::size_t j = 0; j < b.rates.size() && j < b.seeds.size(); ++j)
+          out << beds.life << ',' << beds.place_factor << ',' << u + 1 << ',' << b.held << ',' << b.free << ','
+              << b.seeds[j] << ',' << b.rates[j] << '\n';
+      }
+    io::write_file_atomically(path, out.str());
+  }
+
+  LifeBeds read_life_beds(const std::string &path)
+  {
+    const io::CsvTable t = io::read_csv(path);
+    const int          cl = t.column("life"), cf = t.column("place_factor"), cu = t.column("update"),
+              ch = t.column("elasticity_held"), cg = t.column("elasticity_free"), cs = t.column("bed_seed"),
+              cr = t.column("rate");
+    LifeBeds b;
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      {
+        const auto       &row   = t.rows[i];
+        const std::string where = "line " + std::to_string(t.line[i]);
+        auto              number = [&](int c) {
+          const auto v = io::finite_number(row[c]);
+          if (!v)
+            throw InputError(path, where + ": '" + row[c] + "' is not a finite number");
+          return *v;
+        };
+        const double u = number(cu);
+        if (u < 1 || u != std::floor(u) || u > double(b.updates.size()) + 1 || u < double(b.updates.size()))
+          throw InputError(path, where + ": update " + row[cu] + " out of order");
+        b.life = number(cl), b.place_factor = number(cf);
+        if (u > double(b.updates.size()))
+          b.updates.push_back({number(ch), number(cg), {}, {}});
+        b.updates.back().seeds.push_back(int(number(cs)));
+        b.updates.back().rates.push_back(number(cr));
+      }
+    return b;
+  }
+} // namespace abrade::coupling::lifetime
