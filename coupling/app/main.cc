@@ -54,10 +54,12 @@ namespace
   abrade params [--format text|prm]
       print every parameter with its documentation, unit, allowed range and default
   abrade sweep FILE.prm --vary "Section/Key=v1,v2,..." [--vary "Key2=..."]... [--seeds 1,2,3]
-               [--wall knife] [--edge-height 0.04] [--jobs N] [--set ...]... --output DIR
+               [--wall knife] [--edge-height 0.04] [--lifetime-updates N] [--jobs N] [--set ...]...
+               --output DIR
       run the case for every value (several --vary: every combination) and seed (one settled
       bed per seed and particle parameters, reused), in parallel, and write study.csv/.md (mean
-      and std over seeds), plots/*.png and surfaces/*.vtp
+      and std over seeds), plots/*.png and surfaces/*.vtp; with --lifetime-updates, each
+      combination's life too, paired against the first's (lifetime/NAME/)
   abrade concepts BASELINE.prm CONCEPT.prm... [--seeds 1,2] [--knives right_knife,left_knife]
                   [--lifetime-updates N] [--jobs N] [--set ...]... --output DIR
       run every knife concept's cycle per bed seed (the same beds for all), and write the
@@ -486,6 +488,7 @@ int main(int argc, char **argv)
           o.edge_height = cl.edge_height;
           o.seeds = seed_list(cl.seeds.empty() ? "1,2,3" : cl.seeds);
           o.sets = cl.sets, o.output = cl.output, o.wall = cl.wall, o.jobs = cl.jobs, o.quiet = cl.quiet;
+          o.lifetime_updates = cl.lifetime_updates;
           io::ProgressLine::set_quiet(cl.quiet);
           return with_report(coupling::run_sweep(o, std::filesystem::canonical("/proc/self/exe").string()), o.output);
         }

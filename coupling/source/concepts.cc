@@ -20,8 +20,8 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/coupling/child_runs.h>
 #include <abrade/coupling/concepts.h>
-#include <abrade/coupling/lifetime/paired_life.h>
 #include <abrade/coupling/paired_change.h>
+#include <abrade/coupling/study_lives.h>
 
 #include <algorithm>
 #include <cmath>
@@ -137,14 +137,10 @@ namespace abrade::coupling
 
     // --- optional: each concept's knife life ---
     std::map<std::string, std::string> life; // label -> predicted tonnes (text)
-    std::map<std::string, std::array<double, 3>> life_value; // label -> life, low, high [t] (0: none)
-    std::map<std::string, lifetime::LifeBeds> life_beds; // label -> its updates' beds (life_beds.csv)
+    std::map<std::string, StudyLife>   life_value; // label -> its life, interval and beds
     if (o.lifetime_updates > 0)
       {
         std::vector<ChildRun> runs;
-        std::string           seeds;
-        for (int s : o.seeds)
-          seeds += (seeds.empty() ? "" : ",") + std::to_string(s);
         for (std::size_t k = 0; k < o.files.size(); ++k)
           {
             const std::string dir = root + "/lifetime/" + labels[k];
@@ -153,27 +149,17 @@ namespace abrade::coupling
               std::filesystem::copy_file(root + "/beds/bed-seed" + std::to_string(s) + ".bed",
                                          dir + "/beds/bed-seed" + std::to_string(s) + ".bed",
                                          std::filesystem::copy_options::overwrite_existing);
-            std::vector<std::string> sets = o.sets;
-            sets.insert(sets.end(), {"Job=lifetime", "Lifetime/Tonnes per cycle=0",
-                                     "Lifetime/Maximum updates=" + std::to_string(o.lifetime_updates),
-                                     "Lifetime/Seeds=" + seeds, "Simulation/Threads=1", "Output/Write particles=false",
-                                     "Output/Snapshot interval=0", "Particles/Settling/Bed file="});
+            const auto sets = lifetime_run_sets(o.sets, o.lifetime_updates, o.seeds);
             runs.push_back({dir, run_command(abrade, std::filesystem::absolute(o.files[k]).string(), dir, sets)});
           }
         run_children(runs, o.jobs, "concepts (lifetime)");
         for (const auto &l : labels)
           {
-            const auto tonnes =
-              io::summary_number(root + "/lifetime/" + l + "/summary.json", "predicted_tonnes_to_end_of_life");
+            life_value[l] = read_study_life(root + "/lifetime/" + l);
             char text[32] = "-";
-            if (tonnes)
-              std::snprintf(text, sizeof text, "%.3g", *tonnes);
+            if (life_value[l].tonnes > 0)
+              std::snprintf(text, sizeof text, "%.3g", life_value[l].tonnes);
             life[l] = text;
-            const std::string summary = root + "/lifetime/" + l + "/summary.json";
-            life_value[l] = {tonnes.value_or(0), io::summary_number(summary, "predicted_tonnes_low").value_or(0),
-                             io::summary_number(summary, "predicted_tonnes_high").value_or(0)};
-            if (const std::string beds = root + "/lifetime/" + l + "/life_beds.csv"; std::filesystem::exists(beds))
-              life_beds[l] = lifetime::read_life_beds(beds);
           }
         std::ofstream gp(out.file("lifetime.gp"));
         gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'lifetime.png'\nset datafile separator ','\nset grid\n"
@@ -264,35 +250,17 @@ namespace abrade::coupling
         << 100 * (c.high - 1) << ',' << (c.significant ? 1 : 0);
       return o.str();
     };
-    // the lives: paired on the beds both drew (paired_life.h); without the beds' table (a run
-    // that found no life) the ratio with both intervals combined on the log scale
-    auto life_change = [&](std::size_t k) {
-      Change c;
-      const auto &a = life_value[labels[k]], &b = life_value[labels[0]];
-      if (!(a[0] > 0 && b[0] > 0))
-        return c;
-      if (life_beds.count(labels[k]) && life_beds.count(labels[0]))
-        {
-          c = lifetime::paired_life_change(life_beds[labels[k]], life_beds[labels[0]]);
-          c.significant = c.significant && k > 0;
-          return c;
-        }
-      c.ratio = a[0] / b[0];
-      if (a[1] > 0 && a[2] > 0 && b[1] > 0 && b[2] > 0)
-        {
-          const double h = std::hypot(0.5 * std::log(a[2] / a[1]), 0.5 * std::log(b[2] / b[1]));
-          c.low = c.ratio * std::exp(-h), c.high = c.ratio * std::exp(h);
-          c.significant = k > 0 && (c.low > 1 || c.high < 1);
-        }
-      else
-        c.low = c.high = c.ratio;
+    // the lives: paired on the beds both drew (study_lives.h)
+    auto life_change_of = [&](std::size_t k) {
+      Change c = life_change(life_value[labels[k]], life_value[labels[0]]);
+      c.significant = c.significant && k > 0;
       return c;
     };
     for (std::size_t k = 0; k < o.files.size(); ++k)
       {
         const Change cw = paired_change(sum[k].total_of_bed, sum[0].total_of_bed),
                      cp = paired_change(sum[k].payload_of_bed, sum[0].payload_of_bed),
-                     ct = paired_change(sum[k].per_tonne_of_bed, sum[0].per_tonne_of_bed), cl = life_change(k);
+                     ct = paired_change(sum[k].per_tonne_of_bed, sum[0].per_tonne_of_bed), cl = life_change_of(k);
         csv << labels[k];
         md << "| " << labels[k] << " |";
         for (const auto &p : phases)
@@ -304,7 +272,7 @@ namespace abrade::coupling
             << sum[k].payload.std << ',' << sum[k].per_tonne.mean << ',' << sum[k].per_tonne.std << columns(cw)
             << columns(cp) << columns(ct) << ',' << (life.count(labels[k]) ? life[labels[k]] : "");
         if (life_value.count(labels[k]))
-          csv << ',' << life_value[labels[k]][1] << ',' << life_value[labels[k]][2] << columns(cl) << '\n';
+          csv << ',' << life_value[labels[k]].low << ',' << life_value[labels[k]].high << columns(cl) << '\n';
         else
           csv << ",,,,,,,\n";
         md << ' ' << pm(sum[k].wear["total"], 1e9) << " | " << pm(sum[k].payload, 1e3) << " | "
@@ -314,9 +282,9 @@ namespace abrade::coupling
           {
             const auto &v = life_value[labels[k]];
             md << ' ' << life[labels[k]];
-            if (v[1] > 0)
+            if (v.low > 0)
               {
-                std::snprintf(buf, sizeof buf, " (%.3g ... %.3g)", v[1], v[2]);
+                std::snprintf(buf, sizeof buf, " (%.3g ... %.3g)", v.low, v.high);
                 md << buf;
               }
             md << (k ? "; " + pct(cl) : std::string()) << " |";

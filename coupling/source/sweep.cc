@@ -26,6 +26,7 @@
 #include <abrade/common/progress.h>
 #include <abrade/coupling/child_runs.h>
 #include <abrade/coupling/paired_change.h>
+#include <abrade/coupling/study_lives.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/sweep.h>
 
@@ -323,6 +324,29 @@ namespace abrade::coupling
     run_children(makes_beds, o.jobs, "sweep (first runs, which settle the beds)");
     run_children(uses_beds, o.jobs, "sweep");
 
+    // --- optional: each combination's life, all on the same beds in every update ---
+    std::vector<StudyLife>    lives(combos.size());
+    std::vector<PairedChange> life_against_first(combos.size());
+    if (o.lifetime_updates > 0)
+      {
+        std::vector<ChildRun> runs;
+        for (std::size_t c = 0; c < combos.size(); ++c)
+          {
+            std::vector<std::string> sets = o.sets;
+            for (std::size_t i = 0; i < o.varies.size(); ++i)
+              sets.push_back(o.varies[i].key + "=" + combos[c][i]);
+            const std::string dir = root + "/lifetime/" + name_of(combos[c]);
+            runs.push_back({dir, run_command(abrade, o.parameter_file, dir,
+                                             lifetime_run_sets(sets, o.lifetime_updates, o.seeds))});
+          }
+        std::filesystem::create_directories(root + "/lifetime");
+        run_children(runs, o.jobs, "sweep (lifetime)");
+        for (std::size_t c = 0; c < combos.size(); ++c)
+          lives[c] = read_study_life(runs[c].dir);
+        for (std::size_t c = 1; c < combos.size(); ++c)
+          life_against_first[c] = life_change(lives[c], lives[0]);
+      }
+
     // --- reduce ---
     std::vector<std::string> phases;
     {
@@ -386,6 +410,10 @@ namespace abrade::coupling
       header.push_back(m + "_mean"), header.push_back(m + "_std");
     for (const char *h : {"wear_total_ratio", "wear_total_ratio_low", "wear_total_ratio_high", "wear_total_ratio_significant"})
       header.push_back(h);
+    if (o.lifetime_updates > 0)
+      for (const char *h : {"life", "life_low", "life_high", "life_ratio", "life_ratio_low", "life_ratio_high",
+                            "life_ratio_significant"})
+        header.push_back(h);
     std::ofstream csv(out.file("study.csv"));
     std::ofstream md(out.file("study.md"));
     for (std::size_t k = 0; k < header.size(); ++k)
@@ -401,8 +429,9 @@ namespace abrade::coupling
       md << " " << v.key << " |";
     for (const auto &m : metrics)
       md << " " << m << " |";
-    md << " wear_total / first (paired, 95 %) |\n|";
-    for (std::size_t k = 0; k < o.varies.size() + metrics.size() + 1; ++k)
+    md << " wear_total / first (paired, 95 %) |" << (o.lifetime_updates > 0 ? " life [t] (95 %) | life / first (paired, 95 %) |" : "")
+       << "\n|";
+    for (std::size_t k = 0; k < o.varies.size() + metrics.size() + 1 + 2 * (o.lifetime_updates > 0); ++k)
       md << "---|";
     md << "\n";
     std::vector<std::map<std::string, std::pair<double, double>>> stats(combos.size());
@@ -427,6 +456,17 @@ namespace abrade::coupling
         std::snprintf(buf, sizeof buf, "%.4g [%.4g, %.4g]%s", p.ratio, p.low, p.high, p.significant ? " *" : "");
         md << " " << (c ? std::string(buf) : std::string("1 (first)")) << " |";
         csv << "," << p.ratio << "," << p.low << "," << p.high << "," << (p.significant ? 1 : 0);
+        if (o.lifetime_updates > 0)
+          {
+            const StudyLife    &l = lives[c];
+            const PairedChange &q = life_against_first[c];
+            csv << "," << l.tonnes << "," << l.low << "," << l.high << "," << q.ratio << "," << q.low << "," << q.high
+                << "," << (q.significant ? 1 : 0);
+            std::snprintf(buf, sizeof buf, " %.3g (%.3g ... %.3g) |", l.tonnes, l.low, l.high);
+            md << (l.tonnes > 0 ? std::string(buf) : std::string(" - |"));
+            std::snprintf(buf, sizeof buf, " %.4g [%.4g, %.4g]%s |", q.ratio, q.low, q.high, q.significant ? " *" : "");
+            md << (c ? std::string(buf) : std::string(" 1 (first) |"));
+          }
         md << "\n", csv << "\n";
       }
     md << "\nWear is the Archard volume (W as in the parameter file); per metre: over the distance the wall's "
@@ -441,7 +481,13 @@ namespace abrade::coupling
           "contacts with the wall, a particle on two faces counting twice (mean over the probe's samples). "
           "wear_total / first: each combination's total wear against the first combination's, pair by pair on "
           "the same seeds (the same beds where no particle parameter varies), the geometric mean of the per-seed "
-          "ratios with its 95 % t-interval; * marks a significant difference.\n";
+          "ratios with its 95 % t-interval; * marks a significant difference."
+       << (o.lifetime_updates > 0
+             ? " life: tonnes to end of life of each combination's lifetime run (" + std::to_string(o.lifetime_updates) +
+                 " updates, the seeds' beds in every update) with its 95 % interval; life / first: paired on "
+                 "the beds both drew at the place that ends life (docs/lifetime.md, \"Two lives on the same beds\")."
+             : std::string())
+       << "\n";
     md.close();
     if (!csv)
       throw RunError("sweep: could not write " + out.file("study.csv"));

@@ -13,7 +13,9 @@
 #    of cycles): the life's change is -50 % within 0.5 %, its paired interval narrower than
 #    +-0.5 %, where each life's own interval spans a factor of more than two (its beds scatter
 #    by more than 100 % on this small case);
-#  - concepts.csv's paired interval is the one written again here from the two life_beds.csv.
+#  - concepts.csv's paired interval is the one written again here from the two life_beds.csv;
+#  - abrade sweep over the baseline's Archard coefficient (2e-14, 4e-14: the same runs by another
+#    path, --vary instead of a file) gives the same life ratio and interval in study.csv.
 #   check_paired_life.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -21,6 +23,8 @@ rm -rf "$out"
 c="$src/tests/lifetime/paired"
 "$abrade" concepts "$c/baseline.prm" "$c/baseline_again.prm" "$c/double_wear.prm" --knives knife --seeds 1,2,3 \
   --lifetime-updates 2 --jobs 2 --quiet --output "$out"
+"$abrade" sweep "$c/baseline.prm" --vary "Wall knife/Wear/Archard/Coefficient=2e-14,4e-14" --seeds 1,2,3 \
+  --lifetime-updates 2 --jobs 2 --quiet --output "$out/sweep" > /dev/null
 python3 - "$out" <<'PY'
 import csv, json, math, os, sys
 from statistics import mean
@@ -94,8 +98,14 @@ assert float(again["change_life_percent"]) == 0 and float(again["change_life_low
 assert abs(float(double["change_life_percent"]) + 50) < 0.5, double
 assert float(double["change_life_high_percent"]) - float(double["change_life_low_percent"]) < 1.0, double
 assert int(double["change_life_significant"]) == 1, double
+sweep = list(csv.DictReader(open(os.path.join(out, "sweep", "study.csv"))))
+ratio = 1 + float(double["change_life_percent"]) / 100
+for key, want in (("life_ratio", ratio), ("life_ratio_low", 1 + float(double["change_life_low_percent"]) / 100),
+                  ("life_ratio_high", 1 + float(double["change_life_high_percent"]) / 100)):
+    assert abs(float(sweep[1][key]) - want) < 1e-6, (key, sweep[1][key], want)
+assert int(sweep[1]["life_ratio_significant"]) == 1 and float(sweep[0]["life_ratio"]) == 1, sweep
 own = [float(rows[n]["predicted_life_high"]) / float(rows[n]["predicted_life_low"]) for n in ("baseline", "double_wear")]
 print(f"ok: twice the wear: life {float(double['change_life_percent']):+.3f} % [{float(double['change_life_low_percent']):+.3f}, "
       f"{float(double['change_life_high_percent']):+.3f}] paired, where each life's own interval spans a factor "
-      f"{own[0]:.3g} / {own[1]:.3g}; the baseline again: 0 % [0, 0]")
+      f"{own[0]:.3g} / {own[1]:.3g}; the baseline again: 0 % [0, 0]; the sweep's the same")
 PY

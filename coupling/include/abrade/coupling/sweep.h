@@ -4,7 +4,9 @@
 // (combination, seed) is one `abrade run` (single-threaded, as many at a time as there are
 // cores); the settled bed of each seed is made once per combination of the varied particle
 // parameters (Particles/...) and reused by the others. The runs' tables are then reduced to
-// mean and standard deviation over the seeds, per combination, for one wall.
+// mean and standard deviation over the seeds, per combination, for one wall. With
+// --lifetime-updates N each combination's life too (a lifetime run of N updates on the same
+// Lifetime/Seeds for all), paired against the first combination's (study_lives.h).
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@ namespace abrade::coupling
     std::string              output;
     std::string              wall = "knife";
     int                      jobs = 0; ///< concurrent runs; 0: number of cores
+    int                      lifetime_updates = 0; ///< >0: each combination's life too (on the seeds' beds)
     bool                     quiet = false;
   };
 
