@@ -238,16 +238,24 @@ namespace abrade::coupling
       std::snprintf(buf, sizeof buf, "%.3g +- %.2g", scale * s.mean, scale * s.std);
       return std::string(buf);
     };
+    // (a change without an interval, one bed: said so, its interval's cells left empty)
     auto pct = [&](const Change &c) {
-      std::snprintf(buf, sizeof buf, "%+.1f %% [%+.1f, %+.1f]%s", 100 * (c.ratio - 1), 100 * (c.low - 1),
-                    100 * (c.high - 1), c.significant ? " *" : "");
+      if (!c.interval)
+        std::snprintf(buf, sizeof buf, "%+.1f %% (no interval: one bed)", 100 * (c.ratio - 1));
+      else
+        std::snprintf(buf, sizeof buf, "%+.1f %% [%+.1f, %+.1f]%s", 100 * (c.ratio - 1), 100 * (c.low - 1),
+                      100 * (c.high - 1), c.significant ? " *" : "");
       return std::string(buf);
     };
     auto columns = [&](const Change &c) {
       std::ostringstream o;
       o.precision(8);
-      o << ',' << 100 * (c.ratio - 1) << ',' << 50 * (c.high - c.low) << ',' << 100 * (c.low - 1) << ','
-        << 100 * (c.high - 1) << ',' << (c.significant ? 1 : 0);
+      o << ',' << 100 * (c.ratio - 1);
+      if (c.interval)
+        o << ',' << 50 * (c.high - c.low) << ',' << 100 * (c.low - 1) << ',' << 100 * (c.high - 1);
+      else
+        o << ",,,";
+      o << ',' << (c.significant ? 1 : 0);
       return o.str();
     };
     // the lives: paired on the beds both drew (study_lives.h)

@@ -27,6 +27,7 @@ namespace abrade::coupling
       var += (x - mean) * (x - mean) / (n - 1);
     const double h = lifetime::student_t_quantile(0.975, n - 1) * std::sqrt(var / n);
     r.low = std::exp(mean - h), r.high = std::exp(mean + h);
+    r.interval    = true;
     r.significant = r.low > 1 || r.high < 1;
     return r;
   }

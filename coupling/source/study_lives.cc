@@ -1,9 +1,11 @@
 // The lives of a study's variants (study_lives.h).
+#include <abrade/common/error.h>
 #include <abrade/common/json.h>
 #include <abrade/coupling/study_lives.h>
 
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 
 namespace abrade::coupling
 {
@@ -26,7 +28,15 @@ namespace abrade::coupling
     l.low    = io::summary_number(summary, "predicted_tonnes_low").value_or(0);
     l.high   = io::summary_number(summary, "predicted_tonnes_high").value_or(0);
     if (std::filesystem::exists(dir + "/life_beds.csv"))
-      l.beds = lifetime::read_life_beds(dir + "/life_beds.csv"), l.has_beds = true;
+      try
+        {
+          l.beds = lifetime::read_life_beds(dir + "/life_beds.csv"), l.has_beds = true;
+        }
+      catch (const InputError &e) // (the others' changes are still worth having)
+        {
+          std::cerr << "warning: " << e.what() << "; its change of life is taken from the two lives' intervals "
+                    << "combined (not paired)" << std::endl;
+        }
     return l;
   }
 
@@ -42,6 +52,7 @@ namespace abrade::coupling
       {
         const double h = std::hypot(0.5 * std::log(variant.high / variant.low), 0.5 * std::log(baseline.high / baseline.low));
         c.low = c.ratio * std::exp(-h), c.high = c.ratio * std::exp(h);
+        c.interval    = true;
         c.significant = c.low > 1 || c.high < 1;
       }
     return c;

@@ -452,20 +452,36 @@ namespace abrade::coupling
             csv << "," << stats[c][m].first << "," << stats[c][m].second;
           }
         const PairedChange &p = against_first[c];
+        // (a ratio without an interval, one seed: said so, its interval's cells left empty)
         char buf[96];
-        std::snprintf(buf, sizeof buf, "%.4g [%.4g, %.4g]%s", p.ratio, p.low, p.high, p.significant ? " *" : "");
-        md << " " << (c ? std::string(buf) : std::string("1 (first)")) << " |";
-        csv << "," << p.ratio << "," << p.low << "," << p.high << "," << (p.significant ? 1 : 0);
+        auto ratio_text = [&](const PairedChange &q) {
+          if (q.interval)
+            std::snprintf(buf, sizeof buf, " %.4g [%.4g, %.4g]%s |", q.ratio, q.low, q.high, q.significant ? " *" : "");
+          else
+            std::snprintf(buf, sizeof buf, " %.4g (no interval: one seed) |", q.ratio);
+          return std::string(buf);
+        };
+        auto ratio_cells = [&](const PairedChange &q) {
+          std::ostringstream o;
+          o.precision(10);
+          o << "," << q.ratio;
+          if (q.interval)
+            o << "," << q.low << "," << q.high;
+          else
+            o << ",,";
+          o << "," << (q.significant ? 1 : 0);
+          return o.str();
+        };
+        md << (c ? ratio_text(p) : std::string(" 1 (first) |"));
+        csv << ratio_cells(p);
         if (o.lifetime_updates > 0)
           {
             const StudyLife    &l = lives[c];
             const PairedChange &q = life_against_first[c];
-            csv << "," << l.tonnes << "," << l.low << "," << l.high << "," << q.ratio << "," << q.low << "," << q.high
-                << "," << (q.significant ? 1 : 0);
+            csv << "," << l.tonnes << "," << l.low << "," << l.high << ratio_cells(q);
             std::snprintf(buf, sizeof buf, " %.3g (%.3g ... %.3g) |", l.tonnes, l.low, l.high);
             md << (l.tonnes > 0 ? std::string(buf) : std::string(" - |"));
-            std::snprintf(buf, sizeof buf, " %.4g [%.4g, %.4g]%s |", q.ratio, q.low, q.high, q.significant ? " *" : "");
-            md << (c ? std::string(buf) : std::string(" 1 (first) |"));
+            md << (c ? ratio_text(q) : std::string(" 1 (first) |"));
           }
         md << "\n", csv << "\n";
       }

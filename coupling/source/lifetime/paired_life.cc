@@ -43,22 +43,33 @@ namespace abrade::coupling::lifetime
       return {dof > 0 ? sum / dof : 0.0, dof};
     }
 
-    /// The variance of the log ratio for the elasticities chosen by @p g (held or free, each
-    /// run's scaled by its factor), with the runs' pooled c^2 and covariance k (paired_life.h).
+    /// The beds both runs drew in one update (the same seed): each run's rates of them.
+    struct SharedBeds
+    {
+      std::vector<double> a, b;
+    };
+
+    SharedBeds shared(const UpdateBeds &a, const UpdateBeds &b)
+    {
+      SharedBeds s;
+      for (std::size_t i = 0; i < a.seeds.size() && i < a.rates.size(); ++i)
+        for (std::size_t j = 0; j < b.seeds.size() && j < b.rates.size(); ++j)
+          if (a.seeds[i] == b.seeds[j])
+            {
+              s.a.push_back(a.rates[i]), s.b.push_back(b.rates[j]);
+              break;
+            }
+      return s;
+    }
+
+    /// sum_u f^2 c^2 g(u)^2 / n_u of a run (its own part of the variance).
     template <class Elasticity>
-    double log_ratio_variance(const LifeBeds &a, const LifeBeds &b, double ca2, double cb2, double k,
-                              const std::vector<bool> &common, Elasticity g)
+    double own(const LifeBeds &run, double c2, Elasticity g)
     {
       double v = 0;
-      for (const auto &u : a.updates)
+      for (const auto &u : run.updates)
         if (!u.rates.empty())
-          v += ca2 * g(u) * g(u) / double(u.rates.size());
-      for (const auto &u : b.updates)
-        if (!u.rates.empty())
-          v += cb2 * g(u) * g(u) / double(u.rates.size());
-      for (std::size_t u = 0; u < common.size(); ++u)
-        if (common[u])
-          v -= 2 * k * g(a.updates[u]) * g(b.updates[u]) / double(a.updates[u].rates.size());
+          v += c2 * g(u) * g(u) / double(u.rates.size());
       return v;
     }
   } // namespace
@@ -73,35 +84,47 @@ namespace abrade::coupling::lifetime
     const auto [cb2, dof_b] = pooled(baseline);
     if (dof_a < 1 || dof_b < 1)
       return r; // a run without an interval: none for the change either
-    // the covariance of the two runs' deviations on the beds they shared
-    const std::size_t both = std::min(variant.updates.size(), baseline.updates.size());
-    std::vector<bool> common(both, false);
-    double            cross = 0, dof_c = 0;
+    // the two concepts' beds' correlation rho, from the beds both drew (the same seed), their
+    // deviations from their own means pooled over the updates (as c^2 is: the same cycle on
+    // slowly changing parts); its estimate lies in [-1, 1] (all three sums from the same beds),
+    // so the variance below is never negative
+    const std::size_t   both = std::min(variant.updates.size(), baseline.updates.size());
+    std::vector<double> shared_count(both, 0.0);
+    double              saa = 0, sbb = 0, sab = 0, dof_c = 0;
     for (std::size_t u = 0; u < both; ++u)
       {
-        if (variant.updates[u].seeds != baseline.updates[u].seeds)
-          continue;
-        const auto ea = deviations(variant.updates[u]), eb = deviations(baseline.updates[u]);
+        const SharedBeds s = shared(variant.updates[u], baseline.updates[u]);
+        const auto ea = deviations({0, 0, {}, s.a}), eb = deviations({0, 0, {}, s.b});
         if (ea.empty() || eb.empty())
           continue;
+        shared_count[u] = double(ea.size()), r.pairs += ea.size();
+        if (u == 0 && both > 1)
+          continue; // (the first update's cycles can be the same cycle: see above)
+        dof_c += double(ea.size() - 1);
         for (std::size_t j = 0; j < ea.size(); ++j)
-          cross += ea[j] * eb[j];
-        dof_c += double(ea.size() - 1), r.pairs += ea.size(), common[u] = true;
+          saa += ea[j] * ea[j], sbb += eb[j] * eb[j], sab += ea[j] * eb[j];
       }
-    const double k = dof_c > 0 ? cross / dof_c : 0.0;
-    // V(phi H) + max(0, V(F) - V(H)); phi scales each run's own elasticities
-    const double fa = std::sqrt(variant.place_factor), fb = std::sqrt(baseline.place_factor);
-    const double held_scaled =
-      log_ratio_variance(variant, baseline, ca2 * fa * fa, cb2 * fb * fb, k * fa * fb, common,
-                         [](const UpdateBeds &u) { return u.held; });
-    const double held = log_ratio_variance(variant, baseline, ca2, cb2, k, common,
-                                           [](const UpdateBeds &u) { return u.held; });
-    const double free = log_ratio_variance(variant, baseline, ca2, cb2, k, common,
-                                           [](const UpdateBeds &u) { return u.free; });
-    const double var = std::max(0.0, held_scaled) + std::max(0.0, free - held);
+    const double rho = saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
+    // V for the elasticities g, each run's scaled by f: the runs' own parts less twice the
+    // covariance of their update means, m rho c_A c_B / (n_A n_B) over the m shared beds
+    auto V = [&](auto g, double fa, double fb) {
+      double v = fa * fa * own(variant, ca2, g) + fb * fb * own(baseline, cb2, g);
+      for (std::size_t u = 0; u < both; ++u)
+        if (shared_count[u] > 0)
+          v -= 2 * fa * fb * g(variant.updates[u]) * g(baseline.updates[u]) * shared_count[u] * rho *
+               std::sqrt(ca2 * cb2) /
+               (double(variant.updates[u].rates.size()) * double(baseline.updates[u].rates.size()));
+      return v;
+    };
+    const auto   held = [](const UpdateBeds &u) { return u.held; };
+    const auto   free = [](const UpdateBeds &u) { return u.free; };
+    // V(phi H) + max(0, V(F) - V(H)), as a run's own interval has it
+    const double var = std::max(0.0, V(held, std::sqrt(variant.place_factor), std::sqrt(baseline.place_factor))) +
+                       std::max(0.0, V(free, 1, 1) - V(held, 1, 1));
     const double dof = dof_c > 0 ? std::min({dof_a, dof_b, dof_c}) : std::min(dof_a, dof_b);
     const double h   = student_t_quantile(0.5 + 0.5 * confidence, dof) * std::sqrt(var);
     r.low = r.ratio * std::exp(-h), r.high = r.ratio * std::exp(h);
+    r.interval    = true;
     r.significant = r.low > 1 || r.high < 1;
     return r;
   }

@@ -341,8 +341,8 @@ namespace abrade::report
             list += "<li><b>" + escape_html(csv.rows[r][0]) + "</b>: " + escape_html(what) + " " + escape_html(text) +
                     "</li>";
           }
-      return list.empty() ? "No change against the first row is significant: every 95 % interval holds no change "
-                            "(pair by pair on the same beds)."
+      return list.empty() ? "No change against the first row is significant: each 95 % interval (pair by pair on "
+                            "the same beds) holds no change, or there is none (one bed)."
                           : "Against the first row, pair by pair on the same beds, the 95 % interval excludes no "
                             "change for:<ul>" + list + "</ul>";
     }

@@ -11,6 +11,7 @@ namespace abrade::coupling
   struct PairedChange
   {
     double      ratio = 1, low = 1, high = 1; ///< the ratio and its 95 % interval
+    bool        interval    = false;          ///< there is one (not with one bed)
     bool        significant = false;          ///< the interval excludes 1
     std::size_t pairs = 0;                    ///< beds with both values positive
   };
