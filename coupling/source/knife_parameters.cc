@@ -72,9 +72,8 @@ namespace abrade::coupling
     prm.leave_subsection();
     if (kp.from_file && fs.rotation_angle != 0 && !(fs.rotation_axis.norm() > 0))
       file.fail({"Knife"}, "Rotation axis", "must not be zero");
-    if (kp.from_file && !kp.file.empty() && std::filesystem::path(kp.file).is_relative() &&
-        file.file_name().front() != '<')
-      kp.file = (std::filesystem::path(file.file_name()).parent_path() / kp.file).string();
+    if (kp.from_file)
+      kp.file = file.path_beside(kp.file);
     if (kp.from_file && kp.file.empty())
       file.fail({"Knife"}, "File", "Geometry = file needs a solid file");
     if (!kp.from_file)

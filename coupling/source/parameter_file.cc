@@ -349,4 +349,10 @@ namespace abrade::coupling
     prm.leave_subsection();
     return text;
   }
+  std::string ParameterFile::path_beside(const std::string &path) const
+  {
+    if (path.empty() || std::filesystem::path(path).is_absolute() || file.empty() || file.front() == '<')
+      return path;
+    return (std::filesystem::path(file).parent_path() / path).string();
+  }
 } // namespace abrade::coupling

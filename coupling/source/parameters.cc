@@ -346,6 +346,13 @@ namespace abrade::coupling
                       "achieved. 0: the Seeds' beds at every update. Range: [0, 1).");
     prm.declare_entry("Maximum beds", "12", Integer(1, 1000),
                       "Target interval: the most beds an update draws. Range: [1, 1000].");
+    prm.declare_entry("Calibration", "", Anything(),
+                      "[file] calibration.json of abrade calibrate (relative to this file): the best-ranked "
+                      "run's fitted wear coefficient (W) replaces the knife's, every cycle's wear scaled by "
+                      "their ratio, and the fit's standard error enters the life's interval as its "
+                      "component 'calibration' (to first order the life goes as 1/W). The fit holds for the "
+                      "footprint it was made with (the calibrated run's Smoothing radius): another one is "
+                      "warned about. DEM wear only. Empty: the case's W, no calibration component.");
     prm.declare_entry("Profile planes", "0.5", List(Double(0, 1)),
                       "Cross-sections of the knife written per update (knife/profile_N.csv and .png), "
                       "at these fractions of the knife's length (planes normal to its length).");
@@ -735,12 +742,6 @@ namespace abrade::coupling
       return out;
     }
 
-    std::string resolve(const ParameterFile &f, const std::string &p)
-    {
-      if (p.empty() || std::filesystem::path(p).is_absolute() || f.file_name().front() == '<')
-        return p;
-      return (std::filesystem::path(f.file_name()).parent_path() / p).string();
-    }
   } // namespace
 
   namespace
@@ -885,7 +886,7 @@ namespace abrade::coupling
     auto &fill                       = c.fill;
     fill.box_min                     = get_vector(prm, "Region min");
     fill.box_max                     = get_vector(prm, "Region max");
-    c.region_mesh_file               = resolve(f, prm.get("Region mesh"));
+    c.region_mesh_file               = f.path_beside(prm.get("Region mesh"));
     const std::string dist           = prm.get("Size distribution");
     fill.sizes.kind   = get_choice(prm, "Size distribution", size_distributions);
     fill.sizes.radius = prm.get_double("Radius");
@@ -936,7 +937,7 @@ namespace abrade::coupling
     c.bed_file        = prm.get("Bed file");
     if (dem::is_imported_bed(c.bed_file)) // another code's bed: an input, next to the parameter file
       {
-        c.bed_file = resolve(f, c.bed_file);
+        c.bed_file = f.path_beside(c.bed_file);
         if (!std::ifstream(c.bed_file))
           f.fail({"Particles", "Settling"}, "Bed file",
                  "no bed to import at '" + c.bed_file + "' (a .csv table or a LIGGGHTS/LAMMPS dump is read, never "
@@ -999,7 +1000,7 @@ namespace abrade::coupling
                                                  prm.get_double("Knife thickness"), prm.get_double("Bevel height"));
         else
           {
-            const std::string file = resolve(f, prm.get("File"));
+            const std::string file = f.path_beside(prm.get("File"));
             if (file.empty())
               f.fail(wp, "File", "Geometry = file needs a mesh file");
             c.input_files.push_back(file);

@@ -253,6 +253,7 @@ namespace abrade::field
                                 .value_or(io::summary_number(directory + "/summary.json", "archard_coefficient").value_or(0));
     run.seeds                 = long(io::summary_number(directory + "/summary.json", "seeds").value_or(1));
     run.replicate_relative_sd = io::summary_number(directory + "/summary.json", "worn_volume_relative_spread").value_or(0);
+    run.smoothing_radius      = io::summary_number(directory + "/summary.json", "smoothing_radius").value_or(0);
     const std::regex data_set("<DataSet\\b([^>]*)>"), timestep("timestep=\"([^\"]*)\""), file_of("file=\"([^\"]*)\"");
     std::unique_ptr<geometry::SurfaceDistance> design;
     std::string      line;
@@ -384,6 +385,7 @@ namespace abrade::field
     const double inf      = std::numeric_limits<double>::infinity();
     r.se_fit              = G > 1 && jj > 0 ? std::sqrt((G - 1) / G * sum) : inf;
     const double dof_fit  = G - 1;
+    r.smoothing_radius    = run.smoothing_radius;
     r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;
     const double dof_rep  = double(run.seeds - 1);
     const double se       = std::sqrt(r.se_fit * r.se_fit + r.se_replicates * r.se_replicates);

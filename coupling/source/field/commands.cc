@@ -255,6 +255,7 @@ namespace abrade::field
                         ci.first, ci.second, best_interval.first, best_interval.second);
         j["archard_coefficient"] = r.archard_coefficient, j["archard_coefficient_low"] = r.low;
         j["archard_coefficient_high"] = r.high, j["extrapolated"] = r.extrapolated;
+        j["smoothing_radius"] = r.smoothing_radius; // the footprint W was fitted with (Lifetime/Calibration)
         for (const auto &w : warnings[order[k]])
           j["warnings"].push_back(w);
         json["runs"].push_back(j);

@@ -147,4 +147,18 @@ namespace abrade::coupling::lifetime
     r.relative_half_width = (r.high - r.low) / (2 * L);
     return r;
   }
+  LifeInterval add_calibration(LifeInterval r, double relative_sd, double dof)
+  {
+    if (!(relative_sd > 0) || !(dof >= 1) || !(r.life.tonnes > 0))
+      return r;
+    const double beds2 = r.dof >= 1 ? r.relative_sd * r.relative_sd : 0.0, cal2 = relative_sd * relative_sd;
+    r.relative_sd_calibration = relative_sd;
+    r.relative_sd             = std::sqrt(beds2 + cal2);
+    r.dof = (beds2 + cal2) * (beds2 + cal2) / ((r.dof >= 1 ? beds2 * beds2 / r.dof : 0.0) + cal2 * cal2 / dof);
+    const double L = r.life.tonnes, t = student_t_quantile(0.5 + 0.5 * r.confidence, r.dof);
+    r.low                 = L * std::exp(-t * r.relative_sd);
+    r.high                = L * std::exp(t * r.relative_sd);
+    r.relative_half_width = (r.high - r.low) / (2 * L);
+    return r;
+  }
 } // namespace abrade::coupling::lifetime

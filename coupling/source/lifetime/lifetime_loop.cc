@@ -4,6 +4,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/hash.h>
+#include <abrade/common/input_file.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/timer.h>
 #include <abrade/coupling/lifetime/lifetime_loop.h>
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <numeric>
 #include <sstream>
@@ -127,6 +129,7 @@ namespace abrade::coupling::lifetime
     s.rate_is_volume  = prm.get("Analytic wear is") == "volume";
     s.target_interval = prm.get_double("Target interval");
     s.max_beds        = prm.get_integer("Maximum beds");
+    s.calibration_file = ctx.parameters.path_beside(prm.get("Calibration"));
     s.max_edge_recession  = prm.get_double("Maximum edge recession");
     s.min_plate_thickness = prm.get_double("Minimum plate thickness");
     s.gauge_height        = prm.get_double("Gauge height");
@@ -189,11 +192,17 @@ namespace abrade::coupling::lifetime
         }
     else
       source = make_dem_wear_source(dem_case, s.seeds, s.tonnes_per_cycle, ctx);
+    take_calibration();
 
     ctx.output.subdirectory("beds");
     knife_output      = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory("knife"), "knife");
     checkpoints       = std::make_unique<LifetimeCheckpoints>(ctx.output.subdirectory("checkpoint"));
-    hash              = io::fnv1a_hex(ctx.parameters.identity_text());
+    // (a calibration's numbers too: a resume with another calibration.json behind the same name
+    // would mix two coefficients)
+    hash = io::fnv1a_hex(ctx.parameters.identity_text() + (calibration.coefficient > 0 ? "\ncalibration " +
+                                                              io::format_number(calibration.coefficient, 17) + " " +
+                                                              io::format_number(calibration.relative_sd, 17)
+                                                                                        : std::string()));
     volume0           = knife->volume();
     criteria          = {{"maximum depth", s.max_depth},
                          {"maximum recession", s.max_recession},
@@ -475,6 +484,23 @@ namespace abrade::coupling::lifetime
                  "by its largest wear depth rate, " + io::format_number(previous_largest) + " m per cycle");
   }
 
+  // Lifetime/Calibration: the calibrated W replaces the case's (wear_calibration.h).
+  void LifetimeLoop::take_calibration()
+  {
+    if (s.calibration_file.empty())
+      return;
+    if (s.analytic)
+      ctx.parameters.fail({"Lifetime"}, "Calibration", "an analytic wear rate has no coefficient to calibrate (DEM wear only)");
+    io::require_input_file(s.calibration_file);
+    calibration = read_wear_calibration(s.calibration_file);
+    if (!(source->wear_coefficient() > 0))
+      ctx.parameters.fail({"Lifetime"}, "Calibration", "the knife's wear law has no coefficient to replace");
+    ctx.log.line("calibration " + s.calibration_file + ": W = " + io::format_number(calibration.coefficient, 4) +
+                 " 1/Pa +- " + io::format_number(100 * calibration.relative_sd, 3) + " % (the case's " +
+                 io::format_number(source->wear_coefficient(), 4) + "; every cycle's wear scaled by their ratio)");
+    source = make_calibrated_wear_source(std::move(source), calibration.coefficient);
+  }
+
   // The wear filter's length: the particle's footprint unless given (analytic rates: no filter
   // unless asked). Wear narrower than half a cell is carried by single vertices: on the chisel's
   // tip they blunt it into a flat that Gmsh cannot remesh (docs/lifetime.md, the tip check).
@@ -487,6 +513,15 @@ namespace abrade::coupling::lifetime
                       "Knife/Mesh size (" + io::format_number(knife_parameters.mesh_size) + " m): wear narrower "
                       "than a cell is carried by single vertices, which can fold the worn surface where it "
                       "concentrates (an edge, a tip)");
+    if (!smoothing_checked && calibration.smoothing_radius > 0 &&
+        std::abs(s.smoothing / calibration.smoothing_radius - 1) > 0.01)
+      {
+        warnings.push_back("Lifetime/Calibration was fitted with a footprint (Smoothing radius) of " +
+                           io::format_number(calibration.smoothing_radius, 4) + " m, this run's is " +
+                           io::format_number(s.smoothing, 4) + " m: W holds for the footprint and particle size it "
+                           "was fitted at (a depth or recession scales with both); run at the calibrated one");
+        ctx.log.warning(warnings.back());
+      }
     smoothing_checked = true;
   }
 
@@ -973,6 +1008,8 @@ namespace abrade::coupling::lifetime
                         worn_through_tonnes);
         interval_records = &records[depth_criterion];
       }
+    // the calibrated W's uncertainty (Lifetime/Calibration): a component of its own
+    li = add_calibration(li, calibration.relative_sd, calibration.dof);
     if (e.criterion == mass_criterion && !worn_through)
       where = {}; // the whole knife
     if ((e.criterion == edge_criterion || e.criterion == thickness_criterion) && !worn_through)
@@ -1046,6 +1083,8 @@ namespace abrade::coupling::lifetime
     // `abrade concepts` pairs two runs' lives on them (paired_life.h)
     if (interval_records && li.life.tonnes > 0)
       write_life_beds(ctx.output.file("life_beds.csv"), life_beds(*interval_records, li));
+    else
+      std::filesystem::remove(ctx.output.file("life_beds.csv")); // (none: no older one left standing)
     if (li.dof >= 1 && li.life.tonnes > 0)
       {
         r["predicted_tonnes_low"]  = li.low;
@@ -1061,7 +1100,17 @@ namespace abrade::coupling::lifetime
     iv["relative_sd"]           = li.relative_sd;
     iv["components"]["beds"]          = li.relative_sd_beds;
     iv["components"]["extrapolation"] = li.relative_sd_extrapolation;
-    iv["components"]["calibration"]   = 0.0; // W and the footprint: not yet carried (abrade calibrate)
+    iv["components"]["calibration"]   = li.relative_sd_calibration; // W (Lifetime/Calibration; the footprint: not yet)
+    if (calibration.coefficient > 0)
+      {
+        io::Json &c             = r["calibration"];
+        c["file"]               = calibration.file;
+        c["run"]                = calibration.run;
+        c["wear_coefficient"]   = calibration.coefficient;
+        c["relative_sd"]        = calibration.relative_sd;
+        c["degrees_of_freedom"] = calibration.dof;
+        c["smoothing_radius"]   = calibration.smoothing_radius;
+      }
     // the worst of many places scatters less than one: the beds' variance at the leading place
     // scaled by phi^2 (place_scatter.h)
     iv["worst_place_factor"] = std::sqrt(li.place_factor);

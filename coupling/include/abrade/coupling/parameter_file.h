@@ -37,6 +37,9 @@ namespace abrade::coupling
 
     dealii::ParameterHandler       &handler() { return prm; }
     const std::string              &file_name() const { return file; }
+    /// @p path as named in this file: a relative path is relative to the file's directory (as is
+    /// when the parameters came from no file, e.g. the embedded default case).
+    std::string                     path_beside(const std::string &path) const;
     /// Where a key is set in the file ("file:line"), or just the file name.
     std::string locate(const std::vector<std::string> &path, const std::string &key) const;
     /// An InputError naming where @p key was set.

@@ -90,6 +90,7 @@ namespace abrade::coupling::lifetime
     double           place_factor  = 1;
     double           relative_sd   = 0; ///< s: of the life, all components
     double           relative_sd_beds = 0, relative_sd_extrapolation = 0; ///< the components
+    double           relative_sd_calibration = 0; ///< W from abrade calibrate (add_calibration())
     double           low = 0, high = 0; ///< the interval [t]; 0: none (dof 0)
     double           relative_half_width = 0; ///< (high - low) / (2 life)
     /// per update u, the life's relative change per relative change of the update's increment
@@ -108,6 +109,14 @@ namespace abrade::coupling::lifetime
   /// that ends life is the worst of many.
   LifeInterval life_interval(double limit, const std::vector<UpdateRecord> &updates, double confidence = 0.95,
                              double place_factor = 1);
+
+  /// @p interval with a calibrated wear coefficient's relative standard error @p relative_sd
+  /// (over @p dof degrees of freedom) added as the component `calibration` (the life goes as 1/W
+  /// to first order): s^2 = s_beds^2 + s_extrapolation^2 + s_calibration^2, its degrees of freedom
+  /// by Welch-Satterthwaite, s^4 / ((s_beds^2 + s_extrapolation^2)^2 / dof + s_calibration^4 /
+  /// dof_calibration), and the interval formed again. Without the beds' interval (one bed an
+  /// update) the calibration's alone.
+  LifeInterval add_calibration(LifeInterval interval, double relative_sd, double dof);
 
   /// The pooled relative variance c^2 of @p updates and its degrees of freedom.
   std::pair<double, double> pooled_relative_variance(const std::vector<UpdateRecord> &updates);

@@ -34,6 +34,7 @@
 #include <abrade/coupling/lifetime/place_scatter.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
+#include <abrade/coupling/lifetime/wear_calibration.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/coupling/lifetime_checkpoints.h>
 #include <abrade/common/csv_writer.h>
@@ -75,6 +76,7 @@ namespace abrade::coupling::lifetime
       double                        max_edge_recession = 0, min_plate_thickness = 0, gauge_height = 0;
       long                          gauge_stations = 41;
       long                          max_beds = 0;        ///< per update, with a target interval
+      std::string                   calibration_file;    ///< Lifetime/Calibration, resolved; empty: none
     };
 
     /// The outcome of moving the knife by one update.
@@ -100,6 +102,7 @@ namespace abrade::coupling::lifetime
 
     // the steps of run()
     void      set_up();
+    void      take_calibration();
     CycleWear run_cycles();
     Rates     filter(const CycleWear &wear);
     long      choose_cycles(const Rates &rates) const;
@@ -164,6 +167,7 @@ namespace abrade::coupling::lifetime
     std::vector<PlaceScatter>        place_scatter;
     std::vector<std::vector<double>> place_values;
     std::vector<double>              place_factor;
+    WearCalibration              calibration; ///< Lifetime/Calibration (coefficient 0: none)
     long                         beds_now = 0; ///< beds of the next update
     std::vector<int>             beds_of_update; ///< the seeds of the update's beds (bed_seed())
     double                       previous_largest = 0; ///< the last update's largest depth rate (its size)

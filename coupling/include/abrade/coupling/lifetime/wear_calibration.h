@@ -1,0 +1,39 @@
+#pragma once
+// A lifetime run that takes a calibration back (Lifetime/Calibration = calibration.json of
+// `abrade calibrate`; docs/field.md, docs/lifetime.md "The life and its interval"). The
+// best-ranked run's fitted coefficient of the wear law (Archard's W) replaces the case's: every
+// cycle's wear is scaled by W_calibrated / W_case (the wear laws are linear in their coefficient,
+// so this is the cycle the DEM would give with it, bit for bit where the ratio is a power of two)
+// and the fit's relative standard error becomes the life's `calibration` component: to first
+// order the life goes as 1 / W, so Var(ln L) gains (se(W) / W)^2 with the fit's degrees of
+// freedom (calibration.h: the spatial blocks and the calibrated run's replicate beds).
+//
+// The fit holds for the footprint it was made with (Lifetime/Smoothing radius of the
+// calibrated run, by default its largest particle's radius: the coarse-graining level): the
+// calibration records it, and a run with another footprint is warned about (W and the footprint
+// are fitted together, issue 34: a depth or a recession scales with both).
+#include <abrade/coupling/lifetime/wear_source.h>
+
+#include <memory>
+#include <string>
+
+namespace abrade::coupling::lifetime
+{
+  struct WearCalibration
+  {
+    std::string file;                   ///< the calibration.json read
+    std::string run;                    ///< the calibrated run's folder (as calibration.json names it)
+    double      coefficient     = 0;    ///< the fitted coefficient (W) [1/Pa]
+    double      relative_sd     = 0;    ///< its standard error over itself
+    double      dof             = 0;    ///< of that standard error
+    double      smoothing_radius = 0;   ///< [m] the calibrated run's footprint; 0: not recorded
+  };
+
+  /// Reads the best-ranked run of calibration.json @p path; an InputError names the file and
+  /// what is missing or wrong (not JSON, no runs, no positive coefficient or standard error).
+  WearCalibration read_wear_calibration(const std::string &path);
+
+  /// @p source with every cycle's wear scaled to the coefficient @p coefficient (its own
+  /// wear_coefficient() must be positive: a DEM wear law's).
+  std::unique_ptr<WearSource> make_calibrated_wear_source(std::unique_ptr<WearSource> source, double coefficient);
+} // namespace abrade::coupling::lifetime

@@ -1,0 +1,86 @@
+// A lifetime run that takes a calibration back (wear_calibration.h).
+#include <abrade/common/error.h>
+#include <abrade/coupling/lifetime/wear_calibration.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cmath>
+
+namespace abrade::coupling::lifetime
+{
+  WearCalibration read_wear_calibration(const std::string &path)
+  {
+    namespace pt = boost::property_tree;
+    pt::ptree tree;
+    try
+      {
+        pt::read_json(path, tree);
+      }
+    catch (const pt::json_parser_error &e)
+      {
+        throw InputError(path, "not a calibration.json of abrade calibrate (" + e.message() + ", line " +
+                                 std::to_string(e.line()) + ")");
+      }
+    const auto runs = tree.get_child_optional("runs");
+    if (!runs || runs->empty())
+      throw InputError(path, "no calibrated run in it (no 'runs' list)");
+    const pt::ptree &best = runs->front().second; // ranked: the best first
+    auto number = [&](const std::string &key) {
+      const auto v = best.get_optional<double>(key);
+      if (!v || !std::isfinite(*v))
+        throw InputError(path, "the best run has no number '" + key + "'");
+      return *v;
+    };
+    WearCalibration c;
+    c.file = path, c.run = best.get<std::string>("run", "");
+    c.coefficient   = number("archard_coefficient");
+    const double scale = number("scale");
+    const double se    = std::hypot(number("scale_standard_error_fit"), number("scale_standard_error_replicates"));
+    c.dof           = number("degrees_of_freedom");
+    if (!(c.coefficient > 0) || !(scale > 0))
+      throw InputError(path, "the best run's fitted coefficient is not positive (its wear does not match the "
+                             "measurements: see its calibration.md)");
+    if (!(c.dof >= 1))
+      throw InputError(path, "the best run's fit has no degrees of freedom (too few measurement blocks for an "
+                             "interval): its W cannot carry an uncertainty into the life");
+    c.relative_sd      = se / scale;
+    c.smoothing_radius = best.get<double>("smoothing_radius", 0.0);
+    return c;
+  }
+
+  namespace
+  {
+    class CalibratedWearSource : public WearSource
+    {
+    public:
+      CalibratedWearSource(std::unique_ptr<WearSource> source, double coefficient)
+        : source(std::move(source)), coefficient(coefficient)
+      {}
+
+      CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) override
+      {
+        CycleWear    w     = source->cycle(surface, tonnes, bed_seeds);
+        const double scale = coefficient / source->wear_coefficient();
+        for (auto &bed : w.seed_volume)
+          for (double &v : bed)
+            v *= scale;
+        for (double &v : w.phase_volume)
+          v *= scale;
+        return w;
+      }
+      std::vector<std::string> phases() const override { return source->phases(); }
+      double                   wear_coefficient() const override { return coefficient; }
+      bool                     removes_volume() const override { return source->removes_volume(); }
+
+    private:
+      std::unique_ptr<WearSource> source;
+      double                      coefficient;
+    };
+  } // namespace
+
+  std::unique_ptr<WearSource> make_calibrated_wear_source(std::unique_ptr<WearSource> source, double coefficient)
+  {
+    return std::make_unique<CalibratedWearSource>(std::move(source), coefficient);
+  }
+} // namespace abrade::coupling::lifetime
