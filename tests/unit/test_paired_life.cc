@@ -244,11 +244,13 @@ TEST(PairedLife, CoverageOfExtrapolatedLivesOnCommonBeds)
 
 // What a DEM does (the referee's cases): the same bed is the same cycle in the first update
 // only, the concepts' cycles part after it; nearly equal beds; a target interval that gives the
-// concepts different bed counts. The covariance is taken per update (pooled, it carried update 1's
-// into the others: 90 % with correlation 1 then 0, extrapolated); shared beds are paired by their
-// seed whatever the counts (with the counts different, nothing was paired and the interval was
-// twice the unpaired one); and it never exceeds the runs' own variances (at correlation 0.99 an
-// estimate above them made 86 in 4,000 intervals of zero width, "significant").
+// concepts different bed counts. The correlation is pooled over the updates after the first
+// (with update 1 in the pool it carried update 1's into the others: 89.8 % with correlation 1
+// then 0, extrapolated); shared beds are paired by their seed whatever the counts (with the
+// counts different, nothing was paired and the interval was twice the unpaired one); and its
+// three sums come from the same beds, so it never exceeds the runs' own variances (at
+// correlation 0.99 sums from different beds made 86 in 4,000 intervals of zero width,
+// "significant").
 TEST(PairedLife, CoverageWhereTheBedsPartOrDiffer)
 {
   for (long updates : {3L, 100L})

@@ -254,6 +254,7 @@ namespace abrade::field
     run.seeds                 = long(io::summary_number(directory + "/summary.json", "seeds").value_or(1));
     run.replicate_relative_sd = io::summary_number(directory + "/summary.json", "worn_volume_relative_spread").value_or(0);
     run.smoothing_radius      = io::summary_number(directory + "/summary.json", "smoothing_radius").value_or(0);
+    run.wear_field            = io::summary_string(directory + "/summary.json", "wear_field").value_or("");
     const std::regex data_set("<DataSet\\b([^>]*)>"), timestep("timestep=\"([^\"]*)\""), file_of("file=\"([^\"]*)\"");
     std::unique_ptr<geometry::SurfaceDistance> design;
     std::string      line;
@@ -386,6 +387,7 @@ namespace abrade::field
     r.se_fit              = G > 1 && jj > 0 ? std::sqrt((G - 1) / G * sum) : inf;
     const double dof_fit  = G - 1;
     r.smoothing_radius    = run.smoothing_radius;
+    r.wear_field          = run.wear_field;
     r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;
     const double dof_rep  = double(run.seeds - 1);
     const double se       = std::sqrt(r.se_fit * r.se_fit + r.se_replicates * r.se_replicates);

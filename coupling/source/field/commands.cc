@@ -6,6 +6,7 @@
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/field/calibration.h>
+#include <abrade/field/footprint_fit.h>
 #include <abrade/field/commands.h>
 #include <abrade/field/compare.h>
 
@@ -256,6 +257,7 @@ namespace abrade::field
         j["archard_coefficient"] = r.archard_coefficient, j["archard_coefficient_low"] = r.low;
         j["archard_coefficient_high"] = r.high, j["extrapolated"] = r.extrapolated;
         j["smoothing_radius"] = r.smoothing_radius; // the footprint W was fitted with (Lifetime/Calibration)
+        j["wear_field"]       = r.wear_field;       // the field (law) whose coefficient W is
         for (const auto &w : warnings[order[k]])
           j["warnings"].push_back(w);
         json["runs"].push_back(j);
@@ -275,6 +277,39 @@ namespace abrade::field
                       r.directory.c_str(), r.correlation, r.scale, r.scale_low, r.scale_high, 1e3 * r.rms_residual);
         std::fputs(undecided, stdout);
       }
+    // W and the footprint together, from candidates at several Smoothing radius values
+    // (footprint_fit.h)
+    {
+      std::vector<FootprintCandidate> candidates;
+      for (std::size_t i = 0; i < results.size(); ++i)
+        {
+          const auto &r = results[i];
+          candidates.push_back({r.smoothing_radius, r.rms_residual * r.rms_residual * double(ms.size()),
+                                r.archard_coefficient > 0 ? r.archard_coefficient : r.scale,
+                                io::summary_number(runs[i] + "/summary.json", "predicted_tonnes_to_end_of_life").value_or(0),
+                                r.scale, r.blocks});
+        }
+      const FootprintFit f = fit_footprint(candidates);
+      io::Json          &j = json["footprint"];
+      j["identifiable"]    = f.identifiable;
+      j["smoothing_radius"] = f.r, j["smoothing_radius_low"] = f.r_low, j["smoothing_radius_high"] = f.r_high;
+      j["wear_coefficient"] = f.w, j["log_smoothing_radius_standard_error"] = f.sd_log_r;
+      j["dlnw_dlnr"] = f.dlnw_dlnr, j["dlnlife_dlnr"] = f.dlnlife_dlnr, j["degrees_of_freedom"] = f.dof;
+      if (!f.identifiable)
+        j["reason"] = f.reason;
+      md << "\n## W and the footprint together\n\n";
+      char line[600];
+      if (f.identifiable)
+        std::snprintf(line, sizeof line,
+                      "Footprint (Lifetime/Smoothing radius) %.4g m (95 %%: %.4g ... %.4g) and W %.4g at it (the "
+                      "candidates' residuals against their footprints; along the ridge d ln W / d ln r = %.3g, d ln life / "
+                      "d ln r = %.3g). Lifetime/Calibration takes both.\n",
+                      f.r, f.r_low, f.r_high, f.w, f.dlnw_dlnr, f.dlnlife_dlnr);
+      else
+        std::snprintf(line, sizeof line, "Not identifiable: %s (%.4g m, W %.4g).\n", f.reason.c_str(), f.r, f.w);
+      md << line;
+      std::printf("footprint: %s", line);
+    }
     json["measurements"] = table;
     json.write(out.file("calibration.json"));
     md.close();

@@ -151,10 +151,12 @@ namespace abrade::coupling::lifetime
   {
     if (!(relative_sd > 0) || !(dof >= 1) || !(r.life.tonnes > 0))
       return r;
-    const double beds2 = r.dof >= 1 ? r.relative_sd * r.relative_sd : 0.0, cal2 = relative_sd * relative_sd;
     r.relative_sd_calibration = relative_sd;
-    r.relative_sd             = std::sqrt(beds2 + cal2);
-    r.dof = (beds2 + cal2) * (beds2 + cal2) / ((r.dof >= 1 ? beds2 * beds2 / r.dof : 0.0) + cal2 * cal2 / dof);
+    if (r.dof < 1)
+      return r; // no beds' interval (one bed an update): none with the calibration either
+    const double beds2 = r.relative_sd * r.relative_sd, cal2 = relative_sd * relative_sd;
+    r.relative_sd      = std::sqrt(beds2 + cal2);
+    r.dof              = (beds2 + cal2) * (beds2 + cal2) / (beds2 * beds2 / r.dof + cal2 * cal2 / dof);
     const double L = r.life.tonnes, t = student_t_quantile(0.5 + 0.5 * r.confidence, r.dof);
     r.low                 = L * std::exp(-t * r.relative_sd);
     r.high                = L * std::exp(t * r.relative_sd);

@@ -201,7 +201,8 @@ namespace abrade::coupling::lifetime
     // would mix two coefficients)
     hash = io::fnv1a_hex(ctx.parameters.identity_text() + (calibration.coefficient > 0 ? "\ncalibration " +
                                                               io::format_number(calibration.coefficient, 17) + " " +
-                                                              io::format_number(calibration.relative_sd, 17)
+                                                              io::format_number(calibration.relative_sd, 17) + " " +
+                                                              io::format_number(calibration.smoothing_radius, 17)
                                                                                         : std::string()));
     volume0           = knife->volume();
     criteria          = {{"maximum depth", s.max_depth},
@@ -495,10 +496,38 @@ namespace abrade::coupling::lifetime
     calibration = read_wear_calibration(s.calibration_file);
     if (!(source->wear_coefficient() > 0))
       ctx.parameters.fail({"Lifetime"}, "Calibration", "the knife's wear law has no coefficient to replace");
+    if (!calibration.wear_field.empty() && calibration.wear_field != dem_case.wear_field)
+      ctx.parameters.fail({"Lifetime"}, "Calibration",
+                          s.calibration_file + " fitted the coefficient of " + calibration.wear_field +
+                            ", this run wears the knife by " + dem_case.wear_field +
+                            " (Output/Wear field): another law's coefficient");
+    if (const double ratio = calibration.coefficient / source->wear_coefficient(); !(ratio >= 1e-3 && ratio <= 1e3))
+      ctx.parameters.fail({"Lifetime"}, "Calibration",
+                          s.calibration_file + " gives W = " + io::format_number(calibration.coefficient, 4) +
+                            ", " + io::format_number(ratio, 3) + " times the case's: not the same law or units");
+    if (calibration.extrapolated)
+      {
+        warnings.push_back("Lifetime/Calibration: " + s.calibration_file + " fitted W where the calibrated run was "
+                           "extrapolated past its last update (run it further and calibrate again)");
+        ctx.log.warning(warnings.back());
+      }
+    if (calibration.relative_sd == 0)
+      {
+        warnings.push_back("Lifetime/Calibration: " + s.calibration_file + " states no uncertainty of W (a fit without "
+                           "residuals or beds): the life's interval has no calibration component");
+        ctx.log.warning(warnings.back());
+      }
     ctx.log.line("calibration " + s.calibration_file + ": W = " + io::format_number(calibration.coefficient, 4) +
                  " 1/Pa +- " + io::format_number(100 * calibration.relative_sd, 3) + " % (the case's " +
                  io::format_number(source->wear_coefficient(), 4) + "; every cycle's wear scaled by their ratio)");
     source = make_calibrated_wear_source(std::move(source), calibration.coefficient);
+    if (calibration.footprint && s.smoothing <= 0)
+      {
+        s.smoothing = calibration.smoothing_radius;
+        ctx.log.line("calibration: the footprint fitted with W, Lifetime/Smoothing radius = " +
+                     io::format_number(s.smoothing, 4) + " m (the life's share of its uncertainty +- " +
+                     io::format_number(100 * calibration.footprint_relative_sd, 3) + " %)");
+      }
   }
 
   // The wear filter's length: the particle's footprint unless given (analytic rates: no filter
@@ -1110,6 +1139,8 @@ namespace abrade::coupling::lifetime
         c["relative_sd"]        = calibration.relative_sd;
         c["degrees_of_freedom"] = calibration.dof;
         c["smoothing_radius"]   = calibration.smoothing_radius;
+        c["footprint_fitted"]   = calibration.footprint;
+        c["footprint_relative_sd"] = calibration.footprint_relative_sd;
       }
     // the worst of many places scatters less than one: the beds' variance at the leading place
     // scaled by phi^2 (place_scatter.h)
@@ -1122,7 +1153,11 @@ namespace abrade::coupling::lifetime
         if (!met)
           warnings.push_back("Lifetime/Target interval +-" + io::format_number(100 * s.target_interval, 3) +
                              " % not met (+-" + io::format_number(100 * li.relative_half_width, 3) + " % with at most " +
-                             std::to_string(s.max_beds) + " beds per update): a larger Maximum beds narrows it");
+                             std::to_string(s.max_beds) + " beds per update): " +
+                             (li.relative_sd_calibration >= li.relative_sd_beds
+                                ? "the calibration's share (" + io::format_number(100 * li.relative_sd_calibration, 3) +
+                                    " %) is the larger, and beds do not narrow it: a better calibration does"
+                                : std::string("a larger Maximum beds narrows it")));
       }
     if (li.dof < 1)
       warnings.push_back("one bed per update: the predicted life has no interval; set Lifetime/Seeds = 1, 2, 3 (three "

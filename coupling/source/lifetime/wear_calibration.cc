@@ -36,7 +36,10 @@ namespace abrade::coupling::lifetime
     c.file = path, c.run = best.get<std::string>("run", "");
     c.coefficient   = number("archard_coefficient");
     const double scale = number("scale");
-    const double se    = std::hypot(number("scale_standard_error_fit"), number("scale_standard_error_replicates"));
+    const double se_fit = number("scale_standard_error_fit"), se_rep = number("scale_standard_error_replicates");
+    if (se_fit < 0 || se_rep < 0)
+      throw InputError(path, "the best run's standard errors are negative");
+    const double se = std::hypot(se_fit, se_rep);
     c.dof           = number("degrees_of_freedom");
     if (!(c.coefficient > 0) || !(scale > 0))
       throw InputError(path, "the best run's fitted coefficient is not positive (its wear does not match the "
@@ -45,7 +48,33 @@ namespace abrade::coupling::lifetime
       throw InputError(path, "the best run's fit has no degrees of freedom (too few measurement blocks for an "
                              "interval): its W cannot carry an uncertainty into the life");
     c.relative_sd      = se / scale;
+    if (!(c.relative_sd <= 1))
+      throw InputError(path, "the best run's W is uncertain by more than itself (standard error " +
+                               std::to_string(100 * c.relative_sd) + " %): not a calibration to run a life on");
     c.smoothing_radius = best.get<double>("smoothing_radius", 0.0);
+    if (!(c.smoothing_radius >= 0) || !std::isfinite(c.smoothing_radius))
+      throw InputError(path, "the best run's smoothing_radius is negative or not a number");
+    c.wear_field   = best.get<std::string>("wear_field", "");
+    c.extrapolated = best.get<bool>("extrapolated", false);
+    if (const auto fp = tree.get_child_optional("footprint"); fp && fp->get<bool>("identifiable", false))
+      {
+        auto fnumber = [&](const std::string &key) {
+          const auto v = fp->get_optional<double>(key);
+          if (!v || !std::isfinite(*v))
+            throw InputError(path, "the footprint fit has no number '" + key + "'");
+          return *v;
+        };
+        const double r = fnumber("smoothing_radius"), w = fnumber("wear_coefficient"),
+                     sd_log_r = fnumber("log_smoothing_radius_standard_error"), dof = fnumber("degrees_of_freedom");
+        if (!(r > 0) || !(w > 0) || !(sd_log_r >= 0) || !(dof >= 1))
+          throw InputError(path, "the footprint fit's numbers are out of range (smoothing_radius, wear_coefficient, "
+                                 "log_smoothing_radius_standard_error, degrees_of_freedom)");
+        const double slope = fnumber("dlnlife_dlnr") != 0 ? fnumber("dlnlife_dlnr") : fnumber("dlnw_dlnr");
+        c.footprint = true, c.smoothing_radius = r, c.coefficient = w;
+        c.footprint_relative_sd = std::abs(slope) * sd_log_r;
+        c.relative_sd           = std::hypot(c.relative_sd, c.footprint_relative_sd);
+        c.dof                   = std::min(c.dof, dof);
+      }
     return c;
   }
 

@@ -59,6 +59,7 @@ namespace abrade::field
     long                             seeds = 1;                ///< the run's beds per update
     double                           replicate_relative_sd = 0; ///< the beds' relative spread of the worn volume
     double                           smoothing_radius = 0;      ///< [m] the run's wear footprint (0: unknown)
+    std::string                      wear_field;                ///< the run's Output/Wear field (empty: unknown)
     std::vector<double>              tonnes;                   ///< per output
     std::vector<std::vector<double>> depth;                    ///< [output][point]
     /// Depth at point @p p after @p t tonnes, linear in t between outputs, extrapolated linearly
@@ -80,6 +81,7 @@ namespace abrade::field
     double      correlation  = 0; ///< measured vs predicted depth at the fitted scale
     bool        extrapolated = false;
     double      smoothing_radius = 0; ///< [m] the run's footprint: W holds for it (0: unknown)
+    std::string wear_field;           ///< the wear field W belongs to (its law's coefficient)
   };
 
   /// Fits s for @p run; measurements are grouped in cubes of @p block [m] for the interval.

@@ -115,7 +115,9 @@ namespace abrade::coupling::lifetime
   /// to first order): s^2 = s_beds^2 + s_extrapolation^2 + s_calibration^2, its degrees of freedom
   /// by Welch-Satterthwaite, s^4 / ((s_beds^2 + s_extrapolation^2)^2 / dof + s_calibration^4 /
   /// dof_calibration), and the interval formed again. Without the beds' interval (one bed an
-  /// update) the calibration's alone.
+  /// update) there is none with the calibration either (the component is recorded). Assumed:
+  /// the two estimates independent (a calibration fitted on the same beds as the run shares
+  /// their first update's error with it; the interval is then wider than it scatters).
   LifeInterval add_calibration(LifeInterval interval, double relative_sd, double dof);
 
   /// The pooled relative variance c^2 of @p updates and its degrees of freedom.

@@ -10,8 +10,12 @@
 //
 // The fit holds for the footprint it was made with (Lifetime/Smoothing radius of the
 // calibrated run, by default its largest particle's radius: the coarse-graining level): the
-// calibration records it, and a run with another footprint is warned about (W and the footprint
-// are fitted together, issue 34: a depth or a recession scales with both).
+// calibration records it, and a run with another footprint is warned about. Where calibrate
+// fitted the footprint with W from candidate runs at several footprints (footprint_fit.h:
+// `footprint.identifiable`), both are taken: the run's Smoothing radius becomes the fitted one
+// (unless set), W the fit's at it, and the footprint's uncertainty joins the component: the life's
+// change along the ridge W(r), |d ln L / d ln r| se(ln r), in quadrature with se(W) / W of the
+// best run (without the candidates' lives, |d ln W / d ln r| se(ln r) stands for it).
 #include <abrade/coupling/lifetime/wear_source.h>
 
 #include <memory>
@@ -23,14 +27,21 @@ namespace abrade::coupling::lifetime
   {
     std::string file;                   ///< the calibration.json read
     std::string run;                    ///< the calibrated run's folder (as calibration.json names it)
+    std::string wear_field;             ///< the wear field (law) W belongs to; empty: not recorded
+    bool        extrapolated = false;   ///< the fit reached past the calibrated run's last update
     double      coefficient     = 0;    ///< the fitted coefficient (W) [1/Pa]
     double      relative_sd     = 0;    ///< its standard error over itself
     double      dof             = 0;    ///< of that standard error
-    double      smoothing_radius = 0;   ///< [m] the calibrated run's footprint; 0: not recorded
+    double      smoothing_radius = 0;   ///< [m] the footprint W holds for; 0: not recorded
+    /// the footprint was fitted with W (calibration.json `footprint`, identifiable): W and
+    /// smoothing_radius are the fit's, and relative_sd holds the footprint's share too
+    bool        footprint = false;
+    double      footprint_relative_sd = 0; ///< the life's, from the footprint along the ridge W(r)
   };
 
   /// Reads the best-ranked run of calibration.json @p path; an InputError names the file and
-  /// what is missing or wrong (not JSON, no runs, no positive coefficient or standard error).
+  /// what is missing or wrong (not JSON, no runs, no positive coefficient, a negative standard
+  /// error or one larger than W, a negative footprint).
   WearCalibration read_wear_calibration(const std::string &path);
 
   /// @p source with every cycle's wear scaled to the coefficient @p coefficient (its own
