@@ -268,10 +268,12 @@ namespace abrade::field
                       1e3 * r.rms_residual, 100 * r.se_fit / r.scale, 100 * r.se_replicates / r.scale, r.blocks,
                       k == 0 ? "best" : (apart ? "yes" : "no"));
         md << line;
-        if (r.archard_coefficient > 0)
-          std::printf("  %zu. %s: correlation %.4f, W = %.4g (%.4g ... %.4g) 1/Pa, scale %.4g, RMS residual %.3g mm\n",
-                      k + 1, r.directory.c_str(), r.correlation, r.archard_coefficient, r.low, r.high, r.scale,
-                      1e3 * r.rms_residual);
+        if (r.archard_coefficient > 0) // (Archard's W in 1/Pa; another law's coefficient named by its field)
+          std::printf("  %zu. %s: correlation %.4f, %s = %.4g (%.4g ... %.4g)%s, scale %.4g, RMS residual %.3g mm\n",
+                      k + 1, r.directory.c_str(), r.correlation,
+                      r.wear_field.empty() || r.wear_field == "archard_volume" ? "W" : ("the coefficient of " + r.wear_field).c_str(),
+                      r.archard_coefficient, r.low, r.high,
+                      r.wear_field.empty() || r.wear_field == "archard_volume" ? " 1/Pa" : "", r.scale, 1e3 * r.rms_residual);
         else // an analytic-wear run: no W, the rate's scale
           std::printf("  %zu. %s: correlation %.4f, scale %.4g (%.4g ... %.4g), RMS residual %.3g mm\n", k + 1,
                       r.directory.c_str(), r.correlation, r.scale, r.scale_low, r.scale_high, 1e3 * r.rms_residual);

@@ -352,7 +352,8 @@ namespace abrade::coupling::lifetime
     if (state.text("parameter_hash") != hash &&
         state.text("parameter_hash") != io::fnv1a_hex(ctx.parameters.canonical_text()))
       throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
-                               ", now " + hash + "); resume with the same parameter file and --set options");
+                               ", now " + hash + "); resume with the same parameter file and --set options" +
+                               (calibration.coefficient > 0 ? " and the same Lifetime/Calibration file content" : ""));
     if (state.number("update") != double(done))
       throw InputError(file, "corrupt lifetime checkpoint (it says update " + state.text("update") + ")");
     update        = done;
