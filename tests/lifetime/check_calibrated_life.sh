@@ -80,6 +80,8 @@ import json, sys
 j = json.load(open(sys.argv[1])); r = j["runs"][0]; exec(sys.argv[3]); json.dump(j, open(sys.argv[2], "w"))
 PY
 }
+variant object 'j["runs"] = {"best": r}'
+refused "runs not a list" "not a list" --set "Lifetime/Calibration=$out/object.json"
 variant oka 'r["wear_field"] = "oka_volume"'
 refused "another wear field" "another law's coefficient" --set "Lifetime/Calibration=$out/oka.json"
 variant tiny 'r["archard_coefficient"] = 1e-3'

@@ -25,6 +25,8 @@ namespace abrade::coupling::lifetime
     const auto runs = tree.get_child_optional("runs");
     if (!runs || runs->empty())
       throw InputError(path, "no calibrated run in it (no 'runs' list)");
+    if (!runs->front().first.empty()) // (a JSON object's children have names, a list's do not)
+      throw InputError(path, "'runs' is not a list of calibrated runs");
     const pt::ptree &best = runs->front().second; // ranked: the best first
     auto number = [&](const std::string &key) {
       const auto v = best.get_optional<double>(key);
