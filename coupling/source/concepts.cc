@@ -31,7 +31,6 @@
 #include <iostream>
 #include <map>
 #include <sstream>
-#include <array>
 
 namespace abrade::coupling
 {

@@ -29,18 +29,14 @@ namespace abrade::coupling::lifetime
       return e;
     }
 
-    /// The pooled c^2 = sum e^2 / sum (n - 1) of a run, and its degrees of freedom.
+    /// The pooled c^2 of a run and its degrees of freedom, as its own interval pools them
+    /// (pooled_relative_variance()).
     std::pair<double, double> pooled(const LifeBeds &run)
     {
-      double sum = 0, dof = 0;
+      std::vector<UpdateRecord> records;
       for (const auto &u : run.updates)
-        if (const auto e = deviations(u); !e.empty())
-          {
-            for (double x : e)
-              sum += x * x;
-            dof += double(e.size() - 1);
-          }
-      return {dof > 0 ? sum / dof : 0.0, dof};
+        records.push_back({0, 0, u.rates.size(), relative_variance(u.rates)});
+      return pooled_relative_variance(records);
     }
 
     /// The beds both runs drew in one update (the same seed): each run's rates of them.
