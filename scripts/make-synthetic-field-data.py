@@ -8,12 +8,23 @@ stand-ins from a lifetime run whose W plays the unknown true value:
   - measurements.csv:  the recession of the run's followed points at every update's tonnage
                        (its trajectory.csv), with noise, as a table of named locations;
   - locations.csv:     where the locations are (knife frame, metres).
-Usage: make-synthetic-field-data.py RUN_DIR UPDATE OUT_DIR
+Usage: make-synthetic-field-data.py RUN_DIR UPDATE OUT_DIR [--noise M] [--angle DEG]
+                                   [--shift X,Y,Z] [--seed N]
+  --noise: the scan's noise, standard deviation per coordinate [m] (default 0.0002)
+  --angle: the scanner's turn about (1, 1, 2) [degrees] (default 20)
+  --shift: the scanner's shift [m] (default 0.12,-0.04,0.3)
 """
-import csv, math, os, random, struct, sys
+import argparse, csv, math, os, random, struct, sys
 
-run, update, out = sys.argv[1], int(sys.argv[2]), sys.argv[3]
-random.seed(2026)
+parser = argparse.ArgumentParser()
+parser.add_argument("run"), parser.add_argument("update", type=int), parser.add_argument("out")
+parser.add_argument("--noise", type=float, default=0.0002)
+parser.add_argument("--angle", type=float, default=20)
+parser.add_argument("--shift", default="0.12,-0.04,0.3")
+parser.add_argument("--seed", type=int, default=2026)
+args = parser.parse_args()
+run, update, out = args.run, args.update, args.out
+random.seed(args.seed)
 os.makedirs(out, exist_ok=True)
 
 def read_stl(path):
@@ -31,16 +42,16 @@ def area(a, b, c):
     x = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
     return 0.5 * math.sqrt(sum(t * t for t in x))
 
-# a scanner's view: 20 degrees about (1, 1, 2), shifted by (120, -40, 300) mm
+# a scanner's view: turned about (1, 1, 2) and shifted (by default 20 degrees, (120, -40, 300) mm)
 axis = [1 / math.sqrt(6), 1 / math.sqrt(6), 2 / math.sqrt(6)]
-th = math.radians(20)
+th = math.radians(args.angle)
 c, s = math.cos(th), math.sin(th)
 # Rodrigues' formula, written out
 ux, uy, uz = axis
 R = [[c + ux * ux * (1 - c), ux * uy * (1 - c) - uz * s, ux * uz * (1 - c) + uy * s],
      [uy * ux * (1 - c) + uz * s, c + uy * uy * (1 - c), uy * uz * (1 - c) - ux * s],
      [uz * ux * (1 - c) - uy * s, uz * uy * (1 - c) + ux * s, c + uz * uz * (1 - c)]]
-shift = [0.120, -0.040, 0.300]
+shift = [float(x) for x in args.shift.split(",")]
 
 tris = read_stl(os.path.join(run, "knife", f"knife_{update:05d}.stl"))
 areas = [area(*t) for t in tris]
@@ -57,7 +68,7 @@ for _ in range(n_points):
     u, v = random.random(), random.random()
     if u + v > 1:
         u, v = 1 - u, 1 - v
-    p = [a[i] + u * (b[i] - a[i]) + v * (cc[i] - a[i]) + random.gauss(0, 0.0002) for i in range(3)]
+    p = [a[i] + u * (b[i] - a[i]) + v * (cc[i] - a[i]) + random.gauss(0, args.noise) for i in range(3)]
     q = [sum(R[i][j] * p[j] for j in range(3)) + shift[i] for i in range(3)]
     points.append([1000 * x for x in q])
 with open(os.path.join(out, "scan_mm.ply"), "w") as f:

@@ -317,10 +317,18 @@ namespace abrade::coupling
     prm.declare_entry("Target tonnes", "0", Double(0, huge),
                       "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
     prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");
-    prm.declare_entry("Wear source", "dem", Selection("dem|analytic"),
+    prm.declare_entry("Wear source", "dem", Selection("dem|analytic|replay"),
                       "dem: every update runs the DEM cycles on the knife's current surface; analytic: "
                       "the wear comes from 'Analytic wear rate' instead (verification of the loop, or "
-                      "wear rates measured elsewhere).");
+                      "wear rates measured elsewhere); replay: the unfiltered wear another lifetime run of "
+                      "this case stored (its wear/ directory, 'Replay run'), carried onto this run's "
+                      "surface: the same life at another Smoothing radius (a candidate footprint for "
+                      "abrade calibrate) or W without a DEM run (docs/field.md).");
+    prm.declare_entry("Replay run", "", Anything(),
+                      "[directory] Wear source = replay: the output directory of the lifetime run whose "
+                      "stored wear (wear/update_*.wear) is replayed (relative to this file). Its beds are "
+                      "the replay's; beyond the tonnes it reached its last update's wear is used (warned). "
+                      "The wear is scaled by this case's W over the stored run's.");
     prm.declare_entry("Analytic wear rate", "1e-6", Anything(),
                       "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
                       "inward normal, as a function of the knife's current coordinates x, y, z (the "

@@ -386,6 +386,8 @@ namespace abrade::field
     const double inf      = std::numeric_limits<double>::infinity();
     r.se_fit              = G > 1 && jj > 0 ? std::sqrt((G - 1) / G * sum) : inf;
     const double dof_fit  = G - 1;
+    if (sum_sq > 0 && ms.size() > 1 && std::isfinite(r.se_fit))
+      r.design_effect = r.se_fit * r.se_fit * jj * double(ms.size() - 1) / sum_sq;
     r.smoothing_radius    = run.smoothing_radius;
     r.wear_field          = run.wear_field;
     r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;

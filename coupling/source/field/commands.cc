@@ -243,6 +243,7 @@ namespace abrade::field
         j["scale_low"] = r.scale_low, j["scale_high"] = r.scale_high, j["rms_residual"] = r.rms_residual;
         j["scale_standard_error_fit"] = r.se_fit, j["scale_standard_error_replicates"] = r.se_replicates;
         j["blocks"] = r.blocks, j["block_size"] = block, j["degrees_of_freedom"] = r.dof;
+        j["design_effect"] = r.design_effect;
         const auto ci          = correlation_interval(r);
         const bool apart       = k > 0 && ci.second < best_interval.first;
         j["correlation_low"]   = ci.first, j["correlation_high"] = ci.second;
@@ -289,7 +290,7 @@ namespace abrade::field
           candidates.push_back({r.smoothing_radius, r.rms_residual * r.rms_residual * double(ms.size()),
                                 r.archard_coefficient > 0 ? r.archard_coefficient : r.scale,
                                 io::summary_number(runs[i] + "/summary.json", "predicted_tonnes_to_end_of_life").value_or(0),
-                                r.scale, r.blocks});
+                                r.scale, r.blocks, long(ms.size()), r.design_effect});
         }
       const FootprintFit f = fit_footprint(candidates);
       io::Json          &j = json["footprint"];

@@ -72,7 +72,10 @@ namespace abrade::field
     // (in r: a footprint that is off by dr widens the pattern by about dr, so the residuals add
     // (k dr)^2 to the noise's; in ln r the vertex was pulled towards the steeper side)
     const double t     = boost::math::quantile(boost::math::students_t_distribution<double>(f.dof), 0.975);
-    const double ratio = 1 + t * t / f.dof;
+    // (the measurements per independent one: the design effect, at most all of a block's)
+    const double n     = double(c[best].measurements);
+    const double ratio = n > 2 ? 1 + std::clamp(c[best].design_effect, 1.0, n / f.dof) * t * t / (n - 2)
+                               : 1 + t * t / f.dof;
     // The profile is known at the candidates only. Its minimum by a parabola in r (a footprint
     // off by dr widens the pattern by about dr, adding (k dr)^2 to the residuals) and by one in
     // ln r (a relative misfit): the first is pulled towards the steeper side where the

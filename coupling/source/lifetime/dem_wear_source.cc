@@ -44,14 +44,7 @@ namespace abrade::coupling::lifetime
         return names;
       }
 
-      double wear_coefficient() const override
-      {
-        for (const auto &wc : c.walls)
-          if (wc.solid_model)
-            if (const dem::WearLaw *law = dem::law_recording(wc.wear, c.wear_field))
-              return law->coefficient();
-        return 0;
-      }
+      double wear_coefficient() const override { return case_wear_coefficient(c); }
 
     private:
       DemCase          c;
@@ -119,6 +112,15 @@ namespace abrade::coupling::lifetime
       }
     };
   } // namespace
+
+  double case_wear_coefficient(const DemCase &c)
+  {
+    for (const auto &wc : c.walls)
+      if (wc.solid_model)
+        if (const dem::WearLaw *law = dem::law_recording(wc.wear, c.wear_field))
+          return law->coefficient();
+    return 0;
+  }
 
   std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &base_seeds,
                                                    double tonnes_per_cycle, JobContext &ctx)

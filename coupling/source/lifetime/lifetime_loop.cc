@@ -11,6 +11,7 @@
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/paired_life.h>
 #include <abrade/coupling/lifetime/state_file.h>
+#include <abrade/coupling/lifetime/stored_wear.h>
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/dem/wear.h>
@@ -130,6 +131,12 @@ namespace abrade::coupling::lifetime
     s.target_interval = prm.get_double("Target interval");
     s.max_beds        = prm.get_integer("Maximum beds");
     s.calibration_file = ctx.parameters.path_beside(prm.get("Calibration"));
+    if (prm.get("Wear source") == "replay")
+      {
+        if (prm.get("Replay run").empty())
+          ctx.parameters.fail({"Lifetime"}, "Replay run", "Wear source = replay needs the directory of a lifetime run");
+        s.replay_run = ctx.parameters.path_beside(prm.get("Replay run"));
+      }
     s.max_edge_recession  = prm.get_double("Maximum edge recession");
     s.min_plate_thickness = prm.get_double("Minimum plate thickness");
     s.gauge_height        = prm.get_double("Gauge height");
@@ -190,6 +197,8 @@ namespace abrade::coupling::lifetime
         {
           ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
         }
+    else if (!s.replay_run.empty())
+      replay_stored_wear();
     else
       source = make_dem_wear_source(dem_case, s.seeds, s.tonnes_per_cycle, ctx);
     take_calibration();
@@ -330,6 +339,9 @@ namespace abrade::coupling::lifetime
     update   = 0;
     sections = design_at_sections = design_sections;
     checkpoints->clear();
+    std::error_code ec; // (the stored wear of an earlier run in this directory)
+    std::filesystem::remove_all(ctx.output.root() + "/wear", ec);
+    ctx.output.subdirectory("wear");
     knife_output->adopt({});
     knife->write(*knife_output, 0);
     io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife->surface().as_polydata()); // the design
@@ -447,6 +459,7 @@ namespace abrade::coupling::lifetime
       {
         ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
       }
+    store_wear(wear, beds);
     // the DEM's warnings (Simulation/On error = continue): each kind logged once, all counted
     dem_warnings_now = long(wear.warnings.size());
     dem_warnings_total += dem_warnings_now;
@@ -455,8 +468,8 @@ namespace abrade::coupling::lifetime
         const std::string kind = w.substr(0, w.find(" at step ")); // (the step and time vary)
         if (warning_kinds.insert(kind).second)
           {
-            ctx.log.warning("update " + std::to_string(update) + ", DEM: " + w);
-            warnings.push_back("update " + std::to_string(update) + ", DEM: " + w);
+            warnings.push_back("update " + std::to_string(update) + ", " + source->name() + ": " + w);
+            ctx.log.warning(warnings.back());
           }
       }
     resolve_smoothing(wear);
@@ -480,10 +493,56 @@ namespace abrade::coupling::lifetime
       {
         ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
       }
+    store_wear(wear, beds);
     resolve_smoothing(wear);
     previous_largest = depth_rates(knife->surface(), wear, s.smoothing).largest;
     ctx.log.line("pilot cycle on " + std::to_string(beds.size()) + " bed(s) of its own: the first update is sized "
                  "by its largest wear depth rate, " + io::format_number(previous_largest) + " m per cycle");
+  }
+
+  // Every cycle's wear as it came, before the filter, with the surface it fell on
+  // (stored_wear.h): a replay at another footprint needs no DEM. A source that chose its own
+  // beds (a replay) names them.
+  void LifetimeLoop::store_wear(const CycleWear &wear, std::vector<int> &beds)
+  {
+    if (!wear.bed_seeds.empty())
+      beds = wear.bed_seeds;
+    if (!wear.stop.empty() || dem::Parallel::world().rank() != 0)
+      return;
+    io::ScopedTimer t(ctx.timers, "stored wear");
+    StoredWear      stored;
+    stored.update           = update; // (0: the pilot cycle)
+    stored.tonnes_start     = tonnes;
+    stored.bed_seeds        = beds;
+    stored.wear             = wear;
+    stored.surface          = knife->surface();
+    stored.wear_coefficient = source->wear_coefficient();
+    stored.removes_volume   = source->removes_volume();
+    stored.phases           = source->phases();
+    write_stored_wear(stored_wear_file(ctx.output.root(), stored.update), stored);
+  }
+
+  // Lifetime/Wear source = replay: another run's stored wear (stored_wear.h), scaled to this
+  // case's W where the stored run had another.
+  void LifetimeLoop::replay_stored_wear()
+  {
+    try
+      {
+        source = make_replayed_wear_source(s.replay_run, knife->design_surface(), knife_parameters.mesh_size);
+      }
+    catch (const InputError &e)
+      {
+        ctx.parameters.fail({"Lifetime"}, "Replay run", e.what());
+      }
+    std::string scaled;
+    const double w_case = case_wear_coefficient(dem_case), w_stored = source->wear_coefficient();
+    if (w_case > 0 && w_stored > 0 && w_case != w_stored)
+      {
+        source = make_calibrated_wear_source(std::move(source), w_case);
+        scaled = ", scaled by this case's W over the stored run's, " + io::format_number(w_case, 4) + " / " +
+                 io::format_number(w_stored, 4);
+      }
+    ctx.log.line("wear replayed from " + s.replay_run + " (its stored wear, no DEM" + scaled + ")");
   }
 
   // Lifetime/Calibration: the calibrated W replaces the case's (wear_calibration.h).
@@ -1076,6 +1135,9 @@ namespace abrade::coupling::lifetime
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
     r["remeshes_inside_worn_surface"] = surfaces_kept;
     r["smoothing_radius"] = s.smoothing;
+    r["wear_source"]      = s.analytic ? "analytic" : s.replay_run.empty() ? "dem" : "replay";
+    if (!s.replay_run.empty()) // (its stored wear, carried onto this run's surfaces: stored_wear.h)
+      r["replayed_run"] = s.replay_run;
     r["wear_field"] = dem_case.wear_field;
     if (source->wear_coefficient() > 0) // the coefficient the depths scale with (abrade calibrate rescales it)
       {

@@ -103,6 +103,7 @@ namespace abrade::coupling::lifetime
       std::vector<std::string> phases() const override { return source->phases(); }
       double                   wear_coefficient() const override { return coefficient; }
       bool                     removes_volume() const override { return source->removes_volume(); }
+      std::string              name() const override { return source->name(); }
 
     private:
       std::unique_ptr<WearSource> source;

@@ -75,6 +75,10 @@ namespace abrade::field
     double      scale = 1, scale_low = 1, scale_high = 1; ///< s = W / W0 and its 95 % interval
     double      se_fit = 0, se_replicates = 0;            ///< the standard error's two parts (of s)
     long        blocks = 0;                               ///< spatial blocks of the measurements
+    /// the fit's variance over what independent measurements would give it (the cluster-robust
+    /// variance of s over RSS / (n - 1) / sum J^2): how many measurements make one independent
+    /// one, as the residuals' correlation says (1: independent; a block's size: all alike)
+    double      design_effect = 1;
     double      dof = 0;                                  ///< of the interval (Welch-Satterthwaite)
     double      archard_coefficient = 0, low = 0, high = 0; ///< W and its interval (0 when W0 unknown)
     double      rms_residual = 0;

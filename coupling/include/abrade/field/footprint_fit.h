@@ -9,11 +9,17 @@
 // pattern by about dr and adds (k dr)^2 to the residuals) and as one in ln r (a relative misfit),
 // gives r^ as the geometric mean of their minima and the 95 % interval
 //
-//   {r : RSS(r) <= RSS(r^) (1 + F(1, nu) / nu)}, widened by half the two minima's distance on
-//   ln r (the profile is known at the candidates only: the interpolation's error)
+//   {r : RSS(r) <= RSS(r^) (1 + D F(1, nu) / (n - 2))}, widened by half the two minima's
+//   distance on ln r (the profile is known at the candidates only: the interpolation's error)
 //
 // (a profile-likelihood interval, F(1, nu) = t(0.975, nu)^2, nu = the best run's spatial
-// blocks - 2: neighbouring scan points are not independent); W^ and the life's relative change
+// blocks - 2, n the measurements: neighbouring scan points are not independent, and D, the
+// best run's design effect (the cluster-robust variance of its W fit over the one independent
+// measurements would give, at least 1), says how many of them make one independent
+// measurement. With D = n / nu (every block's points alike) the level is 1 + F / nu, as if the
+// blocks were the measurements; with independent noise D = 1 and every point counts. (Until
+// session 25 the level was always 1 + F / nu: two scans at the same places, the second at a
+// small tonnage, doubled RSS without adding blocks and made the footprint "not identifiable".)); W^ and the life's relative change
 // along the ridge W(r) by the same kind of parabola through ln W_i and ln (L_i / s_i) (a candidate's life
 // at its fitted W: L_i over its scale, the life going as 1 / W). The fit is refused as not
 // identifiable, with W for the best candidate's r, when fewer than three footprints are given,
@@ -34,6 +40,8 @@ namespace abrade::field
     double life = 0;    ///< its predicted life at its own W [t] (0: none)
     double scale = 1;   ///< its fitted W over its own
     long   blocks = 0;  ///< spatial blocks of its fit
+    long   measurements = 0;   ///< n (0: unknown: the blocks are taken as the independent units)
+    double design_effect = 1;  ///< of its W fit (CalibrationResult::design_effect)
   };
 
   struct FootprintFit

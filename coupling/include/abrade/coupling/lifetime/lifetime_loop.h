@@ -77,6 +77,7 @@ namespace abrade::coupling::lifetime
       long                          gauge_stations = 41;
       long                          max_beds = 0;        ///< per update, with a target interval
       std::string                   calibration_file;    ///< Lifetime/Calibration, resolved; empty: none
+      std::string                   replay_run;          ///< Lifetime/Replay run, resolved (Wear source = replay)
     };
 
     /// The outcome of moving the knife by one update.
@@ -103,6 +104,8 @@ namespace abrade::coupling::lifetime
     // the steps of run()
     void      set_up();
     void      take_calibration();
+    void      replay_stored_wear();
+    void      store_wear(const CycleWear &wear, std::vector<int> &beds);
     CycleWear run_cycles();
     Rates     filter(const CycleWear &wear);
     long      choose_cycles(const Rates &rates) const;

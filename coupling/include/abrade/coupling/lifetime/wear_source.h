@@ -22,8 +22,11 @@ namespace abrade::coupling::lifetime
     double                           tonnes_per_cycle = 0;
     double                           particle_radius  = 0; ///< the largest particle's [m] (0: no particles)
     std::string                      stop; ///< not empty: why the loop cannot go on (no payload, ...)
-    /// the DEM's warnings of the cycle (overlaps, lost particles, time step), per seed: the loop
-    /// logs and counts them
+    /// the beds of seed_volume when the source chose them itself (a replay: the stored run's);
+    /// empty: the beds the loop asked for
+    std::vector<int> bed_seeds;
+    /// the source's warnings of the cycle (the DEM's overlaps, lost particles, time step, per
+    /// seed; a replay beyond its stored run): the loop logs and counts them
     std::vector<std::string> warnings;
   };
 
@@ -49,7 +52,12 @@ namespace abrade::coupling::lifetime
     /// loop then has the moved knife lose exactly that volume in every update
     /// (KnifeModel::apply_wear). A known depth rate (verification) is not.
     virtual bool removes_volume() const { return true; }
+    /// What the wear comes from, in the loop's messages.
+    virtual std::string name() const { return "DEM"; }
   };
+
+  /// The coefficient of the knife's law of Output/Wear field in case @p c (Archard's W; 0: none).
+  double case_wear_coefficient(const DemCase &c);
 
   /// A known wear rate: @p expression, depth per tonne [m/t] as a function of x, y, z [m] (the
   /// current surface) and t (the tonnes handled so far), at every vertex of the wearable

@@ -1,0 +1,69 @@
+#pragma once
+// Every update's wear as the loop received it, before the filter, kept with the surface it fell
+// on (wear/update_NNNNN.wear in the run's directory; update 0: the pilot cycle), so that the
+// loop can be run again without its wear source (Lifetime/Wear source = replay).
+//
+// What for: the footprint (Lifetime/Smoothing radius) acts after the DEM, on each cycle's wear.
+// A second footprint, r', needs no DEM run of its own: the replay moves the knife again with
+// the stored wear filtered at r' (docs/field.md, "Candidate footprints without a DEM run each").
+//
+// How exact that is: each update replays the stored update that drew the same beds. The stored
+// wear fell on the stored run's surface; at another footprint the knife has another shape after
+// the first update, and the replay carries the stored wear onto it (a wear volume per unit area, interpolated at each vertex's closest point on the stored
+// surface, the total kept). What the replay leaves out is how the DEM's wear itself would have
+// changed with that shape (the geometry feedback): exact in the first update and in a replay at
+// the stored footprint (the surfaces are the same: the stored volumes are used as they are, bit
+// for bit), an approximation that grows with the difference of the two shapes after it
+// (measured on the knife-bed: docs/field.md).
+#include <abrade/coupling/lifetime/wear_source.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace abrade::coupling::lifetime
+{
+  /// One update's (or the pilot cycle's) unfiltered wear, with what a replay needs to use it.
+  struct StoredWear
+  {
+    long                     update       = 0; ///< 0: the pilot cycle
+    double                   tonnes_start = 0; ///< the tonnes handled before it
+    std::vector<int>         bed_seeds;        ///< the beds of wear.seed_volume, in order
+    CycleWear                wear;             ///< per-vertex volumes per cycle of @p surface
+    fem::SolidSurface        surface;          ///< the knife's surface it fell on (vertices, triangles, ids)
+    double                   wear_coefficient = 0;
+    bool                     removes_volume   = true;
+    std::vector<std::string> phases;
+  };
+
+  /// Writes @p stored to @p path (a StateFile: numbers read back bit for bit, checksummed).
+  void write_stored_wear(const std::string &path, const StoredWear &stored);
+
+  /// Reads a file written by write_stored_wear (InputError naming it when it is not one).
+  StoredWear read_stored_wear(const std::string &path);
+
+  /// The file name of update @p update's stored wear in a run's directory (wear/update_00001.wear).
+  std::string stored_wear_file(const std::string &run_directory, long update);
+
+  /// Wear volumes per vertex of @p from carried onto @p to: as a volume per unit area (a third
+  /// of each vertex's triangles), interpolated at each vertex of @p to from its closest point
+  /// on @p from, times its own area; then scaled to the same total (the DEM's worn volume is
+  /// kept). When @p to is @p from (the same vertices and triangles), @p volume itself.
+  std::vector<double> carry_wear_volume(const fem::SolidSurface &from, const std::vector<double> &volume,
+                                        const fem::SolidSurface &to);
+
+  /// Lifetime/Wear source = replay: the wear stored by the run in @p run_directory. A cycle asked
+  /// on beds @p bed_seeds takes the stored update (or pilot) that drew the same beds: the same
+  /// update number of a run with the same Seeds (bed_seed.h), so that a replay at another
+  /// footprint differs from a DEM run at it only by the surface the wear fell on (every update
+  /// is sized by a depth increment: the two knives have worn about as deep at the same update).
+  /// Its volumes are carried onto the current surface (carry_wear_volume); its beds are
+  /// CycleWear::bed_seeds. Beds it did not draw (past its last update, other Seeds): the last
+  /// stored update begun at or before @p tonnes, said once in CycleWear::warnings.
+  /// @p design: this run's unworn surface, which must be the stored run's (the same extent
+  /// within @p tolerance), else InputError; InputError also when the directory holds no stored
+  /// wear (a run of an abrade before it kept its wear).
+  std::unique_ptr<WearSource> make_replayed_wear_source(const std::string &run_directory,
+                                                        const fem::SolidSurface &design, double tolerance);
+} // namespace abrade::coupling::lifetime
