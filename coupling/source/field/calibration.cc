@@ -254,6 +254,8 @@ namespace abrade::field
     run.seeds                 = long(io::summary_number(directory + "/summary.json", "seeds").value_or(1));
     run.replicate_relative_sd = io::summary_number(directory + "/summary.json", "worn_volume_relative_spread").value_or(0);
     run.smoothing_radius      = io::summary_number(directory + "/summary.json", "smoothing_radius").value_or(0);
+    run.particle_radius       = io::summary_number(directory + "/summary.json", "particle_radius").value_or(0);
+    run.coarse_graining_factor = io::summary_number(directory + "/summary.json", "coarse_graining_factor").value_or(0);
     run.wear_field            = io::summary_string(directory + "/summary.json", "wear_field").value_or("");
     const std::regex data_set("<DataSet\\b([^>]*)>"), timestep("timestep=\"([^\"]*)\""), file_of("file=\"([^\"]*)\"");
     std::unique_ptr<geometry::SurfaceDistance> design;
@@ -389,6 +391,8 @@ namespace abrade::field
     if (sum_sq > 0 && ms.size() > 1 && std::isfinite(r.se_fit))
       r.design_effect = r.se_fit * r.se_fit * jj * double(ms.size() - 1) / sum_sq;
     r.smoothing_radius    = run.smoothing_radius;
+    r.particle_radius     = run.particle_radius;
+    r.coarse_graining_factor = run.coarse_graining_factor;
     r.wear_field          = run.wear_field;
     r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;
     const double dof_rep  = double(run.seeds - 1);

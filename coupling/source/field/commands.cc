@@ -258,6 +258,8 @@ namespace abrade::field
         j["archard_coefficient"] = r.archard_coefficient, j["archard_coefficient_low"] = r.low;
         j["archard_coefficient_high"] = r.high, j["extrapolated"] = r.extrapolated;
         j["smoothing_radius"] = r.smoothing_radius; // the footprint W was fitted with (Lifetime/Calibration)
+        if (r.particle_radius > 0) // and the particle size: W and r hold for it (docs/coarse-graining.md)
+          j["particle_radius"] = r.particle_radius, j["coarse_graining_factor"] = r.coarse_graining_factor;
         j["wear_field"]       = r.wear_field;       // the field (law) whose coefficient W is
         for (const auto &w : warnings[order[k]])
           j["warnings"].push_back(w);

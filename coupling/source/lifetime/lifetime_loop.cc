@@ -595,6 +595,27 @@ namespace abrade::coupling::lifetime
   // tip they blunt it into a flat that Gmsh cannot remesh (docs/lifetime.md, the tip check).
   void LifetimeLoop::resolve_smoothing(const CycleWear &wear)
   {
+    if (wear.particle_radius > 0)
+      particle_radius = wear.particle_radius;
+    // W and the footprint hold for the particle size they were fitted at (docs/coarse-graining.md)
+    if (!smoothing_checked && calibration.coefficient > 0)
+      {
+        const bool other_factor = calibration.coarse_graining_factor > 0 &&
+                                  std::abs(dem_case.coarse_graining / calibration.coarse_graining_factor - 1) > 0.01;
+        const bool other_size = calibration.particle_radius > 0 && particle_radius > 0 &&
+                                std::abs(particle_radius / calibration.particle_radius - 1) > 0.01;
+        if (other_factor || other_size)
+          {
+            warnings.push_back(
+              "Lifetime/Calibration was fitted with particles of largest radius " +
+              io::format_number(calibration.particle_radius, 4) + " m (coarse-graining factor " +
+              io::format_number(calibration.coarse_graining_factor, 4) + "), this run's are " +
+              io::format_number(particle_radius, 4) + " m (factor " + io::format_number(dem_case.coarse_graining, 4) +
+              "): W and the footprint hold for the particle size they were fitted at (the knife-bed's total wear "
+              "falls 1.88x from 27.5 to 9.2 mm pellets, docs/coarse-graining.md); run at the calibrated size");
+            ctx.log.warning(warnings.back());
+          }
+      }
     if (s.smoothing <= 0 && !s.analytic)
       s.smoothing = wear.particle_radius;
     if (!smoothing_checked && s.smoothing > 0 && s.smoothing < 0.5 * knife_parameters.mesh_size)
@@ -1135,6 +1156,9 @@ namespace abrade::coupling::lifetime
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
     r["remeshes_inside_worn_surface"] = surfaces_kept;
     r["smoothing_radius"] = s.smoothing;
+    if (particle_radius > 0) // (the size W and the footprint hold for: docs/coarse-graining.md)
+      r["particle_radius"] = particle_radius;
+    r["coarse_graining_factor"] = dem_case.coarse_graining;
     r["wear_source"]      = s.analytic ? "analytic" : s.replay_run.empty() ? "dem" : "replay";
     if (!s.replay_run.empty()) // (its stored wear, carried onto this run's surfaces: stored_wear.h)
       r["replayed_run"] = s.replay_run;

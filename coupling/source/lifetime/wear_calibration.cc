@@ -54,6 +54,10 @@ namespace abrade::coupling::lifetime
       throw InputError(path, "the best run's W is uncertain by more than itself (standard error " +
                                std::to_string(100 * c.relative_sd) + " %): not a calibration to run a life on");
     c.smoothing_radius = best.get<double>("smoothing_radius", 0.0);
+    c.particle_radius  = best.get<double>("particle_radius", 0.0);
+    c.coarse_graining_factor = best.get<double>("coarse_graining_factor", 0.0);
+    if (!(c.particle_radius >= 0) || !(c.coarse_graining_factor >= 0))
+      throw InputError(path, "the best run's particle_radius or coarse_graining_factor is negative or not a number");
     if (!(c.smoothing_radius >= 0) || !std::isfinite(c.smoothing_radius))
       throw InputError(path, "the best run's smoothing_radius is negative or not a number");
     c.wear_field   = best.get<std::string>("wear_field", "");

@@ -59,6 +59,8 @@ namespace abrade::field
     long                             seeds = 1;                ///< the run's beds per update
     double                           replicate_relative_sd = 0; ///< the beds' relative spread of the worn volume
     double                           smoothing_radius = 0;      ///< [m] the run's wear footprint (0: unknown)
+    double                           particle_radius = 0;       ///< [m] its largest particle (0: unknown)
+    double                           coarse_graining_factor = 0; ///< its Particles/Coarse graining/Factor (0: unknown)
     std::string                      wear_field;                ///< the run's Output/Wear field (empty: unknown)
     std::vector<double>              tonnes;                   ///< per output
     std::vector<std::vector<double>> depth;                    ///< [output][point]
@@ -85,6 +87,7 @@ namespace abrade::field
     double      correlation  = 0; ///< measured vs predicted depth at the fitted scale
     bool        extrapolated = false;
     double      smoothing_radius = 0; ///< [m] the run's footprint: W holds for it (0: unknown)
+    double      particle_radius = 0, coarse_graining_factor = 0; ///< the particle size it holds for (0: unknown)
     std::string wear_field;           ///< the wear field W belongs to (its law's coefficient)
   };
 

@@ -175,6 +175,7 @@ namespace abrade::coupling::lifetime
     std::vector<int>             beds_of_update; ///< the seeds of the update's beds (bed_seed())
     double                       previous_largest = 0; ///< the last update's largest depth rate (its size)
     bool                         smoothing_checked = false; ///< the filter's length warned about (once)
+    double                       particle_radius   = 0;     ///< the largest particle's [m] (the DEM's; 0: none seen)
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
     long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)

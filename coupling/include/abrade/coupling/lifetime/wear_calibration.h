@@ -33,6 +33,8 @@ namespace abrade::coupling::lifetime
     double      relative_sd     = 0;    ///< its standard error over itself
     double      dof             = 0;    ///< of that standard error
     double      smoothing_radius = 0;   ///< [m] the footprint W holds for; 0: not recorded
+    double      particle_radius  = 0;   ///< [m] the largest particle W was fitted with; 0: not recorded
+    double      coarse_graining_factor = 0; ///< Particles/Coarse graining/Factor of the fit; 0: not recorded
     /// the footprint was fitted with W (calibration.json `footprint`, identifiable): W and
     /// smoothing_radius are the fit's, and relative_sd holds the footprint's share too
     bool        footprint = false;
