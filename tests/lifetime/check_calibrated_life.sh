@@ -11,7 +11,9 @@
 #    the total is the beds' and the calibration's in quadrature, its degrees of freedom are
 #    Welch-Satterthwaite's and its t the Student quantile at them (computed here by integrating
 #    the density); with one bed an update there is no interval, calibration or not;
-#  - a run with another footprint (Smoothing radius) than the calibrated run's is warned about;
+#  - a run with another footprint (Smoothing radius) than the calibrated run's is warned about,
+#    and so is one at another particle size (coarse-graining factor 1.5): the calibration
+#    records the calibrated run's largest particle and factor;
 #  - W and the footprint together: candidates at footprints 15 and 55 mm beside the default
 #    27.5 mm (the truth's): calibrate fits the footprint within its interval of the truth's and
 #    the lifetime run with that calibration takes both (its Smoothing radius the fitted one,
@@ -26,12 +28,8 @@
 set -euo pipefail
 abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
-case_file="$src/cases/lifetime/small.prm"
-run() { # output, sets...
-  local dir=$1; shift
-  "$abrade" run "$case_file" --quiet --output "$out/$dir" --set "Lifetime/Seeds=1,2,3" \
-    --set "Lifetime/Maximum updates=1" "$@" > /dev/null
-}
+updates=1
+source "$(dirname "$0")/small_case_runs.sh"
 run truth --set "Wall knife/Wear/Archard/Coefficient=3e-14"
 tonnes=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/truth/trajectory.csv")
 "$abrade" compare --predicted "$out/truth/knife/knife_00001.stl" --scan "$out/truth/knife/knife_00001.stl" \
@@ -40,6 +38,7 @@ run candidate
 "$abrade" calibrate --run "$out/candidate" --measurements "$out/scan/measured_depths.csv" --output "$out/calibration" > /dev/null
 run calibrated --set "Lifetime/Calibration=$out/calibration/calibration.json"
 run other_footprint --set "Lifetime/Calibration=$out/calibration/calibration.json" --set "Lifetime/Smoothing radius=0.04"
+run other_particles --set "Lifetime/Calibration=$out/calibration/calibration.json" --set "Particles/Coarse graining/Factor=1.5"
 "$abrade" run "$case_file" --quiet --output "$out/one_bed" --set "Lifetime/Seeds=1" --set "Lifetime/Maximum updates=1" \
   --set "Lifetime/Calibration=$out/calibration/calibration.json" > /dev/null
 
@@ -59,16 +58,6 @@ PY
 "$abrade" calibrate --run "$out/candidate" --run "$out/cand_r15" --run "$out/cand_r55" \
   --measurements "$out/one_depth.csv" --output "$out/calibration_one_depth" > /dev/null 2>&1
 
-refused() { # what, expected text, sets...
-  local what=$1 text=$2; shift 2
-  set +e
-  "$abrade" run "$case_file" --quiet --output "$out/refused" --set "Lifetime/Maximum updates=1" "$@" > "$out/refused.log" 2>&1
-  local rc=$?
-  set -e
-  rm -rf "$out/refused"
-  [ "$rc" = 2 ] || { echo "$what: exit $rc, not 2"; cat "$out/refused.log"; exit 1; }
-  grep -q -- "$text" "$out/refused.log" || { echo "$what: the message does not say '$text'"; cat "$out/refused.log"; exit 1; }
-}
 refused "missing file" "$out/none.json" --set "Lifetime/Calibration=$out/none.json"
 echo "W = 3e-14" > "$out/not_json.json"
 refused "not JSON" "not_json.json: not a calibration.json" --set "Lifetime/Calibration=$out/not_json.json"
@@ -104,6 +93,10 @@ assert abs(w / 3e-14 - 1) < 0.01, w
 truth, candidate, calibrated = life("truth"), life("candidate"), life("calibrated")
 assert calibrated["wear_coefficient"] == w and calibrated["calibration"]["wear_coefficient"] == w, calibrated
 assert cal["smoothing_radius"] == candidate["smoothing_radius"] > 0, (cal, candidate["smoothing_radius"])
+# the particle size W holds for: recorded by the run and the calibration, another one warned about
+assert cal["particle_radius"] == candidate["particle_radius"] > 0 and cal["coarse_graining_factor"] == 1, cal
+assert any("particle size they were fitted at" in w for w in life("other_particles")["warnings"]), life("other_particles")["warnings"]
+assert not any("particle size they were fitted at" in w for w in calibrated["warnings"]), calibrated["warnings"]
 L, Lt = calibrated["predicted_tonnes_to_end_of_life"], truth["predicted_tonnes_to_end_of_life"]
 assert abs(L / (Lt * 3e-14 / w) - 1) < 1e-3, (L, Lt, w)
 iv = calibrated["interval"]

@@ -20,11 +20,8 @@
 set -euo pipefail
 abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
-case_file="$src/cases/lifetime/small.prm"
-run() { # output, sets...
-  local dir=$1; shift
-  "$abrade" run "$case_file" --quiet --output "$out/$dir" --set "Lifetime/Seeds=1,2,3" \
-    --set "Lifetime/Maximum updates=3" "$@" > "$out/$dir.log" 2>&1 || { cat "$out/$dir.log"; exit 1; }
+updates=3
+source "$(dirname "$0")/small_case_runs.sh"
 }
 replay() { local dir=$1; shift; run "$dir" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" "$@"; }
 run stored
@@ -85,23 +82,12 @@ print("replay: same footprint byte for byte; at 15 mm update 1 = the DEM's, life
                                            d["predicted_tonnes_high"]))
 PY
 
-refused() { # what, expected text, sets...
-  local what=$1 text=$2; shift 2
-  set +e
-  "$abrade" run "$case_file" --quiet --output "$out/refused" --set "Lifetime/Maximum updates=1" \
-    --set "Lifetime/Wear source=replay" "$@" > "$out/refused.log" 2>&1
-  local rc=$?
-  set -e
-  rm -rf "$out/refused"
-  [ "$rc" = 2 ] || { echo "$what: exit $rc, not 2"; cat "$out/refused.log"; exit 1; }
-  grep -q -- "$text" "$out/refused.log" || { echo "$what: the message does not say '$text'"; cat "$out/refused.log"; exit 1; }
-}
-refused "no directory given" "Replay run" --set "Lifetime/Replay run="
-refused "missing directory" "$out/none" --set "Lifetime/Replay run=$out/none"
+refused "no directory given" "Replay run" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run="
+refused "missing directory" "$out/none" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/none"
 mkdir -p "$out/empty"
-refused "no stored wear" "holds no stored wear" --set "Lifetime/Replay run=$out/empty"
-refused "another knife" "another knife" --set "Lifetime/Replay run=$out/stored" --set "Knife/Height=0.3"
+refused "no stored wear" "holds no stored wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/empty"
+refused "another knife" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Knife/Height=0.3"
 cp -r "$out/stored" "$out/corrupt"
 sed -i '0,/^tonnes_start/s/^tonnes_start = .*/tonnes_start = 1/' "$out/corrupt/wear/update_00001.wear"
-refused "corrupt stored wear" "update_00001.wear" --set "Lifetime/Replay run=$out/corrupt"
+refused "corrupt stored wear" "update_00001.wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/corrupt"
 echo "replay: refusals exit 2"
