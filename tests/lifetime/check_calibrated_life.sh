@@ -12,8 +12,9 @@
 #    Welch-Satterthwaite's and its t the Student quantile at them (computed here by integrating
 #    the density); with one bed an update there is no interval, calibration or not;
 #  - a run with another footprint (Smoothing radius) than the calibrated run's is warned about,
-#    and so is one at another particle size (coarse-graining factor 1.5): the calibration
-#    records the calibrated run's largest particle and factor;
+#    and so is one whose calibration was fitted at another particle size (a calibration.json
+#    with 1.5 times the particle and coarse-graining factor 1.5): the calibration records the
+#    calibrated run's largest particle and factor;
 #  - W and the footprint together: candidates at footprints 15 and 55 mm beside the default
 #    27.5 mm (the truth's): calibrate fits the footprint within its interval of the truth's and
 #    the lifetime run with that calibration takes both (its Smoothing radius the fitted one,
@@ -38,7 +39,6 @@ run candidate
 "$abrade" calibrate --run "$out/candidate" --measurements "$out/scan/measured_depths.csv" --output "$out/calibration" > /dev/null
 run calibrated --set "Lifetime/Calibration=$out/calibration/calibration.json"
 run other_footprint --set "Lifetime/Calibration=$out/calibration/calibration.json" --set "Lifetime/Smoothing radius=0.04"
-run other_particles --set "Lifetime/Calibration=$out/calibration/calibration.json" --set "Particles/Coarse graining/Factor=1.5"
 "$abrade" run "$case_file" --quiet --output "$out/one_bed" --set "Lifetime/Seeds=1" --set "Lifetime/Maximum updates=1" \
   --set "Lifetime/Calibration=$out/calibration/calibration.json" > /dev/null
 
@@ -69,6 +69,8 @@ import json, sys
 j = json.load(open(sys.argv[1])); r = j["runs"][0]; exec(sys.argv[3]); json.dump(j, open(sys.argv[2], "w"))
 PY
 }
+variant coarser 'r["particle_radius"] *= 1.5; r["coarse_graining_factor"] = 1.5'
+run other_particles --set "Lifetime/Calibration=$out/coarser.json"
 variant object 'j["runs"] = {"best": r}'
 refused "runs not a list" "not a list" --set "Lifetime/Calibration=$out/object.json"
 variant oka 'r["wear_field"] = "oka_volume"'

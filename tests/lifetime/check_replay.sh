@@ -22,7 +22,6 @@ abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 updates=3
 source "$(dirname "$0")/small_case_runs.sh"
-}
 replay() { local dir=$1; shift; run "$dir" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" "$@"; }
 run stored
 replay same
