@@ -5,7 +5,8 @@
 # W = 2e-14 on the same beds is calibrated on that scan (abrade calibrate), and the case is run
 # again with Lifetime/Calibration = that calibration.json:
 #  - the calibration finds W = 3e-14 (within 1 %: the same beds, Archard wear is linear in W);
-#  - the calibrated run uses it (summary.json wear_coefficient) and predicts the truth's life
+#  - the calibrated run uses it (summary.json wear_coefficient; its report says the
+#    calibration's share of the interval) and predicts the truth's life
 #    (within 0.1 %: one update's life goes exactly as 1 / W), and the truth lies in its interval;
 #  - its interval's component `calibration` is calibration.json's relative standard error of W,
 #    the total is the beds' and the calibration's in quadrature, its degrees of freedom are
@@ -99,6 +100,9 @@ assert cal["smoothing_radius"] == candidate["smoothing_radius"] > 0, (cal, candi
 assert cal["particle_radius"] == candidate["particle_radius"] > 0 and cal["coarse_graining_factor"] == 1, cal
 assert any("particle size they were fitted at" in w for w in life("other_particles")["warnings"]), life("other_particles")["warnings"]
 assert not any("particle size they were fitted at" in w for w in calibrated["warnings"]), calibrated["warnings"]
+# the report says the calibration's share of the interval (and the footprint's, where fitted)
+for run, words in (("calibrated", "the calibration's share (W "), ("calibrated_footprint", " and the footprint ")):
+    assert words in open(os.path.join(out, run, "report.html")).read(), (run, words)
 L, Lt = calibrated["predicted_tonnes_to_end_of_life"], truth["predicted_tonnes_to_end_of_life"]
 assert abs(L / (Lt * 3e-14 / w) - 1) < 1e-3, (L, Lt, w)
 iv = calibrated["interval"]

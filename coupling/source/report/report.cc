@@ -185,6 +185,15 @@ namespace abrade::report
               if (extrapolation > 0)
                 headline << "; the extrapolation's share " << number(100 * extrapolation, 2) << " % of "
                          << number(100 * r.get<double>("interval.relative_sd", 0), 2) << " % (standard deviations)";
+              // Lifetime/Calibration: W's (and the fitted footprint's) uncertainty, a component of its own
+              const double calibration = r.get<double>("interval.components.calibration", 0);
+              if (calibration > 0)
+                headline << "; the calibration's share (W " << number(r.get<double>("calibration.wear_coefficient", 0), 4)
+                         << (r.get<bool>("calibration.footprint_fitted", false)
+                               ? " and the footprint " + mm(r.get<double>("smoothing_radius", 0)) + " mm"
+                               : std::string())
+                         << ") " << number(100 * calibration, 2) << " % of "
+                         << number(100 * r.get<double>("interval.relative_sd", 0), 2) << " % (standard deviations)";
               headline << ")";
             }
           headline << ", by " << escape_html(criterion);
