@@ -326,7 +326,7 @@ namespace abrade::coupling
                       "abrade calibrate) or W without a DEM run (docs/field.md).");
     prm.declare_entry("Replay run", "", Anything(),
                       "[directory] Wear source = replay: the output directory of the lifetime run whose "
-                      "stored wear (wear/update_*.wear) is replayed (relative to this file). Its beds are "
+                      "stored wear (wear/update_*.wear) is replayed (relative to this file; give an absolute path on the command line). Its beds are "
                       "the replay's; beyond the tonnes it reached its last update's wear is used (warned). "
                       "The wear is scaled by this case's W over the stored run's.");
     prm.declare_entry("Analytic wear rate", "1e-6", Anything(),

@@ -14,8 +14,12 @@
 #    run's at that W (the wear scaled by their ratio);
 #  - past the stored run's worn volume, and where a stored update's beds serve twice, a
 #    warning says so;
-#  - a missing directory, one without stored wear, another knife's and a corrupt stored file
-#    are refused with exit 2, naming them.
+#  - a replay of a replay at its footprint is that replay again (carried volumes that round
+#    below zero were refused as corrupt before); a user's own files in the output's wear/ stay;
+#  - a missing directory, one without stored wear, another knife's (another height, another
+#    bevel: the same extent within the mesh size), other particles (coarse graining), a
+#    corrupt stored file and a replay into its own stored run are refused with exit 2, naming
+#    them.
 #   check_replay.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -30,6 +34,15 @@ replay replay_r15 --set "Lifetime/Smoothing radius=0.015"
 run dem_w4 --set "Wall knife/Wear/Archard/Coefficient=4e-14"
 replay replay_w4 --set "Wall knife/Wear/Archard/Coefficient=4e-14"
 replay beyond --set "Lifetime/Maximum updates=5"
+# a replay of a replay (its carried wear stored again) at its footprint: the same run again
+run replay_of_replay --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/replay_r15" \
+  --set "Lifetime/Smoothing radius=0.015"
+cmp -s "$out/replay_r15/trajectory.csv" "$out/replay_of_replay/trajectory.csv" || { echo "a replay of a replay differs"; exit 1; }
+# a user's own files in the output directory's wear/ stay
+mkdir -p "$out/keep/wear" && echo "mine" > "$out/keep/wear/notes.txt"
+"$abrade" run "$case_file" --quiet --output "$out/keep" --set "Lifetime/Seeds=1,2,3" --set "Lifetime/Maximum updates=1" \
+  --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" > /dev/null
+[ -f "$out/keep/wear/notes.txt" ] && [ -f "$out/keep/wear/update_00001.wear" ] || { echo "wear/ of the output directory not kept"; exit 1; }
 
 for f in trajectory.csv life_beds.csv; do
   cmp -s "$out/stored/$f" "$out/same/$f" || { echo "the replay at the stored footprint differs in $f"; exit 1; }
@@ -86,6 +99,15 @@ refused "missing directory" "$out/none" --set "Lifetime/Wear source=replay" --se
 mkdir -p "$out/empty"
 refused "no stored wear" "holds no stored wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/empty"
 refused "another knife" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Knife/Height=0.3"
+refused "another bevel" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Knife/Bevel height=0.08"
+refused "other particles" "Coarse graining/Factor" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" \
+  --set "Particles/Coarse graining/Factor=1.5"
+set +e
+"$abrade" run "$case_file" --quiet --output "$out/stored" --set "Lifetime/Maximum updates=1" --set "Lifetime/Wear source=replay" \
+  --set "Lifetime/Replay run=$out/stored" > "$out/refused.log" 2>&1
+rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "own output directory" "$out/refused.log" || { echo "a replay into its own stored run: exit $rc"; cat "$out/refused.log"; exit 1; }
 cp -r "$out/stored" "$out/corrupt"
 sed -i '0,/^tonnes_start/s/^tonnes_start = .*/tonnes_start = 1/' "$out/corrupt/wear/update_00001.wear"
 refused "corrupt stored wear" "update_00001.wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/corrupt"

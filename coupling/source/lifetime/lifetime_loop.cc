@@ -339,9 +339,12 @@ namespace abrade::coupling::lifetime
     update   = 0;
     sections = design_at_sections = design_sections;
     checkpoints->clear();
-    std::error_code ec; // (the stored wear of an earlier run in this directory)
-    std::filesystem::remove_all(ctx.output.root() + "/wear", ec);
-    ctx.output.subdirectory("wear");
+    // (the stored wear of an earlier run in this directory: its update files only)
+    std::error_code ec;
+    for (const auto &e : std::filesystem::directory_iterator(ctx.output.subdirectory("wear"), ec))
+      if (const std::string name = e.path().filename().string();
+          name.rfind("update_", 0) == 0 && e.path().extension() == ".wear")
+        std::filesystem::remove(e.path(), ec);
     knife_output->adopt({});
     knife->write(*knife_output, 0);
     io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife->surface().as_polydata()); // the design
@@ -461,7 +464,7 @@ namespace abrade::coupling::lifetime
       }
     store_wear(wear, beds);
     // the DEM's warnings (Simulation/On error = continue): each kind logged once, all counted
-    dem_warnings_now = long(wear.warnings.size());
+    dem_warnings_now = source->name() == "DEM" ? long(wear.warnings.size()) : 0; // (a replay's are its own)
     dem_warnings_total += dem_warnings_now;
     for (const auto &w : wear.warnings)
       {
@@ -519,6 +522,7 @@ namespace abrade::coupling::lifetime
     stored.wear_coefficient = source->wear_coefficient();
     stored.removes_volume   = source->removes_volume();
     stored.phases           = source->phases();
+    stored.coarse_graining_factor = dem_case.coarse_graining;
     write_stored_wear(stored_wear_file(ctx.output.root(), stored.update), stored);
   }
 
@@ -526,9 +530,14 @@ namespace abrade::coupling::lifetime
   // case's W where the stored run had another.
   void LifetimeLoop::replay_stored_wear()
   {
+    std::error_code ec;
+    if (std::filesystem::equivalent(s.replay_run, ctx.output.root(), ec))
+      ctx.parameters.fail({"Lifetime"}, "Replay run", s.replay_run + " is this run's own output directory: its stored "
+                          "wear would be overwritten by the replay's; give the replay another --output");
     try
       {
-        source = make_replayed_wear_source(s.replay_run, knife->design_surface(), knife_parameters.mesh_size);
+        source = make_replayed_wear_source(s.replay_run, knife->design_surface(), knife_parameters.mesh_size,
+                                           dem_case.coarse_graining);
       }
     catch (const InputError &e)
       {

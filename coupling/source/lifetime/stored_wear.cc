@@ -53,6 +53,7 @@ namespace abrade::coupling::lifetime
     f.set("particle_radius", s.wear.particle_radius);
     f.set("wear_coefficient", s.wear_coefficient);
     f.set("removes_volume", s.removes_volume ? 1.0 : 0.0);
+    f.set("coarse_graining_factor", s.coarse_graining_factor);
     f.set("phases", joined(s.phases));
     f.set("phase_volume", s.wear.phase_volume);
     f.set("bed_seeds", numbers_of(s.bed_seeds));
@@ -68,7 +69,9 @@ namespace abrade::coupling::lifetime
     f.set("boundary_ids", ids);
     for (std::size_t k = 0; k < s.wear.seed_volume.size(); ++k)
       f.set("volume_bed_" + std::to_string(k + 1), s.wear.seed_volume[k]);
-    f.write(path);
+    // written aside and renamed: a run killed while writing leaves no half file
+    f.write(path + ".part");
+    std::filesystem::rename(path + ".part", path);
   }
 
   StoredWear read_stored_wear(const std::string &path)
@@ -85,6 +88,7 @@ namespace abrade::coupling::lifetime
         s.wear.particle_radius  = f.number("particle_radius");
         s.wear_coefficient      = f.number("wear_coefficient");
         s.removes_volume        = f.number("removes_volume") != 0;
+        s.coarse_graining_factor = f.number("coarse_graining_factor");
         std::istringstream phases(f.text("phases"));
         for (std::string w; phases >> w;)
           s.phases.push_back(w);
@@ -142,8 +146,8 @@ namespace abrade::coupling::lifetime
       density[v] = area_from[v] > 0 ? volume[v] / area_from[v] : 0.0, total += volume[v];
     std::vector<double> carried = fem::SurfaceTransfer(from, to)(density);
     double              sum     = 0;
-    for (std::size_t v = 0; v < carried.size(); ++v)
-      sum += (carried[v] *= area_to[v]);
+    for (std::size_t v = 0; v < carried.size(); ++v) // (interpolated zeros can round below zero)
+      sum += (carried[v] = std::max(0.0, carried[v]) * area_to[v]);
     if (sum > 0)
       for (double &x : carried)
         x *= total / sum;
@@ -155,11 +159,15 @@ namespace abrade::coupling::lifetime
     class ReplayedWearSource : public WearSource
     {
     public:
-      ReplayedWearSource(const std::string &directory, const fem::SolidSurface &design, double tolerance)
+      ReplayedWearSource(const std::string &directory, const fem::SolidSurface &design, double tolerance,
+                         double coarse_graining_factor)
       {
         namespace fs = std::filesystem;
         const std::string dir = directory + "/wear";
         std::error_code   ec;
+        if (!fs::is_directory(directory, ec))
+          throw InputError(directory, "no such directory (Replay run is taken relative to the parameter file; give "
+                                      "an absolute path for a run elsewhere)");
         if (!fs::is_directory(dir, ec))
           throw InputError(directory, "holds no stored wear (wear/update_*.wear): not a lifetime run's "
                                       "directory, or a run of an abrade before it kept its wear");
@@ -176,17 +184,31 @@ namespace abrade::coupling::lifetime
           }
         if (updates.empty() || updates.back().update < 1)
           throw InputError(dir, "no stored update (wear/update_00001.wear)");
-        // the stored run's knife must be this one: the first stored surface is its design
+        // other particles wear the knife otherwise: the stored wear is not this case's
+        if (std::abs(updates.front().coarse_graining_factor / coarse_graining_factor - 1) > 1e-9)
+          throw InputError(directory, "its wear was made with Particles/Coarse graining/Factor = " +
+                                        io::format_number(updates.front().coarse_graining_factor) + ", this case has " +
+                                        io::format_number(coarse_graining_factor) +
+                                        ": replay a run of the same case (only W and the Smoothing radius may differ)");
+        // the stored run's knife must be this one: the first stored surface is its design (the
+        // same extent within a tenth of the mesh size, the same volume within 0.1 %)
         const dealii::BoundingBox<3> a(design.vertices), b(updates.front().surface.vertices);
+        const double                 v_design = fem::enclosed_volume(design),
+                     v_stored = fem::enclosed_volume(updates.front().surface);
+        bool other = !(std::abs(v_design / v_stored - 1) <= 1e-3);
         for (int d = 0; d < 3; ++d)
-          if (std::abs(a.lower_bound(d) - b.lower_bound(d)) > tolerance ||
-              std::abs(a.upper_bound(d) - b.upper_bound(d)) > tolerance)
-            throw InputError(directory, "its wear fell on another knife (its unworn extent differs from this "
-                                        "run's by more than the Knife/Mesh size): replay a run of the same case");
+          other = other || std::abs(a.lower_bound(d) - b.lower_bound(d)) > 0.1 * tolerance ||
+                  std::abs(a.upper_bound(d) - b.upper_bound(d)) > 0.1 * tolerance;
+        if (other)
+          throw InputError(directory, "its wear fell on another knife (its unworn volume " +
+                                        io::format_number(v_stored * 1e6, 6) + " cm^3 and extent against this run's " +
+                                        io::format_number(v_design * 1e6, 6) + " cm^3): replay a run of the same case "
+                                        "(only W and the Smoothing radius may differ)");
         source_directory = directory;
-        design_volume    = fem::enclosed_volume(updates.front().surface);
+        // (the worn volumes against each run's own design: this one's now, the stored one's then)
+        design_volume = v_design;
         for (const auto &u : updates)
-          worn_before.push_back(design_volume - fem::enclosed_volume(u.surface));
+          worn_before.push_back(v_stored - fem::enclosed_volume(u.surface));
         uses.assign(updates.size(), 0);
         // the stored run's end: its trajectory's last worn volume (else its last update's start)
         worn_at_end = worn_before.back();
@@ -224,7 +246,10 @@ namespace abrade::coupling::lifetime
                                     source_directory + " did (" + io::format_number(worn_at_end * 1e6, 4) +
                                     " cm^3): its last update's wear, on its last surface, is used from here on");
           }
-        if (++uses[use - updates.data()] == 2 && use->update >= 1)
+        const bool pilot = std::any_of(updates.begin(), updates.end(), [&](const StoredWear &u) {
+          return u.update == 0 && u.bed_seeds == bed_seeds;
+        });
+        if (!pilot && ++uses[use - updates.data()] == 2 && use->update >= 1)
           warnings_once.push_back("stored update " + std::to_string(use->update) + "'s beds are used by more than one "
                                   "update: the life's interval counts them as fresh beds each time (too narrow)");
         CycleWear w = use->wear;
@@ -255,8 +280,9 @@ namespace abrade::coupling::lifetime
   } // namespace
 
   std::unique_ptr<WearSource> make_replayed_wear_source(const std::string &run_directory,
-                                                        const fem::SolidSurface &design, double tolerance)
+                                                        const fem::SolidSurface &design, double tolerance,
+                                                        double coarse_graining_factor)
   {
-    return std::make_unique<ReplayedWearSource>(run_directory, design, tolerance);
+    return std::make_unique<ReplayedWearSource>(run_directory, design, tolerance, coarse_graining_factor);
   }
 } // namespace abrade::coupling::lifetime

@@ -40,6 +40,7 @@ namespace abrade::coupling::lifetime
     fem::SolidSurface        surface;          ///< the knife's surface it fell on (vertices, triangles, ids)
     double                   wear_coefficient = 0;
     bool                     removes_volume   = true;
+    double                   coarse_graining_factor = 1; ///< of the case that made it
     std::vector<std::string> phases;
   };
 
@@ -67,8 +68,10 @@ namespace abrade::coupling::lifetime
   /// CycleWear::bed_seeds. Said once each in CycleWear::warnings: a knife that has lost more
   /// than the stored run did by its end (its last update's wear is used), a stored update
   /// serving a second update. @p design: this run's unworn surface, which must be the stored
-  /// run's (the same extent within @p tolerance), else InputError; InputError also when the
+  /// run's (the same extent within a tenth of @p tolerance, the same volume within 0.1 %), and
+  /// @p coarse_graining_factor the stored run's, else InputError; InputError also when the
   /// directory holds no stored wear (a run of an abrade before it kept its wear).
   std::unique_ptr<WearSource> make_replayed_wear_source(const std::string &run_directory,
-                                                        const fem::SolidSurface &design, double tolerance);
+                                                        const fem::SolidSurface &design, double tolerance,
+                                                        double coarse_graining_factor);
 } // namespace abrade::coupling::lifetime
