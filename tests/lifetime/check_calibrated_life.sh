@@ -14,8 +14,8 @@
 #    the density); with one bed an update there is no interval, calibration or not;
 #  - a run with another footprint (Smoothing radius) than the calibrated run's is warned about,
 #    and so is one whose calibration was fitted at another particle size (a calibration.json
-#    with 1.5 times the particle and coarse-graining factor 1.5): the calibration records the
-#    calibrated run's largest particle and factor;
+#    with coarse-graining factor 1.5, and one with 1.5 times the particle, each alone): the
+#    calibration records the calibrated run's largest particle and factor;
 #  - W and the footprint together: candidates at footprints 15 and 55 mm beside the default
 #    27.5 mm (the truth's): calibrate fits the footprint within its interval of the truth's and
 #    the lifetime run with that calibration takes both (its Smoothing radius the fitted one,
@@ -70,8 +70,10 @@ import json, sys
 j = json.load(open(sys.argv[1])); r = j["runs"][0]; exec(sys.argv[3]); json.dump(j, open(sys.argv[2], "w"))
 PY
 }
-variant coarser 'r["particle_radius"] *= 1.5; r["coarse_graining_factor"] = 1.5'
-run other_particles --set "Lifetime/Calibration=$out/coarser.json"
+variant other_factor 'r["coarse_graining_factor"] = 1.5'
+run other_factor --set "Lifetime/Calibration=$out/other_factor.json"
+variant other_size 'r["particle_radius"] *= 1.5'
+run other_size --set "Lifetime/Calibration=$out/other_size.json"
 variant object 'j["runs"] = {"best": r}'
 refused "runs not a list" "not a list" --set "Lifetime/Calibration=$out/object.json"
 variant oka 'r["wear_field"] = "oka_volume"'
@@ -98,7 +100,8 @@ assert calibrated["wear_coefficient"] == w and calibrated["calibration"]["wear_c
 assert cal["smoothing_radius"] == candidate["smoothing_radius"] > 0, (cal, candidate["smoothing_radius"])
 # the particle size W holds for: recorded by the run and the calibration, another one warned about
 assert cal["particle_radius"] == candidate["particle_radius"] > 0 and cal["coarse_graining_factor"] == 1, cal
-assert any("particle size they were fitted at" in w for w in life("other_particles")["warnings"]), life("other_particles")["warnings"]
+for run in ("other_factor", "other_size"):
+    assert any("particle size they were fitted at" in w for w in life(run)["warnings"]), (run, life(run)["warnings"])
 assert not any("particle size they were fitted at" in w for w in calibrated["warnings"]), calibrated["warnings"]
 # the report says the calibration's share of the interval (and the footprint's, where fitted)
 for run, words in (("calibrated", "the calibration's share (W "), ("calibrated_footprint", " and the footprint ")):
