@@ -134,24 +134,38 @@ namespace abrade::coupling::lifetime
     return s;
   }
 
+  std::vector<std::vector<double>> carry_wear_volumes(const fem::SolidSurface &from,
+                                                      const std::vector<std::vector<double>> &volumes,
+                                                      const fem::SolidSurface &to)
+  {
+    if (same_surface(from, to))
+      return volumes;
+    // (the areas and each vertex's closest point found once for all fields)
+    const auto                 area_from = fem::vertex_areas(from), area_to = fem::vertex_areas(to);
+    const fem::SurfaceTransfer transfer(from, to);
+    std::vector<std::vector<double>> all;
+    for (const auto &volume : volumes)
+      {
+        std::vector<double> density(volume.size());
+        double              total = 0;
+        for (std::size_t v = 0; v < volume.size(); ++v)
+          density[v] = area_from[v] > 0 ? volume[v] / area_from[v] : 0.0, total += volume[v];
+        std::vector<double> carried = transfer(density);
+        double              sum     = 0;
+        for (std::size_t v = 0; v < carried.size(); ++v) // (interpolated zeros can round below zero)
+          sum += (carried[v] = std::max(0.0, carried[v]) * area_to[v]);
+        if (sum > 0)
+          for (double &x : carried)
+            x *= total / sum;
+        all.push_back(std::move(carried));
+      }
+    return all;
+  }
+
   std::vector<double> carry_wear_volume(const fem::SolidSurface &from, const std::vector<double> &volume,
                                         const fem::SolidSurface &to)
   {
-    if (same_surface(from, to))
-      return volume;
-    const auto          area_from = fem::vertex_areas(from), area_to = fem::vertex_areas(to);
-    std::vector<double> density(volume.size());
-    double              total = 0;
-    for (std::size_t v = 0; v < volume.size(); ++v)
-      density[v] = area_from[v] > 0 ? volume[v] / area_from[v] : 0.0, total += volume[v];
-    std::vector<double> carried = fem::SurfaceTransfer(from, to)(density);
-    double              sum     = 0;
-    for (std::size_t v = 0; v < carried.size(); ++v) // (interpolated zeros can round below zero)
-      sum += (carried[v] = std::max(0.0, carried[v]) * area_to[v]);
-    if (sum > 0)
-      for (double &x : carried)
-        x *= total / sum;
-    return carried;
+    return carry_wear_volumes(from, {volume}, to).front();
   }
 
   namespace
@@ -226,7 +240,8 @@ namespace abrade::coupling::lifetime
       {
         // the same run again (the pilot and the first update of any replay; every update of one
         // at the stored footprint): the stored update of these beds on this very surface
-        const StoredWear *use = nullptr;
+        std::vector<std::string> said; // (this cycle's warnings)
+        const StoredWear        *use = nullptr;
         for (const auto &u : updates)
           if (u.bed_seeds == bed_seeds && same_surface(u.surface, surface))
             use = &u;
@@ -241,7 +256,7 @@ namespace abrade::coupling::lifetime
         if (worn > worn_at_end && !said_beyond)
           {
             said_beyond = true;
-            warnings_once.push_back("after " + io::format_number(tonnes, 4) + " t the knife has lost more (" +
+            said.push_back("after " + io::format_number(tonnes, 4) + " t the knife has lost more (" +
                                     io::format_number(worn * 1e6, 4) + " cm^3) than the stored run " +
                                     source_directory + " did (" + io::format_number(worn_at_end * 1e6, 4) +
                                     " cm^3): its last update's wear, on its last surface, is used from here on");
@@ -250,15 +265,12 @@ namespace abrade::coupling::lifetime
           return u.update == 0 && u.bed_seeds == bed_seeds;
         });
         if (!pilot && ++uses[use - updates.data()] == 2 && use->update >= 1)
-          warnings_once.push_back("stored update " + std::to_string(use->update) + "'s beds are used by more than one "
+          said.push_back("stored update " + std::to_string(use->update) + "'s beds are used by more than one "
                                   "update: the life's interval counts them as fresh beds each time (too narrow)");
         CycleWear w = use->wear;
         w.bed_seeds = use->bed_seeds;
-        w.seed_volume.clear();
-        for (const auto &v : use->wear.seed_volume)
-          w.seed_volume.push_back(carry_wear_volume(use->surface, v, surface));
-        w.warnings = std::move(warnings_once);
-        warnings_once.clear();
+        w.seed_volume = carry_wear_volumes(use->surface, use->wear.seed_volume, surface);
+        w.warnings    = std::move(said);
         return w;
       }
 
@@ -270,12 +282,11 @@ namespace abrade::coupling::lifetime
     private:
       std::vector<StoredWear> updates;
       std::string              source_directory;
-      double                   design_volume = 0; ///< enclosed by the first stored surface
+      double                   design_volume = 0; ///< enclosed by this run's design (its unworn knife)
       std::vector<double>      worn_before;       ///< per stored update: the volume worn off before it
       double                   worn_at_end = 0;   ///< the stored run's worn volume at its end
       std::vector<int>         uses;              ///< per stored update: how often replayed
       bool                     said_beyond = false;
-      std::vector<std::string> warnings_once;
     };
   } // namespace
 

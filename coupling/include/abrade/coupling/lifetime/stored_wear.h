@@ -60,6 +60,11 @@ namespace abrade::coupling::lifetime
   std::vector<double> carry_wear_volume(const fem::SolidSurface &from, const std::vector<double> &volume,
                                         const fem::SolidSurface &to);
 
+  /// The same for several fields (a cycle's beds), each vertex's closest point found once.
+  std::vector<std::vector<double>> carry_wear_volumes(const fem::SolidSurface &from,
+                                                      const std::vector<std::vector<double>> &volumes,
+                                                      const fem::SolidSurface &to);
+
   /// Lifetime/Wear source = replay: the wear stored by the run in @p run_directory. A cycle asked
   /// on beds @p bed_seeds on @p surface takes the stored update (or pilot) of these beds on this
   /// very surface (the same run again), else the stored update that began with the most volume
