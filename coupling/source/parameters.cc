@@ -333,9 +333,11 @@ namespace abrade::coupling
                       "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
                       "inward normal, as a function of the knife's current coordinates x, y, z (the "
                       "knife's own frame, see Recession points), of t, the tonnes handled so far, and of "
-                      "zlow, the z of the knife's lowest wearable point now, e.g. '1e-6*exp(-z/0.01)', "
-                      "'1e-6*(1+t/5000)' or '1e-6*(z < zlow + 0.003)' (a band on the edge that follows it "
-                      "up); evaluated at the surface's vertices. muparser syntax.");
+                      "zlow, the z of the knife's lowest wearable point now, and zedge, the z of the lowest "
+                      "wearable point of the knife's slice through the point (slices across x, a mean "
+                      "triangle edge thick), e.g. '1e-6*exp(-z/0.01)', '1e-6*(1+t/5000)' or "
+                      "'1e-6*(z < zedge + 0.003)' (a band on the edge line that follows each part of it up); "
+                      "evaluated at the surface's vertices. muparser syntax.");
     prm.declare_entry("Analytic wear is", "depth", Selection("depth|volume"),
                       "Wear source = analytic: depth: the surface recedes by the rate x tonnes along its "
                       "normal (the offset surface, exact: verification of the motion); volume: the rate x "

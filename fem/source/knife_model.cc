@@ -85,9 +85,10 @@ namespace abrade::fem
     }
 
     /// The factor on vertex @p moves of surface @p s by which the enclosed volume falls by
-    /// @p volume (a cubic in it: secant iterations from 1); 0 where none is found between 0.5
+    /// @p volume (a cubic in it: secant iterations from 1); 0 where none is found between 0.05
     /// and 2 (the offset's own volume is within a few % of depth x area on a surface it does
-    /// not fold).
+    /// not fold; a factor well below 1 is the rest of an update whose remesh before the step
+    /// took most of its volume: 0.6 of it at a rounded chisel tip).
     double offset_scale_for_volume(const SolidSurface &s, const std::vector<Tensor<1, 3>> &moves, double volume)
     {
       const double v0   = enclosed_volume(s);
@@ -98,7 +99,7 @@ namespace abrade::fem
           const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
           x0 = x1, f0 = f1, x1 = x2, f1 = miss(x1);
         }
-      return std::isfinite(x1) && x1 > 0.5 && x1 < 2 && std::abs(f1) <= 1e-6 * volume ? x1 : 0.0;
+      return std::isfinite(x1) && x1 > 0.05 && x1 < 2 && std::abs(f1) <= 1e-6 * volume ? x1 : 0.0;
     }
 
     /// A field of 3-vectors per vertex of a transfer's old surface, carried to its new one.
@@ -199,7 +200,7 @@ namespace abrade::fem
             r.offset_scale = scale;
           }
         else
-          r.volume_note = "no factor between 0.5 and 2 on the depth removes the volume worn: the depth as it is";
+          r.volume_note = "no factor between 0.05 and 2 on the depth removes the volume worn: the depth as it is";
       }
     std::vector<double> wearing = depth;
     for (std::size_t v = 0; v < clamped.size(); ++v)
@@ -220,7 +221,7 @@ namespace abrade::fem
           return;
         if (!may_rebuild)
           throw RunError(why);
-        rebuild_eroded(before, why, r);
+        rebuild_eroded(before, why, r, volume);
         return;
       }
 
@@ -298,7 +299,8 @@ namespace abrade::fem
           {
             // Gmsh can mesh neither the moved surface nor inside its triangles: from the
             // surface before the update, built so that it cannot fold
-            rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r);
+            rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r,
+                           volume);
             return;
           }
       }
@@ -381,10 +383,44 @@ namespace abrade::fem
                                         : std::min(settings.mesh_size / 6, plate_thickness / 15);
   }
 
-  void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r)
+  void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r, double volume)
   {
-    const ErodedSurface eroded =
-      eroded_surface(before.surface.as_polydata(), before.depth, erosion_spacing(), settings.mesh_size / 3);
+    const io::PolyData start = before.surface.as_polydata();
+    auto               build = [&](double scale) {
+      std::vector<double> depth = before.depth;
+      for (double &d : depth)
+        d *= scale;
+      return eroded_surface(start, depth, erosion_spacing(), settings.mesh_size / 3);
+    };
+    ErodedSurface eroded = build(1);
+    // A volume to remove: the depth scaled as a whole until the set removes it (to 0.5 %), as
+    // the moved vertices' step is scaled; the set's own error (edges cut by up to half a grid
+    // spacing) is then part of the factor. Secant iterations from the proportional guess, each
+    // a construction of the set (seconds).
+    if (volume > 0)
+      {
+        const double v0      = enclosed_volume(before.surface);
+        auto         miss    = [&](const ErodedSurface &e) { return v0 - e.volume - volume; };
+        double       x0      = 1, f0 = miss(eroded);
+        const double removed = f0 + volume;
+        double       x1      = removed > 0 ? volume / removed : 1;
+        ErodedSurface best   = eroded;
+        double        best_x = x0, best_f = f0;
+        for (int k = 0; k < 4 && std::abs(best_f) > 5e-3 * volume && x1 > 0.05 && x1 < 2 && x1 != x0; ++k)
+          {
+            ErodedSurface e  = build(x1);
+            const double  f1 = miss(e);
+            if (std::abs(f1) < std::abs(best_f))
+              best = e, best_x = x1, best_f = f1;
+            const double x2 = f1 != f0 ? x1 - f1 * (x1 - x0) / (f1 - f0) : x1;
+            x0 = x1, f0 = f1, x1 = x2;
+          }
+        eroded = std::move(best);
+        r.offset_scale *= best_x;
+        if (std::abs(best_f) > 5e-3 * volume)
+          r.volume_note = "the surface built anew removes " + io::format_number((best_f + volume) / volume) +
+                          " times the volume worn (no factor on the depth between 0.05 and 2 removes it)";
+      }
     auto fresh = std::make_unique<Triangulation<3>>();
     try
       {
@@ -422,7 +458,7 @@ namespace abrade::fem
           displacement[3 * v + c] += step[c];
       }
     since_remesh.assign(current_surface.vertices.size(), 0.0);
-    r.volume = volume();
+    r.volume = KnifeModel::volume();
   }
 
   std::vector<double> KnifeModel::wear_depth() const

@@ -32,13 +32,13 @@ namespace abrade::coupling::lifetime
       {
         try
           {
-            parse(0);
+            parse(0, 0);
             rate.value(dealii::Point<3>());
           }
         catch (const std::exception &)
           {
             throw std::invalid_argument("cannot evaluate '" + expression +
-                                        "' as a function of x, y, z, t and zlow");
+                                        "' as a function of x, y, z, t, zlow and zedge");
           }
       }
 
@@ -47,17 +47,50 @@ namespace abrade::coupling::lifetime
         CycleWear w;
         w.tonnes_per_cycle = tonnes_per_cycle;
         const auto area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
-        // zlow: the lowest wearable point now (a band on the edge line that follows the tip up)
-        double zlow = std::numeric_limits<double>::max();
+        // zlow: the lowest wearable point now (a band on the edge that follows the tip up);
+        // zedge: the lowest wearable point of the knife's slice through the point (slices of
+        // the edge length across x, as thick as the wearable points lie apart along the edge:
+        // a band on the edge line that follows each part of the edge up as it recedes there)
+        double              zlow = std::numeric_limits<double>::max();
+        std::vector<double> zedge(surface.vertices.size(), 0.0);
+        std::vector<double> slice_low;
+        double              x0 = std::numeric_limits<double>::max(), x1 = -x0, width = 0;
         for (std::size_t v = 0; v < area.size(); ++v)
           if (area[v] > 0)
-            zlow = std::min(zlow, surface.vertices[v][2]);
-        parse(zlow < std::numeric_limits<double>::max() ? zlow : 0.0);
-        rate.set_time(tonnes);
+            {
+              zlow = std::min(zlow, surface.vertices[v][2]);
+              x0 = std::min(x0, surface.vertices[v][0]), x1 = std::max(x1, surface.vertices[v][0]);
+            }
+        double edges = 0;
+        for (const auto &t : surface.triangles)
+          for (int e = 0; e < 3; ++e)
+            edges += surface.vertices[t[e]].distance(surface.vertices[t[(e + 1) % 3]]);
+        if (x1 > x0 && edges > 0) // slices of the triangles' mean edge length
+          {
+            const double mean_edge = edges / (3.0 * double(surface.triangles.size()));
+            slice_low.assign(std::max(1.0, std::round((x1 - x0) / mean_edge)), std::numeric_limits<double>::max());
+            width = (x1 - x0) / double(slice_low.size());
+          }
+        auto slice = [&](double x) {
+          return std::min(slice_low.size() - 1, std::size_t(std::max(0.0, (x - x0) / width)));
+        };
+        for (std::size_t v = 0; !slice_low.empty() && v < area.size(); ++v)
+          if (area[v] > 0)
+            slice_low[slice(surface.vertices[v][0])] = std::min(slice_low[slice(surface.vertices[v][0])],
+                                                                surface.vertices[v][2]);
+        for (std::size_t v = 0; v < area.size(); ++v)
+          zedge[v] = slice_low.empty() ? zlow : slice_low[slice(surface.vertices[v][0])];
         std::vector<double> volume(surface.vertices.size(), 0.0);
+        double              parsed_edge = std::numeric_limits<double>::quiet_NaN();
         for (std::size_t v = 0; v < volume.size(); ++v)
           if (area[v] > 0)
             {
+              if (!(zedge[v] == parsed_edge)) // (one parse per slice)
+                {
+                  parse(zlow, zedge[v]);
+                  rate.set_time(tonnes);
+                  parsed_edge = zedge[v];
+                }
               const double r = rate.value(surface.vertices[v]);
               if (!(r >= 0) || !std::isfinite(r))
                 {
@@ -85,9 +118,9 @@ namespace abrade::coupling::lifetime
       bool removes_volume() const override { return as_volume; }
 
     private:
-      void parse(double zlow)
+      void parse(double zlow, double zedge)
       {
-        rate.initialize("x,y,z,t", expression, {{"zlow", zlow}}, true);
+        rate.initialize("x,y,z,t", expression, {{"zlow", zlow}, {"zedge", zedge}}, true);
       }
 
       std::string               expression;

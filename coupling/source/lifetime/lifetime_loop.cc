@@ -1016,6 +1016,18 @@ namespace abrade::coupling::lifetime
     if (const double after = st.result.remesh_volume_change - taken_off; after != 0)
       line << " (the remesh's own share " << io::format_number(-after / (n * rates.archard_volume)) << ")";
     ctx.log.line(line.str());
+    // a source of volumes: every update removes the volume worn, remeshed or not (within 2 %)
+    if (const double ratio = swept / (n * rates.archard_volume);
+        source->removes_volume() && rates.archard_volume > 0 && std::abs(ratio - 1) > 0.02)
+      {
+        ++updates_off_volume;
+        ctx.log.warning("update " + std::to_string(update) + ": the knife lost " + io::format_number(ratio) +
+                        " times the volume worn in it (" +
+                        (st.result.rebuilt.empty() ? std::string("a remesh's own share or a depth that could not be "
+                                                                 "scaled")
+                                                   : std::string("its surface built anew as a set")) +
+                        "); the worn mass at the end counts the volume lost");
+      }
   }
 
   // 6. Checkpoint: the knife and the loop's state, written aside and then renamed, so that a
@@ -1164,6 +1176,7 @@ namespace abrade::coupling::lifetime
     r["dem_warnings"]  = dem_warnings_total; // overlaps, lost particles, time step (this run; per update: trajectory.csv)
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
     r["remeshes_inside_worn_surface"] = surfaces_kept;
+    r["updates_off_volume"]           = updates_off_volume;
     r["smoothing_radius"] = s.smoothing;
     if (particle_radius > 0) // (the size W and the footprint hold for: docs/coarse-graining.md)
       r["particle_radius"] = particle_radius;

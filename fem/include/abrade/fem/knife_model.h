@@ -169,7 +169,8 @@ namespace abrade::fem
     };
     /// The worn surface as eroded_surface() builds it from @p before (it cannot fold), meshed
     /// anew; the followed points carried over. Throws RunError when Gmsh cannot mesh it.
-    void rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r);
+    /// @p volume > 0: the depth scaled so that the set removes that much (as move_surface's).
+    void rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r, double volume = 0);
     /// The knife meshed anew inside its current surface (Gmsh remeshes the surface, keeping
     /// the edges it classifies), the followed points carried over; @p r gets the quality and
     /// how it was meshed. Returns the transfer from the old surface to the new one (for fields

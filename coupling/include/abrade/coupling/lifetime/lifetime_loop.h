@@ -179,6 +179,8 @@ namespace abrade::coupling::lifetime
     std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
     long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)
+    /// updates whose swept volume was more than 2 % off the volume worn (a source of volumes; this run)
+    long                         updates_off_volume = 0;
     long                         dem_warnings_now = 0, dem_warnings_total = 0; ///< this update's, this run's
     std::set<std::string>        warning_kinds; ///< the DEM warnings logged (each kind once)
 
