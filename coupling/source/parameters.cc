@@ -333,9 +333,9 @@ namespace abrade::coupling
                       "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
                       "inward normal, as a function of the knife's current coordinates x, y, z (the "
                       "knife's own frame, see Recession points), of t, the tonnes handled so far, and of "
-                      "zlow, the z of the knife's lowest wearable point now, and zedge, the z of the lowest "
-                      "wearable point of the knife's slice through the point (slices across x, a mean "
-                      "triangle edge thick), e.g. '1e-6*exp(-z/0.01)', '1e-6*(1+t/5000)' or "
+                      "zlow, the z of the knife's lowest wearable point now, and zedge, the z of its lowest "
+                      "wearable point within a longest triangle edge of the point along x (the edge "
+                      "runs along x), e.g. '1e-6*exp(-z/0.01)', '1e-6*(1+t/5000)' or "
                       "'1e-6*(z < zedge + 0.003)' (a band on the edge line that follows each part of it up); "
                       "evaluated at the surface's vertices. muparser syntax.");
     prm.declare_entry("Analytic wear is", "depth", Selection("depth|volume"),

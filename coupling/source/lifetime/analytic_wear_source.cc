@@ -7,6 +7,7 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <limits>
@@ -48,59 +49,91 @@ namespace abrade::coupling::lifetime
         w.tonnes_per_cycle = tonnes_per_cycle;
         const auto area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
         // zlow: the lowest wearable point now (a band on the edge that follows the tip up);
-        // zedge: the lowest wearable point of the knife's slice through the point (slices of
-        // the edge length across x, as thick as the wearable points lie apart along the edge:
-        // a band on the edge line that follows each part of the edge up as it recedes there)
-        double              zlow = std::numeric_limits<double>::max();
-        std::vector<double> zedge(surface.vertices.size(), 0.0);
-        std::vector<double> slice_low;
-        double              x0 = std::numeric_limits<double>::max(), x1 = -x0, width = 0;
+        // zedge: the lowest wearable point within a longest triangle edge of the point along x
+        // (a band on the edge line that follows each part of the edge up as it recedes there):
+        // the lowest point of the surface's exact cuts with the planes x = const (each wearable
+        // triangle's segment in the plane) at stations 1/400 of the wearable length apart, the
+        // least of those within that distance; a point takes its nearest station's. The window
+        // reaches past the knife's rounded ends: from the cut alone the end cap is its own
+        // lowest point, its whole height wears, and the ends run away along x.
+        constexpr std::size_t stations = 400;
+        double                zlow = std::numeric_limits<double>::max();
+        double                x0 = std::numeric_limits<double>::max(), x1 = -x0;
         for (std::size_t v = 0; v < area.size(); ++v)
           if (area[v] > 0)
             {
               zlow = std::min(zlow, surface.vertices[v][2]);
               x0 = std::min(x0, surface.vertices[v][0]), x1 = std::max(x1, surface.vertices[v][0]);
             }
-        double edges = 0;
-        for (const auto &t : surface.triangles)
-          for (int e = 0; e < 3; ++e)
-            edges += surface.vertices[t[e]].distance(surface.vertices[t[(e + 1) % 3]]);
-        if (x1 > x0 && edges > 0) // slices of the triangles' mean edge length
-          {
-            const double mean_edge = edges / (3.0 * double(surface.triangles.size()));
-            slice_low.assign(std::max(1.0, std::round((x1 - x0) / mean_edge)), std::numeric_limits<double>::max());
-            width = (x1 - x0) / double(slice_low.size());
-          }
-        auto slice = [&](double x) {
-          return std::min(slice_low.size() - 1, std::size_t(std::max(0.0, (x - x0) / width)));
+        const double        spacing = x1 > x0 ? (x1 - x0) / double(stations - 1) : 1.0;
+        std::vector<double> lowest(stations, std::numeric_limits<double>::max());
+        auto                station = [&](double x) {
+          return std::size_t(std::clamp(std::round((x - x0) / spacing), 0.0, double(stations - 1)));
         };
-        for (std::size_t v = 0; !slice_low.empty() && v < area.size(); ++v)
-          if (area[v] > 0)
-            slice_low[slice(surface.vertices[v][0])] = std::min(slice_low[slice(surface.vertices[v][0])],
-                                                                surface.vertices[v][2]);
-        for (std::size_t v = 0; v < area.size(); ++v)
-          zedge[v] = slice_low.empty() ? zlow : slice_low[slice(surface.vertices[v][0])];
+        for (std::size_t t = 0; t < surface.triangles.size() && x1 > x0; ++t)
+          {
+            if (surface.boundary_id[t] != fem::KnifeGeometry::wearable_boundary)
+              continue;
+            const auto &tri = surface.triangles[t];
+            const auto &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]], &c = surface.vertices[tri[2]];
+            const double lo = std::min({a[0], b[0], c[0]}), hi = std::max({a[0], b[0], c[0]});
+            for (long k = std::max(0L, long(std::ceil((lo - x0) / spacing)));
+                 k < long(stations) && x0 + double(k) * spacing <= hi; ++k)
+              {
+                const double x = x0 + double(k) * spacing;
+                double       z = std::numeric_limits<double>::max();
+                for (const auto &[p, q] : {std::pair(&a, &b), std::pair(&b, &c), std::pair(&c, &a)})
+                  {
+                    const double u = (*p)[0], w = (*q)[0];
+                    if (u == x)
+                      z = std::min(z, (*p)[2]);
+                    if ((u - x) * (w - x) < 0)
+                      z = std::min(z, (*p)[2] + ((*q)[2] - (*p)[2]) * (x - u) / (w - u));
+                  }
+                lowest[std::size_t(k)] = std::min(lowest[std::size_t(k)], z);
+              }
+          }
+        double longest = 0;
+        for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+          if (surface.boundary_id[t] == fem::KnifeGeometry::wearable_boundary)
+            for (int e = 0; e < 3; ++e)
+              longest = std::max(longest, surface.vertices[surface.triangles[t][e]].distance(
+                                            surface.vertices[surface.triangles[t][(e + 1) % 3]]));
+        std::vector<double> window(stations, std::numeric_limits<double>::max());
+        const long          reach = long(std::ceil(longest / spacing));
+        for (long k = 0; k < long(stations); ++k)
+          for (long j = std::max(0L, k - reach); j <= std::min(long(stations) - 1, k + reach); ++j)
+            if (std::abs(double(j - k)) * spacing <= longest * (1 + 1e-12))
+              window[std::size_t(k)] = std::min(window[std::size_t(k)], lowest[std::size_t(j)]);
+        lowest = std::move(window);
         std::vector<double> volume(surface.vertices.size(), 0.0);
-        double              parsed_edge = std::numeric_limits<double>::quiet_NaN();
-        for (std::size_t v = 0; v < volume.size(); ++v)
+        // the points by station: one parse of the rate per station (zedge a constant of it)
+        std::vector<std::size_t> order;
+        for (std::size_t v = 0; v < area.size(); ++v)
           if (area[v] > 0)
-            {
-              if (!(zedge[v] == parsed_edge)) // (one parse per slice)
-                {
-                  parse(zlow, zedge[v]);
-                  rate.set_time(tonnes);
-                  parsed_edge = zedge[v];
-                }
-              const double r = rate.value(surface.vertices[v]);
-              if (!(r >= 0) || !std::isfinite(r))
-                {
-                  const auto &p = surface.vertices[v];
-                  throw std::domain_error("the rate is " + io::format_number(r) + " at (" + io::format_number(p[0]) +
-                                          ", " + io::format_number(p[1]) + ", " + io::format_number(p[2]) + ") after " +
-                                          io::format_number(tonnes) + " t: a wear rate is a finite number >= 0 [m/t]");
-                }
-              volume[v] = r * tonnes_per_cycle * area[v];
-            }
+            order.push_back(v);
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
+          return station(surface.vertices[p][0]) < station(surface.vertices[q][0]);
+        });
+        std::size_t parsed = stations;
+        for (const std::size_t v : order)
+          {
+            if (const std::size_t k = station(surface.vertices[v][0]); k != parsed)
+              {
+                parse(zlow, lowest[k] < std::numeric_limits<double>::max() ? lowest[k] : zlow);
+                rate.set_time(tonnes);
+                parsed = k;
+              }
+            const double r = rate.value(surface.vertices[v]);
+            if (!(r >= 0) || !std::isfinite(r))
+              {
+                const auto &p = surface.vertices[v];
+                throw std::domain_error("the rate is " + io::format_number(r) + " at (" + io::format_number(p[0]) +
+                                        ", " + io::format_number(p[1]) + ", " + io::format_number(p[2]) + ") after " +
+                                        io::format_number(tonnes) + " t: a wear rate is a finite number >= 0 [m/t]");
+              }
+            volume[v] = r * tonnes_per_cycle * area[v];
+          }
         for (int seed : bed_seeds)
           {
             // lognormal, mean 1, relative standard deviation `scatter`: never negative
