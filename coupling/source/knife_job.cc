@@ -89,7 +89,35 @@ namespace abrade::coupling
             face["area"]   = f.area;
             face["centre"] = std::vector<double>{f.centre[0], f.centre[1], f.centre[2]};
             face["normal"] = std::vector<double>{f.normal[0], f.normal[1], f.normal[2]};
+            // what Clamped faces / Wearable faces made of it (a box or a normal selector may
+            // take a part of a face: then it is mixed)
+            const auto   it   = m.faces.by_face.find(f.id);
+            const auto   role = it != m.faces.by_face.end() ? it->second : fem::FaceAssignment::Role();
+            const double parts[3] = {role.wearing_area, role.clamped_area, role.held_area};
+            const char  *names[3] = {"wears", "clamped", "held"};
+            int          single = -1, nonzero = 0;
+            for (int k = 0; k < 3; ++k)
+              if (parts[k] > 0)
+                single = k, ++nonzero;
+            face["role"]         = nonzero == 1 ? names[single] : nonzero == 0 ? "none" : "mixed";
+            face["wearing_area"] = role.wearing_area;
+            face["clamped_area"] = role.clamped_area;
+            face["held_area"]    = role.held_area;
             faces.push_back(face);
+          }
+        // each selector: the area and the file's faces it took
+        io::Json &selectors = r["selectors"];
+        selectors           = std::vector<double>{};
+        for (const auto &t : m.faces.taken)
+          {
+            io::Json one;
+            one["list"]     = t.list;
+            one["selector"] = t.selector;
+            one["area"]     = t.area;
+            one["faces"]    = std::vector<double>{};
+            for (const auto id : t.faces)
+              one["faces"].push_back(static_cast<long>(id));
+            selectors.push_back(one);
           }
         r["warnings"] = std::vector<double>{};
         for (const auto &w : warnings)

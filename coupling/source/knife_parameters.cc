@@ -161,6 +161,14 @@ namespace abrade::coupling
           << " m^2, clamped " << m.faces.clamped_area << " m^2"
           << (kp.clamped_faces.empty() && kp.wearable_faces.empty() ? " (no Clamped faces given: every face wears)" : "");
     log.line(faces.str());
+    for (const auto &t : m.faces.taken) // which faces each selector took (summary.json: selectors)
+      {
+        std::string ids;
+        for (const auto id : t.faces)
+          ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+        log.line("Knife: " + t.list + " '" + t.selector + "' took " + io::format_number(t.area) + " m^2 of face(s) " +
+                 ids);
+      }
     for (const auto &w : m.report.warnings)
       {
         log.warning("Knife: " + kp.file + ": " + w);

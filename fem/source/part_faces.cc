@@ -178,6 +178,16 @@ namespace abrade::fem
   {
     std::vector<unsigned> clamped_hits(clamped.size(), 0), wearable_hits(wearable.size(), 0);
     FaceAssignment        r;
+    for (const auto &c : clamped)
+      r.taken.push_back({"Clamped faces", c.text, 0.0, {}});
+    for (const auto &w : wearable)
+      r.taken.push_back({"Wearable faces", w.text, 0.0, {}});
+    auto took = [&](std::size_t k, types::boundary_id id, double area) {
+      auto &t = r.taken[k];
+      t.area += area;
+      if (std::find(t.faces.begin(), t.faces.end(), id) == t.faces.end())
+        t.faces.push_back(id);
+    };
     for (const auto &cell : tria.active_cell_iterators())
       for (const unsigned f : cell->face_indices())
         if (cell->face(f)->at_boundary())
@@ -186,17 +196,20 @@ namespace abrade::fem
             const Tensor<1, 3>       n  = outward_area_normal(cell, f);
             const Point<3>           c  = cell->face(f)->center();
             const Tensor<1, 3>       u  = n.norm() > 0 ? n / n.norm() : n;
+            const double             area       = 0.5 * n.norm();
             bool                     is_clamped = false, wears = wearable.empty();
             for (std::size_t k = 0; k < clamped.size(); ++k)
               if (takes(clamped[k], id, names, c, u))
-                is_clamped = true, ++clamped_hits[k];
+                is_clamped = true, ++clamped_hits[k], took(k, id, area);
             for (std::size_t k = 0; k < wearable.size(); ++k)
               if (takes(wearable[k], id, names, c, u))
-                wears = true, ++wearable_hits[k];
+                wears = true, ++wearable_hits[k], took(clamped.size() + k, id, area);
             const bool w = wears && !is_clamped;
             cell->face(f)->set_boundary_id(w ? wearable_id : clamped_id);
-            (w ? r.wearable_area : r.clamped_area) += 0.5 * n.norm();
+            (w ? r.wearable_area : r.clamped_area) += area;
             ++(w ? r.wearable_faces : r.clamped_faces);
+            FaceAssignment::Role &role = r.by_face[id];
+            (w ? role.wearing_area : is_clamped ? role.clamped_area : role.held_area) += area;
           }
     auto check = [](const std::vector<FaceSelector> &list, const std::vector<unsigned> &hits, const char *which) {
       for (std::size_t k = 0; k < list.size(); ++k)
@@ -205,6 +218,8 @@ namespace abrade::fem
                                       "' takes no face of the part (boxes are in metres, in the part's frame after "
                                       "its scale and placement; the knife job lists the faces)");
     };
+    for (auto &t : r.taken)
+      std::sort(t.faces.begin(), t.faces.end());
     check(clamped, clamped_hits, "Clamped faces:");
     check(wearable, wearable_hits, "Wearable faces:");
     if (r.wearable_faces == 0)

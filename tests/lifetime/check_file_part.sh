@@ -12,6 +12,10 @@
 #     it lies in the knife's frame (bounding box 0..0.4 x -0.015..0.015 x 0..0.5 m to 1e-9);
 #     with edge-concentrated analytic wear it runs to its end of life (4 mm below the design,
 #     interpolated). (That clamped faces do not move: the unit test PartFiles.ClampedFacesDoNotMove.)
+#     Which faces each selector took (summary.json: selectors, and each face's role and its
+#     wearing, clamped and held areas) against the part's geometry: the holes' box takes the
+#     four faces of a hole's area, the top is clamped whole, the back is mixed, its clamped part
+#     the area above 0.3 m less the holes' openings (5e-3).
 #  3. A part mounted on a grab shell: the grab's knife as STEP, moved by Knife/Offset, sits on
 #     the lip where the parametric knife sits (bounding boxes to 1e-5 m: single-precision STL).
 #  4. A file wall turned by Rotation axis / Rotation angle and moved by Offset lies where R p + o
@@ -136,6 +140,31 @@ check(all(abs(x - y) < 1e-9 for x, y in zip(box, [0, -0.015, 0, 0.4, 0.015, 0.5]
 import math
 true = 4 * math.pi * 0.022 * 0.03 + 0.4 * 0.03 + 0.4 * 0.2 - 4 * math.pi * 0.011 ** 2
 check(abs(c["clamped_area"] / true - 1) < 5e-3, f"clamped: bolt holes, top, back: {c['clamped_area']} m^2 (true {true:.6f})")
+# which face each selector took (summary.json selectors, file_faces' roles), against the part's
+# geometry: the row of holes box takes the four faces of a hole's area (pi x 22 mm x 30 mm) and
+# nothing else; the top (0.4 x 0.03) is clamped whole; the back is mixed, its clamped part the
+# area above 0.3 m less the holes' openings; the faces' parts add up to their areas and the
+# clamped parts to the part's clamped area
+hole = math.pi * 0.022 * 0.03
+faces = {f["id"]: f for f in c["file_faces"]}
+sel = c["selectors"]
+check([s["selector"] for s in sel] == ["box 0.001, -0.0149, 0.42, 0.399, 0.0149, 0.46", "normal 0, 0, 1",
+                                       "box 0, -0.0151, 0.3, 0.4, -0.0149, 0.5"]
+      and all(s["list"] == "Clamped faces" for s in sel), f"selectors as written: {sel}")
+holes = sorted(i for i, f in faces.items() if abs(f["area"] / hole - 1) < 0.01)
+check(len(holes) == 4 and sel[0]["faces"] == holes and all(faces[i]["role"] == "clamped" for i in holes),
+      f"the row of holes: faces {sel[0]['faces']}, faces of a hole's area {holes}")
+top = [i for i, f in faces.items() if abs(f["area"] / (0.4 * 0.03) - 1) < 1e-6]
+check(len(top) == 1 and faces[top[0]]["role"] == "clamped" and top[0] in sel[1]["faces"],
+      f"the top clamped whole: {top}, {[faces[i]['role'] for i in top]}")
+back = sel[2]["faces"]
+above = 0.4 * 0.2 - 4 * math.pi * 0.011 ** 2
+check(len(back) == 1 and faces[back[0]]["role"] == "mixed" and abs(faces[back[0]]["clamped_area"] / above - 1) < 5e-3,
+      f"the back: face {back}, {faces[back[0]]['role'] if back else None}, clamped {faces[back[0]]['clamped_area'] if back else None} m^2 (true {above:.6f})")
+check(all(abs(f["wearing_area"] + f["clamped_area"] + f["held_area"] - f["area"]) < 1e-9 * f["area"] for f in faces.values())
+      and abs(sum(f["clamped_area"] + f["held_area"] for f in faces.values()) - c["clamped_area"]) < 1e-12
+      and all(f["role"] == "wears" for f in faces.values() if f["clamped_area"] == 0 and f["held_area"] == 0),
+      "the faces' parts add up")
 e = results("edge_life")["lifetime"]
 check(e["end"] == "maximum depth reached" and e["end_of_life_method"].startswith("interpolated"),
       f"worked example: {e['end']}, {e['end_of_life_method']}, {e['predicted_tonnes_to_end_of_life']:.0f} t")

@@ -67,6 +67,27 @@ namespace abrade::fem
   {
     double   wearable_area = 0, clamped_area = 0;
     unsigned wearable_faces = 0, clamped_faces = 0; ///< boundary faces (mesh faces)
+
+    /// What became of one face of the file (its mesh faces may go different ways: a box or a
+    /// normal selector is evaluated per mesh face).
+    struct Role
+    {
+      double wearing_area = 0; ///< [m^2] wears
+      double clamped_area = 0; ///< [m^2] taken by a Clamped faces selector
+      double held_area    = 0; ///< [m^2] taken by neither list (held like a clamped face)
+    };
+    std::map<dealii::types::boundary_id, Role> by_face; ///< by the file's face number
+
+    /// What one selector took: its area (a mesh face taken by two selectors counts for both)
+    /// and the file's faces it took a part of.
+    struct Taken
+    {
+      std::string                             list;     ///< "Clamped faces" or "Wearable faces"
+      std::string                             selector; ///< as written
+      double                                  area = 0; ///< [m^2]
+      std::vector<dealii::types::boundary_id> faces;
+    };
+    std::vector<Taken> taken; ///< the clamped selectors in order, then the wearable ones
   };
 
   /// Sets the boundary id of every boundary face of @p tria to @p wearable_id or @p clamped_id
