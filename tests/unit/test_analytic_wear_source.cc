@@ -1,13 +1,14 @@
 // The analytic wear source's variables of the knife's current shape (Lifetime/Analytic wear rate,
 // coupling/source/lifetime/analytic_wear_source.cc), against a surface whose answer is known: a
-// chisel of length 0.15 m, 30 mm thick, 40 mm bevel, sheared so that its edge line rises along
-// x (z = s x, s = 0.2: 30 mm over its length). Every cut x = const is the same section shifted
-// up by s x, so the lowest wearable point within a distance w of a point along x (zedge, w the
-// longest edge of the wearable triangles) is exactly s max(0, x - w), and the lowest wearable
-// point of the knife is its edge's lower end, z = 0 (zlow). The edge line has vertices every
-// 20 mm and the bevel's upper rims every 7 mm, so most cuts hold no edge vertex (a zedge taken
-// from the vertices of slices a triangle edge thick was off by up to 6 mm, and this test fails
-// on it). The rate 'zedge + 1' (or 'zlow + 1'), as a depth per tonne, gives each vertex the
+// chisel of length 0.15 m, 30 mm thick, 40 mm bevel, sheared so that its edge line is a V along
+// x (z = s |x - 75 mm|, s = 0.2: 15 mm up at both ends). Every cut x = const is the same section
+// shifted up by s |x - 75 mm|, so the lowest wearable point within a distance w of a point along
+// x (zedge, w the longest edge of the wearable triangles) is exactly s max(0, |x - 75 mm| - w):
+// on one half of the knife the window's lower end finds it, on the other its upper end (a
+// one-sided window fails on one half); the lowest wearable point of the knife is the V's apex,
+// z = 0 (zlow). The edge line has vertices every 20 mm and the bevel's upper rims every 7 mm
+// (both with one at the apex), so most cuts hold no edge vertex (a zedge taken from the vertices
+// of slices a triangle edge thick was off by up to 6 mm, and this test fails on it). The rate 'zedge + 1' (or 'zlow + 1'), as a depth per tonne, gives each vertex the
 // volume (zedge + 1) x tonnes x its area, from which zedge is read back.
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/fem/knife_geometry.h>
@@ -25,11 +26,19 @@ namespace
 {
   constexpr double length = 0.15, half_thickness = 0.015, bevel = 0.04, slope = 0.2;
 
+  constexpr double apex = 0.5 * length;
+
+  /// 0, step, 2 step, ... and the apex and the end
   std::vector<double> stations(double step)
   {
     std::vector<double> x;
     for (double s = 0; s < length - 1e-9; s += step)
-      x.push_back(s);
+      {
+        if (x.size() > 0 && x.back() < apex - 1e-9 && s > apex + 1e-9)
+          x.push_back(apex);
+        if (std::abs(s - apex) > 1e-9)
+          x.push_back(s);
+      }
     x.push_back(length);
     return x;
   }
@@ -44,7 +53,7 @@ namespace
       for (double x : xs)
         {
           ids.push_back(unsigned(s.vertices.size()));
-          s.vertices.emplace_back(x, y, z + slope * x);
+          s.vertices.emplace_back(x, y, z + slope * std::abs(x - apex));
         }
       return ids;
     };
@@ -97,7 +106,7 @@ TEST(AnalyticWearSource, ZedgeIsTheLowestPointWithinALongestEdgeAlongX)
   ASSERT_GT(w, 0.04);
   double worst = 0;
   for (const auto &[x, rate] : r)
-    worst = std::max(worst, std::abs(rate - 1 - slope * std::max(0.0, x - w)));
+    worst = std::max(worst, std::abs(rate - 1 - slope * std::max(0.0, std::abs(x - apex) - w)));
   // the cuts are exact at stations 1/400 of the length apart; a point takes its nearest one's
   // (half a spacing), the window ends at a station (one more)
   EXPECT_LT(worst, 1.5 * slope * length / 399 + 1e-12) << "zedge off the sheared edge line by " << worst << " m";

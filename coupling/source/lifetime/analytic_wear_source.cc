@@ -55,7 +55,8 @@ namespace abrade::coupling::lifetime
         // triangle's segment in the plane) at stations 1/400 of the wearable length apart, the
         // least of those within that distance; a point takes its nearest station's. The window
         // reaches past the knife's rounded ends: from the cut alone the end cap is its own
-        // lowest point, its whole height wears, and the ends run away along x.
+        // lowest point, its whole height wears, and the ends run away along x. Where nothing is
+        // cut (a part of no extent in x) zedge is zlow.
         constexpr std::size_t stations = 400;
         double                zlow = std::numeric_limits<double>::max();
         double                x0 = std::numeric_limits<double>::max(), x1 = -x0;
