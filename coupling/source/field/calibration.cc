@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -306,6 +307,44 @@ namespace abrade::field
     return depth[k - 1][p] + f * (depth[k][p] - depth[k - 1][p]);
   }
 
+  RunSeries run_between(const std::vector<const RunSeries *> &runs, double r, bool in_log_r)
+  {
+    if (runs.empty() || !(r > 0))
+      throw std::invalid_argument("run_between: no runs or no footprint");
+    // the runs' W0 (analytic runs have none: their scales are compared at 1)
+    bool with_w = true;
+    for (const auto *run : runs)
+      with_w = with_w && run->archard_coefficient > 0 && run->smoothing_radius > 0 && !run->tonnes.empty();
+    auto w0 = [&](const RunSeries &run) { return with_w ? run.archard_coefficient : 1.0; };
+    RunSeries between        = *runs.front();
+    between.smoothing_radius = r;
+    between.directory += " (interpolated to a footprint of " + std::to_string(r) + " m)";
+    // the union of the outputs, in the first run's tonnes at its W0
+    const double reference = w0(*runs.front());
+    between.tonnes.clear();
+    for (const auto *run : runs)
+      for (const double t : run->tonnes)
+        between.tonnes.push_back(t * w0(*run) / reference);
+    std::sort(between.tonnes.begin(), between.tonnes.end());
+    between.tonnes.erase(std::unique(between.tonnes.begin(), between.tonnes.end(),
+                                     [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); }),
+                         between.tonnes.end());
+    // Lagrange weights in ln r (or r)
+    auto                x = [&](double radius) { return in_log_r ? std::log(radius) : radius; };
+    std::vector<double> weight(runs.size(), 1.0);
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      for (std::size_t j = 0; j < runs.size(); ++j)
+        if (j != k)
+          weight[k] *= (x(r) - x(runs[j]->smoothing_radius)) / (x(runs[k]->smoothing_radius) - x(runs[j]->smoothing_radius));
+    const std::size_t points = runs.front()->depth.empty() ? 0 : runs.front()->depth.front().size();
+    between.depth.assign(between.tonnes.size(), std::vector<double>(points, 0.0));
+    for (std::size_t o = 0; o < between.tonnes.size(); ++o)
+      for (std::size_t k = 0; k < runs.size(); ++k)
+        for (std::size_t p = 0; p < points; ++p)
+          between.depth[o][p] += weight[k] * runs[k]->at(p, between.tonnes[o] * reference / w0(*runs[k]));
+    return between;
+  }
+
   double student_t95(int dof)
   {
     static const double t[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
@@ -318,11 +357,11 @@ namespace abrade::field
     return 1.960 + 2.4 / dof; // within 0.2 % of the quantile above 30
   }
 
-  CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &ms, double block)
+  namespace
   {
-    CalibrationResult r;
-    r.directory = run.directory;
-    auto sse    = [&](double s) {
+    /// The residual sum of squares of @p run's wear scaled by @p s.
+    double sum_of_squares(const RunSeries &run, const std::vector<Measurement> &ms, double s)
+    {
       double sum = 0;
       for (std::size_t i = 0; i < ms.size(); ++i)
         {
@@ -330,7 +369,31 @@ namespace abrade::field
           sum += e * e;
         }
       return sum;
-    };
+    }
+  } // namespace
+
+  std::pair<double, double> least_squares_scale(const RunSeries &run, const std::vector<Measurement> &ms, double low,
+                                                double high)
+  {
+    double       a = std::log(low), b = std::log(high);
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    for (int it = 0; it < 100 && b - a > 1e-13; ++it)
+      {
+        const double c = b - g * (b - a), d = a + g * (b - a);
+        if (sum_of_squares(run, ms, std::exp(c)) < sum_of_squares(run, ms, std::exp(d)))
+          b = d;
+        else
+          a = c;
+      }
+    const double s = std::exp(0.5 * (a + b));
+    return {s, sum_of_squares(run, ms, s)};
+  }
+
+  CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &ms, double block)
+  {
+    CalibrationResult r;
+    r.directory = run.directory;
+    auto sse    = [&](double s) { return sum_of_squares(run, ms, s); };
     // a log-spaced scan over six decades, then golden sections around the best
     double best = 1, best_sse = sse(1);
     for (int k = -300; k <= 300; ++k)
@@ -343,17 +406,7 @@ namespace abrade::field
       throw InputError(run.directory, "the best fit lies at the end of the range searched (the run's wear scaled by "
                                       "1e-3 .. 1e3): the run and the measurements differ by more than a factor of "
                                       "1000 (depths in mm given as m, tonnes in kg, or no wear measured?)");
-    double       a = best * std::pow(10.0, -0.01), b = best * std::pow(10.0, 0.01);
-    const double g = (std::sqrt(5.0) - 1) / 2;
-    for (int it = 0; it < 100; ++it)
-      {
-        const double c = b - g * (b - a), d = a + g * (b - a);
-        if (sse(c) < sse(d))
-          b = d;
-        else
-          a = c;
-      }
-    r.scale = 0.5 * (a + b);
+    r.scale = least_squares_scale(run, ms, best * std::pow(10.0, -0.01), best * std::pow(10.0, 0.01)).first;
     // the interval (calibration.h): J_i = d depth / d s = T_i D'(s T_i), residuals e_i, summed
     // per spatial block for the cluster-robust variance of the fit
     double                                     jj = 0, mean_m = 0, mean_p = 0;

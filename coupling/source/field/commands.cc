@@ -176,6 +176,8 @@ namespace abrade::field
     io::OutputDirectory            out(output);
     out.claim();
     std::vector<CalibrationResult> results;
+    std::vector<RunSeries>         series;
+    series.reserve(runs.size());
     std::ofstream                  residuals(out.file("residuals.csv"));
     residuals.precision(10);
     residuals << "run,x,y,z,tonnes,measured_depth,predicted_depth\n";
@@ -188,7 +190,8 @@ namespace abrade::field
     for (std::size_t i = 0; i < runs.size(); ++i)
       {
         const std::string &dir = runs[i];
-        const RunSeries    run = read_run(dir, ms);
+        series.push_back(read_run(dir, ms));
+        const RunSeries &run = series.back();
         results.push_back(calibrate(run, ms, block));
         const auto &r = results.back();
         if (run.seeds < 2 && run.archard_coefficient > 0)
@@ -285,16 +288,10 @@ namespace abrade::field
     // W and the footprint together, from candidates at several Smoothing radius values
     // (footprint_fit.h)
     {
-      std::vector<FootprintCandidate> candidates;
-      for (std::size_t i = 0; i < results.size(); ++i)
-        {
-          const auto &r = results[i];
-          candidates.push_back({r.smoothing_radius, r.rms_residual * r.rms_residual * double(ms.size()),
-                                r.archard_coefficient > 0 ? r.archard_coefficient : r.scale,
-                                io::summary_number(runs[i] + "/summary.json", "predicted_tonnes_to_end_of_life").value_or(0),
-                                r.scale, r.blocks, long(ms.size()), r.design_effect});
-        }
-      const FootprintFit f = fit_footprint(candidates);
+      std::vector<double> lives;
+      for (const auto &dir : runs)
+        lives.push_back(io::summary_number(dir + "/summary.json", "predicted_tonnes_to_end_of_life").value_or(0));
+      const FootprintFit f = fit_footprint(series, results, lives, ms, block);
       io::Json          &j = json["footprint"];
       j["identifiable"]    = f.identifiable;
       j["smoothing_radius"] = f.r, j["smoothing_radius_low"] = f.r_low, j["smoothing_radius_high"] = f.r_high;
@@ -303,17 +300,73 @@ namespace abrade::field
       if (!f.identifiable)
         j["reason"] = f.reason;
       md << "\n## W and the footprint together\n\n";
-      char line[600];
+      char line[900];
       if (f.identifiable)
-        std::snprintf(line, sizeof line,
-                      "Footprint (Lifetime/Smoothing radius) %.4g m (95 %%: %.4g ... %.4g) and W %.4g at it (the "
-                      "candidates' residuals against their footprints; along the ridge d ln W / d ln r = %.3g, d ln life / "
-                      "d ln r = %.3g). Lifetime/Calibration takes both.\n",
-                      f.r, f.r_low, f.r_high, f.w, f.dlnw_dlnr, f.dlnlife_dlnr);
+        {
+          // W's own interval (r's uncertainty in it) and the joint region (footprint_fit.h)
+          j["wear_coefficient_low"] = f.w_low, j["wear_coefficient_high"] = f.w_high;
+          j["log_wear_coefficient_standard_error"] = f.sd_log_w, j["wear_coefficient_degrees_of_freedom"] = f.w_dof;
+          io::Json &region = j["joint_region"];
+          region["level"]  = f.joint_level;
+          std::ofstream outline(out.file("footprint_region.csv"));
+          outline << "smoothing_radius,wear_coefficient\n";
+          auto points = joint_region_outline(f);
+          points.push_back(points.front()); // (a closed outline)
+          for (const auto &p : points)
+            {
+              region["outline"].push_back(io::Json(std::vector<double>{p[0], p[1]}));
+              outline << io::format_number(p[0], 8) << ',' << io::format_number(p[1], 8) << '\n';
+            }
+          std::snprintf(line, sizeof line,
+                        "Footprint (Lifetime/Smoothing radius) %.4g m (95 %%: %.4g ... %.4g) and W %.4g at it (95 %%, "
+                        "the footprint's uncertainty in it: %.4g ... %.4g; given the footprint +-%.2g %%); the candidates' "
+                        "residuals against their footprints; along the ridge d ln W / d ln r = %.3g, d ln life / d ln r = "
+                        "%.3g. The joint 95 %% region of both is an ellipse about that ridge (footprint_region.csv, "
+                        "footprint.png). Lifetime/Calibration takes both.\n",
+                        f.r, f.r_low, f.r_high, f.w, f.w_low, f.w_high, 100 * f.sd_log_w, f.dlnw_dlnr, f.dlnlife_dlnr);
+        }
       else
         std::snprintf(line, sizeof line, "Not identifiable: %s (%.4g m, W %.4g).\n", f.reason.c_str(), f.r, f.w);
       md << line;
       std::printf("footprint: %s", line);
+      if (f.identifiable) // the candidates and the region in the (r, W) plane
+        {
+          std::vector<std::size_t> by_r(series.size());
+          for (std::size_t i = 0; i < by_r.size(); ++i)
+            by_r[i] = i;
+          std::sort(by_r.begin(), by_r.end(), [&](auto a, auto b) { return series[a].smoothing_radius < series[b].smoothing_radius; });
+          std::ofstream table(out.file("footprint_candidates.csv"));
+          table << "run,smoothing_radius,wear_coefficient,rss\n";
+          double w_min = f.w, w_max = f.w, r_min = f.r, r_max = f.r;
+          for (const auto &p : joint_region_outline(f))
+            r_min = std::min(r_min, p[0]), r_max = std::max(r_max, p[0]), w_min = std::min(w_min, p[1]),
+            w_max = std::max(w_max, p[1]);
+          for (const std::size_t i : by_r)
+            {
+              const double r = series[i].smoothing_radius, w = results[i].archard_coefficient > 0
+                                                                  ? results[i].archard_coefficient : results[i].scale;
+              table << runs[i] << ',' << io::format_number(r, 8) << ',' << io::format_number(w, 8) << ','
+                    << io::format_number(results[i].rms_residual * results[i].rms_residual * double(ms.size()), 8) << '\n';
+              w_min = std::min(w_min, w), w_max = std::max(w_max, w), r_min = std::min(r_min, r), r_max = std::max(r_max, r);
+            }
+          table.close();
+          std::ofstream gp(out.file("footprint.gp"));
+          gp << "set terminal pngcairo size 800,600\nset output 'footprint.png'\nset datafile separator ','\nset grid\n"
+                "set key left top\nset logscale x\nset format y '%.2g'\n"
+             << "set xrange [" << io::format_number(1000 * r_min / 1.2, 6) << ':' << io::format_number(1000 * r_max * 1.2, 6)
+             << "]\nset yrange [" << io::format_number(w_min / 1.2, 6) << ':' << io::format_number(w_max * 1.3, 6)
+             << "]\nset xtics (";
+          for (std::size_t k = 0; k < by_r.size(); ++k) // (the candidates' footprints)
+            gp << (k ? ", " : "") << io::format_number(1000 * series[by_r[k]].smoothing_radius, 3);
+          gp << ")\nset xlabel 'footprint, Lifetime/Smoothing radius [mm]'\nset ylabel 'W [1/Pa]'\n"
+                "set title 'W and the footprint: each candidate fitted its W; the joint 95 % region'\n"
+                "plot 'footprint_region.csv' skip 1 using ($1*1000):2 with lines lw 2 title 'joint 95 % region', "
+                "'footprint_candidates.csv' skip 1 using ($2*1000):3 with linespoints pt 7 title 'candidates (W fitted at "
+                "each footprint)', '-' using 1:2 with points pt 2 ps 2 lw 2 title 'fit'\n"
+             << io::format_number(1000 * f.r, 8) << ',' << io::format_number(f.w, 8) << "\ne\n";
+          gp.close();
+          io::run_gnuplot_for(out.root(), "footprint.gp", {"footprint.png"});
+        }
     }
     json["measurements"] = table;
     json.write(out.file("calibration.json"));

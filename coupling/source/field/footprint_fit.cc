@@ -1,12 +1,14 @@
 // The wear footprint fitted with W (footprint_fit.h).
 #include <abrade/field/footprint_fit.h>
 
+#include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace abrade::field
 {
@@ -24,13 +26,14 @@ namespace abrade::field
     }
   } // namespace
 
-  FootprintFit fit_footprint(std::vector<FootprintCandidate> c)
+  FootprintFit fit_footprint(std::vector<FootprintCandidate> c, const Profile &profile)
   {
     FootprintFit f;
     c.erase(std::remove_if(c.begin(), c.end(), [](const FootprintCandidate &k) { return !(k.r > 0 && k.w > 0); }),
             c.end());
     if (!c.empty()) // not identifiable: W for the footprint assumed (the first run given)
       f.r = f.r_low = f.r_high = c.front().r, f.w = c.front().w;
+    const FootprintFit assumed = f;
     std::sort(c.begin(), c.end(), [](const auto &a, const auto &b) { return a.r < b.r; });
     if (c.empty())
       {
@@ -53,6 +56,14 @@ namespace abrade::field
         f.reason = "fewer than three footprints (Smoothing radius) among the runs: W holds for the best run's";
         return f;
       }
+    // (a single depth, or a few close points: before the best's place, which is then arbitrary)
+    f.dof = double(c[best].blocks - 2);
+    if (f.dof < 1)
+      {
+        f.reason = "the measurements fall into too few spatial blocks to tell the footprint from W (a single "
+                   "depth, or a few close points: W and the footprint are degenerate)";
+        return f;
+      }
     if (best == 0 || best + 1 == c.size())
       {
         std::snprintf(text, sizeof text,
@@ -62,74 +73,168 @@ namespace abrade::field
         f.reason = text;
         return f;
       }
-    f.dof = double(c[best].blocks - 2);
-    if (f.dof < 1)
+    const double t = boost::math::quantile(boost::math::students_t_distribution<double>(f.dof), 0.975);
+    // r^: the profile's minimum between the best candidate's neighbours (golden sections on
+    // ln r), with the candidates' predictions interpolated in ln r and in r: the two minima
+    // differ by the interpolation's error, and half their distance widens the interval
+    auto rss     = [&](double x) { return profile(std::exp(x), false, true).rss; };
+    auto minimum = [&](bool in_log_r) {
+      double       a = std::log(c[best - 1].r), b = std::log(c[best + 1].r);
+      const double g = (std::sqrt(5.0) - 1) / 2;
+      auto         p = [&](double x) { return profile(std::exp(x), false, in_log_r).rss; };
+      double       xc = b - g * (b - a), xd = a + g * (b - a), pc = p(xc), pd = p(xd);
+      for (int it = 0; it < 60 && b - a > 1e-7; ++it)
+        if (pc < pd)
+          b = xd, xd = xc, pd = pc, xc = b - g * (b - a), pc = p(xc);
+        else
+          a = xc, xc = xd, pc = pd, xd = a + g * (b - a), pd = p(xd);
+      return 0.5 * (a + b);
+    };
+    const double x_log = minimum(true), x_lin = minimum(false);
+    f.half_interpolation = 0.5 * std::abs(x_log - x_lin);
+    f.r                  = std::exp(0.5 * (x_log + x_lin));
+    // the fit there: W, its error, and the residuals' design effect for the interval's level
+    const FootprintCandidate at = profile(f.r, true, true);
+    if (!(at.w > 0) || !(at.rss >= 0))
       {
-        f.reason = "the measurements fall into too few spatial blocks to tell the footprint from W (a single "
-                   "depth, or a few close points: W and the footprint are degenerate)";
+        f        = assumed;
+        f.reason = "the fit between the candidates failed (no positive W at the profile's minimum)";
         return f;
       }
-    // (in r: a footprint that is off by dr widens the pattern by about dr, so the residuals add
-    // (k dr)^2 to the noise's; in ln r the vertex was pulled towards the steeper side)
-    const double t     = boost::math::quantile(boost::math::students_t_distribution<double>(f.dof), 0.975);
-    // (the measurements per independent one: the design effect, at most all of a block's)
-    const double n     = double(c[best].measurements);
-    const double ratio = n > 2 ? 1 + std::clamp(c[best].design_effect, 1.0, n / f.dof) * t * t / (n - 2)
+    const double n     = double(at.measurements);
+    const double ratio = n > 2 ? 1 + std::clamp(at.design_effect, 1.0, n / f.dof) * t * t / (n - 2)
                                : 1 + t * t / f.dof;
-    // The profile is known at the candidates only. Its minimum by a parabola in r (a footprint
-    // off by dr widens the pattern by about dr, adding (k dr)^2 to the residuals) and by one in
-    // ln r (a relative misfit): the first is pulled towards the steeper side where the
-    // residuals rise unevenly in r, the second where they do in ln r (a band's own width, the
-    // DEM's spread contacts); the estimate is their geometric mean and half their distance (on
-    // ln r) is added to the statistical half-width as the interpolation's error.
-    struct Minimum
-    {
-      bool   ok = false;
-      double x = 0, half = 0; ///< on ln r
+    const double level = at.rss * ratio;
+    // the interval's ends: outwards from r^, the first candidate above the level, then bisection
+    // between it and the point inside; none within the candidates: not identifiable
+    auto end = [&](int direction) {
+      double inside = x_log;
+      for (long k = long(best); k >= 0 && k < long(c.size()); k += direction)
+        {
+          if ((std::log(c[k].r) - inside) * direction <= 0)
+            continue;
+          if (c[k].rss <= level)
+            {
+              inside = std::log(c[k].r);
+              continue;
+            }
+          double outside = std::log(c[k].r);
+          for (int it = 0; it < 50 && std::abs(outside - inside) > 1e-7; ++it)
+            {
+              const double x = 0.5 * (inside + outside);
+              (rss(x) <= level ? inside : outside) = x;
+            }
+          return std::exp(0.5 * (inside + outside));
+        }
+      return 0.0;
     };
-    auto minimum = [&](bool in_log) {
-      auto                        coordinate = [&](double r) { return in_log ? std::log(r) : r; };
-      const std::array<double, 3> x = {coordinate(c[best - 1].r), coordinate(c[best].r), coordinate(c[best + 1].r)};
-      const auto [a, b, k]        = parabola(x, {c[best - 1].rss, c[best].rss, c[best + 1].rss});
-      Minimum m;
-      if (!(a > 0))
-        return m;
-      const double xm = -b / (2 * a), rss_min = k - b * b / (4 * a);
-      const double level = std::max(rss_min, 0.0) * ratio;
-      const double half  = std::sqrt(std::max(0.0, (level - rss_min) / a));
-      // the interval: where the parabola reaches the level; it must lie within the candidates'
-      // range and the residuals must rise to it (a flat profile: one depth, no width information)
-      const double low = in_log ? std::exp(xm - half) : xm - half, high = in_log ? std::exp(xm + half) : xm + half;
-      m.ok = low > c.front().r && high < c.back().r && std::max(c[best - 1].rss, c[best + 1].rss) > level;
-      m.x = in_log ? xm : std::log(xm), m.half = in_log ? half : std::log(high / xm);
-      return m;
-    };
-    const Minimum in_r = minimum(false), in_log_r = minimum(true);
-    if (!in_r.ok || !in_log_r.ok)
+    f.r_low = end(-1) * std::exp(-f.half_interpolation), f.r_high = end(+1) * std::exp(f.half_interpolation);
+    if (!(f.r_low > 0) || !(f.r_high > 0))
       {
         std::snprintf(text, sizeof text,
                       "the measurements cannot tell the footprint: the residuals do not rise above %.3g of the best "
-                      "within the candidates (%.4g ... %.4g m), so W and the footprint are degenerate (a single depth, "
-                      "or no width information); W is given for the footprint assumed (the first run's)",
-                      ratio, c.front().r, c.back().r);
-        f.reason = text;
+                      "within the candidates (%.4g ... %.4g m) on %s side, so W and the footprint are degenerate (a "
+                      "single depth, or no width information); W is given for the footprint assumed (the first run's)",
+                      ratio, c.front().r, c.back().r, f.r_low > 0 ? "the larger" : f.r_high > 0 ? "the smaller" : "either");
+        const double dof = f.dof;
+        f = assumed, f.reason = text, f.dof = dof;
         return f;
       }
-    const double xm   = 0.5 * (in_r.x + in_log_r.x);
-    const double half = std::max(in_r.half, in_log_r.half) + 0.5 * std::abs(in_r.x - in_log_r.x);
     f.identifiable = true, f.reason.clear();
-    f.r = std::exp(xm), f.r_low = std::exp(xm - half), f.r_high = std::exp(xm + half);
-    f.sd_log_r = half / t;
-    // W and the life along the ridge: parabolas in ln r through the same three candidates
-    const std::array<double, 3> x = {std::log(c[best - 1].r), std::log(c[best].r), std::log(c[best + 1].r)};
-    auto along = [&](auto value) {
-      const auto [p, q, s] = parabola(x, {value(c[best - 1]), value(c[best]), value(c[best + 1])});
-      return std::array<double, 2>{p * xm * xm + q * xm + s, 2 * p * xm + q}; // value, d/d ln r at xm
-    };
-    const auto w = along([](const FootprintCandidate &k) { return std::log(k.w); });
-    f.w = std::exp(w[0]), f.dlnw_dlnr = w[1];
+    f.sd_log_r     = std::log(f.r_high / f.r_low) / (2 * t);
+    // W at r^ and along the ridge; the life along it from the three candidates' lives
+    f.w          = at.w;
+    const double step = 0.05;
+    f.dlnw_dlnr  = std::log(profile(f.r * std::exp(step), false, true).w / profile(f.r * std::exp(-step), false, true).w) / (2 * step);
     if (c[best - 1].life > 0 && c[best].life > 0 && c[best + 1].life > 0)
-      f.dlnlife_dlnr = along([](const FootprintCandidate &k) { return std::log(k.life / k.scale); })[1];
+      {
+        const std::array<double, 3> x = {std::log(c[best - 1].r), std::log(c[best].r), std::log(c[best + 1].r)};
+        auto life = [](const FootprintCandidate &k) { return std::log(k.life / k.scale); };
+        const auto [p, q, unused] = parabola(x, {life(c[best - 1]), life(c[best]), life(c[best + 1])});
+        f.dlnlife_dlnr            = 2 * p * std::log(f.r) + q;
+      }
+    // W given r: the fit's relative standard error at r^; W's own interval with r's uncertainty
+    // in it; the joint region (joint_distance)
+    f.sd_log_w          = at.relative_se;
+    f.w_dof             = at.w_dof >= 1 ? std::min(at.w_dof, f.dof) : f.dof;
+    const double t_w    = boost::math::quantile(boost::math::students_t_distribution<double>(f.w_dof), 0.975);
+    const double sd_ln_w = std::hypot(f.dlnw_dlnr * f.sd_log_r, f.sd_log_w);
+    f.w_low             = f.w * std::exp(-t_w * sd_ln_w);
+    f.w_high            = f.w * std::exp(t_w * sd_ln_w);
+    f.joint_level       = 2 * boost::math::quantile(boost::math::fisher_f_distribution<double>(2, f.w_dof), 0.95);
     return f;
+  }
+
+  double joint_distance(const FootprintFit &f, double r, double w)
+  {
+    if (!f.identifiable || !(r > 0) || !(w > 0))
+      return std::numeric_limits<double>::infinity();
+    const double a = std::log(r / f.r), b = std::log(w / f.w);
+    const double sr = std::max(f.sd_log_r, 1e-12), sw = std::max(f.sd_log_w, 1e-12);
+    const double e  = b - f.dlnw_dlnr * a;
+    return a * a / (sr * sr) + e * e / (sw * sw);
+  }
+
+  std::vector<std::array<double, 2>> joint_region_outline(const FootprintFit &f, int points)
+  {
+    std::vector<std::array<double, 2>> outline;
+    if (!f.identifiable)
+      return outline;
+    const double q = std::sqrt(f.joint_level);
+    for (int k = 0; k < points; ++k)
+      {
+        const double angle = 2 * M_PI * k / points;
+        const double a = q * f.sd_log_r * std::cos(angle), e = q * f.sd_log_w * std::sin(angle);
+        outline.push_back({f.r * std::exp(a), f.w * std::exp(f.dlnw_dlnr * a + e)});
+      }
+    return outline;
+  }
+
+  FootprintFit fit_footprint(const std::vector<RunSeries> &runs, const std::vector<CalibrationResult> &results,
+                             const std::vector<double> &lives, const std::vector<Measurement> &ms, double block)
+  {
+    auto candidate = [&](const CalibrationResult &r, double life) {
+      FootprintCandidate k;
+      k.r = r.smoothing_radius, k.rss = r.rms_residual * r.rms_residual * double(ms.size());
+      k.w = r.archard_coefficient > 0 ? r.archard_coefficient : r.scale, k.life = life, k.scale = r.scale;
+      k.blocks = r.blocks, k.measurements = long(ms.size()), k.design_effect = r.design_effect;
+      k.relative_se = r.scale > 0 ? std::hypot(r.se_fit, r.se_replicates) / r.scale : 0.0, k.w_dof = r.dof;
+      return k;
+    };
+    std::vector<FootprintCandidate> candidates;
+    std::vector<std::size_t>        by_r; // the runs with a footprint, by it
+    for (std::size_t i = 0; i < results.size(); ++i)
+      {
+        candidates.push_back(candidate(results[i], i < lives.size() ? lives[i] : 0.0));
+        if (runs[i].smoothing_radius > 0 && results[i].scale > 0)
+          by_r.push_back(i);
+      }
+    std::sort(by_r.begin(), by_r.end(), [&](auto a, auto b) { return runs[a].smoothing_radius < runs[b].smoothing_radius; });
+    // the profile at r: a run interpolated between the three candidates nearest (the nearest
+    // first: its W0 and beds), its W by least squares near the nearest's
+    auto profile = [&](double r, bool full, bool in_log_r) {
+      std::size_t k = 0;
+      while (k + 1 < by_r.size() && runs[by_r[k + 1]].smoothing_radius <= r)
+        ++k;
+      if (k + 1 < by_r.size() && std::log(r / runs[by_r[k]].smoothing_radius) > std::log(runs[by_r[k + 1]].smoothing_radius / r))
+        ++k; // (the nearest on ln r)
+      const std::size_t               mid   = std::clamp<std::size_t>(k, 1, by_r.size() - 2);
+      std::vector<const RunSeries *> three = {&runs[by_r[k]]};
+      for (std::size_t j = mid - 1; j <= mid + 1; ++j)
+        if (j != k)
+          three.push_back(&runs[by_r[j]]);
+      const std::size_t first = by_r[k];
+      const RunSeries between = run_between(three, r, in_log_r);
+      if (full)
+        return candidate(calibrate(between, ms, block), 0.0);
+      const double guess = results[first].scale; // (between is in the nearest run's W0)
+      auto [s, sum]      = least_squares_scale(between, ms, guess / 2, guess * 2);
+      if (s < guess / 1.99 || s > guess * 1.99) // (at the bracket's end: the full search)
+        return candidate(calibrate(between, ms, block), 0.0);
+      FootprintCandidate p;
+      p.r = r, p.rss = sum, p.w = s * (between.archard_coefficient > 0 ? between.archard_coefficient : 1.0);
+      return p;
+    };
+    return fit_footprint(candidates, profile);
   }
 } // namespace abrade::field

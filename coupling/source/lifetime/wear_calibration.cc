@@ -77,6 +77,16 @@ namespace abrade::coupling::lifetime
                                  "log_smoothing_radius_standard_error, degrees_of_freedom)");
         const double slope = fnumber("dlnlife_dlnr") != 0 ? fnumber("dlnlife_dlnr") : fnumber("dlnw_dlnr");
         c.footprint = true, c.smoothing_radius = r, c.coefficient = w;
+        // W's error given the footprint: the fit's at the fitted footprint (calibration.json
+        // written before session 27 has the best-ranked run's only)
+        if (const auto sd_log_w = fp->get_optional<double>("log_wear_coefficient_standard_error"))
+          {
+            const double w_dof = fp->get<double>("wear_coefficient_degrees_of_freedom", c.dof);
+            if (!(*sd_log_w >= 0 && *sd_log_w <= 1) || !(w_dof >= 1))
+              throw InputError(path, "the footprint fit's log_wear_coefficient_standard_error or "
+                                     "wear_coefficient_degrees_of_freedom is out of range");
+            c.relative_sd = *sd_log_w, c.dof = w_dof;
+          }
         c.footprint_relative_sd = std::abs(slope) * sd_log_r;
         c.relative_sd           = std::hypot(c.relative_sd, c.footprint_relative_sd);
         c.dof                   = std::min(c.dof, dof);

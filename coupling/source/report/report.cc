@@ -500,7 +500,20 @@ namespace abrade::report
                             number(best.get<double>("scale_low", 0), 4) + " to " + number(best.get<double>("scale_high", 0), 4) +
                             "); correlation " + number(best.get<double>("correlation", 0), 4));
             }
+          if (const auto fp = j.get_child_optional("footprint"); fp && fp->get<bool>("identifiable", false))
+            page.paragraph("W and the footprint together, from the candidates at several footprints: footprint <b>" +
+                           number(1000 * fp->get<double>("smoothing_radius", 0), 3) + " mm</b> (95 % interval " +
+                           number(1000 * fp->get<double>("smoothing_radius_low", 0), 3) + " to " +
+                           number(1000 * fp->get<double>("smoothing_radius_high", 0), 3) + " mm) and W <b>" +
+                           number(fp->get<double>("wear_coefficient", 0), 4) + " 1/Pa</b> at it (95 % interval with the "
+                           "footprint's uncertainty " + number(fp->get<double>("wear_coefficient_low", 0), 4) + " to " +
+                           number(fp->get<double>("wear_coefficient_high", 0), 4) + " 1/Pa). Lifetime/Calibration takes both.");
           page.png(dir + "/calibration.png", "Predicted against measured wear depths with the fitted scale.");
+          if (fs::exists(dir + "/footprint.png"))
+            page.png(dir + "/footprint.png",
+                     "Each candidate run's W fitted at its footprint (the ridge along which W and the footprint trade "
+                     "off), the fit, and the joint 95 % region of the two: along the ridge the measured profile's width "
+                     "tells them apart.");
           if (fs::exists(dir + "/calibration.md"))
             page.details("calibration.md", read_text(dir + "/calibration.md"));
         }

@@ -30,6 +30,7 @@
 // magnitude: the candidate runs (the knife SFC of a sweep, say) are ranked by it.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace abrade::field
@@ -71,6 +72,12 @@ namespace abrade::field
 
   RunSeries read_run(const std::string &directory, const std::vector<Measurement> &measurements);
 
+  /// A run at footprint @p r between candidate runs at other footprints (their Smoothing radius;
+  /// two or three): each output's depth the Lagrange interpolation in ln r of theirs at the same
+  /// W (a run made with W0 at T tonnes is one made with W0' at T W0 / W0'), on the union of their
+  /// outputs (with @p in_log_r false: in r). Its W0, beds and spread are the first run's.
+  RunSeries run_between(const std::vector<const RunSeries *> &runs, double r, bool in_log_r = true);
+
   struct CalibrationResult
   {
     std::string directory;
@@ -90,6 +97,11 @@ namespace abrade::field
     double      particle_radius = 0, coarse_graining_factor = 0; ///< the particle size it holds for (0: unknown)
     std::string wear_field;           ///< the wear field W belongs to (its law's coefficient)
   };
+
+  /// The least-squares scale s of @p run's wear on @p measurements within [@p low, @p high]
+  /// (golden sections on ln s) and the residual sum of squares there [m^2].
+  std::pair<double, double> least_squares_scale(const RunSeries &run, const std::vector<Measurement> &measurements,
+                                                double low, double high);
 
   /// Fits s for @p run; measurements are grouped in cubes of @p block [m] for the interval.
   CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &measurements, double block = 0.05);

@@ -4,28 +4,34 @@
 // scales with both W and the footprint length r (on the knife-bed, depth rate ~ r^-0.94 at a
 // constant worn volume), so one depth cannot tell them apart; the width of a measured worn
 // profile can. Each candidate run (the same case at footprint r_i) is fitted its W_i
-// (calibration.h) and leaves a residual sum of squares RSS_i. The profile RSS(r) through the
-// lowest candidate and its two neighbours, as a parabola in r (a footprint off by dr widens the
-// pattern by about dr and adds (k dr)^2 to the residuals) and as one in ln r (a relative misfit),
-// gives r^ as the geometric mean of their minima and the 95 % interval
+// (calibration.h). The profile P(r) = min_W RSS(r, W), the residual sum of squares at the best
+// W for footprint r, is known between the candidates too: a run at r is interpolated from the
+// three candidates around it (run_between: each depth quadratic in ln r at the same W; a
+// footprint changes the predicted depths smoothly, their residuals' sum of squares much less
+// so: a parabola through the candidates' RSS, the first design, put r^ 4 % off and made the
+// interval 4x too wide). r^ minimises P between the best candidate's neighbours, and its 95 %
+// interval is the profile likelihood's
 //
-//   {r : RSS(r) <= RSS(r^) (1 + D F(1, nu) / (n - 2))}, widened by half the two minima's
-//   distance on ln r (the profile is known at the candidates only: the interpolation's error)
+//   {r : P(r) <= P(r^) (1 + D F(1, nu) / (n - 2))}
 //
-// (a profile-likelihood interval, F(1, nu) = t(0.975, nu)^2, nu = the best run's spatial
-// blocks - 2, n the measurements: neighbouring scan points are not independent, and D, the
-// best run's design effect (the cluster-robust variance of its W fit over the one independent
-// measurements would give, at least 1), says how many of them make one independent
-// measurement. With D = n / nu (every block's points alike) the level is 1 + F / nu, as if the
-// blocks were the measurements; with independent noise D = 1 and every point counts. (Until
-// session 25 the level was always 1 + F / nu: two scans at the same places, the second at a
-// small tonnage, doubled RSS without adding blocks and made the footprint "not identifiable".)); W^ and the life's relative change
-// along the ridge W(r) by the same kind of parabola through ln W_i and ln (L_i / s_i) (a candidate's life
-// at its fitted W: L_i over its scale, the life going as 1 / W). The fit is refused as not
-// identifiable, with W for the best candidate's r, when fewer than three footprints are given,
-// the best is the smallest or largest candidate, or the interval reaches past the candidates on
-// either side (a single depth, or no width information: the residuals do not rise away from the
-// best r); W is then given for the footprint assumed, the first run's.
+// (F(1, nu) = t(0.975, nu)^2, nu = the best run's spatial blocks - 2, n the measurements, D the
+// design effect of the fit at r^: the cluster-robust variance of its W over the one n
+// independent measurements would give, clamped to [1, n / nu], i.e. how many neighbouring scan
+// points make one independent measurement; with D = n / nu the level is 1 + F / nu, as if the
+// blocks were the measurements). Its ends are found between the candidates where P crosses the
+// level; where it does not within the candidates on either side (a single depth, or no width
+// information: the residuals do not rise away from r^) the fit is refused as not identifiable,
+// and so when fewer than three footprints are given, the best is the smallest or largest, or
+// the measurements fall into too few blocks: W is then given for the footprint assumed, the
+// first run's. W^ and its relative standard error (the fit's and the beds') are the fit's at
+// r^; d ln W / d ln r along the ridge W(r) from the profile at r^ e^(+-0.05), and the life's
+// relative change along it from a parabola through the three candidates' ln (L_i / s_i) (a
+// candidate's life at its fitted W: L_i over its scale, the life going as 1 / W). Checked by
+// simulation in test_footprint_coverage: 95 % means 95 %.
+#include <abrade/field/calibration.h>
+
+#include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,7 +48,15 @@ namespace abrade::field
     long   blocks = 0;  ///< spatial blocks of its fit
     long   measurements = 0;   ///< n (0: unknown: the blocks are taken as the independent units)
     double design_effect = 1;  ///< of its W fit (CalibrationResult::design_effect)
+    double relative_se = 0;    ///< its W's relative standard error, the fit's and the beds' (0: unknown)
+    double w_dof = 0;          ///< that standard error's degrees of freedom (CalibrationResult::dof)
   };
+
+  /// The profile at footprint r: W fitted there and the residual sum of squares (rss, w), and
+  /// with full all the rest of a candidate (design effect, W's relative standard error and its
+  /// degrees of freedom, blocks, measurements); in_log_r: interpolated between the candidates
+  /// in ln r, else in r (the two differ by the interpolation's error).
+  using Profile = std::function<FootprintCandidate(double r, bool full, bool in_log_r)>;
 
   struct FootprintFit
   {
@@ -51,11 +65,36 @@ namespace abrade::field
     double      r = 0, r_low = 0, r_high = 0; ///< [m] r^ and its 95 % interval (the best candidate's r when not identifiable)
     double      w = 0;               ///< W at r^ (or the best candidate's)
     double      sd_log_r = 0;        ///< the standard error of ln r^ (interval / 2 t)
+    double      half_interpolation = 0; ///< the interval's widening on ln r for the interpolation between the candidates
     double      dlnw_dlnr = 0;       ///< along the ridge
     double      dlnlife_dlnr = 0;    ///< the life's relative change per relative change of r along the ridge (0: no lives)
     double      dof = 0;             ///< nu
+    /// W's uncertainty: sd_log_w at r^ (the relative standard error of the fit there: W given
+    /// r), and W's own 95 % interval w_low ... w_high with r's uncertainty in it (along the
+    /// ridge: ln W = ln W^ + dlnw_dlnr ln(r / r^) + e, sd(ln W) = sqrt(slope^2 sd_log_r^2 + sd_log_w^2))
+    double      sd_log_w = 0, w_dof = 0, w_low = 0, w_high = 0;
+    /// the joint 95 % region's level: (r, W) inside when joint_distance(r, W) <= joint_level
+    /// (2 F(0.95; 2, min(nu, w_dof)))
+    double      joint_level = 0;
   };
 
-  /// Fits r and W from @p candidates (any order).
-  FootprintFit fit_footprint(std::vector<FootprintCandidate> candidates);
+  /// Fits r and W from @p candidates (any order) and their @p profile between them.
+  FootprintFit fit_footprint(std::vector<FootprintCandidate> candidates, const Profile &profile);
+
+  /// The same from candidate runs and their calibrations (calibration.h; @p lives: each run's
+  /// predicted life at its own W, 0 where none): the profile between the runs from runs
+  /// interpolated between the three candidates nearest (run_between), calibrated on
+  /// @p measurements.
+  FootprintFit fit_footprint(const std::vector<RunSeries> &runs, const std::vector<CalibrationResult> &results,
+                             const std::vector<double> &lives, const std::vector<Measurement> &measurements,
+                             double block);
+
+  /// The joint region of r and W (docs/field.md "W and the footprint together"): an ellipse in
+  /// (ln r, ln W) with the ridge as its axis, Q = a^2 / sd_log_r^2 + (b - slope a)^2 / sd_log_w^2,
+  /// a = ln(r / r^), b = ln(W / W^); (r, W) lies in the 95 % region when Q <= joint_level. Its
+  /// projections are r's interval (widened to the profile's level) and W's.
+  double joint_distance(const FootprintFit &fit, double r, double w);
+
+  /// @p points on the joint region's boundary, as (r, W) pairs (an identifiable fit only).
+  std::vector<std::array<double, 2>> joint_region_outline(const FootprintFit &fit, int points = 72);
 } // namespace abrade::field

@@ -1,0 +1,147 @@
+// Does the footprint fit's 95 % mean 95 %? The statistic's assumptions checked by simulation
+// through an independent forward model, not through the fit's own arithmetic: a worn profile
+// whose width is the footprint r and whose depth is W T V / r (a Gaussian of standard deviation r
+// holding the volume W T V, the worn volume not depending on r, as on the knife-bed), measured at
+// 161 points 1 mm apart with noise; candidate runs at seven footprints 1.25 times apart (the
+// truth between two of them) predicting the depth at W0; each realisation of the noise goes
+// through calibrate() (calibration.h: each candidate's W by least squares, its cluster-robust
+// interval, its design effect) and fit_footprint() (footprint_fit.h: r from the profile of the
+// residuals, W at it, W's interval with r's uncertainty in it, the joint region). Over 400
+// realisations the truth must lie in each interval and in the joint region 90 ... 99.5 % of the
+// time (the binomial standard deviation of a 95 % coverage over 400 is 1.1 %):
+//  - independent noise (the design effect near 1);
+//  - noise correlated over about 6 mm (a moving average: neighbouring points are not
+//    independent, the design effect about 10; treating them as independent covers r about 65 %
+//    of the time);
+//  - independent noise and the candidates' wear off by a common factor, as the mean of three DEM
+//    beds with a relative spread of 15 % is (the beds' part of W's uncertainty: without it W's
+//    interval covers about 60 %).
+#include <abrade/field/calibration.h>
+#include <abrade/field/footprint_fit.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace abrade::field;
+
+namespace
+{
+  constexpr double r_true = 0.015, w_true = 3e-14, w0 = 2e-14, tonnes = 1e6;
+  constexpr double volume_per_w = 0.004 * std::sqrt(2 * M_PI) * r_true / (w_true * tonnes); // 4 mm deep at r_true
+  constexpr int    points = 161, candidates = 7;
+
+  double depth(double x, double w, double t, double r)
+  {
+    return w * t * volume_per_w * std::exp(-0.5 * x * x / (r * r)) / (std::sqrt(2 * M_PI) * r);
+  }
+
+  struct Coverage
+  {
+    int    r = 0, w = 0, joint = 0, identifiable = 0, n = 0;
+    double sum_lr = 0, sum_lr2 = 0, sum_lw = 0, sum_lw2 = 0, stated_r = 0, stated_w = 0, stated_wr = 0;
+  };
+
+  /// @p correlation: half-width (points) of the moving average making the noise; @p beds_sd:
+  /// the beds' relative spread (three beds) of the candidates' wear.
+  Coverage simulate(int correlation, double beds_sd, unsigned seed, double block = 0.01)
+  {
+    std::mt19937                     random(seed);
+    std::normal_distribution<double> normal;
+    const double                     noise = 0.1e-3; // [m]
+    Coverage                         c;
+    for (c.n = 0; c.n < 400; ++c.n)
+      {
+        std::vector<double> white(points + 2 * correlation);
+        for (auto &e : white)
+          e = normal(random);
+        std::vector<Measurement> ms(points);
+        for (int i = 0; i < points; ++i)
+          {
+            double e = 0;
+            for (int k = 0; k <= 2 * correlation; ++k)
+              e += white[i + k];
+            e /= std::sqrt(2.0 * correlation + 1);
+            const double x = 0.001 * (i - points / 2);
+            ms[i].point    = {x, 0, 0};
+            ms[i].tonnes   = tonnes;
+            ms[i].depth    = depth(x, w_true, tonnes, r_true) + noise * e;
+          }
+        // the candidates' wear, off by the mean of three beds' factor (one for all: the
+        // candidates at other footprints are replays of one DEM run's wear)
+        // three beds: their mean and their relative spread as the run measures it
+        double bed[3], beds = 0, spread = 0;
+        for (auto &b : bed)
+          b = 1 + beds_sd * normal(random), beds += b / 3;
+        for (const double b : bed)
+          spread += (b - beds) * (b - beds) / 2;
+        spread = std::sqrt(spread) / beds;
+        std::vector<RunSeries>         runs(candidates);
+        std::vector<CalibrationResult> fits;
+        for (int k = 0; k < candidates; ++k)
+          {
+            RunSeries &run            = runs[k];
+            run.directory             = "candidate_" + std::to_string(k);
+            run.archard_coefficient   = w0;
+            run.seeds                 = beds_sd > 0 ? 3 : 1;
+            run.replicate_relative_sd = beds_sd > 0 ? spread : 0.0;
+            run.smoothing_radius      = 0.0137 * std::pow(1.25, k - 3);
+            run.tonnes                = {0, tonnes, 2 * tonnes};
+            run.depth.assign(3, std::vector<double>(points));
+            for (int o = 0; o < 3; ++o)
+              for (int i = 0; i < points; ++i)
+                run.depth[o][i] = (beds_sd > 0 ? beds : 1.0) * depth(ms[i].point[0], w0, run.tonnes[o], run.smoothing_radius);
+            fits.push_back(calibrate(run, ms, block));
+          }
+        const FootprintFit f = fit_footprint(runs, fits, {}, ms, block);
+        if (!f.identifiable)
+          continue;
+        ++c.identifiable;
+        
+        c.sum_lr += std::log(f.r / r_true), c.sum_lr2 += std::pow(std::log(f.r / r_true), 2);
+        c.sum_lw += std::log(f.w / w_true), c.sum_lw2 += std::pow(std::log(f.w / w_true), 2);
+        c.stated_r += f.sd_log_r, c.stated_w += std::log(f.w_high / f.w) / 1.96, c.stated_wr += f.sd_log_w;
+        c.r += f.r_low <= r_true && r_true <= f.r_high;
+        c.w += f.w_low <= w_true && w_true <= f.w_high;
+        c.joint += joint_distance(f, r_true, w_true) <= f.joint_level;
+      }
+    return c;
+  }
+
+  void expect_covers(const Coverage &c, const char *what, double lowest = 0.90)
+  {
+    SCOPED_TRACE(what);
+    EXPECT_GE(c.identifiable, 396); // (a 0.1 mm noise on a 4 mm deep profile: its width is clear)
+    for (const auto &[name, k] : {std::pair{"r", c.r}, {"W", c.w}, {"joint", c.joint}})
+      {
+        const double coverage = double(k) / c.n;
+        EXPECT_GE(coverage, lowest) << name << " covered in " << k << " of " << c.n;
+        EXPECT_LE(coverage, 0.995) << name << " covered in " << k << " of " << c.n;
+      }
+    const double m = c.identifiable;
+    std::printf("%s: ln r^ mean %.4f sd %.4f (stated %.4f); ln W^ mean %.4f sd %.4f (stated %.4f, given r %.4f)\n", what,
+                c.sum_lr / m, std::sqrt(c.sum_lr2 / m - std::pow(c.sum_lr / m, 2)), c.stated_r / m, c.sum_lw / m,
+                std::sqrt(c.sum_lw2 / m - std::pow(c.sum_lw / m, 2)), c.stated_w / m, c.stated_wr / m);
+    std::printf("%s: r covered %.3f, W %.3f, joint %.3f (identifiable %d of %d)\n", what,
+                double(c.r) / c.n, double(c.w) / c.n, double(c.joint) / c.n, c.identifiable, c.n);
+  }
+} // namespace
+
+TEST(FootprintCoverage, IndependentNoise)
+{
+  expect_covers(simulate(0, 0, 1), "independent noise");
+}
+
+TEST(FootprintCoverage, CorrelatedNoise)
+{
+  expect_covers(simulate(3, 0, 2), "noise correlated over 7 points", 0.78);
+}
+
+TEST(FootprintCoverage, BedsSpread)
+{
+  expect_covers(simulate(0, 0.15, 3), "the beds' spread");
+}
