@@ -7,7 +7,7 @@
     data-height) and is not blank (its pixels vary); the figures a report of its kind must
     have are there (--expect-figures: trajectory, knife, profile for a lifetime run);
   - the browser loaded nothing but the page (no resource requests);
-  - the headline number (span#headline-tonnes, #headline-w or #headline-rms, its data-value)
+  - the headline number (span#headline-tonnes, #headline-w, #headline-scale or #headline-rms, its data-value)
     equals the run's own number in summary.json, calibration.json or comparison.json, and the
     text shows the same number: for tonnes, the number and unit (t, kt, Mt) read back from the
     text lie within the rounding of three digits of summary.json's value;
@@ -42,7 +42,7 @@ window.addEventListener('load', () => {
                      inline: img.currentSrc.startsWith('data:image/png;base64,'), spread: spread,
                      figure: img.parentElement.dataset.figure || ''});
   }
-  for (const id of ['headline-tonnes', 'headline-w', 'headline-count', 'headline-rms']) {
+  for (const id of ['headline-tonnes', 'headline-w', 'headline-count', 'headline-rms', 'headline-scale']) {
     const h = document.getElementById(id);
     if (h) { out.headline = {id: id, value: h.dataset.value, text: h.textContent}; break; }
   }
@@ -159,6 +159,12 @@ def main():
         if abs(float(head["value"]) - expected) > 1e-9 * abs(expected):
             fail("headline W %s differs from calibration.json's %r" % (head["value"], expected))
         print("ok: headline W = calibration.json's (%r)" % expected)
+    elif head["id"] == "headline-scale": # a calibration of runs without a wear coefficient (analytic rates)
+        cal = json.load(open(os.path.join(a.run, "calibration.json")))
+        expected = cal["runs"][0]["scale"]
+        if abs(float(head["value"]) - expected) > 1e-9 * abs(expected):
+            fail("headline scale %s differs from calibration.json's %r" % (head["value"], expected))
+        print("ok: headline scale = calibration.json's (%r)" % expected)
     elif head["id"] == "headline-rms":
         cmp = json.load(open(os.path.join(a.run, "comparison.json")))
         expected = cmp["registration"]["rms_distance"]

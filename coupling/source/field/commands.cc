@@ -299,6 +299,33 @@ namespace abrade::field
       j["dlnw_dlnr"] = f.dlnw_dlnr, j["dlnlife_dlnr"] = f.dlnlife_dlnr, j["degrees_of_freedom"] = f.dof;
       if (!f.identifiable)
         j["reason"] = f.reason;
+      // a fit on replays: their own error (the geometry feedback they leave out) is not in the
+      // interval, and grows with the distance from the DEM run they replay
+      if (f.identifiable)
+        {
+          double nearest = 0; // the DEM candidate nearest the fit, on ln r
+          bool   replays = false;
+          for (std::size_t i = 0; i < runs.size(); ++i)
+            if (io::summary_string(runs[i] + "/summary.json", "wear_source").value_or("") == "replay")
+              replays = true;
+            else if (series[i].smoothing_radius > 0 &&
+                     (nearest == 0 || std::abs(std::log(series[i].smoothing_radius / f.r)) < std::abs(std::log(nearest / f.r))))
+              nearest = series[i].smoothing_radius;
+          if (replays && (nearest == 0 || std::abs(std::log(nearest / f.r)) > std::log(1.25)))
+            {
+              const std::string text =
+                "the footprint was fitted on replayed candidates (Lifetime/Wear source = replay) " +
+                (nearest > 0 ? "whose DEM run is at " + io::format_number(1000 * nearest, 3) + " mm" : std::string("only")) +
+                ", more than 1.25x from the fit (" + io::format_number(1000 * f.r, 3) +
+                " mm): a replay leaves out how the DEM's wear changes with the shape, and that error is not in the "
+                "interval (on the knife-bed the footprint came out 12-17 % large); for a footprint to book, run a DEM "
+                "candidate at " + io::format_number(f.r, 3) + " m, replay it around, and calibrate again "
+                "(docs/field.md, the second round)";
+              j["warnings"].push_back(text);
+              std::cerr << "warning: footprint: " << text << "\n";
+              md << "\nWarning: " << text << "\n";
+            }
+        }
       md << "\n## W and the footprint together\n\n";
       char line[900];
       if (f.identifiable)

@@ -508,12 +508,13 @@ namespace abrade::report
                            number(fp->get<double>("wear_coefficient", 0), 4) + " 1/Pa</b> at it (95 % interval with the "
                            "footprint's uncertainty " + number(fp->get<double>("wear_coefficient_low", 0), 4) + " to " +
                            number(fp->get<double>("wear_coefficient_high", 0), 4) + " 1/Pa). Lifetime/Calibration takes both.");
-          page.png(dir + "/calibration.png", "Predicted against measured wear depths with the fitted scale.");
+          page.png(dir + "/calibration.png", "Predicted against measured wear depths with the fitted scale.", "calibration");
           if (fs::exists(dir + "/footprint.png"))
             page.png(dir + "/footprint.png",
                      "Each candidate run's W fitted at its footprint (the ridge along which W and the footprint trade "
                      "off), the fit, and the joint 95 % region of the two: along the ridge the measured profile's width "
-                     "tells them apart.");
+                     "tells them apart.",
+                     "footprint");
           if (fs::exists(dir + "/calibration.md"))
             page.details("calibration.md", read_text(dir + "/calibration.md"));
         }
