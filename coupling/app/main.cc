@@ -2,6 +2,7 @@
 //
 //   abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
 //   abrade params [--format text|prm]
+//   abrade preview FILE.prm [--set ...]... --output DIR
 //   abrade report RUN_DIR
 //   abrade export-walls [FILE.prm] --output DIR
 //   abrade convert SCRIPT.geo|CAD --output FILE.step
@@ -66,9 +67,14 @@ namespace
       knives' wear per phase, payload, wear per tonne and the change against the baseline with
       its uncertainty (concepts.md/.csv, wear.png); with --lifetime-updates, each concept's
       knife life too (lifetime/NAME/, lifetime.png)
+  abrade preview FILE.prm [--set ...]... --output DIR
+      the case's part on its own (the knife job): meshed, checked, and drawn as the case places
+      it with its faces coloured by role (wears, clamped, held) and numbered, the face table and
+      what each selector took (DIR/report.html, summary.json)
   abrade report RUN_DIR
       write RUN_DIR/report.html, one self-contained page (pictures inlined) for a lifetime,
-      sweep, concepts, compare or calibrate run; those runs write it themselves when they end
+      knife (a preview), sweep, concepts, compare or calibrate run; those runs write it
+      themselves when they end
   abrade export-walls [FILE.prm] [--set ...]... --output DIR
       write every wall of the case, as the simulation sees it at t = 0, as DIR/NAME.stl
   abrade convert SCRIPT.geo|FILE.step|FILE.brep --output FILE.step
@@ -377,10 +383,11 @@ namespace
     finish("completed"); // (the report shows the summary's status)
     // the report is one of the run's declared outputs: a write that fails (a full disk) fails
     // the run (exit 3); a report that cannot be made of what the run wrote is a warning
-    if (root && job_name == "lifetime")
+    if (root && (job_name == "lifetime" || job_name == "knife"))
       try
         {
-          report::write_paraview_script(dir);
+          if (job_name == "lifetime")
+            report::write_paraview_script(dir);
           log.line("Report: " + report::write_report(dir));
         }
       catch (const RunError &e)
@@ -461,6 +468,15 @@ int main(int argc, char **argv)
       const CommandLine cl = parse(argc, argv);
       if (cl.command == "run")
         return run(cl);
+      if (cl.command == "preview") // the case's part on its own: the knife job, its report the preview
+        {
+          if (cl.output.empty())
+            throw InputError("command line", "preview needs --output DIR (the case's own output directory is its "
+                                             "run's): abrade preview FILE.prm --output DIR");
+          CommandLine knife = cl;
+          knife.sets.push_back("Job=knife");
+          return run(knife);
+        }
       if (cl.command == "params")
         {
           coupling::ParameterFile p;

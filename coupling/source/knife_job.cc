@@ -6,8 +6,12 @@
 // 3. Write knife/knife.pvd + .vtu (cell field scaled_jacobian), knife/knife.stl (the surface the
 //    DEM would see), knife/knife_surface.vtp (the same with boundary_id: 1 wears, 2 is clamped),
 //    the parametric knife as knife/knife.step
-//    (millimetres), and volume, mass, quality and a part's faces into summary.json.
+//    (millimetres), knife/faces.vtp (each boundary face with the file's face it belongs to and
+//    its role: wears, clamped, held), and volume, mass, quality and a part's faces into
+//    summary.json. The run's report (report.html) is the part's preview: it drawn from two
+//    sides coloured by role with the faces' numbers, and the face table.
 #include <abrade/common/error.h>
+#include <abrade/common/vtk_output.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/fem/knife_geometry.h>
@@ -17,13 +21,52 @@
 
 #include <deal.II/grid/grid_tools.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <vector>
 
 namespace abrade::coupling
 {
+  namespace
+  {
+    /// The part's boundary faces as triangles, each with the file's face it belongs to
+    /// (`face_id`; the parametric knife's boundary id) and what became of it (`role`: 0 wears,
+    /// 1 clamped, 2 held): knife/faces.vtp, which the preview draws.
+    io::PolyData part_faces_surface(const dealii::Triangulation<3> &tria, const KnifeMesh &m, bool from_file)
+    {
+      io::PolyData out;
+      io::Field    id{"face_id", 1, {}}, role{"role", 1, {}};
+      std::size_t  k = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto   face = cell->face(f);
+              const auto   b    = face->boundary_id();
+              double       file_id = b, became = b == fem::KnifeGeometry::wearable_boundary ? 0 : 1;
+              if (from_file && k < m.faces.boundary_faces.size())
+                file_id = m.faces.boundary_faces[k].first, became = double(m.faces.boundary_faces[k].second);
+              ++k;
+              const long first = long(out.points.size() / 3);
+              for (const unsigned v : face->vertex_indices())
+                for (int d = 0; d < 3; ++d)
+                  out.points.push_back(face->vertex(v)[d]);
+              // (a quadrilateral's vertices go 0 1 3 2 round it)
+              const std::vector<std::array<long, 3>> triangles =
+                face->n_vertices() == 3 ? std::vector<std::array<long, 3>>{{first, first + 1, first + 2}}
+                                        : std::vector<std::array<long, 3>>{{first, first + 1, first + 3},
+                                                                           {first, first + 3, first + 2}};
+              for (const auto &t : triangles)
+                out.triangles.push_back(t), id.values.push_back(file_id), role.values.push_back(became);
+            }
+      out.cell_fields = {id, role};
+      return out;
+    }
+  } // namespace
+
   void run_knife_job(JobContext &ctx)
   {
     const KnifeParameters     kp = read_knife_parameters(ctx.parameters);
@@ -56,6 +99,7 @@ namespace abrade::coupling
     const fem::SolidSurface surface = fem::extract_surface(tria);
     io::write_stl(dir + "/knife.stl", surface.as_polydata());
     io::write_vtp(dir + "/knife_surface.vtp", surface.as_polydata()); // boundary_id: 1 wears, 2 clamped
+    io::write_vtp(dir + "/faces.vtp", part_faces_surface(tria, m, kp.from_file)); // the preview's (face_id, role)
 
     io::Json &r                  = ctx.results["knife"];
     r["cells"]                   = static_cast<long>(tria.n_active_cells());

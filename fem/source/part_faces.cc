@@ -208,6 +208,9 @@ namespace abrade::fem
             cell->face(f)->set_boundary_id(w ? wearable_id : clamped_id);
             (w ? r.wearable_area : r.clamped_area) += area;
             ++(w ? r.wearable_faces : r.clamped_faces);
+            r.boundary_faces.emplace_back(id, w            ? FaceAssignment::Became::wears
+                                              : is_clamped ? FaceAssignment::Became::clamped
+                                                           : FaceAssignment::Became::held);
             FaceAssignment::Role &role = r.by_face[id];
             (w ? role.wearing_area : is_clamped ? role.clamped_area : role.held_area) += area;
           }

@@ -11,12 +11,14 @@
     equals the run's own number in summary.json, calibration.json or comparison.json, and the
     text shows the same number: for tonnes, the number and unit (t, kt, Mt) read back from the
     text lie within the rounding of three digits of summary.json's value;
-  - with --expect-warning TEXT: the warnings section shows TEXT.
+  - with --expect-warning TEXT: the warnings section shows TEXT;
+  - with --expect-face-table (a part's preview): the face table's rows are summary.json's
+    faces (id, role, area), in order.
 
 A checking script is added to a copy of the page (the report itself carries none), Chromium
 dumps the page's DOM after load, and the script's findings are read from it.
 
-  check_report.py RUN_DIR [--expect-warning TEXT] [--expect-figures a,b,...] [--screenshot PNG]
+  check_report.py RUN_DIR [--expect-warning TEXT] [--expect-figures a,b,...] [--expect-face-table] [--screenshot PNG]
 Exit codes: 0 ok, 1 a check failed, 77 Chromium is not installed (the test is skipped).
 """
 import argparse, json, os, re, shutil, subprocess, sys, tempfile
@@ -42,7 +44,7 @@ window.addEventListener('load', () => {
                      inline: img.currentSrc.startsWith('data:image/png;base64,'), spread: spread,
                      figure: img.parentElement.dataset.figure || ''});
   }
-  for (const id of ['headline-tonnes', 'headline-w', 'headline-count', 'headline-rms', 'headline-scale']) {
+  for (const id of ['headline-tonnes', 'headline-w', 'headline-count', 'headline-rms', 'headline-scale', 'headline-volume']) {
     const h = document.getElementById(id);
     if (h) { out.headline = {id: id, value: h.dataset.value, text: h.textContent}; break; }
   }
@@ -79,6 +81,7 @@ def main():
     ap.add_argument("run")
     ap.add_argument("--expect-warning")
     ap.add_argument("--expect-figures", default="")
+    ap.add_argument("--expect-face-table", action="store_true")
     ap.add_argument("--screenshot")
     a = ap.parse_args()
     browser = chromium()
@@ -165,6 +168,11 @@ def main():
         if abs(float(head["value"]) - expected) > 1e-9 * abs(expected):
             fail("headline scale %s differs from calibration.json's %r" % (head["value"], expected))
         print("ok: headline scale = calibration.json's (%r)" % expected)
+    elif head["id"] == "headline-volume": # a part's preview (the knife job)
+        expected = json.load(open(os.path.join(a.run, "summary.json")))["results"]["knife"]["volume"]
+        if abs(float(head["value"]) - expected) > 1e-9 * abs(expected):
+            fail("headline volume %s differs from summary.json's %r" % (head["value"], expected))
+        print("ok: headline volume = summary.json's (%r)" % expected)
     elif head["id"] == "headline-rms":
         cmp = json.load(open(os.path.join(a.run, "comparison.json")))
         expected = cmp["registration"]["rms_distance"]
@@ -194,6 +202,19 @@ def main():
     else:
         print("ok: headline %s" % head["text"])
 
+    if a.expect_face_table: # a part's preview: the face table is summary.json's, face by face
+        faces = json.load(open(os.path.join(a.run, "summary.json")))["results"]["knife"]["file_faces"]
+        html = open(os.path.join(a.run, "report.html")).read()
+        table = html[html.find(">Faces<"):]
+        table = table[:table.find("</table>")]
+        rows = [re.findall(r"<td>(.*?)</td>", r) for r in re.findall(r"<tr>(.*?)</tr>", table)]
+        rows = [r for r in rows if r]
+        if len(rows) != len(faces):
+            fail("the face table has %d rows, summary.json %d faces" % (len(rows), len(faces)))
+        for r, f in zip(rows, faces):
+            if r[0] != str(f["id"]) or r[2] != f["role"] or abs(float(r[3]) - f["area"]) > 1e-3 * f["area"]:
+                fail("face table row %r differs from summary.json's face %r" % (r[:4], f))
+        print("ok: the face table = summary.json's %d faces (id, role, area)" % len(faces))
     if a.expect_warning:
         if not found["warnings"] or a.expect_warning not in found["warnings"]:
             fail("the warnings section does not show %r: %r" % (a.expect_warning, found["warnings"]))

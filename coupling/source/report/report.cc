@@ -543,6 +543,103 @@ namespace abrade::report
       page.warnings(warnings);
       return page.html();
     }
+    /// The knife job's page: the part's preview. The part as the case places it, drawn from
+    /// two sides with its faces coloured by what the selectors made of them (wears, clamped,
+    /// held) and the file's face numbers at their centres; the face table and what each
+    /// selector took (summary.json `knife`).
+    std::string knife_page(const std::string &dir, const Tree &summary)
+    {
+      const auto k = summary.get_child_optional("results.knife");
+      if (!k)
+        throw InputError(dir + "/summary.json", "no results.knife in it (a knife job that did not finish?)");
+      const bool from_file = k->get_child_optional("file_faces").has_value();
+      HtmlPage   page(from_file ? "Part preview" : "Knife preview");
+      char       value[40];
+      const double volume = k->get<double>("volume", 0);
+      std::snprintf(value, sizeof value, "%.17g", volume);
+      page.headline("The part: <span id=\"headline-volume\" data-value=\"" + std::string(value) + "\"><b>" +
+                    number(1e6 * volume, 4) + " cm^3</b></span>, " + number(k->get<double>("mass", 0), 4) + " kg, " +
+                    std::to_string(k->get<long>("cells", 0)) + " cells" +
+                    (from_file ? "; wearing " + number(k->get<double>("wearable_area", 0), 4) + " m^2, clamped or held " +
+                                   number(k->get<double>("clamped_area", 0), 4) + " m^2"
+                               : std::string()));
+      // the faces' numbers at their centres: the larger ones (small faces would hide the part)
+      RenderOptions o;
+      o.label      = "role";
+      o.categories = {{"wears", "#e66101"}, {"clamped", "#5e3c99"}, {"held", "#b2abd2"}};
+      std::vector<std::vector<std::string>> rows;
+      if (from_file)
+        {
+          std::vector<std::pair<double, RenderOptions::Label>> labels;
+          double                                               total = 0;
+          for (const auto &[key, f] : *k->get_child_optional("file_faces"))
+            total += f.get<double>("area", 0);
+          for (const auto &[key, f] : *k->get_child_optional("file_faces"))
+            {
+              std::array<double, 3> c{}, n{};
+              int                   d = 0;
+              for (const auto &[i, x] : f.get_child("centre"))
+                if (d < 3)
+                  c[d++] = x.get_value<double>();
+              d = 0;
+              for (const auto &[i, x] : f.get_child("normal"))
+                if (d < 3)
+                  n[d++] = x.get_value<double>();
+              const std::string id = text_at(f, "id"), name = text_at(f, "name");
+              const double      area = f.get<double>("area", 0);
+              if (area >= 0.002 * total)
+                labels.push_back({area, {c, id, n}});
+              // the selectors that took a part of it
+              std::string taken;
+              if (const auto sel = k->get_child_optional("selectors"))
+                for (const auto &[j, t] : *sel)
+                  for (const auto &[m, x] : t.get_child("faces"))
+                    if (x.get_value<std::string>() == id)
+                      taken += (taken.empty() ? "" : "; ") + text_at(t, "list") + " '" + text_at(t, "selector") + "'";
+              rows.push_back({id, name, text_at(f, "role"), number(area, 4), number(f.get<double>("wearing_area", 0), 4),
+                              number(f.get<double>("clamped_area", 0), 4), number(f.get<double>("held_area", 0), 4),
+                              mm(c[0]) + ", " + mm(c[1]) + ", " + mm(c[2]),
+                              number(n[0], 3) + ", " + number(n[1], 3) + ", " + number(n[2], 3), taken});
+            }
+          std::sort(labels.begin(), labels.end(), [](const auto &a, const auto &b) { return a.first > b.first; });
+          for (std::size_t i = 0; i < labels.size() && i < 60; ++i)
+            o.labels.push_back(labels[i].second);
+        }
+      if (render_surfaces(dir + "/report", "faces.png", {{dir + "/knife/faces.vtp", "role", "the part as placed"}}, o))
+        page.png(dir + "/report/faces.png",
+                 "The part as the case places it (its frame, in mm), from the front and from the back: each face "
+                 "coloured by what Clamped faces / Wearable faces made of it" +
+                   std::string(from_file ? ", the file's face numbers at the larger faces' centres." : "."),
+                 "faces");
+      if (from_file)
+        {
+          page.heading("Faces");
+          page.paragraph("The file's faces as Gmsh numbers them (Knife/Clamped faces and Wearable faces select them by "
+                         "'group NUMBER', a box of centres or a normal); a face a box or normal selector took in part is "
+                         "'mixed'. Areas in m^2, centres in mm, in the case's frame.");
+          page.table({"id", "name", "role", "area", "wearing", "clamped", "held", "centre [mm]", "normal", "taken by"},
+                     rows);
+          std::vector<std::vector<std::string>> taken;
+          if (const auto sel = k->get_child_optional("selectors"))
+            for (const auto &[j, t] : *sel)
+              {
+                std::string faces;
+                for (const auto &[m, x] : t.get_child("faces"))
+                  faces += (faces.empty() ? "" : ", ") + x.get_value<std::string>();
+                taken.push_back({text_at(t, "list"), text_at(t, "selector"), number(t.get<double>("area", 0), 4), faces});
+              }
+          if (!taken.empty())
+            {
+              page.heading("Selectors");
+              page.table({"list", "selector", "area [m^2]", "faces"}, taken);
+            }
+        }
+      page.heading("Warnings");
+      std::vector<std::string> warnings;
+      collect_warnings(summary, warnings);
+      page.warnings(warnings);
+      return page.html();
+    }
   } // namespace
 
   std::string write_report(const std::string &dir)
@@ -557,6 +654,8 @@ namespace abrade::report
         if (fs::is_directory(dir + "/knife"))
           write_paraview_script(dir);
       }
+    else if (text_at(summary, "job") == "knife")
+      html = knife_page(dir, summary);
     else if (fs::exists(dir + "/concepts.csv"))
       html = table_page(dir, "Knife concepts compared", "concepts.csv", {"wear.png", "lifetime.png"});
     else if (fs::exists(dir + "/study.csv"))
@@ -573,7 +672,7 @@ namespace abrade::report
     else if (fs::exists(dir + "/calibration.json") || fs::exists(dir + "/comparison.json"))
       html = field_page(dir);
     else
-      throw InputError(dir, "no lifetime, concepts, sweep, compare or calibrate run here (summary.json, concepts.csv, "
+      throw InputError(dir, "no lifetime, knife, concepts, sweep, compare or calibrate run here (summary.json, concepts.csv, "
                             "study.csv, comparison.json or calibration.json)");
     const std::string file = dir + "/report.html";
     io::write_file_atomically(file, html);

@@ -54,8 +54,8 @@ namespace abrade::report
       return {r, mean};
     }
 
-    bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, std::vector<double> &values,
-                         bool &as_points)
+    bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, double scale,
+                         std::vector<double> &values, bool &as_points)
     {
       std::error_code e;
       if (!std::filesystem::is_regular_file(s.file, e))
@@ -89,7 +89,7 @@ namespace abrade::report
             double p[3];
             poly->GetPoint(k, p);
             place(p);
-            const double v = 1000 * at_points->GetComponent(k, 0);
+            const double v = scale * at_points->GetComponent(k, 0);
             if (!std::isfinite(v))
               continue;
             data << 1000 * p[0] << ' ' << 1000 * p[1] << ' ' << 1000 * p[2] << ' ' << v << '\n';
@@ -108,7 +108,7 @@ namespace abrade::report
               double p[3];
               poly->GetPoint(ids[k], p);
               place(p);
-              const double v = 1000 * (at_points ? at_points->GetComponent(ids[k], 0) : at_cells->GetComponent(c, 0));
+              const double v = scale * (at_points ? at_points->GetComponent(ids[k], 0) : at_cells->GetComponent(c, 0));
               x[k][0] = 1000 * p[0], x[k][1] = 1000 * p[1], x[k][2] = 1000 * p[2], x[k][3] = std::isfinite(v) ? v : 0.0;
               values.push_back(x[k][3]);
             }
@@ -131,7 +131,7 @@ namespace abrade::report
       {
         bool points = false;
         if (!write_triangles(surfaces[k], directory + "/" + stem + "_" + std::to_string(k) + ".dat", options.align,
-                             values, points))
+                             options.categories.empty() ? 1000.0 : 1.0, values, points))
           return false;
         as_points[k] = points;
       }
@@ -153,7 +153,8 @@ namespace abrade::report
     const int     columns = int(surfaces.size());
     std::ofstream gp(directory + "/" + stem + ".gp");
     // wear of one cycle is a few micrometres: then the colour bar is in um
-    const double unit = hi < 0.01 && !signed_range ? 1000.0 : 1.0;
+    const bool   categorical = !options.categories.empty();
+    const double unit = hi < 0.01 && !signed_range && !categorical ? 1000.0 : 1.0;
     std::string  label = options.label;
     if (unit != 1.0 && label.size() > 4 && label.compare(label.size() - 4, 4, "[mm]") == 0)
       label = label.substr(0, label.size() - 4) + "[um]";
@@ -161,15 +162,40 @@ namespace abrade::report
        << "set output '" << png << "'\nset termoption noenhanced\n"
        << "set multiplot layout 2," << columns << " rowsfirst\n"
        << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
-       << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n"
-       << "set cbrange [" << unit * lo << ":" << unit * hi << "]\nset cblabel '" << label << "'\nset cbtics\n"
-       << (signed_range ? "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
-                        : "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n");
+       << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n";
+    if (categorical) // one colour per category, named on the colour bar
+      {
+        const std::size_t n = options.categories.size();
+        gp << "set cbrange [-0.5:" << double(n) - 0.5 << "]\nset cblabel '" << label << "'\nset palette maxcolors " << n
+           << "\nset palette defined (";
+        for (std::size_t k = 0; k < n; ++k)
+          gp << (k ? ", " : "") << k << " '" << options.categories[k].second << "'";
+        gp << ")\nset cbtics (";
+        for (std::size_t k = 0; k < n; ++k)
+          gp << (k ? ", " : "") << "'" << quote_free(options.categories[k].first) << "' " << k;
+        gp << ")\n";
+      }
+    else
+      gp << "set cbrange [" << unit * lo << ":" << unit * hi << "]\nset cblabel '" << label << "'\nset cbtics\n"
+         << (signed_range ? "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
+                          : "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n");
+
     for (int v = 0; v < 2; ++v)
       for (std::size_t k = 0; k < surfaces.size(); ++k)
         {
           // two sides of the part: from the front and above, and from the back
           // one colour bar per row, beside the last picture
+          // the labels whose normals face this view's viewer (gnuplot's view: turned rot_z
+          // about z, then rot_x about x; the viewer towards (sin x sin z, -sin x cos z, cos x))
+          const double rot_x = 70 * M_PI / 180, rot_z = (v == 0 ? 25 : 205) * M_PI / 180;
+          const double viewer[3] = {std::sin(rot_x) * std::sin(rot_z), -std::sin(rot_x) * std::cos(rot_z), std::cos(rot_x)};
+          gp << "unset label\n";
+          if (!options.align)
+            for (const auto &l : options.labels)
+              if (l.normal[0] * viewer[0] + l.normal[1] * viewer[1] + l.normal[2] * viewer[2] > 0.05 ||
+                  l.normal[0] * l.normal[0] + l.normal[1] * l.normal[1] + l.normal[2] * l.normal[2] < 0.25)
+                gp << "set label '" << quote_free(l.text) << "' at " << 1000 * l.at[0] << "," << 1000 * l.at[1] << ","
+                   << 1000 * l.at[2] << " front center font ',8' textcolor rgb 'black'\n";
           gp << (k + 1 == surfaces.size() ? "set colorbox\n" : "unset colorbox\n")
              << "set view " << (v == 0 ? "70, 25" : "70, 205") << ", 1.1\n"
              << "set title '" << quote_free(surfaces[k].title) << (v == 0 ? " (front)" : " (back)") << "' offset 0,1\n"

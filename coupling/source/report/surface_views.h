@@ -3,7 +3,9 @@
 // .vtp, a deviation map) coloured by one of its fields, drawn by gnuplot's pm3d from two views,
 // with a colour bar in mm. Several surfaces share one colour range, so that the design, mid-life
 // and end-of-life pictures (or concepts side by side) compare at a glance.
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace abrade::report
@@ -25,6 +27,18 @@ namespace abrade::report
     /// The top of the colour range: this percentile of the values (1: the largest), so that a
     /// few hot triangles do not leave the rest in one colour.
     double top_percentile = 1;
+    /// A field of categories 0, 1, ... (a face's role, say): each drawn in its colour, named
+    /// on the colour bar; (name, colour as '#rrggbb'). Empty: a field in metres, drawn in mm.
+    std::vector<std::pair<std::string, std::string>> categories;
+    /// Text drawn at points of the surface [m] (a face's number at its centre), in a view only
+    /// where the normal (unit; zero: always) faces the viewer; without align.
+    struct Label
+    {
+      std::array<double, 3> at{};
+      std::string           text;
+      std::array<double, 3> normal{};
+    };
+    std::vector<Label> labels;
   };
 
   /// Draws @p surfaces, one column each with two views (front above back), into

@@ -88,6 +88,16 @@ namespace abrade::fem
       std::vector<dealii::types::boundary_id> faces;
     };
     std::vector<Taken> taken; ///< the clamped selectors in order, then the wearable ones
+
+    /// Every boundary face of the mesh, in the order of the active cells and their faces: the
+    /// file's face it belongs to and what became of it (the part's preview draws them).
+    enum class Became : unsigned char
+    {
+      wears,
+      clamped,
+      held
+    };
+    std::vector<std::pair<dealii::types::boundary_id, Became>> boundary_faces;
   };
 
   /// Sets the boundary id of every boundary face of @p tria to @p wearable_id or @p clamped_id
