@@ -72,6 +72,24 @@ namespace abrade::coupling
                     g(cores) + " cores. Check Time step, the particles' Density and Shear modulus (the Rayleigh "
                     "time step), Radius and Count; or raise Maximum particle-steps to run it anyway");
       }
+    // a bed that cannot be filled is said before anything is meshed or settled: random
+    // placement with a sweep of the free space saturates near a solid fraction of 0.35 in an
+    // empty box (generation.cc), less where walls and the part take room
+    for (const dem::FillRegion *fill : {&c.fill, c.fine_fill ? &*c.fine_fill : nullptr})
+      if (fill)
+        {
+          const Eigen::Vector3d extent = fill->box_max - fill->box_min;
+          const double          box    = extent.prod();
+          const double fraction = fill->count > 0 && box > 0 ? double(fill->count) * fill->sizes.mean_volume() / box
+                                                             : fill->solid_fraction;
+          if (fraction > 0.37)
+            file.fail({"Particles", "Generation"}, fill->count > 0 ? "Count" : "Solid fraction",
+                      (fill->count > 0 ? g(double(fill->count)) + " particles of " + g(fill->sizes.mean_volume()) +
+                                           " m^3 each fill " + g(fraction) + " of the Region box (" + g(box) + " m^3)"
+                                       : "a solid fraction of " + g(fraction)) +
+                        ": random placement saturates near 0.35 in an empty box (less where walls and the part take "
+                        "room); lower Count (or Solid fraction) or enlarge the Region");
+        }
     const double available = available_memory();
     if (available > 0 && r.bytes > available)
       file.fail({"Particles", "Generation"}, "Count",

@@ -69,10 +69,11 @@ assert scales["r0.04"]["scale"] / scales["r0.005"]["scale"] > 1.5, scales
 # interval (the footprint's uncertainty in it) holds the truth's 1.5, and so does the joint
 # region (r, scale), whose outline (footprint_region.csv) is on its level
 assert fp["wear_coefficient_low"] < 1.5 < fp["wear_coefficient_high"], fp
+jr = fp["joint_region"]
 a = math.log(0.01 / fp["smoothing_radius"])
 e = math.log(1.5 / fp["wear_coefficient"]) - fp["dlnw_dlnr"] * a
-q = a * a / fp["log_smoothing_radius_standard_error"] ** 2 + e * e / fp["log_wear_coefficient_standard_error"] ** 2
-assert q <= fp["joint_region"]["level"], (q, fp)
+q = (a / jr["scale_log_r_below" if a < 0 else "scale_log_r_above"]) ** 2 + (e / jr["scale_log_w"]) ** 2
+assert q <= jr["level"], (q, fp)
 outline = list(csv.DictReader(open(os.path.join(out, "fit", "footprint_region.csv"))))
 assert len(outline) > 10 and os.path.getsize(os.path.join(out, "fit", "footprint.png")) > 1000
 one = json.load(open(os.path.join(out, "one", "calibration.json")))["footprint"]

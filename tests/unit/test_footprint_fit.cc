@@ -73,12 +73,18 @@ TEST(FootprintFit, RecoversTheFootprintAndHoldsIt)
   EXPECT_NEAR(f.dof, blocks - 2, 0);
   EXPECT_NEAR(f.dlnw_dlnr, 0.9, 1e-6);
   EXPECT_NEAR(f.w / 3e-14, 1, 1e-6);
-  // W's interval: ln W^ +- t(0.975, 8) sqrt(0.9^2 sd_log_r^2 + w_se^2)
-  const double t = 2.306004135, sd = std::hypot(0.9 * f.sd_log_r, w_se);
-  EXPECT_NEAR(std::log(f.w_high / f.w), t * sd, 1e-9);
-  EXPECT_NEAR(std::log(f.w / f.w_low), t * sd, 1e-9);
-  // the joint region: its centre inside, its outline on the level (2 F(0.95; 2, 8) = 2 x 4.459)
-  EXPECT_NEAR(f.joint_level, 2 * 4.45897, 1e-4);
+  // W's interval: ln W^ +- sqrt((0.9 half_r)^2 + (t(0.975, 8) w_se)^2), half_r = t(0.975, 8) sd_log_r
+  // here (r's interval symmetric in ln r)
+  const double t = 2.306004135, half = std::hypot(0.9 * t * f.sd_log_r, t * w_se);
+  EXPECT_NEAR(std::log(f.w_high / f.w), half, 1e-9);
+  EXPECT_NEAR(std::log(f.w / f.w_low), half, 1e-9);
+  // the joint region: its centre inside, its outline on the level (chi-square(0.95; 2)), its
+  // extent along r 1.25 times r's interval (sqrt(5.991) / 1.96), along W given r 1.25 times
+  // W's interval given r (t(0.975, 8) w_se)
+  EXPECT_NEAR(f.joint_level, 5.991465, 1e-5);
+  EXPECT_NEAR(f.joint_sd_w * 1.959964, t * w_se, 1e-9);
+  EXPECT_NEAR(abrade::field::joint_distance(f, f.r_high, f.w * std::pow(f.r_high / f.r, 0.9)), 1.959964 * 1.959964, 1e-6);
+  EXPECT_NEAR(abrade::field::joint_distance(f, f.r, f.w * std::exp(t * w_se)), 1.959964 * 1.959964, 1e-6);
   EXPECT_EQ(abrade::field::joint_distance(f, f.r, f.w), 0);
   for (const auto &p : abrade::field::joint_region_outline(f, 12))
     EXPECT_NEAR(abrade::field::joint_distance(f, p[0], p[1]), f.joint_level, 1e-9);

@@ -246,7 +246,7 @@ namespace abrade::field
         j["scale_low"] = r.scale_low, j["scale_high"] = r.scale_high, j["rms_residual"] = r.rms_residual;
         j["scale_standard_error_fit"] = r.se_fit, j["scale_standard_error_replicates"] = r.se_replicates;
         j["blocks"] = r.blocks, j["block_size"] = block, j["degrees_of_freedom"] = r.dof;
-        j["design_effect"] = r.design_effect;
+        j["design_effect"] = r.design_effect, j["effective_blocks"] = r.effective_blocks;
         const auto ci          = correlation_interval(r);
         const bool apart       = k > 0 && ci.second < best_interval.first;
         j["correlation_low"]   = ci.first, j["correlation_high"] = ci.second;
@@ -334,7 +334,11 @@ namespace abrade::field
           j["wear_coefficient_low"] = f.w_low, j["wear_coefficient_high"] = f.w_high;
           j["log_wear_coefficient_standard_error"] = f.sd_log_w, j["wear_coefficient_degrees_of_freedom"] = f.w_dof;
           io::Json &region = j["joint_region"];
-          region["level"]  = f.joint_level;
+          region["level"]  = f.joint_level; // (r, W) inside when Q <= level (footprint_fit.h):
+          // Q = (a / s_a)^2 + ((b - dlnw_dlnr a) / s_w)^2, a = ln(r / r^), b = ln(W / W^), s_a by a's side
+          region["scale_log_r_below"] = std::log(f.r / f.r_low) / 1.959963985;
+          region["scale_log_r_above"] = std::log(f.r_high / f.r) / 1.959963985;
+          region["scale_log_w"]       = f.joint_sd_w;
           std::ofstream outline(out.file("footprint_region.csv"));
           outline << "smoothing_radius,wear_coefficient\n";
           auto points = joint_region_outline(f);

@@ -1,7 +1,6 @@
 // The wear footprint fitted with W (footprint_fit.h).
 #include <abrade/field/footprint_fit.h>
 
-#include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
 #include <algorithm>
@@ -29,7 +28,8 @@ namespace abrade::field
   FootprintFit fit_footprint(std::vector<FootprintCandidate> c, const Profile &profile)
   {
     FootprintFit f;
-    c.erase(std::remove_if(c.begin(), c.end(), [](const FootprintCandidate &k) { return !(k.r > 0 && k.w > 0); }),
+    c.erase(std::remove_if(c.begin(), c.end(),
+                           [](const FootprintCandidate &k) { return !(k.r > 0 && k.w > 0 && std::isfinite(k.rss)); }),
             c.end());
     if (!c.empty()) // not identifiable: W for the footprint assumed (the first run given)
       f.r = f.r_low = f.r_high = c.front().r, f.w = c.front().w;
@@ -158,19 +158,34 @@ namespace abrade::field
     f.sd_log_w          = at.relative_se;
     f.w_dof             = at.w_dof >= 1 ? std::min(at.w_dof, f.dof) : f.dof;
     const double t_w    = boost::math::quantile(boost::math::students_t_distribution<double>(f.w_dof), 0.975);
-    const double sd_ln_w = std::hypot(f.dlnw_dlnr * f.sd_log_r, f.sd_log_w);
-    f.w_low             = f.w * std::exp(-t_w * sd_ln_w);
-    f.w_high            = f.w * std::exp(t_w * sd_ln_w);
-    f.joint_level       = 2 * boost::math::quantile(boost::math::fisher_f_distribution<double>(2, f.w_dof), 0.95);
+    // (the two parts' half-widths, each at its own degrees of freedom, added in quadrature:
+    // r's along the ridge, W's given r)
+    const double below  = std::hypot(f.dlnw_dlnr * std::log(f.r / f.r_low), t_w * f.sd_log_w);
+    const double above  = std::hypot(f.dlnw_dlnr * std::log(f.r_high / f.r), t_w * f.sd_log_w);
+    f.w_low             = f.w * std::exp(-(f.dlnw_dlnr >= 0 ? below : above));
+    f.w_high            = f.w * std::exp(f.dlnw_dlnr >= 0 ? above : below);
+    // the joint region's axes: r's interval on each side and W's given r, each at its own
+    // degrees of freedom, scaled to the normal's 1.96: chi-square(2)'s 95 % level then
+    f.joint_sd_w        = f.sd_log_w * t_w / 1.959963985;
+    f.joint_level       = 5.991464547; // chi-square(0.95; 2)
     return f;
   }
+
+  namespace
+  {
+    /// The joint region's scale on ln r on the side of @p a (r's interval is not symmetric).
+    double joint_sd_r(const FootprintFit &f, double a)
+    {
+      return std::max(a < 0 ? std::log(f.r / f.r_low) : std::log(f.r_high / f.r), 1e-12) / 1.959963985;
+    }
+  } // namespace
 
   double joint_distance(const FootprintFit &f, double r, double w)
   {
     if (!f.identifiable || !(r > 0) || !(w > 0))
       return std::numeric_limits<double>::infinity();
     const double a = std::log(r / f.r), b = std::log(w / f.w);
-    const double sr = std::max(f.sd_log_r, 1e-12), sw = std::max(f.sd_log_w, 1e-12);
+    const double sr = joint_sd_r(f, a), sw = std::max(f.joint_sd_w, 1e-12);
     const double e  = b - f.dlnw_dlnr * a;
     return a * a / (sr * sr) + e * e / (sw * sw);
   }
@@ -184,7 +199,7 @@ namespace abrade::field
     for (int k = 0; k < points; ++k)
       {
         const double angle = 2 * M_PI * k / points;
-        const double a = q * f.sd_log_r * std::cos(angle), e = q * f.sd_log_w * std::sin(angle);
+        const double a = q * joint_sd_r(f, std::cos(angle)) * std::cos(angle), e = q * f.joint_sd_w * std::sin(angle);
         outline.push_back({f.r * std::exp(a), f.w * std::exp(f.dlnw_dlnr * a + e)});
       }
     return outline;
@@ -212,19 +227,17 @@ namespace abrade::field
     std::sort(by_r.begin(), by_r.end(), [&](auto a, auto b) { return runs[a].smoothing_radius < runs[b].smoothing_radius; });
     // the profile at r: a run interpolated between the three candidates nearest (the nearest
     // first: its W0 and beds), its W by least squares near the nearest's
+    // the profile at r: a run interpolated between the candidates (run_between: the nearest is
+    // its reference, its W0 and beds), its W by least squares near the nearest's
+    std::vector<const RunSeries *> with_footprint;
+    for (const std::size_t i : by_r)
+      with_footprint.push_back(&runs[i]);
     auto profile = [&](double r, bool full, bool in_log_r) {
-      std::size_t k = 0;
-      while (k + 1 < by_r.size() && runs[by_r[k + 1]].smoothing_radius <= r)
-        ++k;
-      if (k + 1 < by_r.size() && std::log(r / runs[by_r[k]].smoothing_radius) > std::log(runs[by_r[k + 1]].smoothing_radius / r))
-        ++k; // (the nearest on ln r)
-      const std::size_t               mid   = std::clamp<std::size_t>(k, 1, by_r.size() - 2);
-      std::vector<const RunSeries *> three = {&runs[by_r[k]]};
-      for (std::size_t j = mid - 1; j <= mid + 1; ++j)
-        if (j != k)
-          three.push_back(&runs[by_r[j]]);
-      const std::size_t first = by_r[k];
-      const RunSeries between = run_between(three, r, in_log_r);
+      std::size_t first = by_r.front();
+      for (const std::size_t i : by_r)
+        if (std::abs(std::log(runs[i].smoothing_radius / r)) < std::abs(std::log(runs[first].smoothing_radius / r)))
+          first = i;
+      const RunSeries between = run_between(with_footprint, r, in_log_r);
       if (full)
         return candidate(calibrate(between, ms, block), 0.0);
       const double guess = results[first].scale; // (between is in the nearest run's W0)

@@ -25,11 +25,88 @@ namespace abrade::coupling::lifetime
 
   namespace
   {
+    /// The heights the rate's variables zlow and zedge stand for on the knife's current shape.
+    /// zlow: the lowest wearable point now (a band on the edge that follows the tip up). zedge:
+    /// the lowest wearable point within a longest triangle edge of the point along x (a band on
+    /// the edge line that follows each part of the edge up as it recedes there): the lowest
+    /// point of the surface's exact cuts with the planes x = const (each wearable triangle's
+    /// segment in the plane) at stations 1/400 of the wearable length apart, the least of those
+    /// within that distance; a point takes its nearest station's. The window reaches past the
+    /// knife's rounded ends: from the cut alone the end cap is its own lowest point, its whole
+    /// height wears, and the ends run away along x. Where nothing is cut (a part of no extent in
+    /// x) zedge is zlow.
+    class EdgeHeights
+    {
+    public:
+      static constexpr std::size_t stations = 400;
+
+      EdgeHeights(const fem::SolidSurface &surface, const std::vector<double> &area)
+      {
+        for (std::size_t v = 0; v < area.size(); ++v)
+          if (area[v] > 0)
+            {
+              zlow = std::min(zlow, surface.vertices[v][2]);
+              x0 = std::min(x0, surface.vertices[v][0]), x1 = std::max(x1, surface.vertices[v][0]);
+            }
+        spacing = x1 > x0 ? (x1 - x0) / double(stations - 1) : 1.0;
+        std::vector<double> lowest(stations, none);
+        double              longest = 0;
+        for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+          {
+            if (surface.boundary_id[t] != fem::KnifeGeometry::wearable_boundary)
+              continue;
+            const auto &tri = surface.triangles[t];
+            const auto &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]], &c = surface.vertices[tri[2]];
+            longest = std::max({longest, a.distance(b), b.distance(c), c.distance(a)});
+            const double lo = std::min({a[0], b[0], c[0]}), hi = std::max({a[0], b[0], c[0]});
+            for (long k = std::max(0L, long(std::ceil((lo - x0) / spacing)));
+                 x1 > x0 && k < long(stations) && x0 + double(k) * spacing <= hi; ++k)
+              {
+                const double x = x0 + double(k) * spacing;
+                double       z = none;
+                for (const auto &[p, q] : {std::pair(&a, &b), std::pair(&b, &c), std::pair(&c, &a)})
+                  {
+                    const double u = (*p)[0], w = (*q)[0];
+                    if (u == x)
+                      z = std::min(z, (*p)[2]);
+                    if ((u - x) * (w - x) < 0)
+                      z = std::min(z, (*p)[2] + ((*q)[2] - (*p)[2]) * (x - u) / (w - u));
+                  }
+                lowest[std::size_t(k)] = std::min(lowest[std::size_t(k)], z);
+              }
+          }
+        // the least within a longest edge of each station
+        window.assign(stations, none);
+        const long reach = long(std::ceil(longest / spacing));
+        for (long k = 0; k < long(stations); ++k)
+          for (long j = std::max(0L, k - reach); j <= std::min(long(stations) - 1, k + reach); ++j)
+            if (std::abs(double(j - k)) * spacing <= longest * (1 + 1e-12))
+              window[std::size_t(k)] = std::min(window[std::size_t(k)], lowest[std::size_t(j)]);
+      }
+
+      /// The station nearest @p x.
+      std::size_t station(double x) const
+      {
+        return std::size_t(std::clamp(std::round((x - x0) / spacing), 0.0, double(stations - 1)));
+      }
+
+      /// zedge at station @p k.
+      double zedge(std::size_t k) const { return window[k] < none ? window[k] : zlow; }
+
+      double zlow = std::numeric_limits<double>::max();
+
+    private:
+      static constexpr double none = std::numeric_limits<double>::max();
+      double                  x0 = std::numeric_limits<double>::max(), x1 = -x0, spacing = 1;
+      std::vector<double>     window;
+    };
+
     class AnalyticWearSource : public WearSource
     {
     public:
       AnalyticWearSource(const std::string &expression, double tonnes_per_cycle, double scatter, bool as_volume)
-        : expression(expression), tonnes_per_cycle(tonnes_per_cycle), scatter(scatter), as_volume(as_volume)
+        : expression(expression), tonnes_per_cycle(tonnes_per_cycle), scatter(scatter), as_volume(as_volume),
+          uses_zedge(expression.find("zedge") != std::string::npos)
       {
         try
           {
@@ -47,81 +124,25 @@ namespace abrade::coupling::lifetime
       {
         CycleWear w;
         w.tonnes_per_cycle = tonnes_per_cycle;
-        const auto area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
-        // zlow: the lowest wearable point now (a band on the edge that follows the tip up);
-        // zedge: the lowest wearable point within a longest triangle edge of the point along x
-        // (a band on the edge line that follows each part of the edge up as it recedes there):
-        // the lowest point of the surface's exact cuts with the planes x = const (each wearable
-        // triangle's segment in the plane) at stations 1/400 of the wearable length apart, the
-        // least of those within that distance; a point takes its nearest station's. The window
-        // reaches past the knife's rounded ends: from the cut alone the end cap is its own
-        // lowest point, its whole height wears, and the ends run away along x. Where nothing is
-        // cut (a part of no extent in x) zedge is zlow.
-        constexpr std::size_t stations = 400;
-        double                zlow = std::numeric_limits<double>::max();
-        double                x0 = std::numeric_limits<double>::max(), x1 = -x0;
-        for (std::size_t v = 0; v < area.size(); ++v)
-          if (area[v] > 0)
-            {
-              zlow = std::min(zlow, surface.vertices[v][2]);
-              x0 = std::min(x0, surface.vertices[v][0]), x1 = std::max(x1, surface.vertices[v][0]);
-            }
-        const double        spacing = x1 > x0 ? (x1 - x0) / double(stations - 1) : 1.0;
-        std::vector<double> lowest(stations, std::numeric_limits<double>::max());
-        auto                station = [&](double x) {
-          return std::size_t(std::clamp(std::round((x - x0) / spacing), 0.0, double(stations - 1)));
-        };
-        for (std::size_t t = 0; t < surface.triangles.size() && x1 > x0; ++t)
-          {
-            if (surface.boundary_id[t] != fem::KnifeGeometry::wearable_boundary)
-              continue;
-            const auto &tri = surface.triangles[t];
-            const auto &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]], &c = surface.vertices[tri[2]];
-            const double lo = std::min({a[0], b[0], c[0]}), hi = std::max({a[0], b[0], c[0]});
-            for (long k = std::max(0L, long(std::ceil((lo - x0) / spacing)));
-                 k < long(stations) && x0 + double(k) * spacing <= hi; ++k)
-              {
-                const double x = x0 + double(k) * spacing;
-                double       z = std::numeric_limits<double>::max();
-                for (const auto &[p, q] : {std::pair(&a, &b), std::pair(&b, &c), std::pair(&c, &a)})
-                  {
-                    const double u = (*p)[0], w = (*q)[0];
-                    if (u == x)
-                      z = std::min(z, (*p)[2]);
-                    if ((u - x) * (w - x) < 0)
-                      z = std::min(z, (*p)[2] + ((*q)[2] - (*p)[2]) * (x - u) / (w - u));
-                  }
-                lowest[std::size_t(k)] = std::min(lowest[std::size_t(k)], z);
-              }
-          }
-        double longest = 0;
-        for (std::size_t t = 0; t < surface.triangles.size(); ++t)
-          if (surface.boundary_id[t] == fem::KnifeGeometry::wearable_boundary)
-            for (int e = 0; e < 3; ++e)
-              longest = std::max(longest, surface.vertices[surface.triangles[t][e]].distance(
-                                            surface.vertices[surface.triangles[t][(e + 1) % 3]]));
-        std::vector<double> window(stations, std::numeric_limits<double>::max());
-        const long          reach = long(std::ceil(longest / spacing));
-        for (long k = 0; k < long(stations); ++k)
-          for (long j = std::max(0L, k - reach); j <= std::min(long(stations) - 1, k + reach); ++j)
-            if (std::abs(double(j - k)) * spacing <= longest * (1 + 1e-12))
-              window[std::size_t(k)] = std::min(window[std::size_t(k)], lowest[std::size_t(j)]);
-        lowest = std::move(window);
+        const auto        area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
+        const EdgeHeights heights(surface, area);
         std::vector<double> volume(surface.vertices.size(), 0.0);
-        // the points by station: one parse of the rate per station (zedge a constant of it)
+        // the points by station: one parse of the rate per station (zedge a constant of it), or
+        // one for all where the rate does not use zedge
         std::vector<std::size_t> order;
         for (std::size_t v = 0; v < area.size(); ++v)
           if (area[v] > 0)
             order.push_back(v);
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
-          return station(surface.vertices[p][0]) < station(surface.vertices[q][0]);
-        });
-        std::size_t parsed = stations;
+        if (uses_zedge)
+          std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
+            return heights.station(surface.vertices[p][0]) < heights.station(surface.vertices[q][0]);
+          });
+        std::size_t parsed = EdgeHeights::stations;
         for (const std::size_t v : order)
           {
-            if (const std::size_t k = station(surface.vertices[v][0]); k != parsed)
+            if (const std::size_t k = uses_zedge ? heights.station(surface.vertices[v][0]) : 0; k != parsed)
               {
-                parse(zlow, lowest[k] < std::numeric_limits<double>::max() ? lowest[k] : zlow);
+                parse(heights.zlow, heights.zedge(k));
                 rate.set_time(tonnes);
                 parsed = k;
               }
@@ -162,6 +183,7 @@ namespace abrade::coupling::lifetime
       double                    tonnes_per_cycle;
       double                    scatter; // relative, per bed
       bool                      as_volume;
+      bool                      uses_zedge; // (else one parse for all points)
     };
   } // namespace
 

@@ -222,7 +222,8 @@ namespace abrade::dem
           ok = fits(p, r);
         if (!ok)
           throw InputError("particle generation",
-                           "could place only " + std::to_string(k) + " of " + std::to_string(wanted) +
+                           "bed seed " + std::to_string(f.seed) + ": could place only " + std::to_string(k) + " of " +
+                             std::to_string(wanted) +
                              " particles without overlap (random placement with a sweep of the free space "
                              "saturates near a solid fraction of 0.35); reduce Count or Solid fraction, or "
                              "enlarge the region");

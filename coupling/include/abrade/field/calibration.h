@@ -19,8 +19,9 @@
 //    measurements are grouped in spatial blocks (cubes of Block size, default 50 mm) and the
 //    variance of s is the cluster-robust one in its jackknife form (CR3), var = (G-1)/G sum_g
 //    (S_g / (sum_i J_i^2 - Q_g))^2, S_g = sum_{i in g} J_i e_i, Q_g = sum_{i in g} J_i^2, with
-//    J_i = d depth_i / d s, over the G blocks that carry information (J != 0), on G - 1 degrees
-//    of freedom (treating thousands of scan points as independent made the interval far too narrow);
+//    J_i = d depth_i / d s, over the G blocks that carry information (J != 0), on G_eff
+//    degrees of freedom, G_eff = (sum_g Q_g)^2 / sum_g Q_g^2 the blocks the information is spread
+//    over (treating thousands of scan points as independent made the interval far too narrow);
 //  - the DEM's replicate spread: the run's wear rate is the mean over its beds (Lifetime/Seeds),
 //    whose relative standard error s_v / sqrt(n) (s_v: the beds' relative spread of the worn
 //    volume, from the run's summary.json) carries to s in proportion; n - 1 degrees of freedom.
@@ -73,9 +74,14 @@ namespace abrade::field
   RunSeries read_run(const std::string &directory, const std::vector<Measurement> &measurements);
 
   /// A run at footprint @p r between candidate runs at other footprints (their Smoothing radius;
-  /// two or three): each output's depth the Lagrange interpolation in ln r of theirs at the same
-  /// W (a run made with W0 at T tonnes is one made with W0' at T W0 / W0'), on the union of their
-  /// outputs (with @p in_log_r false: in r). Its W0, beds and spread are the first run's.
+  /// runs without one are left out): each output's depth interpolated in ln r (with @p in_log_r
+  /// false: in r) from theirs at the same W (a run made with W0 at T tonnes is one made with
+  /// W0' at T W0 / W0'), on the union of their outputs. Within [r_j, r_j+1] the blend, linear
+  /// from one end to the other, of the parabolas through (j-1, j, j+1) and (j, j+1, j+2):
+  /// exact at the candidates and smooth between (a parabola through the three nearest alone
+  /// jumps where they change, and the fit's interval ended at the jump: referee helper-13);
+  /// one parabola in the end intervals, a line between two runs. Its W0, beds and spread are
+  /// the nearest run's.
   RunSeries run_between(const std::vector<const RunSeries *> &runs, double r, bool in_log_r = true);
 
   struct CalibrationResult
@@ -84,6 +90,9 @@ namespace abrade::field
     double      scale = 1, scale_low = 1, scale_high = 1; ///< s = W / W0 and its 95 % interval
     double      se_fit = 0, se_replicates = 0;            ///< the standard error's two parts (of s)
     long        blocks = 0;                               ///< spatial blocks of the measurements
+    /// the blocks the fit's information is spread over, (sum_g Q_g)^2 / sum_g Q_g^2 (Q_g: the
+    /// block's sum of J^2; at most blocks): its degrees of freedom
+    double      effective_blocks = 0;
     /// the fit's variance over what independent measurements would give it (the cluster-robust
     /// variance of s over RSS / (n - 1) / sum J^2): how many measurements make one independent
     /// one, as the residuals' correlation says (1: independent; a block's size: all alike)

@@ -5,12 +5,11 @@
 // constant worn volume), so one depth cannot tell them apart; the width of a measured worn
 // profile can. Each candidate run (the same case at footprint r_i) is fitted its W_i
 // (calibration.h). The profile P(r) = min_W RSS(r, W), the residual sum of squares at the best
-// W for footprint r, is known between the candidates too: a run at r is interpolated from the
-// three candidates around it (run_between: each depth quadratic in ln r at the same W; a
-// footprint changes the predicted depths smoothly, their residuals' sum of squares much less
-// so: a parabola through the candidates' RSS, the first design, put r^ 4 % off and made the
-// interval 4x too wide). r^ minimises P between the best candidate's neighbours, and its 95 %
-// interval is the profile likelihood's
+// W for footprint r, is known between the candidates too: a run at r is interpolated from them
+// (run_between: each depth at the same W, smooth in ln r and exact at the candidates; a
+// parabola through the candidates' RSS, the first design, put r^ 4 % off and made the interval
+// 4x too wide). r^ minimises P between the best candidate's neighbours, and its 95 % interval
+// is the profile likelihood's
 //
 //   {r : P(r) <= P(r^) (1 + D F(1, nu) / (n - 2))}
 //
@@ -18,16 +17,18 @@
 // design effect of the fit at r^: the cluster-robust variance of its W over the one n
 // independent measurements would give, clamped to [1, n / nu], i.e. how many neighbouring scan
 // points make one independent measurement; with D = n / nu the level is 1 + F / nu, as if the
-// blocks were the measurements). Its ends are found between the candidates where P crosses the
-// level; where it does not within the candidates on either side (a single depth, or no width
-// information: the residuals do not rise away from r^) the fit is refused as not identifiable,
-// and so when fewer than three footprints are given, the best is the smallest or largest, or
-// the measurements fall into too few blocks: W is then given for the footprint assumed, the
-// first run's. W^ and its relative standard error (the fit's and the beds') are the fit's at
-// r^; d ln W / d ln r along the ridge W(r) from the profile at r^ e^(+-0.05), and the life's
+// blocks were the measurements), its ends where P crosses the level, widened by half the
+// distance between the minima with the candidates interpolated in ln r and in r (the
+// interpolation's error). Where P does not cross the level within the candidates on either side
+// (a single depth, or no width information) the fit is refused as not identifiable, and so
+// when fewer than three footprints are given, the measurements fall into too few blocks or the
+// best is the smallest or largest: W is then given for the footprint assumed, the first run's.
+// W^ and its relative standard error (the fit's and the beds') are the fit's at r^;
+// d ln W / d ln r along the ridge W(r) from the profile at r^ e^(+-0.05), and the life's
 // relative change along it from a parabola through the three candidates' ln (L_i / s_i) (a
-// candidate's life at its fitted W: L_i over its scale, the life going as 1 / W). Checked by
-// simulation in test_footprint_coverage: 95 % means 95 %.
+// candidate's life at its fitted W: L_i over its scale, the life going as 1 / W). Coverage
+// checked by simulation (test_footprint_coverage, docs/field.md): 95-99 % with independent
+// noise, 85-92 % with noise correlated over a few points.
 #include <abrade/field/calibration.h>
 
 #include <array>
@@ -71,11 +72,12 @@ namespace abrade::field
     double      dof = 0;             ///< nu
     /// W's uncertainty: sd_log_w at r^ (the relative standard error of the fit there: W given
     /// r), and W's own 95 % interval w_low ... w_high with r's uncertainty in it (along the
-    /// ridge: ln W = ln W^ + dlnw_dlnr ln(r / r^) + e, sd(ln W) = sqrt(slope^2 sd_log_r^2 + sd_log_w^2))
+    /// ridge ln W = ln W^ + dlnw_dlnr ln(r / r^) + e: the half-widths of r's interval times the
+    /// slope and of W's given r, t(w_dof) sd_log_w, in quadrature)
     double      sd_log_w = 0, w_dof = 0, w_low = 0, w_high = 0;
-    /// the joint 95 % region's level: (r, W) inside when joint_distance(r, W) <= joint_level
-    /// (2 F(0.95; 2, min(nu, w_dof)))
-    double      joint_level = 0;
+    /// the joint 95 % region: (r, W) inside when joint_distance(r, W) <= joint_level
+    /// (chi-square(0.95; 2) = 5.99), its W axis sd_log_w t(w_dof) / 1.96
+    double      joint_level = 0, joint_sd_w = 0;
   };
 
   /// Fits r and W from @p candidates (any order) and their @p profile between them.
@@ -89,10 +91,15 @@ namespace abrade::field
                              const std::vector<double> &lives, const std::vector<Measurement> &measurements,
                              double block);
 
-  /// The joint region of r and W (docs/field.md "W and the footprint together"): an ellipse in
-  /// (ln r, ln W) with the ridge as its axis, Q = a^2 / sd_log_r^2 + (b - slope a)^2 / sd_log_w^2,
-  /// a = ln(r / r^), b = ln(W / W^); (r, W) lies in the 95 % region when Q <= joint_level. Its
-  /// projections are r's interval (widened to the profile's level) and W's.
+  /// The joint region of r and W (docs/field.md "W and the footprint together"): about the
+  /// ridge in (ln r, ln W), Q = (a / s_a)^2 + ((b - slope a) / s_e)^2, a = ln(r / r^),
+  /// b = ln(W / W^), s_a the half-width of r's interval on a's side and s_e that of W's given
+  /// r, each over 1.96 (each axis at its own degrees of freedom: r's the blocks', W's the beds'
+  /// too); (r, W) lies in the 95 % region when Q <= chi-square(0.95; 2) = 5.99. It reaches
+  /// 1.25 times each interval along its axis (sqrt(5.99) / 1.96): a joint region is wider than
+  /// each one's interval. ln r and ln W given r are taken as independent: exact for a linear
+  /// model and independent noise; with correlated noise they were correlated by -0.56 (referee
+  /// helper-13), and the region covered 79 % (test_footprint_coverage).
   double joint_distance(const FootprintFit &fit, double r, double w);
 
   /// @p points on the joint region's boundary, as (r, W) pairs (an identifiable fit only).
