@@ -95,18 +95,19 @@ print("replay: same footprint byte for byte; at 15 mm update 1 = the DEM's, life
                                            d["predicted_tonnes_high"]))
 PY
 
-# a footprint fitted on replays alone is warned about (their own error is not in its interval),
-# and not where a DEM candidate lies near the fit: the scan is the DEM run's at 15 mm; the
-# candidates at 10, 15, 27.5 and 55 mm all replays of the 27.5 mm run, then with the DEM runs
-# at 15 and 27.5 mm in place of their replays (which the fit then holds: 15 mm)
+# a footprint fitted on replays is warned about (their own error is not in its interval), and
+# not where none lies within 1.25^2 of the fit: the scan is the DEM run's at 15 mm; the
+# candidates at 10, 15, 27.5 and 55 mm all replays of the 27.5 mm run, then the DEM runs at 15
+# and 27.5 mm with replays at 8 and 55 mm (the fit then holds 15 mm)
 replay replay_r10 --set "Lifetime/Smoothing radius=0.01"
+replay replay_r8 --set "Lifetime/Smoothing radius=0.008"
 replay replay_r55 --set "Lifetime/Smoothing radius=0.055"
 t=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/dem_r15/trajectory.csv")
 "$abrade" compare --predicted "$out/dem_r15/knife/knife_0000$updates.stl" --scan "$out/dem_r15/knife/knife_0000$updates.stl" \
   --reference "$out/dem_r15/knife/knife_00000.stl" --tonnes "$t" --no-registration --output "$out/scan" > /dev/null 2>&1
-for set in replays:replay_r15:same dem:dem_r15:stored; do
-  IFS=: read -r name r15 r27 <<< "$set"
-  "$abrade" calibrate --run "$out/$r27" --run "$out/replay_r10" --run "$out/$r15" --run "$out/replay_r55" \
+for set in replays:replay_r15:same:replay_r10 dem:dem_r15:stored:replay_r8; do
+  IFS=: read -r name r15 r27 small <<< "$set"
+  "$abrade" calibrate --run "$out/$r27" --run "$out/$small" --run "$out/$r15" --run "$out/replay_r55" \
     --measurements "$out/scan/measured_depths.csv" --output "$out/fit_$name" > "$out/fit_$name.log" 2>&1
 done
 python3 - "$out" <<'PY'
@@ -114,11 +115,11 @@ import json, os, sys
 out = sys.argv[1]
 fit = {k: json.load(open(os.path.join(out, "fit_" + k, "calibration.json")))["footprint"] for k in ("replays", "dem")}
 assert fit["replays"]["identifiable"] and fit["dem"]["identifiable"], fit
-assert any("fitted on replayed candidates" in w for w in fit["replays"].get("warnings", [])), fit["replays"]
+assert any("rests on replayed candidates" in w for w in fit["replays"].get("warnings", [])), fit["replays"]
 assert not fit["dem"].get("warnings"), fit["dem"]
 assert fit["dem"]["smoothing_radius_low"] < 0.015 < fit["dem"]["smoothing_radius_high"], fit["dem"]
 print("replay: a footprint fitted on replays alone (%.3g mm; the truth 15 mm) warned about; with the DEM runs at 15 "
-      "and 27.5 mm among them (%.3g mm, %.3g ... %.3g) not" % (1e3 * fit["replays"]["smoothing_radius"], 1e3 * fit["dem"]["smoothing_radius"],
+      "and 27.5 mm and replays beyond 1.25^2 (%.3g mm, %.3g ... %.3g) not" % (1e3 * fit["replays"]["smoothing_radius"], 1e3 * fit["dem"]["smoothing_radius"],
                                       1e3 * fit["dem"]["smoothing_radius_low"], 1e3 * fit["dem"]["smoothing_radius_high"]))
 PY
 

@@ -300,27 +300,26 @@ namespace abrade::field
       if (!f.identifiable)
         j["reason"] = f.reason;
       // a fit on replays: their own error (the geometry feedback they leave out) is not in the
-      // interval, and grows with the distance from the DEM run they replay
+      // interval; it grows with the distance from the DEM run they replay, and those within
+      // 1.25^2 of the fit enter its interpolation
       if (f.identifiable)
         {
-          double nearest = 0; // the DEM candidate nearest the fit, on ln r
-          bool   replays = false;
+          double nearest = 0; // the replay nearest the fit, on ln r
           for (std::size_t i = 0; i < runs.size(); ++i)
-            if (io::summary_string(runs[i] + "/summary.json", "wear_source").value_or("") == "replay")
-              replays = true;
-            else if (series[i].smoothing_radius > 0 &&
-                     (nearest == 0 || std::abs(std::log(series[i].smoothing_radius / f.r)) < std::abs(std::log(nearest / f.r))))
+            if (io::summary_string(runs[i] + "/summary.json", "wear_source").value_or("") == "replay" &&
+                series[i].smoothing_radius > 0 &&
+                (nearest == 0 || std::abs(std::log(series[i].smoothing_radius / f.r)) < std::abs(std::log(nearest / f.r))))
               nearest = series[i].smoothing_radius;
-          if (replays && (nearest == 0 || std::abs(std::log(nearest / f.r)) > std::log(1.25)))
+          if (nearest > 0 && std::abs(std::log(nearest / f.r)) < 2 * std::log(1.25) * (1 + 1e-9))
             {
               const std::string text =
-                "the footprint was fitted on replayed candidates (Lifetime/Wear source = replay) " +
-                (nearest > 0 ? "whose DEM run is at " + io::format_number(1000 * nearest, 3) + " mm" : std::string("only")) +
-                ", more than 1.25x from the fit (" + io::format_number(1000 * f.r, 3) +
+                "the footprint's fit (" + io::format_number(1000 * f.r, 3) + " mm) rests on replayed candidates "
+                "(Lifetime/Wear source = replay; one at " + io::format_number(1000 * nearest, 3) +
                 " mm): a replay leaves out how the DEM's wear changes with the shape, and that error is not in the "
-                "interval (on the knife-bed the footprint came out 12-17 % large); for a footprint to book, run a DEM "
-                "candidate at " + io::format_number(f.r, 3) + " m, replay it around, and calibrate again "
-                "(docs/field.md, the second round)";
+                "interval (on the knife-bed the fit came out 13-20 % large on replays of one DEM run, 2-5 % with "
+                "DEM candidates at it and 1.25x either side and replays beyond); for a footprint to book, bracket "
+                "the fit with DEM candidates (1.25^-2, 1.25^-1, 1 and 1.25 times " + io::format_number(f.r, 3) +
+                " m) and calibrate again (docs/field.md, the worked example)";
               j["warnings"].push_back(text);
               std::cerr << "warning: footprint: " << text << "\n";
               md << "\nWarning: " << text << "\n";
