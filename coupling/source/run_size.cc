@@ -72,9 +72,15 @@ namespace abrade::coupling
                     g(cores) + " cores. Check Time step, the particles' Density and Shear modulus (the Rayleigh "
                     "time step), Radius and Count; or raise Maximum particle-steps to run it anyway");
       }
-    // a bed that cannot be filled is said before anything is meshed or settled: random
-    // placement with a sweep of the free space saturates near a solid fraction of 0.35 in an
-    // empty box (generation.cc), less where walls and the part take room
+    const double available = available_memory();
+    if (available > 0 && r.bytes > available)
+      file.fail({"Particles", "Generation"}, "Count",
+                "about " + g(r.particles) + " particles need about " + g(r.bytes / 1e9) + " GB, this machine has " +
+                  g(available / 1e9) + " GB available");
+    // a bed that cannot be filled is said before anything is meshed or settled (after the
+    // memory: a run too large to hold is said as such): random placement with a sweep of the
+    // free space saturates near a solid fraction of 0.35 in an empty box (generation.cc), less
+    // where walls and the part take room
     for (const dem::FillRegion *fill : {&c.fill, c.fine_fill ? &*c.fine_fill : nullptr})
       if (fill)
         {
@@ -90,10 +96,5 @@ namespace abrade::coupling
                         ": random placement saturates near 0.35 in an empty box (less where walls and the part take "
                         "room); lower Count (or Solid fraction) or enlarge the Region");
         }
-    const double available = available_memory();
-    if (available > 0 && r.bytes > available)
-      file.fail({"Particles", "Generation"}, "Count",
-                "about " + g(r.particles) + " particles need about " + g(r.bytes / 1e9) + " GB, this machine has " +
-                  g(available / 1e9) + " GB available");
   }
 } // namespace abrade::coupling
