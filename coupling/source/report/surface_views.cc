@@ -22,6 +22,24 @@ namespace abrade::report
 {
   namespace
   {
+    /// @p path made absolute (the picture named inside the run's directory, also for a tracer
+    /// of the file calls that does not follow gnuplot's working directory).
+    std::string absolute_path(const std::string &path)
+    {
+      std::error_code ec;
+      const auto      p = std::filesystem::absolute(path, ec);
+      return ec ? path : p.string();
+    }
+
+    /// @p text inside a single-quoted gnuplot string (a quote doubled).
+    std::string gnuplot_quoted(const std::string &text)
+    {
+      std::string out;
+      for (const char c : text)
+        out += c == '\'' ? std::string("''") : std::string(1, c);
+      return out;
+    }
+
     /// @p text without the quotes that would end a gnuplot string.
     std::string quote_free(std::string text)
     {
@@ -159,7 +177,7 @@ namespace abrade::report
     if (unit != 1.0 && label.size() > 4 && label.compare(label.size() - 4, 4, "[mm]") == 0)
       label = label.substr(0, label.size() - 4) + "[um]";
     gp << "set terminal pngcairo size " << std::max(700, 400 * columns) << ",860 font 'DejaVu Sans,10'\n"
-       << "set output '" << png << "'\nset termoption noenhanced\n"
+       << "set output '" << gnuplot_quoted(absolute_path(directory + "/" + png)) << "'\nset termoption noenhanced\n"
        << "set multiplot layout 2," << columns << " rowsfirst\n"
        << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
        << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n";

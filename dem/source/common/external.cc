@@ -23,8 +23,12 @@ namespace abrade::io
   {
     int gnuplot_status(const std::string &directory, const std::string &script)
     {
+      // (the log by its absolute path: what the run writes is named inside its directory, also
+      // for a tracer of the file calls that does not follow the shell's cd)
+      std::error_code   ec;
+      const std::string log = (std::filesystem::absolute(directory, ec) / (script + ".log")).string();
       const std::string command = "cd " + shell_quote(directory) + " && gnuplot " + shell_quote(script) + " > " +
-                                  shell_quote(script + ".log") + " 2>&1";
+                                  shell_quote(log) + " 2>&1";
       return std::system(command.c_str());
     }
   } // namespace
