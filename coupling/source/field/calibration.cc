@@ -8,6 +8,7 @@
 #include <abrade/common/json.h>
 #include <abrade/common/vtk_input.h>
 #include <abrade/field/calibration.h>
+#include <abrade/field/golden_section.h>
 
 #include <boost/math/distributions/students_t.hpp>
 
@@ -423,17 +424,9 @@ namespace abrade::field
     for (int k = 0; k <= steps; ++k)
       if (const double e = sum_of_squares(run, ms, low * std::exp(k * step)); e < least)
         least = e, best = k;
-    double       a = std::log(low) + std::max(0, best - 1) * step, b = std::log(low) + std::min(steps, best + 1) * step;
-    const double g = (std::sqrt(5.0) - 1) / 2;
-    for (int it = 0; it < 100 && b - a > 1e-13; ++it)
-      {
-        const double c = b - g * (b - a), d = a + g * (b - a);
-        if (sum_of_squares(run, ms, std::exp(c)) < sum_of_squares(run, ms, std::exp(d)))
-          b = d;
-        else
-          a = c;
-      }
-    const double s = std::exp(0.5 * (a + b));
+    const double s = std::exp(golden_section_minimum([&](double x) { return sum_of_squares(run, ms, std::exp(x)); },
+                                                     std::log(low) + std::max(0, best - 1) * step,
+                                                     std::log(low) + std::min(steps, best + 1) * step, 1e-13, 100));
     return {s, sum_of_squares(run, ms, s)};
   }
 

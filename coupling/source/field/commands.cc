@@ -11,6 +11,7 @@
 #include <abrade/field/compare.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <cmath>
@@ -326,7 +327,8 @@ namespace abrade::field
             }
         }
       md << "\n## W and the footprint together\n\n";
-      char line[900];
+      char                               line[900];
+      std::vector<std::array<double, 2>> outline_points; // the joint region's (identifiable only)
       if (f.identifiable)
         {
           // W's own interval (r's uncertainty in it) and the joint region (footprint_fit.h)
@@ -335,14 +337,14 @@ namespace abrade::field
           io::Json &region = j["joint_region"];
           region["level"]  = f.joint_level; // (r, W) inside when Q <= level (footprint_fit.h):
           // Q = (a / s_a)^2 + ((b - dlnw_dlnr a) / s_w)^2, a = ln(r / r^), b = ln(W / W^), s_a by a's side
-          region["scale_log_r_below"] = std::log(f.r / f.r_low) / 1.959963985;
+          region["scale_log_r_below"] = std::log(f.r / f.r_low) / 1.959963985;  // (the normal's 95 % quantile)
           region["scale_log_r_above"] = std::log(f.r_high / f.r) / 1.959963985;
           region["scale_log_w"]       = f.joint_sd_w;
+          outline_points = joint_region_outline(f);
+          outline_points.push_back(outline_points.front()); // (a closed outline)
           std::ofstream outline(out.file("footprint_region.csv"));
           outline << "smoothing_radius,wear_coefficient\n";
-          auto points = joint_region_outline(f);
-          points.push_back(points.front()); // (a closed outline)
-          for (const auto &p : points)
+          for (const auto &p : outline_points)
             {
               region["outline"].push_back(io::Json(std::vector<double>{p[0], p[1]}));
               outline << io::format_number(p[0], 8) << ',' << io::format_number(p[1], 8) << '\n';
@@ -368,7 +370,7 @@ namespace abrade::field
           std::ofstream table(out.file("footprint_candidates.csv"));
           table << "run,smoothing_radius,wear_coefficient,rss\n";
           double w_min = f.w, w_max = f.w, r_min = f.r, r_max = f.r;
-          for (const auto &p : joint_region_outline(f))
+          for (const auto &p : outline_points)
             r_min = std::min(r_min, p[0]), r_max = std::max(r_max, p[0]), w_min = std::min(w_min, p[1]),
             w_max = std::max(w_max, p[1]);
           for (const std::size_t i : by_r)

@@ -1,5 +1,6 @@
 // The wear footprint fitted with W (footprint_fit.h).
 #include <abrade/field/footprint_fit.h>
+#include <abrade/field/golden_section.h>
 
 #include <boost/math/distributions/students_t.hpp>
 
@@ -13,6 +14,8 @@ namespace abrade::field
 {
   namespace
   {
+    constexpr double z95 = 1.959963985; ///< the normal's two-sided 95 % quantile
+
     /// The parabola y = a x^2 + b x + c through three points.
     std::array<double, 3> parabola(const std::array<double, 3> &x, const std::array<double, 3> &y)
     {
@@ -79,16 +82,8 @@ namespace abrade::field
     // differ by the interpolation's error, and half their distance widens the interval
     auto rss     = [&](double x) { return profile(std::exp(x), false, true).rss; };
     auto minimum = [&](bool in_log_r) {
-      double       a = std::log(c[best - 1].r), b = std::log(c[best + 1].r);
-      const double g = (std::sqrt(5.0) - 1) / 2;
-      auto         p = [&](double x) { return profile(std::exp(x), false, in_log_r).rss; };
-      double       xc = b - g * (b - a), xd = a + g * (b - a), pc = p(xc), pd = p(xd);
-      for (int it = 0; it < 60 && b - a > 1e-7; ++it)
-        if (pc < pd)
-          b = xd, xd = xc, pd = pc, xc = b - g * (b - a), pc = p(xc);
-        else
-          a = xc, xc = xd, pc = pd, xd = a + g * (b - a), pd = p(xd);
-      return 0.5 * (a + b);
+      return golden_section_minimum([&](double x) { return profile(std::exp(x), false, in_log_r).rss; },
+                                    std::log(c[best - 1].r), std::log(c[best + 1].r), 1e-7, 60);
     };
     const double x_log = minimum(true), x_lin = minimum(false);
     f.half_interpolation = 0.5 * std::abs(x_log - x_lin);
@@ -166,7 +161,7 @@ namespace abrade::field
     f.w_high            = f.w * std::exp(f.dlnw_dlnr >= 0 ? above : below);
     // the joint region's axes: r's interval on each side and W's given r, each at its own
     // degrees of freedom, scaled to the normal's 1.96: chi-square(2)'s 95 % level then
-    f.joint_sd_w        = f.sd_log_w * t_w / 1.959963985;
+    f.joint_sd_w        = f.sd_log_w * t_w / z95;
     f.joint_level       = 5.991464547; // chi-square(0.95; 2)
     return f;
   }
@@ -176,7 +171,7 @@ namespace abrade::field
     /// The joint region's scale on ln r on the side of @p a (r's interval is not symmetric).
     double joint_sd_r(const FootprintFit &f, double a)
     {
-      return std::max(a < 0 ? std::log(f.r / f.r_low) : std::log(f.r_high / f.r), 1e-12) / 1.959963985;
+      return std::max(a < 0 ? std::log(f.r / f.r_low) : std::log(f.r_high / f.r), 1e-12) / z95;
     }
   } // namespace
 
