@@ -298,6 +298,11 @@ namespace abrade::field
       j["smoothing_radius"] = f.r, j["smoothing_radius_low"] = f.r_low, j["smoothing_radius_high"] = f.r_high;
       j["wear_coefficient"] = f.w, j["log_smoothing_radius_standard_error"] = f.sd_log_r;
       j["dlnw_dlnr"] = f.dlnw_dlnr, j["dlnlife_dlnr"] = f.dlnlife_dlnr, j["degrees_of_freedom"] = f.dof;
+      // the interval's two widenings on ln r (footprint_fit.h): the interpolation's, and the
+      // candidates' own error (r^'s largest shift without one candidate)
+      j["log_smoothing_radius_interpolation"] = f.half_interpolation;
+      j["log_smoothing_radius_candidate_sensitivity"] = f.candidate_sensitivity;
+      j["candidates_left_out"] = f.candidates_left_out;
       if (!f.identifiable)
         j["reason"] = f.reason;
       // a fit on replays: their own error (the geometry feedback they leave out) is not in the
@@ -316,29 +321,32 @@ namespace abrade::field
               const std::string text =
                 "the footprint's fit (" + io::format_number(1000 * f.r, 3) + " mm) rests on replayed candidates "
                 "(Lifetime/Wear source = replay; one at " + io::format_number(1000 * nearest, 3) +
-                " mm): a replay leaves out how the DEM's wear changes with the shape, and that error is not in the "
-                "interval (on the knife-bed the fit came out 13-20 % large on replays of one DEM run, 2-5 % with "
-                "DEM candidates at it and 1.25x either side and replays beyond); for a footprint to book, bracket "
-                "the fit with DEM candidates (1.25^-2, 1.25^-1, 1 and 1.25 times " + io::format_number(f.r, 3) +
-                " m) and calibrate again (docs/field.md, the worked example)";
+                " mm): a replay leaves out how the DEM's wear changes with the shape, and the interval holds that "
+                "error only as far as the fit without each outer candidate shows it (" +
+                io::format_number(100 * f.candidate_sensitivity, 2) + " % here; a replay among the best and its "
+                "neighbours is not assessed; on the knife-bed the fit came out 13-20 % large on replays of one DEM "
+                "run, 2-5 % with DEM candidates at it and 1.25x either side and replays beyond); for a footprint to "
+                "book, bracket the fit with DEM candidates (1.25^-2, 1.25^-1, 1 and 1.25 times " +
+                io::format_number(f.r, 3) + " m) and calibrate again (docs/field.md, the worked example)";
               j["warnings"].push_back(text);
               std::cerr << "warning: footprint: " << text << "\n";
               md << "\nWarning: " << text << "\n";
             }
         }
       md << "\n## W and the footprint together\n\n";
-      char                               line[900];
+      char                               line[1400];
       std::vector<std::array<double, 2>> outline_points; // the joint region's (identifiable only)
       if (f.identifiable)
         {
           // W's own interval (r's uncertainty in it) and the joint region (footprint_fit.h)
           j["wear_coefficient_low"] = f.w_low, j["wear_coefficient_high"] = f.w_high;
           j["log_wear_coefficient_standard_error"] = f.sd_log_w, j["wear_coefficient_degrees_of_freedom"] = f.w_dof;
+          j["log_wear_coefficient_candidate_sensitivity"] = f.w_candidate_sensitivity;
           io::Json &region = j["joint_region"];
           region["level"]  = f.joint_level; // (r, W) inside when Q <= level (footprint_fit.h):
           // Q = (a / s_a)^2 + ((b - dlnw_dlnr a) / s_w)^2, a = ln(r / r^), b = ln(W / W^), s_a by a's side
-          region["scale_log_r_below"] = std::log(f.r / f.r_low) / 1.959963985;  // (the normal's 95 % quantile)
-          region["scale_log_r_above"] = std::log(f.r_high / f.r) / 1.959963985;
+          region["scale_log_r_below"] = std::log(f.r / f.r_low) / z95;
+          region["scale_log_r_above"] = std::log(f.r_high / f.r) / z95;
           region["scale_log_w"]       = f.joint_sd_w;
           outline_points = joint_region_outline(f);
           outline_points.push_back(outline_points.front()); // (a closed outline)
@@ -351,11 +359,15 @@ namespace abrade::field
             }
           std::snprintf(line, sizeof line,
                         "Footprint (Lifetime/Smoothing radius) %.4g m (95 %%: %.4g ... %.4g) and W %.4g at it (95 %%, "
-                        "the footprint's uncertainty in it: %.4g ... %.4g; given the footprint +-%.2g %%); the candidates' "
-                        "residuals against their footprints; along the ridge d ln W / d ln r = %.3g, d ln life / d ln r = "
-                        "%.3g. The joint 95 %% region of both is an ellipse about that ridge (footprint_region.csv, "
-                        "footprint.png). Lifetime/Calibration takes both.\n",
-                        f.r, f.r_low, f.r_high, f.w, f.w_low, f.w_high, 100 * f.sd_log_w, f.dlnw_dlnr, f.dlnlife_dlnr);
+                        "the footprint's uncertainty in it: %.4g ... %.4g; given the footprint +-%.2g %%, 95 %%); the "
+                        "candidates' residuals against their footprints; along the ridge d ln W / d ln r = %.3g, d ln "
+                        "life / d ln r = %.3g. Both intervals hold the candidates' own error (the fit without each "
+                        "outer candidate in turn moved the footprint by up to %.2g %% and W by %.2g %%) and the "
+                        "interpolation's between them (%.2g %%). The joint 95 %% region of both is an ellipse about "
+                        "that ridge (footprint_region.csv, footprint.png). Lifetime/Calibration takes both.\n",
+                        f.r, f.r_low, f.r_high, f.w, f.w_low, f.w_high, 100 * z95 * f.joint_sd_w, f.dlnw_dlnr,
+                        f.dlnlife_dlnr, 100 * f.candidate_sensitivity, 100 * f.w_candidate_sensitivity,
+                        100 * f.half_interpolation);
         }
       else
         std::snprintf(line, sizeof line, "Not identifiable: %s (%.4g m, W %.4g).\n", f.reason.c_str(), f.r, f.w);

@@ -14,8 +14,6 @@ namespace abrade::field
 {
   namespace
   {
-    constexpr double z95 = 1.959963985; ///< the normal's two-sided 95 % quantile
-
     /// The parabola y = a x^2 + b x + c through three points.
     std::array<double, 3> parabola(const std::array<double, 3> &x, const std::array<double, 3> &y)
     {
@@ -28,7 +26,24 @@ namespace abrade::field
     }
   } // namespace
 
-  FootprintFit fit_footprint(std::vector<FootprintCandidate> c, const Profile &profile)
+  namespace
+  {
+    /// The profile's minimum in ln r between the best candidate's neighbours (golden sections),
+    /// the candidates sorted by r; NaN when the best is the smallest or largest (no minimum
+    /// between candidates).
+    double profile_minimum(const std::vector<FootprintCandidate> &c, const Profile &profile, bool in_log_r)
+    {
+      const std::size_t best = std::min_element(c.begin(), c.end(), [](const auto &a, const auto &b) {
+                                 return a.rss < b.rss;
+                               }) - c.begin();
+      if (c.size() < 3 || best == 0 || best + 1 == c.size())
+        return std::numeric_limits<double>::quiet_NaN();
+      return golden_section_minimum([&](double x) { return profile(std::exp(x), false, in_log_r).rss; },
+                                    std::log(c[best - 1].r), std::log(c[best + 1].r), 1e-7, 60);
+    }
+  } // namespace
+
+  FootprintFit fit_footprint(std::vector<FootprintCandidate> c, const Profile &profile, const ProfileWithout &without)
   {
     FootprintFit f;
     c.erase(std::remove_if(c.begin(), c.end(),
@@ -80,14 +95,27 @@ namespace abrade::field
     // r^: the profile's minimum between the best candidate's neighbours (golden sections on
     // ln r), with the candidates' predictions interpolated in ln r and in r: the two minima
     // differ by the interpolation's error, and half their distance widens the interval
-    auto rss     = [&](double x) { return profile(std::exp(x), false, true).rss; };
-    auto minimum = [&](bool in_log_r) {
-      return golden_section_minimum([&](double x) { return profile(std::exp(x), false, in_log_r).rss; },
-                                    std::log(c[best - 1].r), std::log(c[best + 1].r), 1e-7, 60);
-    };
-    const double x_log = minimum(true), x_lin = minimum(false);
+    auto         rss   = [&](double x) { return profile(std::exp(x), false, true).rss; };
+    const double x_log = profile_minimum(c, profile, true), x_lin = profile_minimum(c, profile, false);
     f.half_interpolation = 0.5 * std::abs(x_log - x_lin);
     f.r                  = std::exp(0.5 * (x_log + x_lin));
+    // the candidates' own error (a replay's geometry feedback left out, a run's beds): r^ again
+    // without each candidate in turn that enters the profile's interpolation from beyond the
+    // best and its neighbours (these three hold the minimum; leaving one of them out would
+    // measure the interpolation at twice the spacing, not that candidate), where the rest still
+    // hold a minimum between them; the largest shift widens the interval like the interpolation's
+    std::vector<double> left_out; // (their footprints)
+    if (without)
+      for (std::size_t k = 0; k < c.size(); ++k)
+        if (k + 1 < best || k > best + 1)
+          {
+            std::vector<FootprintCandidate> rest = c;
+            rest.erase(rest.begin() + long(k));
+            const double x = profile_minimum(rest, without(c[k].r), true);
+            if (std::isfinite(x))
+              f.candidate_sensitivity = std::max(f.candidate_sensitivity, std::abs(x - x_log)), left_out.push_back(c[k].r);
+          }
+    f.candidates_left_out = int(left_out.size());
     // the fit there: W, its error, and the residuals' design effect for the interval's level
     const FootprintCandidate at = profile(f.r, true, true);
     if (!(at.w > 0) || !(at.rss >= 0))
@@ -123,7 +151,8 @@ namespace abrade::field
         }
       return 0.0;
     };
-    f.r_low = end(-1) * std::exp(-f.half_interpolation), f.r_high = end(+1) * std::exp(f.half_interpolation);
+    const double widen = f.half_interpolation + f.candidate_sensitivity;
+    f.r_low = end(-1) * std::exp(-widen), f.r_high = end(+1) * std::exp(widen);
     if (!(f.r_low > 0) || !(f.r_high > 0))
       {
         std::snprintf(text, sizeof text,
@@ -153,15 +182,20 @@ namespace abrade::field
     f.sd_log_w          = at.relative_se;
     f.w_dof             = at.w_dof >= 1 ? std::min(at.w_dof, f.dof) : f.dof;
     const double t_w    = boost::math::quantile(boost::math::students_t_distribution<double>(f.w_dof), 0.975);
+    // W given r carries the candidates' own error too: W at r^ without each candidate left out
+    // above (the profile between the rest)
+    for (const double r : left_out)
+      f.w_candidate_sensitivity = std::max(f.w_candidate_sensitivity, std::abs(std::log(without(r)(f.r, false, true).w / f.w)));
+    const double given_r = t_w * f.sd_log_w + f.w_candidate_sensitivity; // (W given r's half-width on ln W)
     // (the two parts' half-widths, each at its own degrees of freedom, added in quadrature:
     // r's along the ridge, W's given r)
-    const double below  = std::hypot(f.dlnw_dlnr * std::log(f.r / f.r_low), t_w * f.sd_log_w);
-    const double above  = std::hypot(f.dlnw_dlnr * std::log(f.r_high / f.r), t_w * f.sd_log_w);
+    const double below  = std::hypot(f.dlnw_dlnr * std::log(f.r / f.r_low), given_r);
+    const double above  = std::hypot(f.dlnw_dlnr * std::log(f.r_high / f.r), given_r);
     f.w_low             = f.w * std::exp(-(f.dlnw_dlnr >= 0 ? below : above));
     f.w_high            = f.w * std::exp(f.dlnw_dlnr >= 0 ? above : below);
     // the joint region's axes: r's interval on each side and W's given r, each at its own
     // degrees of freedom, scaled to the normal's 1.96: chi-square(2)'s 95 % level then
-    f.joint_sd_w        = f.sd_log_w * t_w / z95;
+    f.joint_sd_w        = given_r / z95;
     f.joint_level       = 5.991464547; // chi-square(0.95; 2)
     return f;
   }
@@ -220,29 +254,34 @@ namespace abrade::field
           by_r.push_back(i);
       }
     std::sort(by_r.begin(), by_r.end(), [&](auto a, auto b) { return runs[a].smoothing_radius < runs[b].smoothing_radius; });
-    // the profile at r: a run interpolated between the three candidates nearest (the nearest
-    // first: its W0 and beds), its W by least squares near the nearest's
     // the profile at r: a run interpolated between the candidates (run_between: the nearest is
-    // its reference, its W0 and beds), its W by least squares near the nearest's
-    std::vector<const RunSeries *> with_footprint;
-    for (const std::size_t i : by_r)
-      with_footprint.push_back(&runs[i]);
-    auto profile = [&](double r, bool full, bool in_log_r) {
-      std::size_t first = by_r.front();
+    // its reference, its W0 and beds), its W by least squares near the nearest's; without the
+    // candidate at footprint @p dropped (0: all)
+    auto profile_without = [&, by_r](double dropped) -> Profile {
+      std::vector<std::size_t>       kept;
+      std::vector<const RunSeries *> with_footprint;
       for (const std::size_t i : by_r)
-        if (std::abs(std::log(runs[i].smoothing_radius / r)) < std::abs(std::log(runs[first].smoothing_radius / r)))
-          first = i;
-      const RunSeries between = run_between(with_footprint, r, in_log_r);
-      if (full)
-        return candidate(calibrate(between, ms, block), 0.0);
-      const double guess = results[first].scale; // (between is in the nearest run's W0)
-      auto [s, sum]      = least_squares_scale(between, ms, guess / 2, guess * 2);
-      if (s < guess / 1.99 || s > guess * 1.99) // (at the bracket's end: the full search)
-        return candidate(calibrate(between, ms, block), 0.0);
-      FootprintCandidate p;
-      p.r = r, p.rss = sum, p.w = s * (between.archard_coefficient > 0 ? between.archard_coefficient : 1.0);
-      return p;
+        if (runs[i].smoothing_radius != dropped)
+          kept.push_back(i), with_footprint.push_back(&runs[i]);
+      return [&, kept, with_footprint](double r, bool full, bool in_log_r) {
+        std::size_t first = kept.front();
+        for (const std::size_t i : kept)
+          if (std::abs(std::log(runs[i].smoothing_radius / r)) < std::abs(std::log(runs[first].smoothing_radius / r)))
+            first = i;
+        const RunSeries between = run_between(with_footprint, r, in_log_r);
+        if (full)
+          return candidate(calibrate(between, ms, block), 0.0);
+        const double guess = results[first].scale; // (between is in the nearest run's W0)
+        auto [s, sum]      = least_squares_scale(between, ms, guess / 2, guess * 2);
+        if (s < guess / 1.99 || s > guess * 1.99) // (at the bracket's end: the full search)
+          return candidate(calibrate(between, ms, block), 0.0);
+        FootprintCandidate p;
+        p.r = r, p.rss = sum, p.w = s * (between.archard_coefficient > 0 ? between.archard_coefficient : 1.0);
+        return p;
+      };
     };
-    return fit_footprint(candidates, profile);
+    if (by_r.empty())
+      return fit_footprint(candidates, Profile{});
+    return fit_footprint(candidates, profile_without(0.0), profile_without);
   }
 } // namespace abrade::field

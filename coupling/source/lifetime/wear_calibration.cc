@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 #include <abrade/coupling/lifetime/wear_calibration.h>
 
+#include <boost/math/distributions/students_t.hpp>
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
@@ -85,7 +86,13 @@ namespace abrade::coupling::lifetime
             if (!(*sd_log_w >= 0 && *sd_log_w <= 1) || !(w_dof >= 1))
               throw InputError(path, "the footprint fit's log_wear_coefficient_standard_error or "
                                      "wear_coefficient_degrees_of_freedom is out of range");
-            c.relative_sd = *sd_log_w, c.dof = w_dof;
+            // (and the candidates' own error in W at the footprint, footprint_fit.h: a widening of
+            // its 95 % half-width, here over t(w_dof) like the rest)
+            const double widening = fp->get<double>("log_wear_coefficient_candidate_sensitivity", 0.0);
+            if (!(widening >= 0 && widening <= 1))
+              throw InputError(path, "the footprint fit's log_wear_coefficient_candidate_sensitivity is out of range");
+            const double t = boost::math::quantile(boost::math::students_t_distribution<double>(w_dof), 0.975);
+            c.relative_sd = *sd_log_w + widening / t, c.dof = w_dof;
           }
         c.footprint_relative_sd = std::abs(slope) * sd_log_r;
         c.relative_sd           = std::hypot(c.relative_sd, c.footprint_relative_sd);

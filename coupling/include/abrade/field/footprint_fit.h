@@ -19,7 +19,10 @@
 // points make one independent measurement; with D = n / nu the level is 1 + F / nu, as if the
 // blocks were the measurements), its ends where P crosses the level, widened by half the
 // distance between the minima with the candidates interpolated in ln r and in r (the
-// interpolation's error). Where P does not cross the level within the candidates on either side
+// interpolation's error) and by the candidates' own error (a replay's geometry feedback left
+// out, a run's beds): the largest shift of r^ without one of the candidates that enter the
+// interpolation from beyond the best and its neighbours (the ProfileWithout; W given r the same
+// way). Where P does not cross the level within the candidates on either side
 // (a single depth, or no width information) the fit is refused as not identifiable, and so
 // when fewer than three footprints are given, the measurements fall into too few blocks or the
 // best is the smallest or largest: W is then given for the footprint assumed, the first run's.
@@ -28,7 +31,8 @@
 // relative change along it from a parabola through the three candidates' ln (L_i / s_i) (a
 // candidate's life at its fitted W: L_i over its scale, the life going as 1 / W). Coverage
 // checked by simulation (test_footprint_coverage, docs/field.md): 95-99 % with independent
-// noise, 85-92 % with noise correlated over a few points.
+// noise (and with the outer candidates replays whose profile is 25 % too wide), 82-89 % with
+// noise correlated over a few points.
 #include <abrade/field/calibration.h>
 
 #include <array>
@@ -38,6 +42,8 @@
 
 namespace abrade::field
 {
+  inline constexpr double z95 = 1.959963985; ///< the normal's two-sided 95 % quantile
+
   /// One candidate run's fit.
   struct FootprintCandidate
   {
@@ -59,6 +65,10 @@ namespace abrade::field
   /// in ln r, else in r (the two differ by the interpolation's error).
   using Profile = std::function<FootprintCandidate(double r, bool full, bool in_log_r)>;
 
+  /// The profile between the candidates without the one at footprint r (the candidates' own
+  /// error: how far r^ moves without each one in turn).
+  using ProfileWithout = std::function<Profile(double r)>;
+
   struct FootprintFit
   {
     bool        identifiable = false;
@@ -67,6 +77,13 @@ namespace abrade::field
     double      w = 0;               ///< W at r^ (or the best candidate's)
     double      sd_log_r = 0;        ///< the standard error of ln r^ (interval / 2 t)
     double      half_interpolation = 0; ///< the interval's widening on ln r for the interpolation between the candidates
+    /// the widening on ln r for the candidates' own error: the largest shift of ln r^ without
+    /// one candidate (among those whose removal leaves a minimum between the rest; 0: none)
+    double      candidate_sensitivity = 0;
+    int         candidates_left_out   = 0; ///< how many candidates could be left out in turn
+    /// the same for W given r: the largest shift of ln W at r^ without one of those candidates
+    /// (added to W given r's half-width, t(w_dof) sd_log_w)
+    double      w_candidate_sensitivity = 0;
     double      dlnw_dlnr = 0;       ///< along the ridge
     double      dlnlife_dlnr = 0;    ///< the life's relative change per relative change of r along the ridge (0: no lives)
     double      dof = 0;             ///< nu
@@ -76,12 +93,14 @@ namespace abrade::field
     /// slope and of W's given r, t(w_dof) sd_log_w, in quadrature)
     double      sd_log_w = 0, w_dof = 0, w_low = 0, w_high = 0;
     /// the joint 95 % region: (r, W) inside when joint_distance(r, W) <= joint_level
-    /// (chi-square(0.95; 2) = 5.99), its W axis sd_log_w t(w_dof) / 1.96
+    /// (chi-square(0.95; 2) = 5.99), its W axis W given r's half-width over 1.96
     double      joint_level = 0, joint_sd_w = 0;
   };
 
-  /// Fits r and W from @p candidates (any order) and their @p profile between them.
-  FootprintFit fit_footprint(std::vector<FootprintCandidate> candidates, const Profile &profile);
+  /// Fits r and W from @p candidates (any order) and their @p profile between them (@p without:
+  /// the profile without one candidate, for the candidates' own error; none: not assessed).
+  FootprintFit fit_footprint(std::vector<FootprintCandidate> candidates, const Profile &profile,
+                             const ProfileWithout &without = {});
 
   /// The same from candidate runs and their calibrations (calibration.h; @p lives: each run's
   /// predicted life at its own W, 0 where none): the profile between the runs from runs
