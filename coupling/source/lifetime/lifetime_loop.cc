@@ -580,6 +580,15 @@ namespace abrade::coupling::lifetime
                            "extrapolated past its last update (run it further and calibrate again)");
         ctx.log.warning(warnings.back());
       }
+    if (calibration.footprint && calibration.footprint_slope_assumed)
+      {
+        warnings.push_back("Lifetime/Calibration: " + s.calibration_file + "'s candidate runs had no predicted lives "
+                           "(dlnlife_dlnr 0): the footprint's share of the life's interval takes the life's slope "
+                           "along the ridge as d ln W / d ln r, as if the life at a fixed W did not depend on the "
+                           "footprint (on the knife-bed it goes as r^0.71); run the candidates to their end of life "
+                           "and calibrate again");
+        ctx.log.warning(warnings.back());
+      }
     if (calibration.relative_sd == 0)
       {
         warnings.push_back("Lifetime/Calibration: " + s.calibration_file + " states no uncertainty of W (a fit without "

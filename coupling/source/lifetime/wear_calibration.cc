@@ -76,7 +76,8 @@ namespace abrade::coupling::lifetime
         if (!(r > 0) || !(w > 0) || !(sd_log_r >= 0) || !(dof >= 1))
           throw InputError(path, "the footprint fit's numbers are out of range (smoothing_radius, wear_coefficient, "
                                  "log_smoothing_radius_standard_error, degrees_of_freedom)");
-        const double slope = fnumber("dlnlife_dlnr") != 0 ? fnumber("dlnlife_dlnr") : fnumber("dlnw_dlnr");
+        c.footprint_slope_assumed = fnumber("dlnlife_dlnr") == 0;
+        const double slope = c.footprint_slope_assumed ? fnumber("dlnw_dlnr") : fnumber("dlnlife_dlnr");
         c.footprint = true, c.smoothing_radius = r, c.coefficient = w;
         // W's error given the footprint: the fit's at the fitted footprint (calibration.json
         // written before session 27 has the best-ranked run's only)

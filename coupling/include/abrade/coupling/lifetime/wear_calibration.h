@@ -15,7 +15,8 @@
 // `footprint.identifiable`), both are taken: the run's Smoothing radius becomes the fitted one
 // (unless set), W the fit's at it, and the footprint's uncertainty joins the component: the life's
 // change along the ridge W(r), |d ln L / d ln r| se(ln r), in quadrature with se(W) / W of the
-// best run (without the candidates' lives, |d ln W / d ln r| se(ln r) stands for it).
+// fit at the footprint (plus the candidates' own error in W there over t; without the
+// candidates' lives, |d ln W / d ln r| se(ln r) stands for the footprint's share, warned).
 #include <abrade/coupling/lifetime/wear_source.h>
 
 #include <memory>
@@ -39,6 +40,10 @@ namespace abrade::coupling::lifetime
     /// smoothing_radius are the fit's, and relative_sd holds the footprint's share too
     bool        footprint = false;
     double      footprint_relative_sd = 0; ///< the life's, from the footprint along the ridge W(r)
+    /// the candidates had no predicted lives (calibration.json `dlnlife_dlnr` 0): the life's
+    /// slope along the ridge taken as d ln W / d ln r (the life at a fixed W taken as not
+    /// depending on the footprint; on the knife-bed it goes as r^0.71): warned
+    bool        footprint_slope_assumed = false;
   };
 
   /// Reads the best-ranked run of calibration.json @p path; an InputError names the file and
