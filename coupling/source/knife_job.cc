@@ -10,8 +10,15 @@
 //    its role: wears, clamped, held), and volume, mass, quality and a part's faces into
 //    summary.json. The run's report (report.html) is the part's preview: it drawn from two
 //    sides coloured by role with the faces' numbers, and the face table.
+// 4. Where the parameter file is a DEM case that holds the part (a wall with Geometry = solid
+//    model): the case around it (case_scene.h) for the preview's set-up picture: the part as
+//    the case places it (knife/scene_part.vtp, with role), the other walls' outlines
+//    (knife/scene_walls.dat) and the part's path over one cycle (knife/scene_path.dat, a block
+//    per phase), the fill region and the domain
+//    (summary.json results.knife.case).
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_output.h>
+#include <abrade/coupling/case_scene.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/fem/knife_geometry.h>
@@ -25,6 +32,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -65,6 +73,70 @@ namespace abrade::coupling
       out.cell_fields = {id, role};
       return out;
     }
+    /// Step 4: the case around the part, written for the preview (case_scene.h).
+    void write_case_scene(JobContext &ctx, const fem::SolidSurface &surface, const io::PolyData &faces,
+                          const std::string &dir)
+    {
+      const CaseScene scene = case_scene(ctx.parameters, surface);
+      if (!scene.present)
+        return;
+      // the part as each wall places it, its faces' roles kept
+      io::PolyData placed;
+      for (const auto &p : scene.placements)
+        {
+          const long first = long(placed.points.size() / 3);
+          for (std::size_t k = 0; k + 2 < faces.points.size(); k += 3)
+            {
+              const Eigen::Vector3d q = p.rotation * Eigen::Vector3d(faces.points[k], faces.points[k + 1],
+                                                                     faces.points[k + 2]) + p.offset;
+              placed.points.insert(placed.points.end(), {q[0], q[1], q[2]});
+            }
+          for (const auto &t : faces.triangles)
+            placed.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+          for (std::size_t f = 0; f < faces.cell_fields.size(); ++f)
+            {
+              if (placed.cell_fields.size() <= f)
+                placed.cell_fields.push_back({faces.cell_fields[f].name, 1, {}});
+              auto &v = placed.cell_fields[f].values;
+              v.insert(v.end(), faces.cell_fields[f].values.begin(), faces.cell_fields[f].values.end());
+            }
+        }
+      io::write_vtp(dir + "/scene_part.vtp", placed);
+      // the other walls' outlines and the path (a phase per block), as gnuplot data: blocks
+      // apart by two blank lines (one would make splot join them into a mesh)
+      std::ofstream walls(dir + "/scene_walls.dat"), path(dir + "/scene_path.dat");
+      walls.precision(9), path.precision(9);
+      for (const auto &o : scene.outlines)
+        for (const auto &e : o.segments)
+          walls << e[0] << ' ' << e[1] << ' ' << e[2] << '\n' << e[3] << ' ' << e[4] << ' ' << e[5] << "\n\n\n";
+      io::Json &c = ctx.results["knife"]["case"];
+      c["domain"] = std::vector<double>(scene.domain.begin(), scene.domain.end());
+      c["fill_region"] = std::vector<double>(scene.fill_region.begin(), scene.fill_region.end());
+      c["particles"] = scene.particles;
+      c["walls"] = std::vector<double>{};
+      for (const auto &o : scene.outlines)
+        c["walls"].push_back(o.wall);
+      for (const auto &p : scene.placements)
+        c["walls"].push_back(p.wall);
+      c["path"] = std::vector<double>{};
+      for (const auto &leg : scene.path)
+        {
+          path << "# " << leg.wall << ' ' << leg.phase << '\n';
+          for (const auto &x : leg.points)
+            path << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
+          path << "\n\n";
+          io::Json j;
+          j["wall"] = leg.wall, j["phase"] = leg.phase;
+          j["start"] = std::vector<double>(leg.points.front().begin(), leg.points.front().end());
+          j["end"]   = std::vector<double>(leg.points.back().begin(), leg.points.back().end());
+          c["path"].push_back(j);
+        }
+      c["notes"] = std::vector<double>{};
+      for (const auto &n : scene.notes)
+        c["notes"].push_back(n), ctx.log.line("preview: " + n);
+      if (!walls || !path)
+        throw RunError("could not write " + dir + "/scene_walls.dat and scene_path.dat");
+    }
   } // namespace
 
   void run_knife_job(JobContext &ctx)
@@ -99,7 +171,8 @@ namespace abrade::coupling
     const fem::SolidSurface surface = fem::extract_surface(tria);
     io::write_stl(dir + "/knife.stl", surface.as_polydata());
     io::write_vtp(dir + "/knife_surface.vtp", surface.as_polydata()); // boundary_id: 1 wears, 2 clamped
-    io::write_vtp(dir + "/faces.vtp", part_faces_surface(tria, m, kp.from_file)); // the preview's (face_id, role)
+    const io::PolyData faces = part_faces_surface(tria, m, kp.from_file);
+    io::write_vtp(dir + "/faces.vtp", faces); // the preview's (face_id, role)
 
     io::Json &r                  = ctx.results["knife"];
     r["cells"]                   = static_cast<long>(tria.n_active_cells());
@@ -167,5 +240,6 @@ namespace abrade::coupling
         for (const auto &w : warnings)
           r["warnings"].push_back(w);
       }
+    write_case_scene(ctx, surface, faces, dir);
   }
 } // namespace abrade::coupling

@@ -1,5 +1,6 @@
 // The run report (report.h): which run it is, and its page.
 #include "html_page.h"
+#include "case_setup_view.h"
 #include "surface_views.h"
 
 #include <abrade/common/atomic_file.h>
@@ -543,6 +544,60 @@ namespace abrade::report
       page.warnings(warnings);
       return page.html();
     }
+    /// The preview's set-up: the part where the case places it, among the walls, with the fill
+    /// region, the domain and the part's path over one cycle (summary.json results.knife.case;
+    /// case_setup_view.h), and the same in numbers.
+    void case_setup_section(HtmlPage &page, const std::string &dir, const Tree &scene,
+                            const std::vector<std::pair<std::string, std::string>> &roles)
+    {
+      auto box = [&](const char *key) {
+        std::array<double, 6> b{};
+        int                   d = 0;
+        if (const auto list = scene.get_child_optional(key))
+          for (const auto &[i, x] : *list)
+            if (d < 6)
+              b[d++] = x.get_value<double>();
+        return b;
+      };
+      auto point = [](const Tree &list) {
+        std::array<double, 3> p{};
+        int                   d = 0;
+        for (const auto &[i, x] : list)
+          if (d < 3)
+            p[d++] = x.get_value<double>();
+        return p;
+      };
+      CaseSetupPicture setup{dir + "/knife/scene_part.vtp", dir + "/knife/scene_walls.dat", dir + "/knife/scene_path.dat",
+                             box("domain"), box("fill_region"), {}};
+      std::vector<std::vector<std::string>> legs;
+      if (const auto path = scene.get_child_optional("path"))
+        for (const auto &[i, leg] : *path)
+          {
+            const auto start = point(leg.get_child("start")), end = point(leg.get_child("end"));
+            setup.phase_ends.push_back({text_at(leg, "phase"), end});
+            legs.push_back({text_at(leg, "wall"), text_at(leg, "phase"), mm(start[0]) + ", " + mm(start[1]) + ", " + mm(start[2]),
+                            mm(end[0]) + ", " + mm(end[1]) + ", " + mm(end[2])});
+          }
+      page.heading("The case around the part");
+      if (render_case_setup(dir + "/report", "setup.png", setup, roles))
+        page.png(dir + "/report/setup.png",
+                 "The part where the case's walls place it (Geometry = solid model), coloured by its faces' roles, "
+                 "among the other walls (grey), with the particles' fill region (green, dashed: "
+                 "Particles/Generation/Region), the domain (dotted: Simulation/Domain) and the path of the part's "
+                 "lowest point over one cycle of prescribed motion (red, each phase named at its end); in mm.",
+                 "setup");
+      const auto f = setup.fill_region, d = setup.domain;
+      page.paragraph("Fill region " + mm(f[0]) + ", " + mm(f[1]) + ", " + mm(f[2]) + " ... " + mm(f[3]) + ", " + mm(f[4]) +
+                     ", " + mm(f[5]) + " mm (" + text_at(scene, "particles") + " particles; 0: by solid fraction); domain " +
+                     mm(d[0]) + ", " + mm(d[1]) + ", " + mm(d[2]) + " ... " + mm(d[3]) + ", " + mm(d[4]) + ", " + mm(d[5]) +
+                     " mm.");
+      if (!legs.empty())
+        page.table({"wall", "phase", "the lowest point at its start [mm]", "at its end [mm]"}, legs);
+      if (const auto notes = scene.get_child_optional("notes"))
+        for (const auto &[i, n] : *notes)
+          page.paragraph(n.get_value<std::string>());
+    }
+
     /// The knife job's page: the part's preview. The part as the case places it, drawn from
     /// two sides with its faces coloured by what the selectors made of them (wears, clamped,
     /// held) and the file's face numbers at their centres; the face table and what each
@@ -607,16 +662,19 @@ namespace abrade::report
         }
       if (render_surfaces(dir + "/report", "faces.png", {{dir + "/knife/faces.vtp", "role", "the part as placed"}}, o))
         page.png(dir + "/report/faces.png",
-                 "The part as the case places it (its frame, in mm), from the front and from the back: each face "
-                 "coloured by what Clamped faces / Wearable faces made of it" +
+                 "The part in its own frame (the file's placed by Knife/Rotation and Offset; the case's walls place "
+                 "it in the case: below), in mm, from the front and from the back: each face coloured by what "
+                 "Clamped faces / Wearable faces made of it" +
                    std::string(from_file ? ", the file's face numbers at the larger faces' centres." : "."),
                  "faces");
+      if (const auto scene = k->get_child_optional("case"))
+        case_setup_section(page, dir, *scene, o.categories);
       if (from_file)
         {
           page.heading("Faces");
           page.paragraph("The file's faces as Gmsh numbers them (Knife/Clamped faces and Wearable faces select them by "
                          "'group NUMBER', a box of centres or a normal); a face a box or normal selector took in part is "
-                         "'mixed'. Areas in m^2, centres in mm, in the case's frame.");
+                         "'mixed'. Areas in m^2, centres in mm, in the part's own frame (as the face selectors see it).");
           page.table({"id", "name", "role", "area", "wearing", "clamped", "held", "centre [mm]", "normal", "taken by"},
                      rows);
           std::vector<std::vector<std::string>> taken;

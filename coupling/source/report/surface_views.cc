@@ -20,36 +20,24 @@
 
 namespace abrade::report
 {
+  std::string gnuplot_output_name(const std::string &path)
+  {
+    std::error_code ec;
+    const auto      p = std::filesystem::absolute(path, ec);
+    std::string     out;
+    for (const char c : ec ? path : p.string()) // (a quote doubled inside gnuplot's single quotes)
+      out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out;
+  }
+
+  std::string quote_free(std::string text)
+  {
+    std::replace(text.begin(), text.end(), '\'', ' ');
+    return text;
+  }
+
   namespace
   {
-    /// @p path made absolute (the picture named inside the run's directory, also for a tracer
-    /// of the file calls that does not follow gnuplot's working directory).
-    std::string absolute_path(const std::string &path)
-    {
-      std::error_code ec;
-      const auto      p = std::filesystem::absolute(path, ec);
-      return ec ? path : p.string();
-    }
-
-    /// @p text inside a single-quoted gnuplot string (a quote doubled).
-    std::string gnuplot_quoted(const std::string &text)
-    {
-      std::string out;
-      for (const char c : text)
-        out += c == '\'' ? std::string("''") : std::string(1, c);
-      return out;
-    }
-
-    /// @p text without the quotes that would end a gnuplot string.
-    std::string quote_free(std::string text)
-    {
-      std::replace(text.begin(), text.end(), '\'', ' ');
-      return text;
-    }
-
-    /// Writes the triangles of @p file's surface as pm3d quadrangles (each triangle a 2 x 2
-    /// patch with its third corner doubled) in mm, the field in mm as the colour; returns the
-    /// field's range (or false when the file or the field is missing).
     /// The rotation that takes @p poly's points into their principal axes (largest spread along
     /// x, middle along z, smallest along y), about their mean.
     std::pair<Eigen::Matrix3d, Eigen::Vector3d> principal_frame(vtkPolyData *poly)
@@ -72,6 +60,9 @@ namespace abrade::report
       return {r, mean};
     }
 
+    /// Writes the triangles of @p s's surface as pm3d quadrangles (each triangle a 2 x 2 patch
+    /// with its third corner doubled) in mm, the field times @p scale as the colour (a point
+    /// cloud as points: @p as_points); false when the file or the field is missing.
     bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, double scale,
                          std::vector<double> &values, bool &as_points)
     {
@@ -137,6 +128,12 @@ namespace abrade::report
     }
   } // namespace
 
+  bool write_pm3d_surface(const SurfacePicture &picture, const std::string &out, double scale, std::vector<double> &values)
+  {
+    bool as_points = false;
+    return write_triangles(picture, out, false, scale, values, as_points) && !as_points;
+  }
+
   bool render_surfaces(const std::string &directory, const std::string &png, const std::vector<SurfacePicture> &surfaces,
                        const RenderOptions &options)
   {
@@ -177,7 +174,7 @@ namespace abrade::report
     if (unit != 1.0 && label.size() > 4 && label.compare(label.size() - 4, 4, "[mm]") == 0)
       label = label.substr(0, label.size() - 4) + "[um]";
     gp << "set terminal pngcairo size " << std::max(700, 400 * columns) << ",860 font 'DejaVu Sans,10'\n"
-       << "set output '" << gnuplot_quoted(absolute_path(directory + "/" + png)) << "'\nset termoption noenhanced\n"
+       << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
        << "set multiplot layout 2," << columns << " rowsfirst\n"
        << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
        << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n";

@@ -41,6 +41,18 @@ namespace abrade::report
     std::vector<Label> labels;
   };
 
+  /// @p path made absolute and ready for gnuplot's `set output '...'` (a quote doubled): the
+  /// picture named inside the run's directory, whatever gnuplot's working directory.
+  std::string gnuplot_output_name(const std::string &path);
+  /// @p text without the quotes that would end a gnuplot string.
+  std::string quote_free(std::string text);
+
+  /// Writes the triangles of @p picture's surface as gnuplot pm3d data into @p out (each
+  /// triangle a 2 x 2 patch with its third corner doubled; coordinates in mm, the field times
+  /// @p scale as the colour), appending the colours to @p values; false when the file or the
+  /// field is missing.
+  bool write_pm3d_surface(const SurfacePicture &picture, const std::string &out, double scale, std::vector<double> &values);
+
   /// Draws @p surfaces, one column each with two views (front above back), into
   /// @p directory/@p png (the data and the gnuplot script stay beside it). Returns false (and
   /// leaves no picture) when a file cannot be read or gnuplot fails.
