@@ -244,8 +244,11 @@ namespace abrade::coupling
                       "a .msh, by name or number, or a CAD face by its number), 'box x0, y0, z0, x1, y1, z1' "
                       "(faces whose centre lies in the box, in metres, in the knife's frame after scale and "
                       "placement), 'normal nx, ny, nz[, angle]' (faces whose outward normal is within angle "
-                      "degrees, default 10, of the direction). Empty: none (every face wears). The knife job "
-                      "lists the part's faces.");
+                      "degrees, default 10, of the direction), 'cylinder px, py, pz, ax, ay, az, r[, tolerance]' "
+                      "(faces on the cylinder of radius r about the axis through p along a: a bore or a pin, "
+                      "whose CAD face may be split in halves; the facets' centres r from the axis within the "
+                      "tolerance, default 0.15 r, their normals across it). Empty: none (every face wears). "
+                      "The knife job lists the part's faces.");
     prm.declare_entry("Wearable faces", "", Anything(),
                       "Geometry = file: the faces that wear (selectors as for Clamped faces); faces that "
                       "neither list takes are held. Empty: every face that is not clamped wears.");

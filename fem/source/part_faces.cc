@@ -83,6 +83,16 @@ namespace abrade::fem
               const Tensor<1, 3> d({s.direction[0], s.direction[1], s.direction[2]});
               return unit_normal * d >= std::cos(s.angle_degrees * M_PI / 180) - 1e-12;
             }
+          case FaceSelector::Kind::cylinder:
+            {
+              // the centre's distance from the axis, and the normal across it (a facet of a
+              // bore or a pin: radial, inwards or outwards)
+              const Tensor<1, 3> a({s.direction[0], s.direction[1], s.direction[2]});
+              Tensor<1, 3>       d = centre - Point<3>(s.box[0], s.box[1], s.box[2]);
+              d -= (d * a) * a;
+              return std::abs(d.norm() - s.radius) <= s.tolerance &&
+                     std::abs(unit_normal * a) <= std::sin(15 * M_PI / 180);
+            }
         }
       return false;
     }
@@ -134,9 +144,30 @@ namespace abrade::fem
                 f.angle_degrees = v[3];
               }
           }
+        else if (kind == "cylinder")
+          {
+            const auto v = numbers(rest, s);
+            if (v.size() != 7 && v.size() != 8)
+              throw std::invalid_argument("'" + s + "': a cylinder needs 'px, py, pz, ax, ay, az, radius' or "
+                                          "'px, py, pz, ax, ay, az, radius, tolerance' (a point of its axis, the "
+                                          "axis' direction, its radius in metres)");
+            const double length = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+            if (!(length > 0))
+              throw std::invalid_argument("'" + s + "': the axis' direction must not be zero");
+            if (!(v[6] > 0))
+              throw std::invalid_argument("'" + s + "': the radius must be positive");
+            f.kind = FaceSelector::Kind::cylinder;
+            for (unsigned c = 0; c < 3; ++c)
+              f.box[c] = v[c], f.direction[c] = v[3 + c] / length;
+            f.radius    = v[6];
+            f.tolerance = v.size() == 8 ? v[7] : 0.15 * v[6];
+            if (!(f.tolerance > 0))
+              throw std::invalid_argument("'" + s + "': the tolerance must be positive");
+          }
         else
-          throw std::invalid_argument("'" + s + "': a selector is 'group NAME', 'box x0, y0, z0, x1, y1, z1' or "
-                                      "'normal nx, ny, nz[, angle]'");
+          throw std::invalid_argument("'" + s + "': a selector is 'group NAME', 'box x0, y0, z0, x1, y1, z1', "
+                                      "'normal nx, ny, nz[, angle]' or 'cylinder px, py, pz, ax, ay, az, radius[, "
+                                      "tolerance]'");
         out.push_back(f);
       }
     return out;

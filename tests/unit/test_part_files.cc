@@ -156,6 +156,34 @@ TEST(PartFiles, FacesByGroupNumberAndBox)
       }
 }
 
+// A bore whose CAD face may be split in halves, taken by its axis and radius: the bolted edge's
+// first bolt hole (cases/bolted_edge/edge.step, in mm: 22 mm through the 30 mm plate along z at
+// x = 1550, y = 1240). The selector takes the bore's wall, 2 pi r T = 2.07e-3 m^2 less the
+// facets' chords (a 16-gon holds 2.6 % less), and every CAD face whose centre lies within the
+// radius of the axis (the bore's halves), and none of the other three bores on parallel axes.
+TEST(PartFiles, BoreByCylinder)
+{
+  const SolidFileSettings s; // (the STEP file declares millimetres: read in metres)
+  Triangulation<3>        t;
+  read_solid(std::string(ABRADE_TESTS_DIR) + "/../cases/bolted_edge/edge.step", 0.008, t, s);
+  const auto faces = part_faces(t);
+  std::vector<types::boundary_id> bore; // the CAD faces about the axis, by their centres
+  for (const auto &f : faces)
+    if (std::hypot(f.centre[0] - 1.55, f.centre[1] - 1.24) < 0.011)
+      bore.push_back(f.id);
+  ASSERT_GE(bore.size(), 1u);
+  const FaceAssignment a = assign_faces(t, parse_face_selectors("cylinder 1.55, 1.24, 0, 0, 0, 2, 0.011"), {}, {}, 1, 2);
+  const double         wall = 2 * M_PI * 0.011 * 0.03;
+  EXPECT_LT(a.clamped_area, wall);
+  EXPECT_GT(a.clamped_area, 0.95 * wall);
+  ASSERT_EQ(a.taken.size(), 1u);
+  EXPECT_EQ(a.taken[0].faces, bore);
+  // a radius no bore has takes nothing: an error naming the selector
+  Triangulation<3> again;
+  read_solid(std::string(ABRADE_TESTS_DIR) + "/../cases/bolted_edge/edge.step", 0.008, again, s);
+  EXPECT_THROW(clamped_area(again, "cylinder 1.55, 1.24, 0, 0, 0, 1, 0.03"), std::invalid_argument);
+}
+
 TEST(PartFiles, SelectorsAreParsedOrRefused)
 {
   const auto v = parse_face_selectors("group bolt holes; normal 0, 0, 2, 30 ;box 1,2,3, 0,0,0");
@@ -166,8 +194,16 @@ TEST(PartFiles, SelectorsAreParsedOrRefused)
   EXPECT_EQ(v[2].box[0], 0);
   EXPECT_EQ(v[2].box[3], 1); // corners sorted
   EXPECT_TRUE(parse_face_selectors("").empty());
+  const auto c = parse_face_selectors("cylinder 1, 2, 3, 0, 0, 2, 0.01; cylinder 0, 0, 0, 1, 0, 0, 0.02, 0.001");
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].kind, FaceSelector::Kind::cylinder);
+  EXPECT_EQ(c[0].box[1], 2);
+  EXPECT_NEAR(c[0].direction[2], 1, 1e-15);
+  EXPECT_NEAR(c[0].tolerance, 0.0015, 1e-15); // (15 % of the radius)
+  EXPECT_EQ(c[1].tolerance, 0.001);
   for (const std::string bad : {"box 1, 2", "normal 0, 0, 0", "normal 0, 0, 1, 200", "plane 0, 0, 1", "group",
-                                "box 1, 2, 3, 4, 5, x"})
+                                "box 1, 2, 3, 4, 5, x", "cylinder 0, 0, 0, 0, 0, 1", "cylinder 0, 0, 0, 0, 0, 0, 1",
+                                "cylinder 0, 0, 0, 0, 0, 1, -1", "cylinder 0, 0, 0, 0, 0, 1, 1, 0"})
     EXPECT_THROW(parse_face_selectors(bad), std::invalid_argument) << bad;
 }
 

@@ -12,6 +12,13 @@
 //   box x0, y0, z0, x1, y1, z1           faces whose centre lies in the box [m, the part's frame]
 //   normal nx, ny, nz [, angle]          faces whose outward normal is within angle (degrees,
 //                                        default 10) of the direction
+//   cylinder px, py, pz, ax, ay, az, r [, tolerance]
+//                                        faces on the cylinder of radius r [m] about the axis
+//                                        through p along a: the centre r from the axis within
+//                                        the tolerance [m; default 0.15 r, which holds a facet's
+//                                        chord 1.1 r long] and the normal across the axis (within
+//                                        15 degrees); a bore or a pin whose CAD face is split in
+//                                        halves, both ends of a pin through two lugs
 //
 // several separated by ';'. A face is clamped when a clamped selector takes it; otherwise it wears
 // when a wearable selector takes it, or when no wearable selector is given (the default: every
@@ -36,11 +43,13 @@ namespace abrade::fem
     {
       group,
       box,
-      normal
+      normal,
+      cylinder
     } kind = Kind::group;
     std::string           group;                  ///< name or number
-    std::array<double, 6> box{};                  ///< lower corner, upper corner
-    std::array<double, 3> direction{};            ///< unit
+    std::array<double, 6> box{};                  ///< lower corner, upper corner; a cylinder: a point of its axis
+    std::array<double, 3> direction{};            ///< unit (a cylinder's axis)
+    double                radius = 0, tolerance = 0; ///< a cylinder's [m]
     double                angle_degrees = 10;
     std::string           text;                   ///< as written, for messages
   };
