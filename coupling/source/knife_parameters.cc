@@ -67,6 +67,15 @@ namespace abrade::coupling
     fs.rotation_axis  = get_tensor(prm, "Rotation axis");
     fs.rotation_angle = prm.get_double("Rotation angle");
     fs.offset         = get_tensor(prm, "Offset");
+    try
+      {
+        fem::parse_part_placement(prm.get("Place"), fs);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        prm.leave_subsection();
+        file.fail({"Knife"}, "Place", e.what());
+      }
     kp.clamped_faces  = get_selectors(file, prm, "Clamped faces");
     kp.wearable_faces = get_selectors(file, prm, "Wearable faces");
     prm.leave_subsection();
@@ -109,6 +118,8 @@ namespace abrade::coupling
           file.fail({"Knife"}, "Rotation angle", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
         if (fs.offset.norm() > 0)
           file.fail({"Knife"}, "Offset", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        if (!fs.place.text.empty())
+          file.fail({"Knife"}, "Place", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
       }
     else if (!fem::is_cad_file(kp.file) && fs.solid != "all" && !fs.solid.empty())
       file.fail({"Knife"}, "Solid", "only a CAD file (STEP/IGES) can hold several solids; " + kp.file + " is read whole");

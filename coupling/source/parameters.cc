@@ -238,6 +238,11 @@ namespace abrade::coupling
                       "R (File scale x p) + Offset: scaled, rotated about the origin, then moved. Range: "
                       "[-360, 360].");
     declare_vector(prm, "Offset", "0, 0, 0", "[m] Geometry = file: moves the part after its rotation.");
+    prm.declare_entry("Place", "", Anything(),
+                      "Geometry = file: moves the rotated part by its bounding box before Offset, so that a "
+                      "part from a CAD assembly need not be measured first: ','-separated 'centred' (the box's "
+                      "centre to x = y = 0), 'centred in x' (or y, z), 'lowest point at z = V' [m]; e.g. "
+                      "'lowest point at z = 0, centred'. The move is logged. Empty: none.");
     prm.declare_entry("Clamped faces", "", Anything(),
                       "Geometry = file: the faces bolted or welded to the shell, which the mesh motion holds "
                       "and which do not wear; selectors separated by ';': 'group NAME' (a physical group of "

@@ -714,6 +714,49 @@ namespace abrade::fem
 
   double estimated_cells(double volume, double h) { return 8.5 * volume / (h * h * h); }
 
+  void parse_part_placement(const std::string &text, SolidFileSettings &settings)
+  {
+    auto &pl = settings.place;
+    pl       = {};
+    pl.text  = Utilities::trim(text);
+    for (const auto &raw : Utilities::split_string_list(text, ','))
+      {
+        // (spaces do not matter: 'lowest point at z=0' and 'lowest point at z = 0' are one)
+        std::string item;
+        for (const char c : raw)
+          if (c != ' ' && c != '\t')
+            item += char(std::tolower(static_cast<unsigned char>(c)));
+        const std::string lowest = "lowestpointatz=";
+        if (item == "centred" || item == "centered")
+          pl.centred[0] = pl.centred[1] = true;
+        else if (item == "centredinx" || item == "centeredinx")
+          pl.centred[0] = true;
+        else if (item == "centrediny" || item == "centerediny")
+          pl.centred[1] = true;
+        else if (item == "centredinz" || item == "centeredinz")
+          pl.centred[2] = true;
+        else if (item.rfind(lowest, 0) == 0)
+          {
+            const std::string v    = item.substr(lowest.size());
+            std::size_t       used = 0;
+            try
+              {
+                pl.lowest_z = std::stod(v, &used);
+              }
+            catch (const std::exception &)
+              {
+                used = 0;
+              }
+            if (v.empty() || used != v.size() || !std::isfinite(pl.lowest_z))
+              throw std::invalid_argument("'" + Utilities::trim(raw) + "': the height is not a number (lowest point at z = V, in metres)");
+            pl.lowest = true;
+          }
+        else
+          throw std::invalid_argument("'" + Utilities::trim(raw) + "': a placement is 'centred', 'centred in x' (y, z) or "
+                                      "'lowest point at z = V' [m], separated by ','");
+      }
+  }
+
   Tensor<2, 3> rotation_matrix(const Tensor<1, 3> &axis, double degrees)
   {
     if (degrees == 0)
@@ -866,8 +909,27 @@ namespace abrade::fem
           throw InputError(path, e.what());
         }
     }();
-    if (settings.rotation_angle != 0 || settings.offset.norm() > 0)
-      GridTools::transform([&](const Point<3> &p) { return Point<3>(r * p + settings.offset); }, tria);
+    if (settings.rotation_angle != 0)
+      GridTools::transform([&](const Point<3> &p) { return Point<3>(r * p); }, tria);
+    // Knife/Place: the rotated part's bounding box centred, its lowest point at a height
+    Tensor<1, 3> move = settings.offset;
+    {
+      const auto &pl = settings.place;
+      if (pl.lowest || pl.centred[0] || pl.centred[1] || pl.centred[2])
+        {
+          const BoundingBox<3> box = GridTools::compute_bounding_box(tria);
+          for (unsigned d = 0; d < 3; ++d)
+            if (pl.centred[d])
+              move[d] -= 0.5 * (box.lower_bound(d) + box.upper_bound(d));
+          if (pl.lowest)
+            move[2] += pl.lowest_z - box.lower_bound(2);
+          report.notes.push_back("Knife/Place '" + pl.text + "' moved the part by " + format_number(move[0] - settings.offset[0]) +
+                                 ", " + format_number(move[1] - settings.offset[1]) + ", " +
+                                 format_number(move[2] - settings.offset[2]) + " m (before Offset)");
+        }
+    }
+    if (move.norm() > 0)
+      GridTools::transform([&](const Point<3> &p) { return Point<3>(p + move); }, tria);
 
     report.quality = mesh_quality(tria);
     if (report.quality.n_inverted > 0)

@@ -10,18 +10,21 @@
 // region). Over 400 realisations the truth must lie in each interval and in the joint region
 // 92 ... 99.5 % of the time (the binomial standard deviation of a 95 % coverage over 400 is
 // 1.1 %):
-//  - independent noise (the design effect near 1): 97.8 / 97.8 / 95.3 / 96.8 % (r, W, W given r,
+//  - independent noise (the design effect near 1): 97.8 / 97.8 / 95.3 / 96.5 % (r, W, W given r,
 //    joint);
-//  - candidates 1.5x apart with the truth half-way between two: 99.0 / 96.8 / 95.3 / 96.0 %
-//    (at 2x the interpolation puts r 4 % high and the interval's widening for it covers 100 %,
-//    3x wider than the scatter: not checked);
+//  - candidates 1.5x apart with the truth half-way between two (1000 realisations: at 400 the
+//    coverage of r near 99 % passed 99.5 % with half the seeds, referee helper-14): 98.6 /
+//    97.8 / 95.1 / 96.2 % (at 2x the interpolation puts r 4 % high and the interval's widening
+//    for it covers 100 %, 3x wider than the scatter: not checked);
 //  - independent noise and the candidates' wear off by a common factor, as the mean of three DEM
-//    beds with a relative spread of 15 % is: 97.5 / 95.0 / 94.8 / 95.3 % (without the beds' share
+//    beds with a relative spread of 15 % is: 97.5 / 95.0 / 94.8 / 94.8 % (without the beds' share
 //    in W's error W's interval covers 19 %);
-//  - five candidates, the outer two replays whose profile is 25 % too wide: 98.8 / 99.0 / 96.5 /
+//  - five candidates, the outer two replays whose profile is 25 % too wide: 98.8 / 98.8 / 96.5 /
 //    98.0 % (without the candidates' own error in the intervals W given r covers 85.8 %);
+//  - five candidates, the one at 17.1 mm (the best or its neighbour) a replay 5 % too wide:
+//    98.0 / 100 / 96.3 / 96.8 % (without the candidates' own error r covers 51 %);
 //  - noise correlated over 7 points (a moving average: neighbouring points are not independent,
-//    the design effect about 7): 86.3 / 89.2 / 89.0 / 81.8 %, checked from 80 % only: the
+//    the design effect about 7): 86.0 / 89.2 / 89.0 / 81.8 %, checked from 80 % only: the
 //    cluster-robust variance from the few blocks that carry the information falls short, and
 //    ln r and ln W given r are correlated (the joint region takes them as independent). With
 //    the design effect ignored r's interval covers 56-60 %.
@@ -59,16 +62,20 @@ namespace
 
   /// @p correlation: half-width (points) of the moving average making the noise; @p beds_sd:
   /// the beds' relative spread (three beds) of the candidates' wear; @p replay_off: not 0, five
-  /// candidates (the seven's second to sixth), the outer two replays whose worn profile is
-  /// that much wider than a run at their footprint would give (a replay's own error).
+  /// candidates (the seven's second to sixth), the @p replays among them (the seven's numbers;
+  /// none: the outer two) replays whose worn profile is that much wider than a run at their
+  /// footprint would give (a replay's own error); @p realisations of the noise.
   Coverage simulate(int correlation, double beds_sd, unsigned seed, double block = 0.01, double spacing = 1.25,
-                    double first = 0.0137 / (1.25 * 1.25 * 1.25), double replay_off = 0)
+                    double first = 0.0137 / (1.25 * 1.25 * 1.25), double replay_off = 0,
+                    std::vector<int> replays = {}, int realisations = 400)
   {
+    if (replay_off != 0 && replays.empty())
+      replays = {1, candidates - 2};
     std::mt19937                     random(seed);
     std::normal_distribution<double> normal;
     const double                     noise = 0.1e-3; // [m]
     Coverage                         c;
-    for (c.n = 0; c.n < 400; ++c.n)
+    for (c.n = 0; c.n < realisations; ++c.n)
       {
         std::vector<double> white(points + 2 * correlation);
         for (auto &e : white)
@@ -98,7 +105,7 @@ namespace
         std::vector<CalibrationResult> fits;
         for (int k = 0; k < candidates; ++k)
           {
-            const bool replay = replay_off != 0 && (k == 1 || k == candidates - 2);
+            const bool replay = replay_off != 0 && std::find(replays.begin(), replays.end(), k) != replays.end();
             if (replay_off != 0 && (k == 0 || k == candidates - 1))
               continue;
             RunSeries &run            = runs.emplace_back();
@@ -107,6 +114,7 @@ namespace
             run.seeds                 = beds_sd > 0 ? 3 : 1;
             run.replicate_relative_sd = beds_sd > 0 ? spread : 0.0;
             run.smoothing_radius      = first * std::pow(spacing, k);
+            run.replay                = replay;
             run.tonnes                = {0, tonnes, 2 * tonnes};
             run.depth.assign(3, std::vector<double>(points));
             for (int o = 0; o < 3; ++o)
@@ -124,7 +132,8 @@ namespace
         c.sum_lw += std::log(f.w / w_true), c.sum_lw2 += std::pow(std::log(f.w / w_true), 2);
         c.stated_r += f.sd_log_r, c.stated_w += std::log(f.w_high / f.w) / 1.96, c.stated_wr += f.sd_log_w;
         c.r += f.r_low <= r_true && r_true <= f.r_high;
-        const double narrower = std::exp(-f.candidate_sensitivity);
+        // (the interval widened by the interpolation's error alone, not the larger of it and the candidates')
+        const double narrower = std::exp(-(std::max(f.half_interpolation, f.candidate_sensitivity) - f.half_interpolation));
         c.r_without_candidates += f.r_low / narrower <= r_true && r_true <= f.r_high * narrower;
         c.w += f.w_low <= w_true && w_true <= f.w_high;
         // W given r: W^ moved along the ridge to the true footprint, against its own interval
@@ -136,15 +145,15 @@ namespace
     return c;
   }
 
-  void expect_covers(const Coverage &c, const char *what, double lowest = 0.92)
+  void expect_covers(const Coverage &c, const char *what, double lowest = 0.92, double highest = 0.995)
   {
     SCOPED_TRACE(what);
-    EXPECT_GE(c.identifiable, 396); // (a 0.1 mm noise on a 4 mm deep profile: its width is clear)
+    EXPECT_GE(c.identifiable, c.n * 99 / 100); // (a 0.1 mm noise on a 4 mm deep profile: its width is clear)
     for (const auto &[name, k] : {std::pair{"r", c.r}, {"W", c.w}, {"W given r", c.w_given_r}, {"joint", c.joint}})
       {
         const double coverage = double(k) / c.n;
         EXPECT_GE(coverage, lowest) << name << " covered in " << k << " of " << c.n;
-        EXPECT_LE(coverage, 0.995) << name << " covered in " << k << " of " << c.n;
+        EXPECT_LE(coverage, highest) << name << " covered in " << k << " of " << c.n;
       }
     const double m = c.identifiable;
     std::printf("%s: ln r^ mean %.4f sd %.4f (stated %.4f); ln W^ mean %.4f sd %.4f (stated %.4f, given r %.4f)\n", what,
@@ -171,7 +180,10 @@ TEST(FootprintCoverage, WiderSpacing)
 {
   // candidates 1.5x apart, the truth half-way between two on ln r (where a parabola through
   // the three nearest alone jumped: referee helper-13)
-  expect_covers(simulate(0, 0, 4, 0.01, 1.5, r_true / std::pow(1.5, 3.5)), "independent noise, candidates 1.5x apart");
+  // (1000 realisations: at 400 the coverage of r near 99 % went over 99.5 % with half the seeds
+  // tried, referee helper-14)
+  expect_covers(simulate(0, 0, 4, 0.01, 1.5, r_true / std::pow(1.5, 3.5), 0, {}, 1000),
+                "independent noise, candidates 1.5x apart");
 }
 
 TEST(FootprintCoverage, BedsSpread)
@@ -189,4 +201,17 @@ TEST(FootprintCoverage, ReplayedCandidatesOff)
   const Coverage c = simulate(0, 0, 5, 0.01, 1.25, 0.0137 / (1.25 * 1.25 * 1.25), 0.25);
   expect_covers(c, "outer candidates replays 25 % too wide");
   EXPECT_LT(double(c.w_given_r_without_candidates) / c.n, 0.9) << "the candidates' own error did not matter";
+}
+
+TEST(FootprintCoverage, ReplayAmongTheBest)
+{
+  // five candidates, the one at 17.1 mm (the truth's 15 mm lies between it and 13.7 mm: it is
+  // the best or the best's neighbour) a replay whose profile is 5 % too wide: left out too
+  // (wherever a replay sits), else r covered 83 %, W given r 77 % and the joint region 71 %
+  // (referee helper-14)
+  // (W's interval, with r's widened interval in it, then covers 100 %: a biased candidate's
+  // shift is a bound, not a spread)
+  const Coverage c = simulate(0, 0, 6, 0.01, 1.25, 0.0137 / (1.25 * 1.25 * 1.25), 0.05, {4});
+  expect_covers(c, "a replay 5 % too wide among the best", 0.92, 1.0);
+  EXPECT_LT(double(c.r_without_candidates) / c.n, 0.6) << "the replay's own error did not matter";
 }

@@ -259,6 +259,7 @@ namespace abrade::field
     run.particle_radius       = io::summary_number(directory + "/summary.json", "particle_radius").value_or(0);
     run.coarse_graining_factor = io::summary_number(directory + "/summary.json", "coarse_graining_factor").value_or(0);
     run.wear_field            = io::summary_string(directory + "/summary.json", "wear_field").value_or("");
+    run.replay = io::summary_string(directory + "/summary.json", "wear_source").value_or("") == "replay";
     const std::regex data_set("<DataSet\\b([^>]*)>"), timestep("timestep=\"([^\"]*)\""), file_of("file=\"([^\"]*)\"");
     std::unique_ptr<geometry::SurfaceDistance> design;
     std::string      line;

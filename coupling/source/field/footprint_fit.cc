@@ -100,21 +100,26 @@ namespace abrade::field
     f.half_interpolation = 0.5 * std::abs(x_log - x_lin);
     f.r                  = std::exp(0.5 * (x_log + x_lin));
     // the candidates' own error (a replay's geometry feedback left out, a run's beds): r^ again
-    // without each candidate in turn that enters the profile's interpolation from beyond the
-    // best and its neighbours (these three hold the minimum; leaving one of them out would
-    // measure the interpolation at twice the spacing, not that candidate), where the rest still
-    // hold a minimum between them; the largest shift widens the interval like the interpolation's
+    // without each candidate in turn that enters the interpolation from beyond the best and its
+    // neighbours (the best +- 2: leaving out one of those three would measure the interpolation
+    // at twice the spacing, not that candidate), and without each replay among them wherever it
+    // sits (referee helper-14: a biased replay as the best or its neighbour, not left out, took
+    // r's coverage to 0-83 %), where the rest still hold a minimum between them
     std::vector<double> left_out; // (their footprints)
     if (without)
       for (std::size_t k = 0; k < c.size(); ++k)
-        if (k + 1 < best || k > best + 1)
-          {
-            std::vector<FootprintCandidate> rest = c;
-            rest.erase(rest.begin() + long(k));
-            const double x = profile_minimum(rest, without(c[k].r), true);
-            if (std::isfinite(x))
-              f.candidate_sensitivity = std::max(f.candidate_sensitivity, std::abs(x - x_log)), left_out.push_back(c[k].r);
-          }
+        {
+          const bool outer = k + 2 == best || k == best + 2, in_bracket = k + 1 >= best && k <= best + 1;
+          if (!outer && !(in_bracket && c[k].replay))
+            continue;
+          std::vector<FootprintCandidate> rest = c;
+          rest.erase(rest.begin() + long(k));
+          const double x = profile_minimum(rest, without(c[k].r), true);
+          if (std::isfinite(x))
+            f.candidate_sensitivity = std::max(f.candidate_sensitivity, std::abs(x - x_log)), left_out.push_back(c[k].r);
+          else if (c[k].replay)
+            f.replays_not_assessed.push_back(c[k].r);
+        }
     f.candidates_left_out = int(left_out.size());
     // the fit there: W, its error, and the residuals' design effect for the interval's level
     const FootprintCandidate at = profile(f.r, true, true);
@@ -151,7 +156,7 @@ namespace abrade::field
         }
       return 0.0;
     };
-    const double widen = f.half_interpolation + f.candidate_sensitivity;
+    const double widen = std::max(f.half_interpolation, f.candidate_sensitivity);
     f.r_low = end(-1) * std::exp(-widen), f.r_high = end(+1) * std::exp(widen);
     if (!(f.r_low > 0) || !(f.r_high > 0))
       {
@@ -250,6 +255,7 @@ namespace abrade::field
     for (std::size_t i = 0; i < results.size(); ++i)
       {
         candidates.push_back(candidate(results[i], i < lives.size() ? lives[i] : 0.0));
+        candidates.back().replay = runs[i].replay;
         if (runs[i].smoothing_radius > 0 && results[i].scale > 0)
           by_r.push_back(i);
       }

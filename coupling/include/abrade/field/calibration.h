@@ -64,6 +64,7 @@ namespace abrade::field
     double                           particle_radius = 0;       ///< [m] its largest particle (0: unknown)
     double                           coarse_graining_factor = 0; ///< its Particles/Coarse graining/Factor (0: unknown)
     std::string                      wear_field;                ///< the run's Output/Wear field (empty: unknown)
+    bool                             replay = false; ///< a replay of another run's stored wear (Lifetime/Wear source = replay)
     std::vector<double>              tonnes;                   ///< per output
     std::vector<std::vector<double>> depth;                    ///< [output][point]
     /// Depth at point @p p after @p t tonnes, linear in t between outputs, extrapolated linearly

@@ -19,10 +19,12 @@
 // points make one independent measurement; with D = n / nu the level is 1 + F / nu, as if the
 // blocks were the measurements), its ends where P crosses the level, widened by half the
 // distance between the minima with the candidates interpolated in ln r and in r (the
-// interpolation's error) and by the candidates' own error (a replay's geometry feedback left
-// out, a run's beds): the largest shift of r^ without one of the candidates that enter the
-// interpolation from beyond the best and its neighbours (the ProfileWithout; W given r the same
-// way). Where P does not cross the level within the candidates on either side
+// interpolation's error) or by the candidates' own error, whichever is larger (with exact
+// candidates both measure the interpolation): the largest shift of r^ without one candidate, in
+// turn each that enters the interpolation from beyond the best and its neighbours (the best +-
+// 2) and each replay among them, wherever it sits (a replay's geometry feedback left out; the
+// ProfileWithout; W given r the same way). A replay among the best and its neighbours whose
+// removal leaves no minimum is named (replays_not_assessed). Where P does not cross the level within the candidates on either side
 // (a single depth, or no width information) the fit is refused as not identifiable, and so
 // when fewer than three footprints are given, the measurements fall into too few blocks or the
 // best is the smallest or largest: W is then given for the footprint assumed, the first run's.
@@ -31,8 +33,9 @@
 // relative change along it from a parabola through the three candidates' ln (L_i / s_i) (a
 // candidate's life at its fitted W: L_i over its scale, the life going as 1 / W). Coverage
 // checked by simulation (test_footprint_coverage, docs/field.md): 95-99 % with independent
-// noise (and with the outer candidates replays whose profile is 25 % too wide), 82-89 % with
-// noise correlated over a few points.
+// noise (also with the outer candidates replays whose profile is 25 % too wide, or the best's
+// neighbour one 5 % too wide; W's interval then 100 %), 82-89 % with noise correlated over a
+// few points.
 #include <abrade/field/calibration.h>
 
 #include <array>
@@ -57,6 +60,7 @@ namespace abrade::field
     double design_effect = 1;  ///< of its W fit (CalibrationResult::design_effect)
     double relative_se = 0;    ///< its W's relative standard error, the fit's and the beds' (0: unknown)
     double w_dof = 0;          ///< that standard error's degrees of freedom (CalibrationResult::dof)
+    bool   replay = false;     ///< a replay (its own error: the geometry feedback it leaves out)
   };
 
   /// The profile at footprint r: W fitted there and the residual sum of squares (rss, w), and
@@ -77,10 +81,13 @@ namespace abrade::field
     double      w = 0;               ///< W at r^ (or the best candidate's)
     double      sd_log_r = 0;        ///< the standard error of ln r^ (interval / 2 t)
     double      half_interpolation = 0; ///< the interval's widening on ln r for the interpolation between the candidates
-    /// the widening on ln r for the candidates' own error: the largest shift of ln r^ without
-    /// one candidate (among those whose removal leaves a minimum between the rest; 0: none)
+    /// the candidates' own error on ln r: the largest shift of ln r^ without one candidate
+    /// (among those whose removal leaves a minimum between the rest; 0: none)
     double      candidate_sensitivity = 0;
-    int         candidates_left_out   = 0; ///< how many candidates could be left out in turn
+    int         candidates_left_out   = 0; ///< how many candidates were left out in turn
+    /// replays among the best and its neighbours that could not be left out (the rest then
+    /// hold no minimum): their own error is not in the interval (their footprints)
+    std::vector<double> replays_not_assessed;
     /// the same for W given r: the largest shift of ln W at r^ without one of those candidates
     /// (added to W given r's half-width, t(w_dof) sd_log_w)
     double      w_candidate_sensitivity = 0;

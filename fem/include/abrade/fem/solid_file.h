@@ -16,6 +16,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <map>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ namespace abrade::fem
 {
   /// How a solid file is read: units, limits, which solid, placement (a user's part, not a
   /// generated one).
+  /// Parses Knife/Place: ','-separated 'centred' (in x and y), 'centred in x' (y, z), 'lowest
+  /// point at z = V' [m]; empty: none. Throws std::invalid_argument naming the item.
+  struct SolidFileSettings;
+  void parse_part_placement(const std::string &text, SolidFileSettings &settings);
+
   struct SolidFileSettings
   {
     /// Multiplies the file's coordinates: STL, OBJ and .msh files have no units (0.001: the file
@@ -48,11 +54,19 @@ namespace abrade::fem
     /// Below this minimum scaled Jacobian a mesh made by Gmsh is optimised once more (Gmsh: vertices relocated, cells below 0.5 improved),
     /// and a mesh still below it is reported with the place of its worst cell.
     double min_quality = 0.05;
-    /// Placement after the scale: p -> R p + offset, R the right-handed rotation by
-    /// rotation_angle [degrees] about rotation_axis through the origin.
+    /// Placement after the scale: p -> R p + t + offset, R the right-handed rotation by
+    /// rotation_angle [degrees] about rotation_axis through the origin, t the move @p place asks
+    /// of the rotated part's bounding box.
     dealii::Tensor<1, 3> rotation_axis{{0, 0, 1}};
     double               rotation_angle = 0;
     dealii::Tensor<1, 3> offset;
+    struct Place
+    {
+      std::array<bool, 3> centred{};     ///< the bounding box's centre to 0 along x, y, z
+      bool                lowest = false; ///< the lowest point to z = lowest_z
+      double              lowest_z = 0;   ///< [m]
+      std::string         text;           ///< as written
+    } place;
     /// [s] How long Gmsh may mesh the part (it runs in a child process: fem/meshing_job.h); 0:
     /// ABRADE_MESHER_TIME_LIMIT, or 1800 s.
     double mesher_time_limit = 0;
