@@ -10,6 +10,7 @@
 #include <abrade/common/vtk_input.h>
 #include <abrade/fem/cad_check.h>
 #include <abrade/fem/meshing_job.h>
+#include <abrade/fem/part_faces.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
 #include <abrade/fem/surface_repair.h>
@@ -656,6 +657,29 @@ namespace abrade::fem
           return cell->center();
       return {};
     }
+
+    /// The file's faces (boundary ids) that active cell @p index touches, by a vertex of it, and
+    /// their areas: where a poor cell sits on the part's surface.
+    std::map<types::boundary_id, double> faces_at_cell(const Triangulation<3> &tria, unsigned index)
+    {
+      std::set<unsigned> vertices;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->active_cell_index() == index)
+          for (const unsigned v : cell->vertex_indices())
+            vertices.insert(cell->vertex_index(v));
+      std::set<types::boundary_id> touched;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            for (const unsigned v : cell->face(f)->vertex_indices())
+              if (vertices.count(cell->face(f)->vertex_index(v)))
+                touched.insert(cell->face(f)->boundary_id());
+      std::map<types::boundary_id, double> out;
+      for (const auto &face : part_faces(tria))
+        if (touched.count(face.id))
+          out[face.id] = face.area;
+      return out;
+    }
   } // namespace
 
   namespace
@@ -944,9 +968,31 @@ namespace abrade::fem
         std::ostringstream s;
         s << "poor mesh: minimum scaled Jacobian " << format_number(report.quality.min_scaled_jacobian)
           << " (below " << settings.min_quality << ") in cell " << report.quality.worst_cell << " near ("
-          << cell_centre(tria, report.quality.worst_cell) << ") m; "
+          << cell_centre(tria, report.quality.worst_cell) << ") m";
+        // the file's faces there, and whether one holds only a few elements (a sliver: a
+        // smaller mesh size does not help it, the CAD face must be cleaned or merged)
+        const auto  faces = faces_at_cell(tria, report.quality.worst_cell);
+        std::string slivers;
+        if (!faces.empty())
+          {
+            s << ", on the file's face(s) ";
+            bool first = true;
+            for (const auto &[id, area] : faces)
+              {
+                s << (first ? "" : ", ") << id << " (" << format_number(area, 3) << " m^2)";
+                first = false;
+                if (h > 0 && area < 2 * h * h) // (a face of a few elements at most)
+                  slivers += (slivers.empty() ? "" : ", ") + std::to_string(id);
+              }
+          }
+        s << "; "
           << (ext == ".msh" ? "improve the mesh in Gmsh (Mesh > Optimize 3D), or give the CAD file"
-                            : "a smaller Knife/Mesh size, or a cleaned CAD face there (slivers, short edges), helps");
+              : !slivers.empty()
+                ? "face(s) " + slivers + " hold only a few elements (below 2 Knife/Mesh size^2): a smaller mesh "
+                    "size only moves the poor cell; remove or merge them in the CAD tool (a face that continues "
+                    "its neighbour, a short edge where two solids were fused), or select them with the others "
+                    "(group " + slivers.substr(0, slivers.find(',')) + ") if the warning can stand"
+                : "a smaller Knife/Mesh size there, or a cleaned CAD face there (slivers, short edges), helps");
         report.warnings.push_back(s.str());
       }
     return report;
