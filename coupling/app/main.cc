@@ -3,6 +3,7 @@
 //   abrade run [FILE.prm] [--set "Section/Sub/Key=value"]... [--output DIR] [--quiet] [--resume]
 //   abrade params [--format text|prm]
 //   abrade preview FILE.prm [--set ...]... --output DIR
+//   abrade case PART --output FILE.prm [--material NAME] [--clamped SELECTORS] [...]
 //   abrade report RUN_DIR
 //   abrade export-walls [FILE.prm] --output DIR
 //   abrade convert SCRIPT.geo|CAD --output FILE.step
@@ -20,6 +21,7 @@
 #include <abrade/common/json.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/version.h>
+#include <abrade/coupling/case_command.h>
 #include <abrade/coupling/concepts.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
@@ -71,6 +73,11 @@ namespace
       the case's part on its own (the knife job): meshed, checked, and drawn as the case places
       it with its faces coloured by role (wears, clamped, held) and numbered, the face table and
       what each selector took (DIR/report.html, summary.json)
+  abrade case PART --output FILE.prm [--material iron-ore-pellets|gravel|coal|soil]
+              [--clamped "SELECTORS"] [--depth D] [--travel L] [--particles N] [...]
+      write a commented lifetime case around your part: the part dragged through a bed of the
+      material, the bed, container, particle size, phases and tonnes per cycle chosen from the
+      part (abrade case alone lists every option)
   abrade report RUN_DIR
       write RUN_DIR/report.html, one self-contained page (pictures inlined) for a lifetime,
       knife (a preview), sweep, concepts, compare or calibrate run; those runs write it
@@ -462,6 +469,8 @@ int main(int argc, char **argv)
       if (argc >= 2 && std::string(argv[1]) == "compare")
         return with_report(field::run_compare_command(std::vector<std::string>(argv + 2, argv + argc)),
                            output_option(argc, argv));
+      if (argc >= 2 && std::string(argv[1]) == "case")
+        return coupling::run_case_command(std::vector<std::string>(argv + 2, argv + argc));
       if (argc >= 2 && std::string(argv[1]) == "calibrate")
         return with_report(field::run_calibrate_command(std::vector<std::string>(argv + 2, argv + argc)),
                            output_option(argc, argv));
