@@ -15,6 +15,7 @@
 // 4. Write the .prm, every number with where it came from, and read it back as a run would (the
 //    bed's fill, the memory and run-size checks).
 #include <abrade/common/error.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/case_command.h>
 #include <abrade/coupling/parameter_file.h>
@@ -79,19 +80,10 @@ namespace abrade::coupling
 
     double positive(const std::string &flag, const std::string &text)
     {
-      std::size_t used = 0;
-      double      v    = 0;
-      try
-        {
-          v = std::stod(text, &used);
-        }
-      catch (const std::exception &)
-        {
-          used = 0;
-        }
-      if (used != text.size() || !(v > 0) || !std::isfinite(v))
+      const auto v = io::finite_number(text);
+      if (!v || !(*v > 0))
         throw InputError("command line", flag + ": a positive number expected, got '" + text + "'");
-      return v;
+      return *v;
     }
 
     Options parse(const std::vector<std::string> &args)

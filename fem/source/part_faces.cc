@@ -1,3 +1,4 @@
+#include <abrade/common/finite_number.h>
 #include <abrade/fem/part_faces.h>
 
 #include <deal.II/base/utilities.h>
@@ -24,19 +25,10 @@ namespace abrade::fem
       std::vector<double> v;
       for (const auto &x : Utilities::split_string_list(text, ','))
         {
-          std::size_t used = 0;
-          double      d    = 0;
-          try
-            {
-              d = std::stod(x, &used);
-            }
-          catch (const std::exception &)
-            {
-              used = 0;
-            }
-          if (used != x.size() || !std::isfinite(d))
+          const auto d = io::finite_number(x);
+          if (!d)
             throw std::invalid_argument("'" + selector + "': '" + x + "' is not a number");
-          v.push_back(d);
+          v.push_back(*d);
         }
       return v;
     }

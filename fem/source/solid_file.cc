@@ -5,6 +5,7 @@
 #include <abrade/common/input_file.h>
 #include <abrade/common/temporary_directory.h>
 #include <abrade/common/file_extension.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/termination.h>
 #include <abrade/common/vtk_input.h>
@@ -761,19 +762,10 @@ namespace abrade::fem
           pl.centred[2] = true;
         else if (item.rfind(lowest, 0) == 0)
           {
-            const std::string v    = item.substr(lowest.size());
-            std::size_t       used = 0;
-            try
-              {
-                pl.lowest_z = std::stod(v, &used);
-              }
-            catch (const std::exception &)
-              {
-                used = 0;
-              }
-            if (v.empty() || used != v.size() || !std::isfinite(pl.lowest_z))
+            const auto z = io::finite_number(item.substr(lowest.size()));
+            if (!z)
               throw std::invalid_argument("'" + Utilities::trim(raw) + "': the height is not a number (lowest point at z = V, in metres)");
-            pl.lowest = true;
+            pl.lowest = true, pl.lowest_z = *z;
           }
         else
           throw std::invalid_argument("'" + Utilities::trim(raw) + "': a placement is 'centred', 'centred in x' (y, z) or "
