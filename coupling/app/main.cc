@@ -390,12 +390,21 @@ namespace
     finish("completed"); // (the report shows the summary's status)
     // the report is one of the run's declared outputs: a write that fails (a full disk) fails
     // the run (exit 3); a report that cannot be made of what the run wrote is a warning
+    std::string not_done; // (an output the run should have written and has not: no "Done")
     if (root && (job_name == "lifetime" || job_name == "knife"))
       try
         {
           if (job_name == "lifetime")
             report::write_paraview_script(dir);
-          log.line("Report: " + report::write_report(dir));
+          std::vector<std::string> missing;
+          log.line("Report: " + report::write_report(dir, &missing));
+          for (const auto &m : missing)
+            not_done += (not_done.empty() ? "" : ", ") + m;
+          if (!not_done.empty())
+            {
+              not_done = "the report lacks its picture(s) " + not_done + " (gnuplot failed: report/*.gp.log)";
+              log.line("warning: " + not_done);
+            }
         }
       catch (const RunError &e)
         {
@@ -415,9 +424,12 @@ namespace
         }
       catch (const std::exception &e)
         {
-          log.line(std::string("warning: no report written: ") + e.what());
+          not_done = std::string("no report written: ") + e.what();
+          log.line("warning: " + not_done);
         }
-    log.line("Done: " + out.file("summary.json"));
+    // "Done" only when every output is written; else what is missing, the results kept
+    log.line(not_done.empty() ? "Done: " + out.file("summary.json")
+                              : "Finished without all its outputs (" + not_done + "): " + out.file("summary.json"));
     return 0;
   }
 } // namespace

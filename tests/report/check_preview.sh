@@ -16,6 +16,17 @@ rm -rf "$out" && mkdir -p "$out"
 [ -s "$out/preview/knife/faces.vtp" ] || { echo "no knife/faces.vtp"; exit 1; }
 grep -q '"job": "knife"' "$out/preview/summary.json" || { echo "the preview is not the knife job"; exit 1; }
 grep -q '^set Job *= *lifetime' "$src/cases/knife_bed/lifetime.prm" || { echo "the case is not a lifetime case"; exit 1; }
+grep -q "^Done: " "$out/preview.log" || { echo "no Done line"; cat "$out/preview.log"; exit 1; }
+# a picture that cannot be drawn (a gnuplot that fails): the results kept, the page saying so
+# where the picture would be, and no "Done" (issue 36: "Done" only when every output is written)
+mkdir -p "$out/failing_gnuplot"
+printf '#!/bin/sh\nexit 1\n' > "$out/failing_gnuplot/gnuplot" && chmod +x "$out/failing_gnuplot/gnuplot"
+PATH="$out/failing_gnuplot:$PATH" "$abrade" preview "$src/cases/bolted_edge/lifetime.prm" --output "$out/no_pictures" \
+  > "$out/no_pictures.log" 2>&1 || { cat "$out/no_pictures.log"; exit 1; }
+if grep -q "^Done: " "$out/no_pictures.log"; then echo "Done said without the pictures"; exit 1; fi
+grep -q "Finished without all its outputs (the report lacks its picture(s) faces.png, setup.png" "$out/no_pictures.log" ||
+  { cat "$out/no_pictures.log"; exit 1; }
+grep -q 'data-missing-figure="faces.png"' "$out/no_pictures/report.html" || { echo "the page does not say"; exit 1; }
 python3 "$src/tests/report/check_report.py" "$out/preview" --expect-figures faces,setup --expect-face-table
 # the case around the part (the set-up picture's numbers), against the parameter files by hand:
 # cases/knife_bed/knife_bed.prm's fill region and domain; its knife goes down at 1.5 m/s for

@@ -96,7 +96,8 @@ pre { font-size: .8em; background: #f7f7f7; padding: .5em; overflow-x: auto; }
     const auto [w, h] = png_size(bytes);
     if (w == 0)
       {
-        body << "<p class=\"none\">(no picture: " << escape_html(file) << " is missing or not a PNG)</p>\n";
+        body << "<p class=\"none\" data-missing-figure=\"" << escape_html(std::filesystem::path(file).filename().string())
+             << "\">(no picture: " << escape_html(file) << " is missing or not a PNG)</p>\n";
         return;
       }
     std::string encoded(4 * ((bytes.size() + 2) / 3) + 1, '\0');

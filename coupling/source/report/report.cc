@@ -239,14 +239,13 @@ namespace abrade::report
           if (files.size() > 2)
             stages.push_back({files[files.size() / 2].second, "wear_depth", "after " + tonnes(files[files.size() / 2].first)});
           stages.push_back({files.back().second, "wear_depth", "after " + tonnes(files.back().first)});
-          if (render_surfaces(dir + "/report", "knife_wear.png", stages))
-            page.png(dir + "/report/knife_wear.png",
+          if (!render_surfaces(dir + "/report", "knife_wear.png", stages))
+            page.paragraph("(the knife's pictures could not be drawn: gnuplot, or the knife's VTU files, are missing)");
+          page.png(dir + "/report/knife_wear.png",
                      "The knife coloured by wear depth (mm below the design surface) at the design, the middle update and "
                      "the last update of the run, seen from two opposite sides (top row: from +x, -y; bottom row: from "
                      "-x, +y); one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
                      "knife");
-          else
-            page.paragraph("(the knife's pictures could not be drawn: gnuplot, or the knife's VTU files, are missing)");
         }
       std::vector<fs::path> profiles;
       if (fs::is_directory(dir + "/knife"))
@@ -438,11 +437,11 @@ namespace abrade::report
               page.heading("Worn shapes");
               RenderOptions o;
               o.align = true, o.top_percentile = 0.99;
-              if (render_surfaces(dir + "/report", "worn_shapes.png", shapes, o))
-                page.png(dir + "/report/worn_shapes.png",
-                         "Each variant's worn knife (a knife first, else the first wall with wear) coloured by Archard wear "
-                         "depth after the run (its lowest bed seed), in the table's order, seen along its principal axes; "
-                         "one colour range, whose top is the 99th percentile (the deepest 1 % share its colour).");
+              render_surfaces(dir + "/report", "worn_shapes.png", shapes, o);
+              page.png(dir + "/report/worn_shapes.png",
+                       "Each variant's worn knife (a knife first, else the first wall with wear) coloured by Archard wear "
+                       "depth after the run (its lowest bed seed), in the table's order, seen along its principal axes; "
+                       "one colour range, whose top is the 99th percentile (the deepest 1 % share its colour).");
             }
         }
       page.heading("Warnings");
@@ -529,10 +528,10 @@ namespace abrade::report
                         std::to_string(j.get<int>("registration.points_used", 0)) + " points)");
           RenderOptions o;
           o.label = "deviation [mm]", o.signed_range = true;
-          if (render_surfaces(dir + "/report", "deviation.png", {{dir + "/deviation.vtp", "deviation", "scan against prediction"}}, o))
-            page.png(dir + "/report/deviation.png",
-                     "The scan's points coloured by their signed distance from the predicted surface (mm; red: outside "
-                     "it, the part less worn than predicted; blue: more worn).");
+          render_surfaces(dir + "/report", "deviation.png", {{dir + "/deviation.vtp", "deviation", "scan against prediction"}}, o);
+          page.png(dir + "/report/deviation.png",
+                   "The scan's points coloured by their signed distance from the predicted surface (mm; red: outside "
+                   "it, the part less worn than predicted; blue: more worn).");
           for (const auto &e : fs::directory_iterator(dir))
             if (e.path().extension() == ".png")
               page.png(e.path().string(), e.path().filename().string());
@@ -579,13 +578,13 @@ namespace abrade::report
                             mm(end[0]) + ", " + mm(end[1]) + ", " + mm(end[2])});
           }
       page.heading("The case around the part");
-      if (render_case_setup(dir + "/report", "setup.png", setup, roles))
-        page.png(dir + "/report/setup.png",
-                 "The part where the case's walls place it (Geometry = solid model), coloured by its faces' roles, "
-                 "among the other walls (grey), with the particles' fill region (green, dashed: "
-                 "Particles/Generation/Region), the domain (dotted: Simulation/Domain) and the path of the part's "
-                 "lowest point over one cycle of prescribed motion (red, each phase named at its end); in mm.",
-                 "setup");
+      render_case_setup(dir + "/report", "setup.png", setup, roles);
+      page.png(dir + "/report/setup.png",
+               "The part where the case's walls place it (Geometry = solid model), coloured by its faces' roles, "
+               "among the other walls (grey), with the particles' fill region (green, dashed: "
+               "Particles/Generation/Region), the domain (dotted: Simulation/Domain) and the path of the part's "
+               "lowest point over one cycle of prescribed motion (red, each phase named at its end); in mm.",
+               "setup");
       const auto f = setup.fill_region, d = setup.domain;
       page.paragraph("Fill region " + mm(f[0]) + ", " + mm(f[1]) + ", " + mm(f[2]) + " ... " + mm(f[3]) + ", " + mm(f[4]) +
                      ", " + mm(f[5]) + " mm (" + text_at(scene, "particles") + " particles; 0: by solid fraction); domain " +
@@ -660,13 +659,13 @@ namespace abrade::report
           for (std::size_t i = 0; i < labels.size() && i < 60; ++i)
             o.labels.push_back(labels[i].second);
         }
-      if (render_surfaces(dir + "/report", "faces.png", {{dir + "/knife/faces.vtp", "role", "the part as placed"}}, o))
-        page.png(dir + "/report/faces.png",
-                 "The part in its own frame (the file's placed by Knife/Rotation and Offset; the case's walls place "
-                 "it in the case: below), in mm, from the front and from the back: each face coloured by what "
-                 "Clamped faces / Wearable faces made of it" +
-                   std::string(from_file ? ", the file's face numbers at the larger faces' centres." : "."),
-                 "faces");
+      render_surfaces(dir + "/report", "faces.png", {{dir + "/knife/faces.vtp", "role", "the part as placed"}}, o);
+      page.png(dir + "/report/faces.png",
+               "The part in its own frame (the file's placed by Knife/Rotation and Offset; the case's walls place "
+               "it in the case: below), in mm, from the front and from the back: each face coloured by what "
+               "Clamped faces / Wearable faces made of it" +
+                 std::string(from_file ? ", the file's face numbers at the larger faces' centres." : "."),
+               "faces");
       if (const auto scene = k->get_child_optional("case"))
         case_setup_section(page, dir, *scene, o.categories);
       if (from_file)
@@ -700,7 +699,7 @@ namespace abrade::report
     }
   } // namespace
 
-  std::string write_report(const std::string &dir)
+  std::string write_report(const std::string &dir, std::vector<std::string> *missing)
   {
     if (!fs::is_directory(dir))
       throw InputError(dir, "not a directory");
@@ -734,6 +733,17 @@ namespace abrade::report
                             "study.csv, comparison.json or calibration.json)");
     const std::string file = dir + "/report.html";
     io::write_file_atomically(file, html);
+    // the pictures the page notes as missing (HtmlPage::png)
+    if (missing)
+      {
+        missing->clear();
+        const std::string mark = "data-missing-figure=\"";
+        for (auto at = html.find(mark); at != std::string::npos; at = html.find(mark, at + 1))
+          {
+            const auto from = at + mark.size();
+            missing->push_back(html.substr(from, html.find('"', from) - from));
+          }
+      }
     return file;
   }
 

@@ -17,12 +17,15 @@
 // The pictures of worn parts are drawn by gnuplot (pm3d, off-screen, a Debian package the
 // project already uses) from the run's VTK files, with a colour bar in mm.
 #include <string>
+#include <vector>
 
 namespace abrade::report
 {
   /// Writes @p directory/report.html for the run in @p directory and returns its path. Throws
-  /// InputError when the directory holds no run abrade knows.
-  std::string write_report(const std::string &directory);
+  /// InputError when the directory holds no run abrade knows. @p missing: the pictures the page
+  /// should show but could not (gnuplot failed, a file was missing; the page says so where each
+  /// would be), by file name.
+  std::string write_report(const std::string &directory, std::vector<std::string> *missing = nullptr);
 
   /// Writes @p directory/knife/open_in_paraview.py: a pvpython script that opens the knife's
   /// series (knife.pvd) coloured by wear depth.
