@@ -10,7 +10,8 @@
 #  - its preview, opened in headless Chromium: the part's faces coloured by role, the face table
 #    summary.json's face by face, the set-up picture; the bores clamped (2 x 2 pi 22.5 mm x 30 mm
 #    of wall, 8.48e-3 m^2, within the facets' 1 %) and nothing else;
-#  - the case runs as written (one bed, one update, 2000 particles) to a predicted life.
+#  - the case runs as written (one bed, one update, 2000 particles) to a predicted life, its
+#    trajectory drawing both followed points (the teeth's tip, the bottom) and the limit.
 #   check_case_helper.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 src=$2 out=$3
@@ -67,5 +68,9 @@ r = json.load(open(sys.argv[1]))["results"]["lifetime"]
 assert r["predicted_tonnes_to_end_of_life"] > 0, r
 print("ok: the case ran as written: predicted life %.4g t" % r["predicted_tonnes_to_end_of_life"])
 PY
+# the trajectory draws both followed points and the end of life's depth
+grep -q "recession of followed point 2" run/lifetime.gp && grep -q "end of life: depth" run/lifetime.gp ||
+  { echo "run/lifetime.gp does not draw every followed point and the limit"; exit 1; }
 # (the browser last: where Chromium is missing it skips, code 77)
 python3 "$src/tests/report/check_report.py" preview --expect-figures faces,setup --expect-face-table
+python3 "$src/tests/report/check_report.py" run --expect-figures trajectory

@@ -1297,6 +1297,8 @@ namespace abrade::coupling::lifetime
         marks.depth_limit     = s.max_depth;
         marks.recession_limit = s.max_recession;
         marks.edge_limit      = s.max_edge_recession;
+        marks.plate_limit     = s.min_plate_thickness;
+        marks.recession_points = std::max<std::size_t>(1, s.recession_points.size());
         if (e.extrapolated &&
             (e.criterion == depth_criterion || e.criterion == recession_criterion || e.criterion == edge_criterion))
           {

@@ -122,7 +122,8 @@ namespace abrade::coupling::lifetime
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame,
                      const TrajectoryMarks &marks)
   {
-    // the limits as horizontal lines, an extrapolation dashed to the predicted life
+    // the limits as horizontal lines, every followed point, an extrapolation dashed to the
+    // predicted life
     std::ostringstream extra;
     if (marks.depth_limit > 0)
       extra << ", " << 1000 * marks.depth_limit << " with lines dt 3 lw 2 lc rgb 'red' title 'end of life: depth "
@@ -135,6 +136,15 @@ namespace abrade::coupling::lifetime
       extra << ", " << 1000 * marks.edge_limit
             << " with lines dt 4 lw 2 lc rgb 'dark-violet' title 'end of life: edge recession "
             << io::format_number(1000 * marks.edge_limit) << " mm'";
+    if (marks.plate_limit > 0)
+      extra << ", '' using (column('tonnes')/T):(column('plate_thickness')*1000) with linespoints title 'plate "
+               "thickness (calipers at Gauge height)', "
+            << 1000 * marks.plate_limit << " with lines dt 5 lw 2 lc rgb 'brown' title 'end of life: plate thickness "
+            << io::format_number(1000 * marks.plate_limit) << " mm'";
+    // every followed point after the first (the first is drawn with the rest)
+    for (std::size_t k = 2; k <= marks.recession_points; ++k)
+      extra << ", '' using (column('tonnes')/T):(column('point_recession_" << k
+            << "')*1000) with linespoints title 'recession of followed point " << k << "'";
     if (marks.extrapolated && marks.life > marks.last_tonnes)
       extra << ", '-' using ($1/T):2 with lines dt 2 lw 2 lc rgb 'black' title 'extrapolated to the predicted life'";
     std::ofstream gp(dir + "/lifetime.gp");
@@ -149,12 +159,15 @@ namespace abrade::coupling::lifetime
           "(column('max_depth')*1000*(1+column('wear_rate_spread'))) with filledcurves "
           "fs transparent solid 0.25 noborder title 'largest depth +- spread of the beds', "
           "'' using (column('tonnes')/T):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
-          "'' using (column('tonnes')/T):(column('point_recession')*1000) with linespoints title 'recession of the followed point', "
+          "'' using (column('tonnes')/T):(column('point_recession')*1000) with linespoints title 'recession of followed point 1', "
           "'' using (column('tonnes')/T):(column('edge_recession')*1000) with linespoints title 'edge recession (gauged along the edge)', "
           "'' using (column('tonnes')/T):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'"
        << extra.str() << "\n";
     if (marks.extrapolated && marks.life > marks.last_tonnes)
-      gp << marks.last_tonnes << " " << 1000 * marks.last_value << "\n" << marks.life << " " << 1000 * marks.limit << "\ne\n";
+      // (inline data under the file's settings: comma-separated, a header line first; with
+      // spaces and no header gnuplot skipped it, and the extrapolation was never drawn)
+      gp << "tonnes,value\n" << marks.last_tonnes << "," << 1000 * marks.last_value << "\n" << marks.life << ","
+         << 1000 * marks.limit << "\ne\n";
     gp << "unset xrange\nunset yrange\nunset y2range\n"
           "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
     for (double f : planes)

@@ -37,6 +37,8 @@ namespace abrade::coupling::lifetime
   struct TrajectoryMarks
   {
     double depth_limit = 0, recession_limit = 0, edge_limit = 0;
+    double plate_limit = 0;           ///< Minimum plate thickness (0: none; then not drawn)
+    std::size_t recession_points = 1; ///< the followed points (point_recession, _2, ...): each drawn
     bool   extrapolated = false;
     double last_tonnes = 0, last_value = 0, life = 0, limit = 0;
   };
