@@ -239,7 +239,9 @@ namespace abrade::report
           if (files.size() > 2)
             stages.push_back({files[files.size() / 2].second, "wear_depth", "after " + tonnes(files[files.size() / 2].first)});
           stages.push_back({files.back().second, "wear_depth", "after " + tonnes(files.back().first)});
-          if (!render_surfaces(dir + "/report", "knife_wear.png", stages))
+          RenderOptions laid; // (a long part face on: surface_views.h)
+          laid.face_on_elongation = 3;
+          if (!render_surfaces(dir + "/report", "knife_wear.png", stages, laid))
             page.paragraph("(the knife's pictures could not be drawn: gnuplot, or the knife's VTU files, are missing)");
           page.png(dir + "/report/knife_wear.png",
                      "The knife coloured by wear depth (mm below the design surface) at the design, the middle update and "

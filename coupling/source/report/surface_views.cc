@@ -17,6 +17,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 namespace abrade::report
 {
@@ -63,29 +64,56 @@ namespace abrade::report
     /// Writes the triangles of @p s's surface as pm3d quadrangles (each triangle a 2 x 2 patch
     /// with its third corner doubled) in mm, the field times @p scale as the colour (a point
     /// cloud as points: @p as_points); false when the file or the field is missing.
-    bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, double scale,
-                         std::vector<double> &values, bool &as_points)
+    using Frame = std::pair<Eigen::Matrix3d, Eigen::Vector3d>; ///< p -> R (p - c)
+
+    /// The frame that lays a part face on: its largest spread along x, the middle along y, the
+    /// smallest along z (right-handed), about its mean; and its extents there.
+    std::pair<Frame, Eigen::Vector3d> face_on_frame(vtkPolyData *poly)
+    {
+      auto [r, mean] = principal_frame(poly); // rows: largest, smallest, middle
+      Eigen::Matrix3d f;
+      f.row(0) = r.row(0), f.row(1) = r.row(2), f.row(2) = r.row(0).cross(r.row(2));
+      Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+      for (vtkIdType k = 0; k < poly->GetNumberOfPoints(); ++k)
+        {
+          const Eigen::Vector3d q = f * (Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(k)) - mean);
+          lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+        }
+      return {{f, mean}, hi - lo};
+    }
+
+    /// @p file's surface as triangles (nullptr when it cannot be read).
+    vtkSmartPointer<vtkPolyData> triangles_of_file(const std::string &file)
     {
       std::error_code e;
-      if (!std::filesystem::is_regular_file(s.file, e))
-        return false;
+      if (!std::filesystem::is_regular_file(file, e))
+        return nullptr;
       auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
-      reader->SetFileName(s.file.c_str());
+      reader->SetFileName(file.c_str());
       reader->Update();
       auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
       surface->SetInputConnection(reader->GetOutputPort());
       auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
       triangles->SetInputConnection(surface->GetOutputPort());
       triangles->Update();
-      vtkPolyData *poly = triangles->GetOutput();
-      if (!poly || poly->GetNumberOfPoints() == 0)
+      vtkSmartPointer<vtkPolyData> poly = triangles->GetOutput();
+      return poly && poly->GetNumberOfPoints() > 0 ? poly : nullptr;
+    }
+
+    /// @p fixed: the frame to draw in (else @p align's principal axes, or as it is).
+    bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, double scale,
+                         std::vector<double> &values, bool &as_points, const Frame *fixed = nullptr)
+    {
+      const vtkSmartPointer<vtkPolyData> poly = triangles_of_file(s.file);
+      if (!poly)
         return false;
       vtkDataArray *at_points = poly->GetPointData()->GetArray(s.field.c_str());
       vtkDataArray *at_cells  = poly->GetCellData()->GetArray(s.field.c_str());
       if (!at_points && !at_cells)
         return false;
-      const auto [rotation, centre] = align ? principal_frame(poly)
-                                            : std::pair{Eigen::Matrix3d(Eigen::Matrix3d::Identity()), Eigen::Vector3d(Eigen::Vector3d::Zero())};
+      const auto [rotation, centre] = fixed ? *fixed
+                                      : align ? principal_frame(poly)
+                                              : std::pair{Eigen::Matrix3d(Eigen::Matrix3d::Identity()), Eigen::Vector3d(Eigen::Vector3d::Zero())};
       auto place = [&, rotation = rotation, centre = centre](double *p) {
         const Eigen::Vector3d q = rotation * (Eigen::Map<const Eigen::Vector3d>(p) - centre);
         p[0] = q[0], p[1] = q[1], p[2] = q[2];
@@ -142,11 +170,26 @@ namespace abrade::report
     const std::string stem = std::filesystem::path(png).stem().string();
     std::vector<double> values;
     std::vector<char>   as_points(surfaces.size(), 0);
+    // a long part (its largest extent face_on_elongation times its middle one, or more) is laid
+    // face on, its two sides one above the other at full width, so that it fills its panels;
+    // every surface in the first one's frame
+    Eigen::Vector3d extent = Eigen::Vector3d::Zero();
+    Frame           front;
+    if (options.face_on_elongation > 0 && !surfaces.empty())
+      if (const auto poly = triangles_of_file(surfaces.front().file))
+        std::tie(front, extent) = face_on_frame(poly);
+    const bool face_on = extent[1] > 0 && extent[0] >= options.face_on_elongation * extent[1];
+    Frame      back    = front;
+    back.first.row(1) *= -1, back.first.row(2) *= -1; // (turned half round x: the other side up)
     for (std::size_t k = 0; k < surfaces.size(); ++k)
       {
-        bool points = false;
-        if (!write_triangles(surfaces[k], directory + "/" + stem + "_" + std::to_string(k) + ".dat", options.align,
-                             options.categories.empty() ? 1000.0 : 1.0, values, points))
+        bool              points = false;
+        const std::string name   = directory + "/" + stem + "_" + std::to_string(k);
+        if (!write_triangles(surfaces[k], name + ".dat", options.align, options.categories.empty() ? 1000.0 : 1.0,
+                             values, points, face_on ? &front : nullptr))
+          return false;
+        std::vector<double> again; // (the same values)
+        if (face_on && !write_triangles(surfaces[k], name + "_back.dat", false, 1000.0, again, points, &back))
           return false;
         as_points[k] = points;
       }
@@ -164,20 +207,33 @@ namespace abrade::report
     if (!(hi > lo))
       hi = lo + 1e-3;
 
-    // one column per surface, the front view above the back view
-    const int     columns = int(surfaces.size());
     std::ofstream gp(directory + "/" + stem + ".gp");
+    // one column per surface, the front view above the back view (face on: a row each, the
+    // panels as wide as the picture and as high as the part's shape asks)
+    const int     columns = int(surfaces.size());
     // wear of one cycle is a few micrometres: then the colour bar is in um
     const bool   categorical = !options.categories.empty();
     const double unit = hi < 0.01 && !signed_range && !categorical ? 1000.0 : 1.0;
     std::string  label = options.label;
     if (unit != 1.0 && label.size() > 4 && label.compare(label.size() - 4, 4, "[mm]") == 0)
       label = label.substr(0, label.size() - 4) + "[um]";
-    gp << "set terminal pngcairo size " << std::max(700, 400 * columns) << ",860 font 'DejaVu Sans,10'\n"
-       << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
-       << "set multiplot layout 2," << columns << " rowsfirst\n"
-       << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
-       << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n";
+    // (face on: the part 1246 px wide, 0.01 ... 0.9 of the width, its colour bar beside it;
+    // each panel as high as the part's shape asks, with 26 px for its title)
+    const int part_px = std::clamp(int(1246 * extent[1] / (extent[0] > 0 ? extent[0] : 1)), 60, 660);
+    const int panel   = face_on ? part_px + 26 : 0; // [px]
+    if (face_on)
+      gp << "set terminal pngcairo size 1400," << 2 * columns * panel << " font 'DejaVu Sans,10'\n"
+         << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
+         << "set multiplot\n"
+         << "set view map\nset size ratio -1\nunset tics\nunset border\nunset key\n"
+         << "set colorbox\n"
+         << "set pm3d depthorder corners2color mean\n";
+    else
+      gp << "set terminal pngcairo size " << std::max(700, 400 * columns) << ",860 font 'DejaVu Sans,10'\n"
+         << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
+         << "set multiplot layout 2," << columns << " rowsfirst\n"
+         << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
+         << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n";
     if (categorical) // one colour per category, named on the colour bar
       {
         const std::size_t n = options.categories.size();
@@ -195,7 +251,20 @@ namespace abrade::report
          << (signed_range ? "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
                           : "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n");
 
-    for (int v = 0; v < 2; ++v)
+    if (face_on) // each surface's two sides, laid flat, one above the other, each in its box
+      for (std::size_t k = 0; k < surfaces.size(); ++k)
+        for (int v = 0; v < 2; ++v)
+          {
+            const double height = 2.0 * double(columns * panel), row = double(2 * k + v);
+            const double top = 1 - (row * panel + 26) / height, bottom = 1 - (row + 1) * panel / height;
+            gp << "set lmargin at screen 0.01\nset rmargin at screen 0.9\n"
+               << "set tmargin at screen " << top << "\nset bmargin at screen " << bottom << "\n"
+               << "set colorbox user origin screen 0.915, " << bottom << " size screen 0.012, " << top - bottom
+               << "\nset title '" << quote_free(surfaces[k].title)
+               << (v == 0 ? " (one side)" : " (the other side)") << "' offset 0,-0.8\nsplot '" << stem << "_" << k
+               << (v == 0 ? ".dat" : "_back.dat") << "' using 1:2:3:(column(4)*" << unit << ") with pm3d\n";
+          }
+    for (int v = 0; v < 2 && !face_on; ++v)
       for (std::size_t k = 0; k < surfaces.size(); ++k)
         {
           // two sides of the part: from the front and above, and from the back

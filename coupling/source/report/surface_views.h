@@ -39,6 +39,11 @@ namespace abrade::report
       std::array<double, 3> normal{};
     };
     std::vector<Label> labels;
+    /// Lay a long part face on: when the first surface's largest extent is this many times its
+    /// middle one or more (0: never), each surface is drawn in the first one's principal frame
+    /// from its two sides, one above the other at full width, so that a 4 m x 0.3 m blade
+    /// fills its panels instead of a strip of them.
+    double face_on_elongation = 0;
   };
 
   /// @p path made absolute and ready for gnuplot's `set output '...'` (a quote doubled): the
