@@ -68,6 +68,8 @@ r = json.load(open(sys.argv[1]))["results"]["lifetime"]
 assert r["predicted_tonnes_to_end_of_life"] > 0, r
 print("ok: the case ran as written: predicted life %.4g t" % r["predicted_tonnes_to_end_of_life"])
 PY
+# a part from a file is called a part on its page
+grep -q "<h2>The worn part</h2>" run/report.html || { echo "the bucket is called a knife"; exit 1; }
 # the trajectory draws both followed points and the end of life's depth
 grep -q "recession of followed point 2" run/lifetime.gp && grep -q "end of life: depth" run/lifetime.gp ||
   { echo "run/lifetime.gp does not draw every followed point and the limit"; exit 1; }

@@ -1187,6 +1187,7 @@ namespace abrade::coupling::lifetime
     r["remeshes_inside_worn_surface"] = surfaces_kept;
     r["updates_off_volume"]           = updates_off_volume;
     r["smoothing_radius"] = s.smoothing;
+    r["part"]             = knife_parameters.from_file ? "part" : "knife"; // (what the report calls it)
     if (particle_radius > 0) // (the size W and the footprint hold for: docs/coarse-graining.md)
       r["particle_radius"] = particle_radius;
     r["coarse_graining_factor"] = dem_case.coarse_graining;

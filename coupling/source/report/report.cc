@@ -158,7 +158,9 @@ namespace abrade::report
       const Tree        none;
       const auto        results = summary.get_child_optional("results.lifetime");
       const Tree       &r       = results ? *results : none;
-      HtmlPage          page("Knife lifetime prediction");
+      // a part from a file is a part, the parametric knife a knife (summary.json lifetime.part)
+      const std::string part    = text_at(r, "part") == "part" ? "part" : "knife";
+      HtmlPage          page(part == "part" ? "Part lifetime prediction" : "Knife lifetime prediction");
       const std::string status  = text_at(summary, "status");
       if (!status.empty() && status != "completed")
         page.headline("<span id=\"headline-status\"><b>This run did not complete</b></span>: " + escape_html(status) +
@@ -204,7 +206,7 @@ namespace abrade::report
               where.push_back(v.get_value<double>());
           if (where.size() == 3)
             headline << " at x = " << mm(where[0]) << " mm, y = " << mm(where[1]) << " mm, z = " << mm(where[2])
-                     << " mm (the knife's frame)";
+                     << " mm (the " << part << "'s frame)";
           std::string method = text_at(r, "end_of_life_method");
           if (!method.empty())
             method[0] = char(std::toupper(static_cast<unsigned char>(method[0])));
@@ -229,7 +231,7 @@ namespace abrade::report
                "recession and the worn volume.",
                "trajectory");
 
-      page.heading("The worn knife");
+      page.heading("The worn " + part);
       const auto files = fs::exists(dir + "/knife/knife.pvd") ? pvd_files(dir + "/knife/knife.pvd")
                                                               : std::vector<std::pair<double, std::string>>();
       if (!files.empty())
@@ -241,13 +243,17 @@ namespace abrade::report
           stages.push_back({files.back().second, "wear_depth", "after " + tonnes(files.back().first)});
           RenderOptions laid; // (a long part face on: surface_views.h)
           laid.face_on_elongation = 3;
-          if (!render_surfaces(dir + "/report", "knife_wear.png", stages, laid))
-            page.paragraph("(the knife's pictures could not be drawn: gnuplot, or the knife's VTU files, are missing)");
+          bool face_on            = false;
+          if (!render_surfaces(dir + "/report", "knife_wear.png", stages, laid, &face_on))
+            page.paragraph("(the " + part + "'s pictures could not be drawn: gnuplot, or its VTU files, are missing)");
           page.png(dir + "/report/knife_wear.png",
-                     "The knife coloured by wear depth (mm below the design surface) at the design, the middle update and "
-                     "the last update of the run, seen from two opposite sides (top row: from +x, -y; bottom row: from "
-                     "-x, +y); one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
-                     "knife");
+                   "The " + part + " coloured by wear depth (mm below the design surface) at the design, the middle "
+                   "update and the last update of the run, " +
+                     std::string(face_on ? "laid face on (its longest extent across the picture), each from its two "
+                                           "sides, one above the other"
+                                         : "seen from two opposite sides (top row: from +x, -y; bottom row: from -x, +y)") +
+                     "; one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
+                   "knife");
         }
       std::vector<fs::path> profiles;
       if (fs::is_directory(dir + "/knife"))
@@ -256,7 +262,7 @@ namespace abrade::report
             profiles.push_back(entry.path());
       std::sort(profiles.begin(), profiles.end());
       for (const auto &p : profiles)
-        page.png(p.string(), "Cross-section of the knife at " + p.stem().string().substr(8) +
+        page.png(p.string(), "Cross-section of the " + part + " at " + p.stem().string().substr(8) +
                                " of its length: the profile after every update, y and z in mm.", "profile");
 
       page.heading("Updates");

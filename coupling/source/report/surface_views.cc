@@ -163,7 +163,7 @@ namespace abrade::report
   }
 
   bool render_surfaces(const std::string &directory, const std::string &png, const std::vector<SurfacePicture> &surfaces,
-                       const RenderOptions &options)
+                       const RenderOptions &options, bool *laid_face_on)
   {
     const bool signed_range = options.signed_range;
     std::filesystem::create_directories(directory);
@@ -179,6 +179,8 @@ namespace abrade::report
       if (const auto poly = triangles_of_file(surfaces.front().file))
         std::tie(front, extent) = face_on_frame(poly);
     const bool face_on = extent[1] > 0 && extent[0] >= options.face_on_elongation * extent[1];
+    if (laid_face_on)
+      *laid_face_on = face_on;
     Frame      back    = front;
     back.first.row(1) *= -1, back.first.row(2) *= -1; // (turned half round x: the other side up)
     for (std::size_t k = 0; k < surfaces.size(); ++k)

@@ -59,8 +59,9 @@ namespace abrade::report
   bool write_pm3d_surface(const SurfacePicture &picture, const std::string &out, double scale, std::vector<double> &values);
 
   /// Draws @p surfaces, one column each with two views (front above back), into
-  /// @p directory/@p png (the data and the gnuplot script stay beside it). Returns false (and
+  /// @p directory/@p png (the data and the gnuplot script stay beside it); @p laid_face_on
+  /// says whether a long part was laid face on (RenderOptions::face_on_elongation). Returns false (and
   /// leaves no picture) when a file cannot be read or gnuplot fails.
   bool render_surfaces(const std::string &directory, const std::string &png, const std::vector<SurfacePicture> &surfaces,
-                       const RenderOptions &options = {});
+                       const RenderOptions &options = {}, bool *laid_face_on = nullptr);
 } // namespace abrade::report
