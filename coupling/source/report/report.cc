@@ -15,6 +15,7 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -65,6 +66,20 @@ namespace abrade::report
     {
       const auto v = t.get_optional<std::string>(key);
       return v ? *v : std::string();
+    }
+
+    /// The first @p N numbers of the list at @p key of @p t (zeros where the list is shorter or
+    /// missing): a point, a box.
+    template <std::size_t N>
+    std::array<double, N> numbers_at(const Tree &t, const std::string &key)
+    {
+      std::array<double, N> out{};
+      std::size_t           d = 0;
+      if (const auto list = t.get_child_optional(key))
+        for (const auto &[i, x] : *list)
+          if (d < N)
+            out[d++] = x.template get_value<double>();
+      return out;
     }
 
     std::string number(double x, int digits = 4) { return io::format_number(x, digits); }
@@ -200,13 +215,12 @@ namespace abrade::report
               headline << ")";
             }
           headline << ", by " << escape_html(criterion);
-          std::vector<double> where;
-          if (const auto w = r.get_child_optional("end_of_life_where"))
-            for (const auto &[k, v] : *w)
-              where.push_back(v.get_value<double>());
-          if (where.size() == 3)
-            headline << " at x = " << mm(where[0]) << " mm, y = " << mm(where[1]) << " mm, z = " << mm(where[2])
-                     << " mm (the " << part << "'s frame)";
+          if (r.get_child_optional("end_of_life_where") && r.get_child("end_of_life_where").size() == 3)
+            {
+              const auto where = numbers_at<3>(r, "end_of_life_where");
+              headline << " at x = " << mm(where[0]) << " mm, y = " << mm(where[1]) << " mm, z = " << mm(where[2])
+                       << " mm (the " << part << "'s frame)";
+            }
           std::string method = text_at(r, "end_of_life_method");
           if (!method.empty())
             method[0] = char(std::toupper(static_cast<unsigned char>(method[0])));
@@ -557,30 +571,13 @@ namespace abrade::report
     void case_setup_section(HtmlPage &page, const std::string &dir, const Tree &scene,
                             const std::vector<std::pair<std::string, std::string>> &roles)
     {
-      auto box = [&](const char *key) {
-        std::array<double, 6> b{};
-        int                   d = 0;
-        if (const auto list = scene.get_child_optional(key))
-          for (const auto &[i, x] : *list)
-            if (d < 6)
-              b[d++] = x.get_value<double>();
-        return b;
-      };
-      auto point = [](const Tree &list) {
-        std::array<double, 3> p{};
-        int                   d = 0;
-        for (const auto &[i, x] : list)
-          if (d < 3)
-            p[d++] = x.get_value<double>();
-        return p;
-      };
       CaseSetupPicture setup{dir + "/knife/scene_part.vtp", dir + "/knife/scene_walls.dat", dir + "/knife/scene_path.dat",
-                             box("domain"), box("fill_region"), {}};
+                             numbers_at<6>(scene, "domain"), numbers_at<6>(scene, "fill_region"), {}};
       std::vector<std::vector<std::string>> legs;
       if (const auto path = scene.get_child_optional("path"))
         for (const auto &[i, leg] : *path)
           {
-            const auto start = point(leg.get_child("start")), end = point(leg.get_child("end"));
+            const auto start = numbers_at<3>(leg, "start"), end = numbers_at<3>(leg, "end");
             setup.phase_ends.push_back({text_at(leg, "phase"), end});
             legs.push_back({text_at(leg, "wall"), text_at(leg, "phase"), mm(start[0]) + ", " + mm(start[1]) + ", " + mm(start[2]),
                             mm(end[0]) + ", " + mm(end[1]) + ", " + mm(end[2])});
@@ -638,15 +635,7 @@ namespace abrade::report
             total += f.get<double>("area", 0);
           for (const auto &[key, f] : *k->get_child_optional("file_faces"))
             {
-              std::array<double, 3> c{}, n{};
-              int                   d = 0;
-              for (const auto &[i, x] : f.get_child("centre"))
-                if (d < 3)
-                  c[d++] = x.get_value<double>();
-              d = 0;
-              for (const auto &[i, x] : f.get_child("normal"))
-                if (d < 3)
-                  n[d++] = x.get_value<double>();
+              const auto c = numbers_at<3>(f, "centre"), n = numbers_at<3>(f, "normal");
               const std::string id = text_at(f, "id"), name = text_at(f, "name");
               const double      area = f.get<double>("area", 0);
               if (area >= 0.002 * total)
