@@ -1,3 +1,4 @@
+#include <abrade/common/plane_section.h>
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
@@ -8,13 +9,11 @@
 #include <abrade/field/worn_volume.h>
 
 #include <vtkCellArray.h>
-#include <vtkCutter.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
 #include <vtkKdTreePointLocator.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
-#include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkCellData.h>
@@ -224,29 +223,8 @@ namespace abrade::field
             }
           return;
         }
-      vtkNew<vtkPlane> plane;
-      double           origin[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
-      origin[axis] = at, normal[axis] = 1;
-      plane->SetOrigin(origin);
-      plane->SetNormal(normal);
-      vtkNew<vtkCutter> cut;
-      cut->SetCutFunction(plane);
-      cut->SetInputData(g.data);
-      cut->Update();
-      vtkPolyData *lines = cut->GetOutput();
-      for (vtkIdType c = 0; c < lines->GetNumberOfCells(); ++c)
-        {
-          vtkIdType        n;
-          const vtkIdType *ids;
-          lines->GetCellPoints(c, n, ids);
-          for (vtkIdType k = 0; k + 1 < n; ++k)
-            {
-              const double *a = lines->GetPoint(ids[k]);
-              const double  pa[3] = {a[0], a[1], a[2]};
-              const double *b = lines->GetPoint(ids[k + 1]);
-              out << curve << ' ' << pa[u] << ' ' << pa[v] << ' ' << b[u] << ' ' << b[v] << '\n';
-            }
-        }
+      for (const auto &c : io::plane_section(g.data, axis, at))
+        out << curve << ' ' << c.u0 << ' ' << c.v0 << ' ' << c.u1 << ' ' << c.v1 << '\n';
     }
 
     /// The plots zoom to where the scan differs most: the (u, v) box of the scan points whose

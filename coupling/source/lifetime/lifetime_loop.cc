@@ -1004,7 +1004,7 @@ namespace abrade::coupling::lifetime
     trajectory_rows.push_back(trajectory.row(row));
     trajectory.flush();
 
-    write_profiles(surface, frame, s.planes, update, ctx.output.root() + "/knife");
+    write_profiles(surface, knife->design_surface(), frame, s.planes, update, ctx.output.root() + "/knife");
     knife->write(*knife_output, tonnes);
     char stl[64];
     std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
@@ -1309,7 +1309,26 @@ namespace abrade::coupling::lifetime
             marks.life         = e.tonnes;
             marks.limit        = criteria[e.criterion].limit;
           }
-        plot_lifetime(ctx.output.root(), s.planes, frame, marks);
+        // the cross-section through the place that ended the life, the quantity drawn there
+        WorstSection worst;
+        worst.where   = where.size() == 3 ? where : deepest;
+        worst.updates = long(history.size()) - 1;
+        const auto mm = [](double v) { return io::format_number(1000 * v, 4) + " mm"; };
+        const int  c  = e.criterion == EndOfLife::none || worn_through ? -1 : int(e.criterion);
+        const std::string after = " after update " + std::to_string(worst.updates);
+        if (c >= 0 && c != mass_criterion)
+          worst.mark.text = (c == depth_criterion       ? "depth below the design "
+                             : c == recession_criterion ? "recession of the followed point (circled) "
+                             : c == edge_criterion      ? "edge recession (a height gauge, between the dashed lines) "
+                                                        : "plate thickness lost ") +
+                            mm(history.back().values[c]) + after + " (end of life at " + mm(criteria[c].limit) + ")";
+        else
+          worst.mark.text = (worn_through ? "worn through; " : c == mass_criterion ? "the whole part's worn mass ends the life; " : "") +
+                            std::string("the deepest point, ") + mm(history.back().values[depth_criterion]) +
+                            " below the design" + after;
+        worst.mark.lowest_points = c == edge_criterion;
+        worst.mark.to_design     = c == depth_criterion || c < 0 || c == mass_criterion;
+        plot_lifetime(ctx.output.root(), s.planes, frame, marks, &worst);
       }
     std::ostringstream line;
     if (e.criterion != EndOfLife::none && !e.reached && end.rfind("no wear", 0) == 0)

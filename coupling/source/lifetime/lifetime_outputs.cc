@@ -3,6 +3,7 @@
 #include <abrade/common/external.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/common/format_number.h>
+#include <abrade/coupling/lifetime/sections.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,30 +41,24 @@ namespace abrade::coupling::lifetime
     return f;
   }
 
-  void write_profiles(const fem::SolidSurface &s, const ProfileFrame &frame, const std::vector<double> &planes,
-                      long update, const std::string &dir)
+  void write_profiles(const fem::SolidSurface &s, const fem::SolidSurface &design, const ProfileFrame &frame,
+                      const std::vector<double> &planes, long update, const std::string &dir)
   {
     for (double f : planes)
       {
         const double  x0    = frame.x0 + f * (frame.x1 - frame.x0);
         const bool    first = update == 1;
         std::ofstream out(dir + "/" + profile_name(f) + ".csv", first ? std::ios::trunc : std::ios::app);
-        if (first)
-          out << "# update y0 z0 y1 z1 (one segment per line; a block per update)\n";
         out.precision(10);
-        for (const auto &t : s.triangles)
-          {
-            std::vector<dealii::Point<3>> cut;
-            for (int e = 0; e < 3; ++e)
-              {
-                const auto &a = s.vertices[t[e]], &b = s.vertices[t[(e + 1) % 3]];
-                if ((a[0] - x0) * (b[0] - x0) < 0)
-                  cut.push_back(a + (x0 - a[0]) / (b[0] - a[0]) * (b - a));
-              }
-            if (cut.size() == 2)
-              out << update << ' ' << cut[0][1] << ' ' << cut[0][2] << ' ' << cut[1][1] << ' ' << cut[1][2] << '\n';
-          }
-        out << "\n\n";
+        auto block = [&](const fem::SolidSurface &surface, long u) {
+          for (const auto &c : io::plane_section(surface.as_polydata(), 0, x0))
+            out << u << ' ' << c.u0 << ' ' << c.v0 << ' ' << c.u1 << ' ' << c.v1 << '\n';
+          out << "\n\n";
+        };
+        if (first) // the design's outline as update 0
+          out << "# update y0 z0 y1 z1 [m] (one segment per line; a block per update, update 0 the design)\n",
+            block(design, 0);
+        block(s, update);
       }
   }
 
@@ -101,7 +96,7 @@ namespace abrade::coupling::lifetime
             long               u = 0;
             double             v[4];
             std::string        rest;
-            const bool         ok = (words >> u >> v[0] >> v[1] >> v[2] >> v[3]) && !(words >> rest) && u >= 1 &&
+            const bool         ok = (words >> u >> v[0] >> v[1] >> v[2] >> v[3]) && !(words >> rest) && u >= 0 &&
                             std::isfinite(v[0] + v[1] + v[2] + v[3]);
             if (!ok && n + 1 == last)
               break;
@@ -120,7 +115,7 @@ namespace abrade::coupling::lifetime
   }
 
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame,
-                     const TrajectoryMarks &marks)
+                     const TrajectoryMarks &marks, const WorstSection *worst)
   {
     // the limits as horizontal lines, every followed point, an extrapolation dashed to the
     // predicted life
@@ -170,24 +165,55 @@ namespace abrade::coupling::lifetime
          << 1000 * marks.limit << "\ne\n";
     gp << "unset xrange\nunset yrange\nunset y2range\n"
           "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
+    // the cross-sections: the design's outline and the updates', zoomed to where they differ
+    std::vector<std::string> pictures = {"trajectory.png"};
     for (double f : planes)
       {
-        const std::string name = "knife/" + profile_name(f);
-        // the worn end of the knife, at its true shape
-        gp << "set output '" << name << ".png'\nset xlabel 'y [mm]'\nset ylabel 'z [mm]'\nset key outside\n"
-           << "set xrange [" << 1000 * frame.y0 << ":" << 1000 * frame.y1 << "]\nset yrange ["
-           << 1000 * frame.z0 - 2 << ":" << 1000 * frame.z1 << "]\n"
-           << "stats '" << name << ".csv' nooutput\n"
-           << "plot for [i=0:STATS_blocks-1] '" << name
-           << ".csv' index i using ($2*1000):($3*1000):(($4-$2)*1000):(($5-$3)*1000) with vectors nohead "
-              "title sprintf('update %d', i+1)\n";
+        const std::string name   = "knife/" + profile_name(f);
+        const auto        blocks = read_section_blocks(dir + "/" + name + ".csv");
+        const auto        window = section_window(blocks);
+        if (section_plot(gp, blocks, window, name + ".png",
+                         "cross-section at " + io::format_number(f, 3) + " of the length (x = " +
+                           io::format_number(1000 * (frame.x0 + f * (frame.x1 - frame.x0)), 5) + " mm)" +
+                           (window.zoomed ? ", zoomed to the wear" : "")))
+          pictures.push_back(name + ".png");
+      }
+    // the cross-section through the place that ended the life (or the deepest point), cut
+    // from the design and every update's surface (knife/knife_N.stl)
+    if (worst && worst->where.size() == 3)
+      {
+        std::map<long, std::vector<Segment>> blocks;
+        for (long u = 0; u <= worst->updates; ++u)
+          {
+            char stl[64];
+            std::snprintf(stl, sizeof stl, "/knife/knife_%05ld.stl", u);
+            try
+              {
+                blocks[u] = io::plane_section_of_file(dir + stl, 0, worst->where[0]);
+              }
+            catch (const std::exception &) // (a file missing: that update is not drawn)
+              {
+              }
+          }
+        write_section_blocks(dir + "/knife/section_worst.csv", blocks);
+        auto window = section_window(blocks);
+        // the place itself inside, with a margin
+        const double y = worst->where[1], z = worst->where[2];
+        const double margin = 0.1 * std::max(window.y1 - window.y0, window.z1 - window.z0);
+        window.y0 = std::min(window.y0, y - margin), window.y1 = std::max(window.y1, y + margin);
+        window.z0 = std::min(window.z0, z - margin), window.z1 = std::max(window.z1, z + margin);
+        SectionMark mark = worst->mark;
+        mark.shown       = true;
+        mark.at          = {y, z};
+        if (section_plot(gp, blocks, window, "knife/section_worst.png",
+                         "cross-section through where the life ended (x = " + io::format_number(1000 * worst->where[0], 5) +
+                           " mm)" + (window.zoomed ? ", zoomed to the wear" : ""),
+                         mark))
+          pictures.push_back("knife/section_worst.png");
       }
     gp.close();
     if (!gp)
       throw RunError("cannot write " + dir + "/lifetime.gp (disk full?)");
-    std::vector<std::string> pictures = {"trajectory.png"};
-    for (double f : planes)
-      pictures.push_back("knife/" + profile_name(f) + ".png");
     io::run_gnuplot_for(dir, "lifetime.gp", pictures);
   }
 } // namespace abrade::coupling::lifetime

@@ -166,6 +166,42 @@ namespace abrade::report
         page.details("Parameter file as run (parameters.prm)", read_text(dir + "/parameters.prm"));
     }
 
+    /// The worst region, zoomed: the last surface (@p file, titled @p title) within a few wear
+    /// depths of where the life ended (summary.json's end_of_life_where, else the deepest point
+    /// of the last update in trajectory.csv), circled, seen from the side its wear faces.
+    void worst_region_picture(HtmlPage &page, const std::string &dir, const Tree &r, const std::string &part,
+                              const std::string &file, const std::string &title)
+    {
+      std::array<double, 3> where{};
+      if (r.get_child_optional("end_of_life_where") && r.get_child("end_of_life_where").size() == 3)
+        where = numbers_at<3>(r, "end_of_life_where");
+      else
+        {
+          const io::CsvTable csv = read_table(dir + "/trajectory.csv");
+          const int          x   = csv.find("deepest_x");
+          if (csv.rows.empty() || x < 0 || csv.find("deepest_z") != x + 2)
+            return;
+          for (int c = 0; c < 3; ++c)
+            where[c] = std::atof(csv.rows.back()[x + c].c_str());
+        }
+      // six depths or five triangles around it, whichever is more, no less than 6 % and no more
+      // than 35 % of the part's size
+      const SurfaceSize size   = surface_size(file);
+      const double      radius = std::min(std::max({6 * r.get<double>("max_depth", 0), 5 * size.mean_edge,
+                                                    0.06 * size.largest_extent}),
+                                          0.35 * size.largest_extent);
+      RenderOptions zoom;
+      zoom.crop = {where, radius};
+      zoom.labels.push_back({where, "where the life ended", {}, true});
+      render_surfaces(dir + "/report", "worst_region.png", {{file, "wear_depth", title}}, zoom);
+      page.png(dir + "/report/worst_region.png",
+               "The worst region, zoomed: the " + part + " within " + mm(radius) + " mm of where the life ended (circled: x = " +
+                 mm(where[0]) + ", y = " + mm(where[1]) + ", z = " + mm(where[2]) +
+                 " mm; a followed point is circled where it was on the design), coloured by wear depth (mm below the "
+                 "design surface), seen from the side its wear faces, 35 degrees to either side of it.",
+               "worst");
+    }
+
     // ---------------------------------------------------------------------------------------
 
     std::string lifetime_page(const std::string &dir, const Tree &summary)
@@ -268,6 +304,7 @@ namespace abrade::report
                                          : "seen from two opposite sides (top row: from +x, -y; bottom row: from -x, +y)") +
                      "; one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
                    "knife");
+          worst_region_picture(page, dir, r, part, files.back().second, "after " + tonnes(files.back().first));
         }
       std::vector<fs::path> profiles;
       if (fs::is_directory(dir + "/knife"))
@@ -275,9 +312,17 @@ namespace abrade::report
           if (entry.path().extension() == ".png" && entry.path().stem().string().rfind("profile_", 0) == 0)
             profiles.push_back(entry.path());
       std::sort(profiles.begin(), profiles.end());
+      if (fs::exists(dir + "/knife/section_worst.csv"))
+        page.png(dir + "/knife/section_worst.png",
+                 "Cross-section of the " + part + " through where the life ended (circled), normal to x: the design's "
+                 "outline (black) and the worn outlines of the updates (up to six), zoomed to where they differ; the "
+                 "quantity that ended the life is drawn there and named below; y and z in mm.",
+                 "section-worst");
       for (const auto &p : profiles)
         page.png(p.string(), "Cross-section of the " + part + " at " + p.stem().string().substr(8) +
-                               " of its length: the profile after every update, y and z in mm.", "profile");
+                               " of its length: the design's outline (black) and the worn outlines of the updates, "
+                               "zoomed to where they differ; y and z in mm.",
+                 "profile");
 
       page.heading("Updates");
       const io::CsvTable csv = read_table(dir + "/trajectory.csv");

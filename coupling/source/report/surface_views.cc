@@ -102,8 +102,11 @@ namespace abrade::report
 
     /// @p fixed: the frame to draw in (else @p align's principal axes, or as it is).
     bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, double scale,
-                         std::vector<double> &values, bool &as_points, const Frame *fixed = nullptr)
+                         std::vector<double> &values, bool &as_points, const Frame *fixed = nullptr,
+                         const RenderOptions::Crop &crop = {})
     {
+      const Eigen::Vector3d crop_centre(crop.centre[0], crop.centre[1], crop.centre[2]);
+      auto outside = [&](const Eigen::Vector3d &p) { return crop.radius > 0 && (p - crop_centre).norm() > crop.radius; };
       const vtkSmartPointer<vtkPolyData> poly = triangles_of_file(s.file);
       if (!poly)
         return false;
@@ -125,6 +128,8 @@ namespace abrade::report
           {
             double p[3];
             poly->GetPoint(k, p);
+            if (outside(Eigen::Map<const Eigen::Vector3d>(p)))
+              continue;
             place(p);
             const double v = scale * at_points->GetComponent(k, 0);
             if (!std::isfinite(v))
@@ -139,6 +144,14 @@ namespace abrade::report
           poly->GetCellPoints(c, n, ids);
           if (n != 3)
             continue;
+          if (crop.radius > 0)
+            {
+              Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+              for (int k = 0; k < 3; ++k)
+                centre += Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[k])) / 3;
+              if (outside(centre))
+                continue;
+            }
           double x[3][4];
           for (int k = 0; k < 3; ++k)
             {
@@ -154,7 +167,109 @@ namespace abrade::report
         }
       return bool(data);
     }
+
+    /// gnuplot's view angles (rot_x, rot_z in degrees) that look from the direction @p d (unit,
+    /// towards the viewer: gnuplot's viewer lies towards (sin x sin z, -sin x cos z, cos x)).
+    std::pair<double, double> view_angles(const Eigen::Vector3d &d)
+    {
+      const double x = std::acos(std::clamp(d[2], -1.0, 1.0)) * 180 / M_PI;
+      double       z = std::atan2(d[0], -d[1]) * 180 / M_PI;
+      return {x, z < 0 ? z + 360 : z};
+    }
+
+    /// The two views of a zoomed region of @p file (RenderOptions::Crop): from the side its
+    /// wear faces -- the triangles' normals, each turned away from the part's middle, weighted
+    /// by area and @p field -- 35 degrees to either side of it, across the region's thinnest
+    /// spread. Empty when the region holds no triangle.
+    std::vector<std::pair<double, double>> zoom_views(const std::string &file, const std::string &field,
+                                                      const RenderOptions::Crop &crop)
+    {
+      const auto poly = triangles_of_file(file);
+      if (!poly)
+        return {};
+      vtkDataArray *at_points = poly->GetPointData()->GetArray(field.c_str());
+      vtkDataArray *at_cells  = poly->GetCellData()->GetArray(field.c_str());
+      Eigen::Vector3d middle  = Eigen::Vector3d::Zero();
+      for (vtkIdType k = 0; k < poly->GetNumberOfPoints(); ++k)
+        middle += Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(k)) / double(poly->GetNumberOfPoints());
+      const Eigen::Vector3d centre(crop.centre[0], crop.centre[1], crop.centre[2]);
+      Eigen::Vector3d       facing = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
+      std::vector<Eigen::Vector3d> inside;
+      for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          poly->GetCellPoints(c, n, ids);
+          if (n != 3)
+            continue;
+          Eigen::Vector3d p[3];
+          double          value = 0;
+          for (int k = 0; k < 3; ++k)
+            {
+              p[k] = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[k]));
+              value += (at_points ? at_points->GetComponent(ids[k], 0) : at_cells ? at_cells->GetComponent(c, 0) : 0.0) / 3;
+            }
+          const Eigen::Vector3d m = (p[0] + p[1] + p[2]) / 3;
+          if ((m - centre).norm() > crop.radius)
+            continue;
+          Eigen::Vector3d a = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]); // area x normal
+          if (a.dot(m - middle) < 0)
+            a = -a;
+          facing += a * (std::abs(value) + 1e-12);
+          inside.push_back(m);
+          mean += m;
+        }
+      if (inside.empty())
+        return {};
+      mean /= double(inside.size());
+      Eigen::Vector3d d = facing.norm() > 0 ? facing.normalized() : (centre - middle).normalized();
+      if (!d.allFinite())
+        d = Eigen::Vector3d(0, -1, 0);
+      // the tilt: across the region's thinnest spread that is not along d
+      Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+      for (const auto &m : inside)
+        spread += (m - mean) * (m - mean).transpose();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> e(spread); // ascending
+      Eigen::Vector3d                                across = Eigen::Vector3d::UnitZ();
+      for (int k = 0; k < 3; ++k)
+        if (std::abs(e.eigenvectors().col(k).dot(d)) < 0.7)
+          {
+            across = e.eigenvectors().col(k);
+            break;
+          }
+      across = (across - across.dot(d) * d).normalized();
+      const double t = 35 * M_PI / 180;
+      return {view_angles(std::cos(t) * d + std::sin(t) * across), view_angles(std::cos(t) * d - std::sin(t) * across)};
+    }
   } // namespace
+
+  SurfaceSize surface_size(const std::string &file)
+  {
+    SurfaceSize size;
+    const auto  poly = triangles_of_file(file);
+    if (!poly)
+      return size;
+    double b[6];
+    poly->GetBounds(b);
+    size.largest_extent = std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
+    double    sum = 0;
+    vtkIdType n   = 0;
+    for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+      {
+        vtkIdType        k;
+        const vtkIdType *ids;
+        poly->GetCellPoints(c, k, ids);
+        for (vtkIdType e = 0; e < k; ++e, ++n)
+          {
+            // (GetPoint returns one buffer: each point copied before the next is read)
+            const Eigen::Vector3d a = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[e]));
+            const Eigen::Vector3d b = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[(e + 1) % k]));
+            sum += (a - b).norm();
+          }
+      }
+    size.mean_edge = n > 0 ? sum / double(n) : 0.0;
+    return size;
+  }
 
   bool write_pm3d_surface(const SurfacePicture &picture, const std::string &out, double scale, std::vector<double> &values)
   {
@@ -175,7 +290,7 @@ namespace abrade::report
     // every surface in the first one's frame
     Eigen::Vector3d extent = Eigen::Vector3d::Zero();
     Frame           front;
-    if (options.face_on_elongation > 0 && !surfaces.empty())
+    if (options.face_on_elongation > 0 && !surfaces.empty() && options.crop.radius <= 0)
       if (const auto poly = triangles_of_file(surfaces.front().file))
         std::tie(front, extent) = face_on_frame(poly);
     const bool face_on = extent[1] > 0 && extent[0] >= options.face_on_elongation * extent[1];
@@ -188,7 +303,7 @@ namespace abrade::report
         bool              points = false;
         const std::string name   = directory + "/" + stem + "_" + std::to_string(k);
         if (!write_triangles(surfaces[k], name + ".dat", options.align, options.categories.empty() ? 1000.0 : 1.0,
-                             values, points, face_on ? &front : nullptr))
+                             values, points, face_on ? &front : nullptr, options.crop))
           return false;
         std::vector<double> again; // (the same values)
         if (face_on && !write_triangles(surfaces[k], name + "_back.dat", false, 1000.0, again, points, &back))
@@ -266,14 +381,24 @@ namespace abrade::report
                << (v == 0 ? " (one side)" : " (the other side)") << "' offset 0,-0.8\nsplot '" << stem << "_" << k
                << (v == 0 ? ".dat" : "_back.dat") << "' using 1:2:3:(column(4)*" << unit << ") with pm3d\n";
           }
+    // two sides of the part: from the front and above, and from the back (a zoom: from the
+    // side its wear faces, to either side of it)
+    std::vector<std::pair<double, double>> views = {{70, 25}, {70, 205}};
+    std::vector<std::string>               sides = {" (front)", " (back)"};
+    if (options.crop.radius > 0 && !surfaces.empty())
+      {
+        views = zoom_views(surfaces.front().file, surfaces.front().field, options.crop);
+        sides = {" (one side of the worn face)", " (its other side)"};
+        if (views.empty())
+          return false;
+      }
     for (int v = 0; v < 2 && !face_on; ++v)
       for (std::size_t k = 0; k < surfaces.size(); ++k)
         {
-          // two sides of the part: from the front and above, and from the back
           // one colour bar per row, beside the last picture
           // the labels whose normals face this view's viewer (gnuplot's view: turned rot_z
           // about z, then rot_x about x; the viewer towards (sin x sin z, -sin x cos z, cos x))
-          const double rot_x = 70 * M_PI / 180, rot_z = (v == 0 ? 25 : 205) * M_PI / 180;
+          const double rot_x = views[v].first * M_PI / 180, rot_z = views[v].second * M_PI / 180;
           const double viewer[3] = {std::sin(rot_x) * std::sin(rot_z), -std::sin(rot_x) * std::cos(rot_z), std::cos(rot_x)};
           gp << "unset label\n";
           if (!options.align)
@@ -281,10 +406,13 @@ namespace abrade::report
               if (l.normal[0] * viewer[0] + l.normal[1] * viewer[1] + l.normal[2] * viewer[2] > 0.05 ||
                   l.normal[0] * l.normal[0] + l.normal[1] * l.normal[1] + l.normal[2] * l.normal[2] < 0.25)
                 gp << "set label '" << quote_free(l.text) << "' at " << 1000 * l.at[0] << "," << 1000 * l.at[1] << ","
-                   << 1000 * l.at[2] << " front center font ',8' textcolor rgb 'black'\n";
+                   << 1000 * l.at[2]
+                   << (l.marker ? " front left offset 1.5,0 font ',10' textcolor rgb 'red' point pt 6 ps 3 lw 2 lc rgb 'red'\n"
+                                : " front center font ',8' textcolor rgb 'black'\n");
           gp << (k + 1 == surfaces.size() ? "set colorbox\n" : "unset colorbox\n")
-             << "set view " << (v == 0 ? "70, 25" : "70, 205") << ", 1.1\n"
-             << "set title '" << quote_free(surfaces[k].title) << (v == 0 ? " (front)" : " (back)") << "' offset 0,1\n"
+             << "set view " << views[v].first << ", " << views[v].second << ", " << (options.crop.radius > 0 ? 1.6 : 1.1)
+             << "\n"
+             << "set title '" << quote_free(surfaces[k].title) << sides[v] << "' offset 0,1\n"
              << "splot '" << stem << "_" << k << ".dat' using 1:2:3:(column(4)*" << unit << ") "
              << (as_points[k] ? "with points pointtype 7 pointsize 0.35 palette\n" : "with pm3d\n");
         }

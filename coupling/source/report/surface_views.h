@@ -37,6 +37,7 @@ namespace abrade::report
       std::array<double, 3> at{};
       std::string           text;
       std::array<double, 3> normal{};
+      bool                  marker = false; ///< a red circle at the point, the text beside it
     };
     std::vector<Label> labels;
     /// Lay a long part face on: when the first surface's largest extent is this many times its
@@ -44,7 +45,24 @@ namespace abrade::report
     /// from its two sides, one above the other at full width, so that a 4 m x 0.3 m blade
     /// fills its panels instead of a strip of them.
     double face_on_elongation = 0;
+    /// A zoom on a region: only the triangles whose centre lies within @p radius [m] of
+    /// @p centre (radius 0: all), seen from the side the region's wear faces (its normals,
+    /// weighted by area and the field, turned away from the part's middle), 35 degrees to
+    /// either side of it.
+    struct Crop
+    {
+      std::array<double, 3> centre{};
+      double                radius = 0;
+    } crop;
   };
+
+  /// The size of @p file's surface [m]: its largest extent along x, y or z, and its triangles'
+  /// mean edge (zeros: it cannot be read).
+  struct SurfaceSize
+  {
+    double largest_extent = 0, mean_edge = 0;
+  };
+  SurfaceSize surface_size(const std::string &file);
 
   /// @p path made absolute and ready for gnuplot's `set output '...'` (a quote doubled): the
   /// picture named inside the run's directory, whatever gnuplot's working directory.

@@ -2,6 +2,8 @@
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_output.h>
 
+#include "vtk_polydata.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -33,49 +35,47 @@ namespace abrade::io
       std::copy(f.values.begin(), f.values.end(), a->GetPointer(0));
       return a;
     }
-
-
-    /// The VTK form of @p data: points, triangles (or vertices for a point cloud), fields.
-    vtkSmartPointer<vtkPolyData> to_vtk(const PolyData &data, const std::string &path)
-    {
-      const std::size_t n_points = data.points.size() / 3;
-      vtkNew<vtkPoints> points;
-      points->SetDataTypeToDouble();
-      points->SetNumberOfPoints(n_points);
-      for (std::size_t i = 0; i < n_points; ++i)
-        points->SetPoint(i, &data.points[3 * i]);
-
-      auto poly = vtkSmartPointer<vtkPolyData>::New();
-      poly->SetPoints(points);
-      vtkNew<vtkCellArray> cells;
-      std::size_t          n_cells;
-      if (data.triangles.empty())
-        {
-          for (std::size_t i = 0; i < n_points; ++i)
-            {
-              vtkIdType id = i;
-              cells->InsertNextCell(1, &id);
-            }
-          poly->SetVerts(cells);
-          n_cells = n_points;
-        }
-      else
-        {
-          for (const auto &t : data.triangles)
-            {
-              vtkIdType ids[3] = {t[0], t[1], t[2]};
-              cells->InsertNextCell(3, ids);
-            }
-          poly->SetPolys(cells);
-          n_cells = data.triangles.size();
-        }
-      for (const auto &f : data.point_fields)
-        poly->GetPointData()->AddArray(make_array(f, n_points, path));
-      for (const auto &f : data.cell_fields)
-        poly->GetCellData()->AddArray(make_array(f, n_cells, path));
-      return poly;
-    }
   } // namespace
+
+  vtkSmartPointer<vtkPolyData> to_vtk(const PolyData &data, const std::string &path)
+  {
+    const std::size_t n_points = data.points.size() / 3;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(n_points);
+    for (std::size_t i = 0; i < n_points; ++i)
+      points->SetPoint(i, &data.points[3 * i]);
+
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    vtkNew<vtkCellArray> cells;
+    std::size_t          n_cells;
+    if (data.triangles.empty())
+      {
+        for (std::size_t i = 0; i < n_points; ++i)
+          {
+            vtkIdType id = i;
+            cells->InsertNextCell(1, &id);
+          }
+        poly->SetVerts(cells);
+        n_cells = n_points;
+      }
+    else
+      {
+        for (const auto &t : data.triangles)
+          {
+            vtkIdType ids[3] = {t[0], t[1], t[2]};
+            cells->InsertNextCell(3, ids);
+          }
+        poly->SetPolys(cells);
+        n_cells = data.triangles.size();
+      }
+    for (const auto &f : data.point_fields)
+      poly->GetPointData()->AddArray(make_array(f, n_points, path));
+    for (const auto &f : data.cell_fields)
+      poly->GetCellData()->AddArray(make_array(f, n_cells, path));
+    return poly;
+  }
 
   void write_vtp(const std::string &path, const PolyData &data)
   {

@@ -2,6 +2,7 @@
 // The lifetime loop's files besides trajectory.csv and the knife series: cross-sections of the
 // knife per update (knife/profile_F.csv, blocks per update) and the gnuplot figures
 // (trajectory.png, knife/profile_F.png).
+#include <abrade/coupling/lifetime/sections.h>
 #include <abrade/fem/solid_surface.h>
 
 #include <string>
@@ -11,8 +12,8 @@ namespace abrade::coupling::lifetime
 {
   /// Where the knife's cross-sections are taken and what the figures show, from the design
   /// surface's bounding box (the knife's frame: x along the edge, z up from the edge): the
-  /// planes x = x0 + f (x1 - x0); the figures span y over twice the part's thickness and z from
-  /// its lowest point up to three thicknesses (the worn end).
+  /// planes x = x0 + f (x1 - x0); y over twice the part's thickness and z from its lowest
+  /// point up to three thicknesses (the worn end, where the gauges look for the whole plate).
   struct ProfileFrame
   {
     double x0 = 0, x1 = 1, y0 = -1, y1 = 1, z0 = 0, z1 = 1;
@@ -20,10 +21,10 @@ namespace abrade::coupling::lifetime
   ProfileFrame profile_frame(const fem::SolidSurface &design);
 
   /// The knife's cross-sections at the fractions @p planes of its length: segments (y, z) where
-  /// surface triangles cross the plane, appended as update @p update's block (the first update
-  /// starts the files).
-  void write_profiles(const fem::SolidSurface &s, const ProfileFrame &frame, const std::vector<double> &planes,
-                      long update, const std::string &directory);
+  /// surface triangles cross the plane (sections.h), appended as update @p update's block; the
+  /// first update starts the files with the outline of @p design as update 0.
+  void write_profiles(const fem::SolidSurface &s, const fem::SolidSurface &design, const ProfileFrame &frame,
+                      const std::vector<double> &planes, long update, const std::string &directory);
 
   /// Cuts the profile files back to the blocks of updates <= @p update (resume), each replaced
   /// at once (written aside, renamed). A line that is not a profile segment is an InputError
@@ -43,8 +44,19 @@ namespace abrade::coupling::lifetime
     double last_tonnes = 0, last_value = 0, life = 0, limit = 0;
   };
 
+  /// The cross-section through the place that ended the life (knife/section_worst.csv and
+  /// .png): the place @p where in the part's frame [m], the updates' surfaces it is cut from
+  /// (knife/knife_00000.stl ... knife_N.stl, N = @p updates) and what is drawn there.
+  struct WorstSection
+  {
+    std::vector<double> where;
+    long                updates = 0;
+    SectionMark         mark;
+  };
+
   /// trajectory.png (wear depth, recession and worn volume vs tonnes, the limits and an
-  /// extrapolation) and knife/profile_F.png.
+  /// extrapolation), knife/profile_F.png and, given @p worst, knife/section_worst.png: each
+  /// cross-section with the design's outline, zoomed to the wear (sections.h).
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame,
-                     const TrajectoryMarks &marks = {});
+                     const TrajectoryMarks &marks = {}, const WorstSection *worst = nullptr);
 } // namespace abrade::coupling::lifetime
