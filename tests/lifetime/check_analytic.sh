@@ -36,8 +36,10 @@
 # 0.978, a uniform depth removes less than that at convex edges) within 0.1 %: the clamped top's
 # rim moves within its plane (held still, it took 1 % more: 0.969); edge: within 3 % of the
 # Archard volume.
-#  edge_gauged: the edge run to 20 mm of gauged edge recession: its section through the gauge's
-#            station (knife/section_worst.csv) reads the gauge's edge recession (2e-6 m).
+#  edge_gauged, edge_mass: the edge run (its rate x (1 + 10 x)) to 20 mm of gauged edge
+#            recession: its section through the gauge's station (knife/section_worst.csv) reads
+#            the gauge's edge recession (2e-6 m); and to 50 g of worn mass: the section through
+#            the deepest point holds it.
 #   check_analytic.sh ABRADE TESTDIR OUTDIR
 set -euo pipefail
 abrade=$1 dir=$2 out=$3
@@ -67,11 +69,16 @@ seeds uniform_seeds_resumed 4,5,6 --resume
 # in the same update: the depth limit ends life, at 12,000 t
 "$abrade" run "$dir/analytic_one_face.prm" --output "$out/one_face_through" --quiet \
   --set "Lifetime/Cycles per update=40000" --set "Lifetime/Smoothing radius=0" > /dev/null
-# ended by the gauged edge: the cross-section through the gauge's station, cut from the exported
-# surfaces, rises as the gauge read it on the surfaces in memory (check_sections.py)
+# ended by the gauged edge (a rate growing along x: a section at another x reads another rise):
+# the cross-section through the gauge's station, cut from the exported surfaces, rises as the
+# gauge read it on the surfaces in memory; ended by the worn mass: the section through the
+# deepest point (check_sections.py)
 "$abrade" run "$dir/analytic_edge.prm" --output "$out/edge_gauged" --quiet --set "Lifetime/Maximum depth=0" \
-  --set "Lifetime/Maximum edge recession=0.02" > /dev/null
+  --set "Lifetime/Maximum edge recession=0.02" --set "Lifetime/Analytic wear rate=2e-6*exp(-z/0.05)*(1+10*x)" > /dev/null
 python3 "$dir/../report/check_sections.py" "$out/edge_gauged" --part-height 0.25
+"$abrade" run "$dir/analytic_edge.prm" --output "$out/edge_mass" --quiet --set "Lifetime/Maximum depth=0" \
+  --set "Lifetime/Maximum worn mass=0.05" > /dev/null
+python3 "$dir/../report/check_sections.py" "$out/edge_mass" --part-height 0.25
 for ((u = 1; u < $(wc -l < "$out/edge/trajectory.csv"); ++u)); do
   python3 "$dir/front_2d.py" "$out/edge" --update $u --tolerance 0.0005 --top 0.08
 done

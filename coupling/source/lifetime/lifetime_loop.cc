@@ -1323,9 +1323,11 @@ namespace abrade::coupling::lifetime
                                                         : "plate thickness lost ") +
                             mm(history.back().values[c]) + after + " (end of life at " + mm(criteria[c].limit) + ")";
         else
-          worst.mark.text = (worn_through ? "worn through; " : c == mass_criterion ? "the whole part's worn mass ends the life; " : "") +
-                            std::string("the deepest point, ") + mm(history.back().values[depth_criterion]) +
-                            " below the design" + after;
+          worst.mark.text = worn_through ? "worn through (circled); the largest depth below the design " +
+                                             mm(history.back().values[depth_criterion]) + after
+                                         : (c == mass_criterion ? "the whole part's worn mass ends the life; " : "") +
+                                             std::string("the deepest point, ") +
+                                             mm(history.back().values[depth_criterion]) + " below the design" + after;
         worst.mark.lowest_points = c == edge_criterion;
         worst.mark.to_design     = c == depth_criterion || c < 0 || c == mass_criterion;
         plot_lifetime(ctx.output.root(), s.planes, frame, marks, &worst);

@@ -23,6 +23,12 @@ namespace abrade::coupling::lifetime
     }
   } // namespace
 
+  double plane_x(const ProfileFrame &frame, double f)
+  {
+    // (the ends a thousandth of the length inside: a plane on an end face lies in it, cuts nothing)
+    return frame.x0 + std::clamp(f, 1e-3, 1 - 1e-3) * (frame.x1 - frame.x0);
+  }
+
   ProfileFrame profile_frame(const fem::SolidSurface &design)
   {
     ProfileFrame f;
@@ -46,7 +52,7 @@ namespace abrade::coupling::lifetime
   {
     for (double f : planes)
       {
-        const double  x0    = frame.x0 + f * (frame.x1 - frame.x0);
+        const double  x0    = plane_x(frame, f);
         const bool    first = update == 1;
         std::ofstream out(dir + "/" + profile_name(f) + ".csv", first ? std::ios::trunc : std::ios::app);
         out.precision(10);
@@ -174,7 +180,7 @@ namespace abrade::coupling::lifetime
         const auto        window = section_window(blocks);
         if (section_plot(gp, blocks, window, name + ".png",
                          "cross-section at " + io::format_number(f, 3) + " of the length (x = " +
-                           io::format_number(1000 * (frame.x0 + f * (frame.x1 - frame.x0)), 5) + " mm)" +
+                           io::format_number(1000 * plane_x(frame, f), 5) + " mm)" +
                            (window.zoomed ? ", zoomed to the wear" : "")))
           pictures.push_back(name + ".png");
       }
@@ -182,33 +188,61 @@ namespace abrade::coupling::lifetime
     // from the design and every update's surface (knife/knife_N.stl)
     if (worst && worst->where.size() == 3)
       {
+        auto stl = [&](long u) {
+          char name[64];
+          std::snprintf(name, sizeof name, "/knife/knife_%05ld.stl", u);
+          return dir + name;
+        };
+        // normal to x, unless the surface there is a face square to x (a worn end): a plane
+        // normal to x would lie in that face, not cut it; then the plane of the other two
+        // axes that holds the face's normal best
+        const std::array<double, 3> place = {worst->where[0], worst->where[1], worst->where[2]};
+        int                         axis  = 0;
+        try
+          {
+            const auto n = io::normal_magnitudes_near(stl(worst->updates), place);
+            if (n[0] > 0.7)
+              axis = n[1] < n[2] ? 1 : 2;
+          }
+        catch (const std::exception &)
+          {
+          }
         std::map<long, std::vector<Segment>> blocks;
         for (long u = 0; u <= worst->updates; ++u)
-          {
-            char stl[64];
-            std::snprintf(stl, sizeof stl, "/knife/knife_%05ld.stl", u);
-            try
-              {
-                blocks[u] = io::plane_section_of_file(dir + stl, 0, worst->where[0]);
-              }
-            catch (const std::exception &) // (a file missing: that update is not drawn)
-              {
-              }
-          }
-        write_section_blocks(dir + "/knife/section_worst.csv", blocks);
-        auto window = section_window(blocks);
+          try
+            {
+              blocks[u] = io::plane_section_of_file(stl(u), axis, place[axis]);
+            }
+          catch (const std::exception &) // (a file missing: that update is not drawn)
+            {
+            }
+        const char  *axes = "xyz";
+        const int    iu = (axis + 1) % 3, iv = (axis + 2) % 3;
+        const std::string plane = std::string(1, axes[axis]) + " = " + io::format_number(1000 * place[axis], 5) + " mm";
+        write_section_blocks(dir + "/knife/section_worst.csv", blocks,
+                             "section " + std::string(1, axes[axis]) + " " + io::format_number(place[axis], 10) +
+                               ": u, v are " + axes[iu] + ", " + axes[iv]);
+        auto         window = section_window(blocks);
+        const double u = place[iu], v = place[iv];
+        // a thin layer along a long face: centred on the place, five of its depths around it
+        const double d = window.largest_distance;
+        if (d > 0 && std::max(window.y1 - window.y0, window.z1 - window.z0) > 10 * d)
+          window = {u - 5 * d, u + 5 * d, v - 5 * d, v + 5 * d, true, d};
         // the place itself inside, with a margin
-        const double y = worst->where[1], z = worst->where[2];
         const double margin = 0.1 * std::max(window.y1 - window.y0, window.z1 - window.z0);
-        window.y0 = std::min(window.y0, y - margin), window.y1 = std::max(window.y1, y + margin);
-        window.z0 = std::min(window.z0, z - margin), window.z1 = std::max(window.z1, z + margin);
+        window.y0 = std::min(window.y0, u - margin), window.y1 = std::max(window.y1, u + margin);
+        window.z0 = std::min(window.z0, v - margin), window.z1 = std::max(window.z1, v + margin);
         SectionMark mark = worst->mark;
         mark.shown       = true;
-        mark.at          = {y, z};
+        mark.at          = {u, v};
+        mark.lowest_points = mark.lowest_points && axis == 0; // (the gauge's sections are normal to x)
+        if (!blocks.empty() && blocks.rbegin()->first != worst->updates)
+          mark.text += " (the last surface found, knife_" + std::to_string(blocks.rbegin()->first) +
+                       ".stl, is drawn: a later one is missing)";
         if (section_plot(gp, blocks, window, "knife/section_worst.png",
-                         "cross-section through where the life ended (x = " + io::format_number(1000 * worst->where[0], 5) +
-                           " mm)" + (window.zoomed ? ", zoomed to the wear" : ""),
-                         mark))
+                         "cross-section through where the life ended (" + plane + ")" +
+                           (window.zoomed ? ", zoomed to the wear" : ""),
+                         mark, std::string(1, axes[iu]).c_str(), std::string(1, axes[iv]).c_str()))
           pictures.push_back("knife/section_worst.png");
       }
     gp.close();

@@ -28,10 +28,13 @@ namespace abrade::coupling::lifetime
     return blocks;
   }
 
-  void write_section_blocks(const std::string &file, const std::map<long, std::vector<Segment>> &blocks)
+  void write_section_blocks(const std::string &file, const std::map<long, std::vector<Segment>> &blocks,
+                            const std::string &comment)
   {
     std::ofstream out(file);
-    out << "# update y0 z0 y1 z1 [m] (one segment per line; a block per update, update 0 the design)\n";
+    if (!comment.empty())
+      out << "# " << comment << "\n";
+    out << "# update u0 v0 u1 v1 [m] (one segment per line; a block per update, update 0 the design)\n";
     out.precision(10);
     for (const auto &[u, segments] : blocks)
       {
@@ -133,8 +136,16 @@ namespace abrade::coupling::lifetime
   }
 
   bool section_plot(std::ostream &gp, const std::map<long, std::vector<Segment>> &blocks, const SectionWindow &window,
-                    const std::string &png, const std::string &title, const SectionMark &mark)
+                    const std::string &png, const std::string &title, const SectionMark &mark, const char *u_name,
+                    const char *v_name)
   {
+    // text inside gnuplot's single quotes: a quote doubled ("the part's")
+    auto quoted = [](const std::string &text) {
+      std::string q;
+      for (const char c : text)
+        q += c == '\'' ? std::string("''") : std::string(1, c);
+      return q;
+    };
     if (blocks.empty() || !(window.y1 > window.y0 && window.z1 > window.z0))
       return false;
     // the updates drawn: all up to six, else six spread over the run, the first and the last
@@ -163,8 +174,9 @@ namespace abrade::coupling::lifetime
           d << 1000 * s.u0 << ' ' << 1000 * s.v0 << ' ' << 1000 * (s.u1 - s.u0) << ' ' << 1000 * (s.v1 - s.v0) << '\n';
       return d.str() + "e\n";
     };
-    gp << "set output '" << png << "'\nset title '" << title << "' noenhanced\nunset label\nunset arrow\n"
-       << "set xlabel 'y [mm]'\nset ylabel 'z [mm]'\nset size ratio -1\nset key rmargin top vertical maxrows auto\n"
+    gp << "set output '" << quoted(png) << "'\nset title '" << quoted(title) << "' noenhanced\nunset label\nunset arrow\n"
+       << "set xlabel '" << u_name << " [mm]'\nset ylabel '" << v_name
+       << " [mm]'\nset size ratio -1\nset key rmargin top vertical maxrows auto\n"
        << "set xrange [" << 1000 * window.y0 << ":" << 1000 * window.y1 << "]\nset yrange [" << 1000 * window.z0 << ":"
        << 1000 * window.z1 << "]\n";
     std::ostringstream curves, inline_data;
@@ -181,7 +193,7 @@ namespace abrade::coupling::lifetime
     if (mark.shown)
       {
         const double y = 1000 * mark.at[0], z = 1000 * mark.at[1];
-        gp << "set label 1 '" << mark.text << "' at screen 0.5, screen 0.02 center front noenhanced textcolor rgb 'red'\n"
+        gp << "set label 1 '" << quoted(mark.text) << "' at screen 0.5, screen 0.02 center front noenhanced textcolor rgb 'red'\n"
            << "set bmargin 5\n";
         if (mark.lowest_points && design != blocks.end() && !updates.empty())
           {

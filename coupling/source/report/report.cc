@@ -193,6 +193,8 @@ namespace abrade::report
       RenderOptions zoom;
       zoom.crop = {where, radius};
       zoom.labels.push_back({where, "where the life ended", {}, true});
+      std::error_code ec; // (a picture of an earlier report is not this one's)
+      fs::remove(dir + "/report/worst_region.png", ec);
       render_surfaces(dir + "/report", "worst_region.png", {{file, "wear_depth", title}}, zoom);
       page.png(dir + "/report/worst_region.png",
                "The worst region, zoomed: the " + part + " within " + mm(radius) + " mm of where the life ended (circled: x = " +

@@ -178,8 +178,9 @@ namespace abrade::report
     }
 
     /// The two views of a zoomed region of @p file (RenderOptions::Crop): from the side its
-    /// wear faces -- the triangles' normals, each turned away from the part's middle, weighted
-    /// by area and @p field -- 35 degrees to either side of it, across the region's thinnest
+    /// wear faces -- against the surface's motion there (wear_displacement) where the file has
+    /// it, else the triangles' normals, each turned away from the part's middle, weighted by
+    /// area and @p field -- 35 degrees to either side of it, across the region's thinnest
     /// spread. Empty when the region holds no triangle.
     std::vector<std::pair<double, double>> zoom_views(const std::string &file, const std::string &field,
                                                       const RenderOptions::Crop &crop)
@@ -222,6 +223,22 @@ namespace abrade::report
       if (inside.empty())
         return {};
       mean /= double(inside.size());
+      // where the surface moved (a lifetime run's wear_displacement, inward): seen from where
+      // the material was, whatever the triangles' orientation and the part's shape (a bucket's
+      // worn floor faces its cavity, whose middle the normals above would turn away from)
+      if (vtkDataArray *moved = poly->GetPointData()->GetArray("wear_displacement");
+          moved && moved->GetNumberOfComponents() == 3)
+        {
+          Eigen::Vector3d away = Eigen::Vector3d::Zero();
+          for (vtkIdType k = 0; k < poly->GetNumberOfPoints(); ++k)
+            {
+              const Eigen::Vector3d p = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(k));
+              if ((p - centre).norm() <= crop.radius)
+                away -= Eigen::Vector3d(moved->GetComponent(k, 0), moved->GetComponent(k, 1), moved->GetComponent(k, 2));
+            }
+          if (away.norm() > 0)
+            facing = away;
+        }
       Eigen::Vector3d d = facing.norm() > 0 ? facing.normalized() : (centre - middle).normalized();
       if (!d.allFinite())
         d = Eigen::Vector3d(0, -1, 0);
@@ -410,7 +427,7 @@ namespace abrade::report
                    << (l.marker ? " front left offset 1.5,0 font ',10' textcolor rgb 'red' point pt 6 ps 3 lw 2 lc rgb 'red'\n"
                                 : " front center font ',8' textcolor rgb 'black'\n");
           gp << (k + 1 == surfaces.size() ? "set colorbox\n" : "unset colorbox\n")
-             << "set view " << views[v].first << ", " << views[v].second << ", " << (options.crop.radius > 0 ? 1.6 : 1.1)
+             << "set view " << views[v].first << ", " << views[v].second << ", " << (options.crop.radius > 0 ? 1.45 : 1.1)
              << "\n"
              << "set title '" << quote_free(surfaces[k].title) << sides[v] << "' offset 0,1\n"
              << "splot '" << stem << "_" << k << ".dat' using 1:2:3:(column(4)*" << unit << ") "

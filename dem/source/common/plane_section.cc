@@ -8,6 +8,9 @@
 #include <vtkNew.h>
 #include <vtkPlane.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace abrade::io
 {
   std::vector<SectionSegment> plane_section(vtkPolyData *surface, int axis, double at)
@@ -52,5 +55,54 @@ namespace abrade::io
   std::vector<SectionSegment> plane_section_of_file(const std::string &file, int axis, double at)
   {
     return plane_section(read_polydata(file).Get(), axis, at);
+  }
+
+  std::array<double, 3> normal_magnitudes_near(const std::string &file, const std::array<double, 3> &point)
+  {
+    const auto poly = read_polydata(file);
+    struct Near
+    {
+      double                distance, area;
+      std::array<double, 3> normal;
+    };
+    std::vector<Near> triangles;
+    for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+      {
+        vtkIdType        n;
+        const vtkIdType *ids;
+        poly->GetCellPoints(c, n, ids);
+        if (n != 3)
+          continue;
+        double p[3][3];
+        for (int k = 0; k < 3; ++k)
+          poly->GetPoint(ids[k], p[k]);
+        double e1[3], e2[3], m[3], d2 = 0;
+        for (int i = 0; i < 3; ++i)
+          {
+            e1[i] = p[1][i] - p[0][i], e2[i] = p[2][i] - p[0][i];
+            m[i] = (p[0][i] + p[1][i] + p[2][i]) / 3;
+            d2 += (m[i] - point[i]) * (m[i] - point[i]);
+          }
+        const std::array<double, 3> a = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                                         e1[0] * e2[1] - e1[1] * e2[0]};
+        const double                l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        if (l > 0)
+          triangles.push_back({d2, 0.5 * l, {a[0] / l, a[1] / l, a[2] / l}});
+      }
+    const std::size_t k = std::min<std::size_t>(8, triangles.size());
+    std::partial_sort(triangles.begin(), triangles.begin() + long(k), triangles.end(),
+                      [](const Near &a, const Near &b) { return a.distance < b.distance; });
+    std::array<double, 3> sum{};
+    double                area = 0;
+    for (std::size_t t = 0; t < k; ++t)
+      {
+        for (int i = 0; i < 3; ++i)
+          sum[i] += triangles[t].area * std::abs(triangles[t].normal[i]);
+        area += triangles[t].area;
+      }
+    if (area > 0)
+      for (double &c : sum)
+        c /= area;
+    return sum;
   }
 } // namespace abrade::io

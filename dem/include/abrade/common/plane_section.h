@@ -4,6 +4,7 @@
 // of the part per update (coupling/lifetime/sections.h).
 #include <abrade/common/vtk_output.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -26,4 +27,10 @@ namespace abrade::io
   /// The same of a surface file (what io::read_polydata reads: .stl, .vtp, ...); an InputError
   /// when it cannot be read.
   std::vector<SectionSegment> plane_section_of_file(const std::string &file, int axis, double at);
+
+  /// How the surface of @p file faces at @p point: the area-weighted mean of each component's
+  /// magnitude of the unit normals of the eight triangles whose centres lie nearest (near 1 in
+  /// x: a face square to x there, which a plane normal to x would lie in, not cut). An
+  /// InputError when the file cannot be read; zeros when it holds no triangle.
+  std::array<double, 3> normal_magnitudes_near(const std::string &file, const std::array<double, 3> &point);
 } // namespace abrade::io

@@ -19,6 +19,8 @@ namespace abrade::coupling::lifetime
     double x0 = 0, x1 = 1, y0 = -1, y1 = 1, z0 = 0, z1 = 1;
   };
   ProfileFrame profile_frame(const fem::SolidSurface &design);
+  /// The plane x of the fraction @p f of the length (0 and 1 a thousandth inside the ends).
+  double plane_x(const ProfileFrame &frame, double f);
 
   /// The knife's cross-sections at the fractions @p planes of its length: segments (y, z) where
   /// surface triangles cross the plane (sections.h), appended as update @p update's block; the

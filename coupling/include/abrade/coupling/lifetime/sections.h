@@ -20,8 +20,10 @@ namespace abrade::coupling::lifetime
   /// 'update y0 z0 y1 z1', update 0 the design); an empty map when the file cannot be read.
   std::map<long, std::vector<Segment>> read_section_blocks(const std::string &file);
 
-  /// Writes @p blocks as a section file (the format read_section_blocks reads).
-  void write_section_blocks(const std::string &file, const std::map<long, std::vector<Segment>> &blocks);
+  /// Writes @p blocks as a section file (the format read_section_blocks reads), @p comment
+  /// (where the plane lies) on its first line.
+  void write_section_blocks(const std::string &file, const std::map<long, std::vector<Segment>> &blocks,
+                            const std::string &comment = "");
 
   /// What a section's picture shows: the window [m] and whether it was zoomed to the wear
   /// (where the last outline lies off the design's by a fifth of the largest distance or
@@ -50,6 +52,8 @@ namespace abrade::coupling::lifetime
   /// The gnuplot commands that draw @p blocks (the design black and thick, up to six updates
   /// spread over the run, the last among them) into @p png in @p window, titled @p title;
   /// false when there is nothing to draw.
+  /// @p u_name, @p v_name: the plane's axes (y, z for a plane normal to x).
   bool section_plot(std::ostream &gp, const std::map<long, std::vector<Segment>> &blocks, const SectionWindow &window,
-                    const std::string &png, const std::string &title, const SectionMark &mark = {});
+                    const std::string &png, const std::string &title, const SectionMark &mark = {},
+                    const char *u_name = "y", const char *v_name = "z");
 } // namespace abrade::coupling::lifetime
