@@ -1,5 +1,6 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
+#include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_section.h>
@@ -180,7 +181,10 @@ namespace abrade::coupling
 
   void declare_parameters(ParameterHandler &prm, const DeclarationLists &lists)
   {
-    prm.declare_entry("Job", "dem", Selection("dem|bed|knife|lifetime"),
+    std::string jobs; // (the registry's names: jobs.cc)
+    for (const auto &job : registered_jobs())
+      jobs += (jobs.empty() ? "" : "|") + job.name;
+    prm.declare_entry("Job", "dem", Selection(jobs),
                       "What `abrade run` does. dem: one DEM simulation of the phases in "
                       "Simulation/Phases (generate or load the bed, run, write output); bed: only "
                       "generate and settle the bed and save it to Particles/Settling/Bed file (for "
