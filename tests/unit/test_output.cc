@@ -52,6 +52,22 @@ TEST(Csv, HeaderRowsAndWidthCheck)
   std::filesystem::remove(p);
 }
 
+// A row by column name: written in the header's order whatever the pairs' order; a column
+// missing, unknown or given twice is a bug, named (trajectory.csv's rows are built this way).
+TEST(Csv, RowsByColumnName)
+{
+  const std::string p = tmp("abrade_test_named.csv");
+  {
+    io::CsvWriter c(p, {"update", "tonnes", "depth"});
+    EXPECT_EQ(c.named_row({{"depth", 0.5}, {"update", 1}, {"tonnes", 400}}), "1,400,0.5");
+    EXPECT_THROW(c.named_row({{"update", 2}, {"tonnes", 800}}), std::logic_error);
+    EXPECT_THROW(c.named_row({{"update", 2}, {"tonnes", 800}, {"depth", 1}, {"mass", 3}}), std::logic_error);
+    EXPECT_THROW(c.named_row({{"update", 2}, {"update", 3}, {"tonnes", 800}}), std::logic_error);
+  }
+  EXPECT_EQ(slurp(p), "update,tonnes,depth\n1,400,0.5\n");
+  std::filesystem::remove(p);
+}
+
 TEST(Vtk, PolyDataAndPvdSeries)
 {
   const std::string dir = tmp("abrade_vtk_test");

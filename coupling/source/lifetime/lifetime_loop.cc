@@ -988,20 +988,42 @@ namespace abrade::coupling::lifetime
     const double spread = add_update_records(rates, st);
     add_place_scatter(rates, st);
 
-    std::vector<double> row = {double(update), double(cycles), tonnes, dmax, area_sum > 0 ? depth_area / area_sum : 0.0,
-                               *std::max_element(travel.begin(), travel.end()), worn, worn * knife_parameters.density,
-                               n * rates.archard_volume, swept / (n * rates.archard_volume),
-                               st.result.quality.min_scaled_jacobian, st.result.remeshed ? 1.0 : 0.0, recession[0],
-                               spread};
-    for (double pv : wear.phase_volume)
-      row.push_back(n * pv);
-    row.insert(row.end(), recession.begin() + 1, recession.end());
-    row.insert(row.end(), {wear.tonnes_per_cycle, deepest[0], deepest[1], deepest[2], double(dem_warnings_now),
-                           double(rates.seed.size()), g.recession, sections.x[g.recession_station], g.thinnest,
-                           sections.x[g.thinnest_station]});
+    // the row by column name (the header: set_up)
+    std::vector<std::pair<std::string, double>> row = {
+      {"update", double(update)},
+      {"cycles", double(cycles)},
+      {"tonnes", tonnes},
+      {"max_depth", dmax},
+      {"mean_depth", area_sum > 0 ? depth_area / area_sum : 0.0},
+      {"max_vertex_displacement", *std::max_element(travel.begin(), travel.end())},
+      {"worn_volume", worn},
+      {"worn_mass", worn * knife_parameters.density},
+      {"archard_volume", n * rates.archard_volume},
+      {"swept_over_archard", swept / (n * rates.archard_volume)},
+      {"min_scaled_jacobian", st.result.quality.min_scaled_jacobian},
+      {"remeshed", st.result.remeshed ? 1.0 : 0.0},
+      {"wear_rate_spread", spread},
+      {"tonnes_per_cycle", wear.tonnes_per_cycle},
+      {"deepest_x", deepest[0]},
+      {"deepest_y", deepest[1]},
+      {"deepest_z", deepest[2]},
+      {"dem_warnings", double(dem_warnings_now)},
+      {"beds", double(rates.seed.size())},
+      {"edge_recession", g.recession},
+      {"edge_recession_x", sections.x[g.recession_station]},
+      {"plate_thickness", g.thinnest},
+      {"plate_thickness_x", sections.x[g.thinnest_station]}};
+    const auto &phases = source->phases();
+    for (std::size_t k = 0; k < wear.phase_volume.size(); ++k) // (a count that differs: CsvWriter says which)
+      row.push_back({"archard_volume_" + (k < phases.size() ? phases[k] : std::to_string(k)), n * wear.phase_volume[k]});
     const auto point_depth = knife->wear_depth_below(s.recession_points);
-    row.insert(row.end(), point_depth.begin(), point_depth.end());
-    trajectory_rows.push_back(trajectory.row(row));
+    for (std::size_t p = 0; p < recession.size(); ++p)
+      {
+        const std::string number = p == 0 ? std::string() : "_" + std::to_string(p + 1);
+        row.push_back({"point_recession" + number, recession[p]});
+        row.push_back({"point_depth" + number, point_depth[p]});
+      }
+    trajectory_rows.push_back(trajectory.named_row(row));
     trajectory.flush();
 
     write_profiles(surface, knife->design_surface(), frame, s.planes, update, ctx.output.root() + "/knife");

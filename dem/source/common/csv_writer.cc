@@ -1,6 +1,7 @@
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/error.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -18,6 +19,7 @@ namespace abrade::io
     if (!out)
       throw RunError("cannot write CSV file " + path);
     n_columns = columns.size();
+    names     = columns;
     for (std::size_t i = 0; i < columns.size(); ++i)
       out << (i ? "," : "") << columns[i];
     out << '\n' << std::setprecision(10);
@@ -60,6 +62,24 @@ namespace abrade::io
   {
     if (!out)
       throw RunError("cannot write " + path + " (disk full, or not writable?)");
+  }
+
+  std::string CsvWriter::named_row(const std::vector<std::pair<std::string, double>> &named)
+  {
+    std::vector<double> values(n_columns);
+    std::vector<char>   given(n_columns, 0);
+    for (const auto &[name, value] : named)
+      {
+        const auto at = std::find(names.begin(), names.end(), name);
+        if (at == names.end() || given[std::size_t(at - names.begin())])
+          throw std::logic_error("CSV column " + name + (at == names.end() ? " is not in " : " given twice in ") + path);
+        given[std::size_t(at - names.begin())] = 1;
+        values[std::size_t(at - names.begin())] = value;
+      }
+    for (std::size_t i = 0; i < n_columns; ++i)
+      if (!given[i])
+        throw std::logic_error("CSV column " + names[i] + " has no value in a row of " + path);
+    return row(values);
   }
 
   void CsvWriter::row(const std::string &label, const std::vector<double> &values)

@@ -2,6 +2,7 @@
 // A CSV file with a fixed header: one call per row, values written with full precision.
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace abrade::io
@@ -17,6 +18,10 @@ namespace abrade::io
     /// Writes one row; the number of values must match the header. Returns the row's text
     /// (without its newline), as raw_row takes it back.
     std::string row(const std::vector<double> &values);
+    /// Writes one row given as (column, value) pairs, in any order: each of the header's
+    /// columns exactly once (else std::logic_error naming the column: a bug). Returns the row's
+    /// text as row() does.
+    std::string named_row(const std::vector<std::pair<std::string, double>> &named);
     /// Writes one row whose first column is text (a name, a phase).
     void row(const std::string &label, const std::vector<double> &values);
     /// Writes a row given as text (rows kept from an earlier, resumed run).
@@ -32,5 +37,6 @@ namespace abrade::io
     std::ofstream out;
     std::string   path;
     std::size_t   n_columns = 0;
+    std::vector<std::string> names; ///< the header's columns
   };
 } // namespace abrade::io
