@@ -1126,19 +1126,37 @@ namespace abrade::coupling::lifetime
   }
 
   // ---------------------------------------------------------------------------------------------
-  // The end: tonnes to end of life, interpolated or extrapolated, with the beds' interval.
+  // The end: the life from the whole trajectory (reached or extrapolated) and its interval, in
+  // summary.json, the figures and the log.
   void LifetimeLoop::finish()
   {
-    EndOfLife   e = end_of_life(criteria, history);
-    std::string criterion = e.criterion == EndOfLife::none ? "none" : criteria[e.criterion].name;
-    std::string method    = e.reached ? "interpolated within update " + std::to_string(e.update)
+    const FinalLife f = final_life();
+    write_results(f);
+    if (history.size() > 1) // nothing to plot before the first update
+      plot(f);
+    conclude(f);
+  }
+
+  /// Which criterion ended the life, when, where, and its interval (the plate worn through
+  /// before or after a limit's crossing; the calibration's share).
+  LifetimeLoop::FinalLife LifetimeLoop::final_life()
+  {
+    FinalLife    f;
+    EndOfLife   &e = f.e;
+    e              = end_of_life(criteria, history);
+    std::string &criterion = f.criterion, &method = f.method;
+    std::vector<double> &where = f.where;
+    LifeInterval        &li    = f.li;
+    const std::vector<UpdateRecord> *&interval_records = f.interval_records;
+    criterion = e.criterion == EndOfLife::none ? "none" : criteria[e.criterion].name;
+    method    = e.reached ? "interpolated within update " + std::to_string(e.update)
                                       : (e.extrapolated ? "extrapolated past the last update by the recent course's power "
                                                           "law (exponent " + io::format_number(e.exponent, 3) + ")"
                                                         : "none");
-    std::vector<double> where = deepest;
-    LifeInterval        li    = current_interval(e);
+    where = deepest;
+    li    = current_interval(e);
     // the updates the interval came from (their beds pair this run with another: life_beds.csv)
-    const std::vector<UpdateRecord> *interval_records = e.criterion == EndOfLife::none ? nullptr : &records[e.criterion];
+    interval_records = e.criterion == EndOfLife::none ? nullptr : &records[e.criterion];
     // an interval found for another life, carried to @p tonnes (relative, as it is)
     auto carried_to = [](LifeInterval i, double tonnes) {
       const double scale = i.life.tonnes > 0 ? tonnes / i.life.tonnes : 0.0;
@@ -1190,7 +1208,18 @@ namespace abrade::coupling::lifetime
         const auto p = s.recession_points[std::max_element(r.begin(), r.end()) - r.begin()];
         where        = {p[0], p[1], p[2]};
       }
+    return f;
+  }
 
+  /// summary.json's results.lifetime: the life, its interval and its parts, the run's totals,
+  /// the warnings.
+  void LifetimeLoop::write_results(const FinalLife &f)
+  {
+    const EndOfLife    &e = f.e;
+    const LifeInterval &li = f.li;
+    const std::string &criterion = f.criterion, &method = f.method;
+    const std::vector<double> &where = f.where;
+    const std::vector<UpdateRecord> *interval_records = f.interval_records;
     const auto  &depth = knife->wear_depth();
     const auto  &travel = knife->vertex_displacement();
     io::Json    &r     = ctx.results["lifetime"];
@@ -1314,46 +1343,58 @@ namespace abrade::coupling::lifetime
       ctx.log.warning(std::to_string(dem_warnings_total) +
                       " DEM warning(s) in this run's cycles (Simulation/On error = continue): the life rests on "
                       "cycles the DEM flagged; log.txt names each kind, trajectory.csv counts them per update");
-    if (history.size() > 1) // nothing to plot before the first update
+  }
+
+  /// trajectory.png and the cross-sections, the one through where the life ended with the
+  /// quantity that ended it drawn.
+  void LifetimeLoop::plot(const FinalLife &f)
+  {
+    const EndOfLife           &e     = f.e;
+    const std::vector<double> &where = f.where;
+    TrajectoryMarks marks;
+    marks.depth_limit     = s.max_depth;
+    marks.recession_limit = s.max_recession;
+    marks.edge_limit      = s.max_edge_recession;
+    marks.plate_limit     = s.min_plate_thickness;
+    marks.recession_points = std::max<std::size_t>(1, s.recession_points.size());
+    if (e.extrapolated &&
+        (e.criterion == depth_criterion || e.criterion == recession_criterion || e.criterion == edge_criterion))
       {
-        TrajectoryMarks marks;
-        marks.depth_limit     = s.max_depth;
-        marks.recession_limit = s.max_recession;
-        marks.edge_limit      = s.max_edge_recession;
-        marks.plate_limit     = s.min_plate_thickness;
-        marks.recession_points = std::max<std::size_t>(1, s.recession_points.size());
-        if (e.extrapolated &&
-            (e.criterion == depth_criterion || e.criterion == recession_criterion || e.criterion == edge_criterion))
-          {
-            marks.extrapolated = true;
-            marks.last_tonnes  = history.back().tonnes;
-            marks.last_value   = history.back().values[e.criterion];
-            marks.life         = e.tonnes;
-            marks.limit        = criteria[e.criterion].limit;
-          }
-        // the cross-section through the place that ended the life, the quantity drawn there
-        WorstSection worst;
-        worst.where   = where.size() == 3 ? where : deepest;
-        worst.updates = long(history.size()) - 1;
-        const auto mm = [](double v) { return io::format_number(1000 * v, 4) + " mm"; };
-        const int  c  = e.criterion == EndOfLife::none || worn_through ? -1 : int(e.criterion);
-        const std::string after = " after update " + std::to_string(worst.updates);
-        if (c >= 0 && c != mass_criterion)
-          worst.mark.text = (c == depth_criterion       ? "depth below the design "
-                             : c == recession_criterion ? "recession of the followed point (circled) "
-                             : c == edge_criterion      ? "edge recession (a height gauge, between the dashed lines) "
-                                                        : "plate thickness lost ") +
-                            mm(history.back().values[c]) + after + " (end of life at " + mm(criteria[c].limit) + ")";
-        else
-          worst.mark.text = worn_through ? "worn through (circled); the largest depth below the design " +
-                                             mm(history.back().values[depth_criterion]) + after
-                                         : (c == mass_criterion ? "the whole part's worn mass ends the life; " : "") +
-                                             std::string("the deepest point, ") +
-                                             mm(history.back().values[depth_criterion]) + " below the design" + after;
-        worst.mark.lowest_points = c == edge_criterion;
-        worst.mark.to_design     = c == depth_criterion || c < 0 || c == mass_criterion;
-        plot_lifetime(ctx.output.root(), s.planes, frame, marks, &worst);
+        marks.extrapolated = true;
+        marks.last_tonnes  = history.back().tonnes;
+        marks.last_value   = history.back().values[e.criterion];
+        marks.life         = e.tonnes;
+        marks.limit        = criteria[e.criterion].limit;
       }
+    // the cross-section through the place that ended the life, the quantity drawn there
+    WorstSection worst;
+    worst.where   = where.size() == 3 ? where : deepest;
+    worst.updates = long(history.size()) - 1;
+    const auto mm = [](double v) { return io::format_number(1000 * v, 4) + " mm"; };
+    const int  c  = e.criterion == EndOfLife::none || worn_through ? -1 : int(e.criterion);
+    const std::string after = " after update " + std::to_string(worst.updates);
+    if (c >= 0 && c != mass_criterion)
+      worst.mark.text = (c == depth_criterion       ? "depth below the design "
+                         : c == recession_criterion ? "recession of the followed point (circled) "
+                         : c == edge_criterion      ? "edge recession (a height gauge, between the dashed lines) "
+                                                    : "plate thickness lost ") +
+                        mm(history.back().values[c]) + after + " (end of life at " + mm(criteria[c].limit) + ")";
+    else
+      worst.mark.text = worn_through ? "worn through (circled); the largest depth below the design " +
+                                         mm(history.back().values[depth_criterion]) + after
+                                     : (c == mass_criterion ? "the whole part's worn mass ends the life; " : "") +
+                                         std::string("the deepest point, ") +
+                                         mm(history.back().values[depth_criterion]) + " below the design" + after;
+    worst.mark.lowest_points = c == edge_criterion;
+    worst.mark.to_design     = c == depth_criterion || c < 0 || c == mass_criterion;
+    plot_lifetime(ctx.output.root(), s.planes, frame, marks, &worst);
+  }
+
+  /// The life's line in the log, or the error of a run that predicts none.
+  void LifetimeLoop::conclude(const FinalLife &f)
+  {
+    const EndOfLife    &e = f.e;
+    const LifeInterval &li = f.li;
     std::ostringstream line;
     if (e.criterion != EndOfLife::none && !e.reached && end.rfind("no wear", 0) == 0)
       {

@@ -20,7 +20,8 @@
 //     checkpoint()               the knife and the loop's state (key = value, state_file.h)
 //   finish()                     the life from the whole trajectory, reached or extrapolated
 //                                (end_of_life.h), its interval over all updates' beds
-//                                (life_interval.h): summary.json
+//                                (life_interval.h): final_life(), then write_results()
+//                                (summary.json), plot() (figures), conclude() (the log)
 //
 // Every update draws its wear from fresh beds: each seed's bed is settled anew from a seed
 // derived from it and the update number (bed_seed()), so the updates are independent samples
@@ -114,6 +115,21 @@ namespace abrade::coupling::lifetime
     void      checkpoint();
     bool      stop_here();
     void      finish();
+
+    /// The life the run predicts: the criterion, how it was found, where on the part, and
+    /// its interval with the updates it came from (finish()'s parts).
+    struct FinalLife
+    {
+      EndOfLife                        e;
+      std::string                      criterion, method;
+      std::vector<double>              where;
+      LifeInterval                     li;
+      const std::vector<UpdateRecord> *interval_records = nullptr;
+    };
+    FinalLife final_life();
+    void      write_results(const FinalLife &f);
+    void      plot(const FinalLife &f);
+    void      conclude(const FinalLife &f);
 
     void read_settings();
     void build_knife();
