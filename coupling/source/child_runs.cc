@@ -1,3 +1,5 @@
+// Studies made of many `abrade run` child processes (sweep, concepts): starting them side by
+// side, waiting, and collecting what each wrote (child_runs.h).
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/common/progress.h>

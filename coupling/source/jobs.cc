@@ -1,3 +1,4 @@
+// The job registry: what `abrade run` can do, one line per job (jobs.h).
 #include <abrade/coupling/jobs.h>
 
 namespace abrade::coupling

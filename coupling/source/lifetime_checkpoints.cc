@@ -1,3 +1,5 @@
+// The lifetime run's checkpoints: which exist, which is the latest whole one, and removing the
+// older ones (lifetime_checkpoints.h).
 #include <abrade/common/error.h>
 #include <abrade/coupling/lifetime_checkpoints.h>
 #include <abrade/dem/parallel.h>

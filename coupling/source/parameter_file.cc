@@ -1,3 +1,5 @@
+// Reading a parameter file: includes, --set overrides, two passes (the lists that shape the
+// declarations, then everything), every parser error as a one-line InputError (parameter_file.h).
 #include <abrade/common/error.h>
 #include <abrade/common/input_file.h>
 #include <abrade/common/file_extension.h>

@@ -1,3 +1,5 @@
+// A subsection of the parameter file as the DEM's plugins see it: their declarations and reads,
+// their refusals naming the file, line and entry (parameter_section.h).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/parameter_section.h>

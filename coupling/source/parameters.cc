@@ -1,3 +1,6 @@
+// Every parameter of a case declared (names, defaults, units, ranges, documentation) and read
+// into the DEM's and the FEM's structs, with the checks that need more than one value
+// (parameters.h).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/jobs.h>

@@ -1,3 +1,5 @@
+// How big a run will be before it starts: particles, steps, memory and wall time, and the runs
+// refused for it (run_size.h).
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/run_size.h>
 

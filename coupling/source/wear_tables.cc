@@ -1,3 +1,5 @@
+// The wear outputs of a DEM run from whatever wear laws its walls have: per-triangle fields of
+// the snapshots and the wear tables (wear_tables.h).
 #include <abrade/common/csv_writer.h>
 #include <abrade/coupling/wear_tables.h>
 

@@ -1,3 +1,4 @@
+// A STEP or IGES file checked by OpenCASCADE's own reader before Gmsh imports it (cad_check.h).
 #include <abrade/common/error.h>
 #include <abrade/common/file_extension.h>
 #include <abrade/common/format_number.h>

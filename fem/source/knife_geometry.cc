@@ -1,3 +1,5 @@
+// Parametric grab knives meshed with the Gmsh API (OpenCASCADE kernel) into tetrahedra
+// (knife_geometry.h).
 #include "gmsh_session.h"
 #include <abrade/common/error.h>
 #include <abrade/common/termination.h>

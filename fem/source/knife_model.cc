@@ -1,3 +1,5 @@
+// The knife as the lifetime loop sees it: its surface receding by a wear depth per vertex, the
+// mesh moved, checked and remeshed, checkpoints (knife_model.h).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/hash.h>

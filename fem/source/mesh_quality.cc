@@ -1,3 +1,4 @@
+// The volume mesh's quality while it moves: scaled Jacobians, inverted cells (mesh_quality.h).
 #include <abrade/fem/mesh_quality.h>
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// Which faces of a part wear and which are held: the file's face numbers and the parameter
+// file's selectors (part_faces.h).
 #include <abrade/common/finite_number.h>
 #include <abrade/fem/part_faces.h>
 

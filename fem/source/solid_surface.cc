@@ -1,3 +1,5 @@
+// The knife's boundary as a triangle surface, mapped to the cells' faces and vertices; read from
+// files, remeshed by Gmsh, its thickness and fields carried across (solid_surface.h).
 #include <abrade/common/closest_point.h>
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>

@@ -1,3 +1,5 @@
+// The wear filter: a per-vertex wear volume smoothed over the knife's surface, volume
+// conserving (surface_filter.h).
 #include <abrade/fem/surface_filter.h>
 
 #include <algorithm>

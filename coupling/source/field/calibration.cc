@@ -1,3 +1,5 @@
+// `abrade calibrate`: the wear coefficient W fitted to measured wear depths, its interval, the
+// footprint, and the runs ranked by pattern agreement (field/calibration.h).
 #include <abrade/common/closest_point.h>
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/file_extension.h>

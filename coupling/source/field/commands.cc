@@ -1,3 +1,5 @@
+// The command lines of `abrade compare` and `abrade calibrate`: their options, usage texts and
+// runs (field/commands.h).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/file_extension.h>

@@ -1,3 +1,5 @@
+// `abrade compare`: a field scan registered to a predicted (or design) surface, the deviations,
+// depths at measured points and the profiles (field/compare.h).
 #include <abrade/common/plane_section.h>
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>

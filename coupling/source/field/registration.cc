@@ -1,3 +1,5 @@
+// Rigid registration of a scan to a surface: coarse alignment, then ICP on the closest points
+// (field/registration.h).
 #include <abrade/common/error.h>
 #include <abrade/field/registration.h>
 

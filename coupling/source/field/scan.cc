@@ -1,3 +1,5 @@
+// Field geometry (worn knives predicted, scanned or designed) read as surfaces or point clouds
+// (scan.h).
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_input.h>
 #include <abrade/field/scan.h>

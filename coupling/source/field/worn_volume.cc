@@ -1,3 +1,4 @@
+// The worn volume between a design and a worn surface that may be open (field/worn_volume.h).
 #include <abrade/field/worn_volume.h>
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// The end of life from the wear trajectory: each criterion's crossing, reached or extrapolated
+// (end_of_life.h).
 #include <abrade/coupling/lifetime/end_of_life.h>
 #include <abrade/coupling/lifetime/life_interval.h>
 

@@ -1,3 +1,5 @@
+// The lifetime loop's files besides trajectory.csv: the cross-sections per update and the
+// gnuplot figures (lifetime_outputs.h).
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>

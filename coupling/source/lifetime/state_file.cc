@@ -1,3 +1,5 @@
+// The lifetime loop's state file (key = value, with a checksum): what a resumed run starts from
+// (state_file.h).
 #include <abrade/common/error.h>
 #include <abrade/common/file_extension.h>
 #include <abrade/common/finite_number.h>

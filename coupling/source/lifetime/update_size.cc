@@ -1,3 +1,4 @@
+// How many operating cycles one lifetime update stands for (update_size.h).
 #include <abrade/coupling/lifetime/update_size.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// One cycle's wear volumes per seed turned into wear depth rates per vertex (wear_rates.h).
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/surface_filter.h>

@@ -1,3 +1,5 @@
+// The run report's page: headings, tables, pictures inlined as data URIs, warnings, the whole
+// page one self-contained HTML file (html_page.h).
 #include "html_page.h"
 
 #include <vtkBase64Utilities.h>

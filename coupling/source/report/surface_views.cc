@@ -1,3 +1,5 @@
+// Pictures of surfaces without a display: VTK files coloured by a field, drawn by gnuplot from
+// chosen views, laid face on, or zoomed on a region (surface_views.h).
 #include "surface_views.h"
 
 #include <abrade/common/external.h>

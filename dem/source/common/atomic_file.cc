@@ -1,3 +1,4 @@
+// Files replaced at once: written aside, then renamed over (atomic_file.h).
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 

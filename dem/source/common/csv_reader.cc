@@ -1,3 +1,4 @@
+// CSV tables read back, with the file and line of every error (csv_reader.h).
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
 #include <abrade/common/input_file.h>

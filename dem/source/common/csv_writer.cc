@@ -1,3 +1,4 @@
+// CSV files with a fixed header, rows by position or by column name (csv_writer.h).
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/error.h>
 

@@ -1,3 +1,4 @@
+// External programs: shell quoting, and gnuplot run beside its data (external.h).
 #include <abrade/common/external.h>
 
 #include <abrade/common/error.h>

@@ -1,3 +1,5 @@
+// Input files checked before anything reads them: present, a regular file, readable
+// (input_file.h).
 #include <abrade/common/error.h>
 #include <abrade/common/input_file.h>
 

@@ -1,3 +1,4 @@
+// A small JSON value for summary.json and its kin: built, dumped, written at once (json.h).
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/json.h>

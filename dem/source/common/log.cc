@@ -1,3 +1,4 @@
+// The run's log: to the terminal and to log.txt (log.h).
 #include <abrade/common/log.h>
 
 #include <iostream>

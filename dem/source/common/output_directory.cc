@@ -1,3 +1,5 @@
+// The run's output directory: claimed (locked, refused when it holds another run's files or
+// links out of it), and the paths inside it (output_directory.h).
 #include <abrade/common/error.h>
 #include <abrade/common/output_directory.h>
 

@@ -1,3 +1,5 @@
+// Surfaces cut by axis planes with VTK's cutter, and how a surface faces at a point
+// (plane_section.h).
 #include <abrade/common/plane_section.h>
 
 #include <abrade/common/vtk_input.h>

@@ -1,3 +1,4 @@
+// The one-line progress indicator of long loops (progress.h).
 #include <abrade/common/progress.h>
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// Temporary directories that remove themselves (temporary_directory.h).
 #include <abrade/common/error.h>
 #include <abrade/common/temporary_directory.h>
 

@@ -1,3 +1,4 @@
+// How a run ends on SIGTERM, SIGINT and SIGHUP (termination.h).
 #include <abrade/common/termination.h>
 
 #include <atomic>

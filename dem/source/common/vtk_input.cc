@@ -1,3 +1,5 @@
+// Every surface reader of the project (STL, OBJ, PLY, legacy VTK, VTP, VTU), checked before
+// VTK sees a file (vtk_input.h).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/input_file.h>

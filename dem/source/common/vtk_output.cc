@@ -1,3 +1,4 @@
+// VTK XML output: .vtp surfaces and point sets with fields, .pvd series, STL (vtk_output.h).
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_output.h>

@@ -1,3 +1,4 @@
+// A bed of particles imported from a table or a dump (bed_import.h).
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
 #include <abrade/common/file_extension.h>

@@ -1,3 +1,5 @@
+// Coarse graining: larger particles standing for many, with the scaled properties and wear
+// (coarse_graining.h).
 #include <abrade/common/format_number.h>
 #include <abrade/dem/coarse_graining.h>
 

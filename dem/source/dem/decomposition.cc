@@ -1,3 +1,4 @@
+// The particles spread over MPI ranks by recursive coordinate bisection (decomposition.h).
 #include <abrade/dem/decomposition.h>
 
 #include <cmath>

@@ -1,3 +1,5 @@
+// Beds of particles: generated without overlap in a region, and saved to and loaded from bed
+// files (generation.h).
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/error.h>
 #include <abrade/common/hash.h>

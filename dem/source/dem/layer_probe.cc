@@ -1,3 +1,5 @@
+// A layer that moves with a wall and holds the particles in contact with it: their count and
+// how fast they slide along it (layer_probe.h).
 #include <abrade/common/closest_point.h>
 #include <abrade/dem/layer_probe.h>
 #include <abrade/dem/simulation.h>

@@ -1,3 +1,4 @@
+// Materials and the contact coefficients of each pair (material.h).
 #include <abrade/dem/material.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Wall meshes read and written (mesh_io.h).
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_input.h>
 #include <abrade/common/vtk_output.h>

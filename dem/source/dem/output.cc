@@ -1,3 +1,4 @@
+// DEM output for ParaView and for analysis: particles and walls per snapshot (output.h).
 #include <abrade/dem/output.h>
 #include <abrade/dem/simulation.h>
 

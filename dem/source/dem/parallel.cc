@@ -1,3 +1,4 @@
+// The processes one DEM simulation is spread over, and its collective operations (parallel.h).
 #include <abrade/dem/parallel.h>
 
 #include <algorithm>

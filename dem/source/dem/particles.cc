@@ -1,3 +1,4 @@
+// The particles, structure of arrays: adding, removing, reordering (particles.h).
 #include <abrade/common/error.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/dem/particles.h>

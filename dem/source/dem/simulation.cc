@@ -1,3 +1,6 @@
+// The DEM engine's time loop: neighbour lists with a Verlet skin, contact forces
+// (particle-particle and particle-wall), integration, walls' motion and wear, checks
+// (simulation.h).
 #include <abrade/common/error.h>
 #include <abrade/common/closest_point.h>
 #include <abrade/dem/contact_law.h>

@@ -1,3 +1,4 @@
+// How many threads work on a simulation's steps, measured as it runs (thread_governor.h).
 #include <abrade/dem/thread_governor.h>
 
 #include <algorithm>

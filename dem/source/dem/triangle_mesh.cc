@@ -1,3 +1,5 @@
+// Triangle surfaces with welded vertices: normals, areas, volume, welding and refinement
+// (triangle_mesh.h).
 #include <abrade/dem/triangle_mesh.h>
 
 #include <Eigen/Geometry>

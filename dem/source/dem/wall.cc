@@ -1,3 +1,5 @@
+// Walls: a triangle mesh with a material and a motion, and what the particles do to it
+// (wall.h).
 #include <abrade/dem/wall.h>
 
 #include <Eigen/Geometry>

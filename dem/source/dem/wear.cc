@@ -1,3 +1,5 @@
+// The wear recorder: each contact's wear by the walls' wear laws, per triangle and phase (wear.h,
+// wear_law.h).
 #include <abrade/dem/simulation.h>
 #include <abrade/dem/wear.h>
 
