@@ -91,14 +91,34 @@ namespace abrade::app
     return rc;
   }
 
-  CommandLine parse(const std::string &command, const std::vector<std::string> &args, const std::string &typed)
+  CommandLine parse(const std::string &command, const std::vector<std::string> &args, const std::string &typed,
+                    const std::vector<std::string> &takes)
   {
     CommandLine cl;
     cl.command_line = typed;
     cl.command      = command;
     const std::vector<std::string> &a = args;
+    auto taken = [&](const std::string &what) { return std::find(takes.begin(), takes.end(), what) != takes.end(); };
+    auto refuse = [&](const std::string &what) {
+      std::string list;
+      for (const auto &t : takes)
+        list += (list.empty() ? "" : ", ") + t;
+      throw InputError("command line", "abrade " + command + " does not take " + what + " (it takes " +
+                                         (list.empty() ? std::string("nothing") : list) + ")");
+    };
+    static const std::vector<std::string> options = {"--set",   "--output", "--format", "--vary",
+                                                     "--edge-height", "--seeds", "--wall", "--jobs",
+                                                     "--knives", "--lifetime-updates", "--quiet", "--resume"};
     for (std::size_t k = 0; k < a.size(); ++k)
       {
+        // an option this command has no use for is refused, not ignored (convert --set ...)
+        {
+          const std::string flag = a[k] == "-o" ? "--output" : a[k] == "-q" ? "--quiet" : a[k].substr(0, a[k].find('='));
+          if (std::find(options.begin(), options.end(), flag) != options.end() && !taken(flag))
+            refuse(flag);
+          if ((a[k].empty() || a[k][0] != '-') && !taken("FILE") && !taken("FILES"))
+            refuse("a file ('" + a[k] + "')");
+        }
         auto value = [&](const std::string &flag) {
           if (k + 1 >= a.size())
             throw InputError("command line", flag + " needs a value");
@@ -140,7 +160,7 @@ namespace abrade::app
           throw InputError("command line", "unknown option '" + a[k] + "'");
         else if (cl.file.empty())
           cl.file = a[k];
-        else if (cl.command == "concepts")
+        else if (taken("FILES"))
           cl.more_files.push_back(a[k]);
         else
           throw InputError("command line", "more than one parameter file given ('" + cl.file + "', '" + a[k] + "')");

@@ -1,7 +1,8 @@
 #pragma once
 // The options the run-like commands share (run, preview, params, sweep, concepts, convert,
-// export-walls): one parser, each command using the options it has and refusing none of the
-// others. compare, calibrate and case parse their own (field/commands.h, case_command.h).
+// export-walls): one parser; each command names the options it takes and is refused the others
+// (a --set given to convert would otherwise be ignored without a word). compare, calibrate and
+// case parse their own (field/commands.h, case_command.h).
 #include <string>
 #include <vector>
 
@@ -26,8 +27,10 @@ namespace abrade::app
     std::string              command_line; ///< as typed (summary.json's provenance)
   };
 
-  /// @p args (the words after @p command) as options; an InputError names a bad one.
-  CommandLine parse(const std::string &command, const std::vector<std::string> &args, const std::string &typed);
+  /// @p args (the words after @p command) as options; an InputError names a bad one, and one
+  /// that is not in @p takes ("--set", "--output", ...; "FILE": one file, "FILES": several).
+  CommandLine parse(const std::string &command, const std::vector<std::string> &args, const std::string &typed,
+                    const std::vector<std::string> &takes);
 
   /// "1,2,3" as seeds: whole numbers, 0 or more, none twice.
   std::vector<int> seed_list(const std::string &text);

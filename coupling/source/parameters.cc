@@ -9,6 +9,7 @@
 #include <abrade/coupling/parameter_section.h>
 #include <abrade/dem/contact_law.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/coupling/lifetime/end_of_life_criterion.h>
 #include <abrade/coupling/run_size.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/coarse_graining.h>
@@ -293,11 +294,6 @@ namespace abrade::coupling
                       "surface with a Gaussian of this length in the distance along the surface (it never "
                       "crosses the plate), conserving the volume. It stands for the particle's footprint; "
                       "0: the largest particle radius (DEM wear), none (analytic wear). Range: >= 0.");
-    prm.declare_entry("Maximum depth", "0.012", Double(0, huge),
-                      "[m] End of life: the largest wear depth, the distance of the worn surface below the "
-                      "design surface (as abrade compare measures a scan; not the vertex displacement, which "
-                      "is 2.9-3x larger at a chisel's tip and corners); 0: no limit. It cannot exceed half the "
-                      "local plate thickness (a worn-back edge is measured by Maximum recession). Range: >= 0.");
     prm.declare_entry("Recession points", "0.2, 0, 0", List(List(Double(-huge, huge), 3, 3), 1, 100, ";"),
                       "[m] Points of the knife (in its own coordinates: x along the length from 0, y "
                       "across the thickness from its middle, z up from the edge), separated by ';', whose "
@@ -305,18 +301,6 @@ namespace abrade::coupling
                       "interpolated: at a chisel's tip, the tip's recession along its bisector) the trajectory "
                       "follows: column point_recession for the first, point_recession_2, ... for the "
                       "others. Default: the middle of the edge of the default knife.");
-    prm.declare_entry("Maximum recession", "0", Double(0, huge),
-                      "[m] End of life: the largest recession of the Recession points; 0: no limit. Range: >= 0.");
-    prm.declare_entry("Maximum edge recession", "0", Double(0, huge),
-                      "[m] End of life: the edge's recession as a height gauge reads it along the whole "
-                      "edge -- at Gauge stations stations from end to end, corners included, the rise of "
-                      "the part's lowest point in the cross-section above the design's -- at its worst "
-                      "station; 0: no limit. Unlike Maximum recession it needs no points and misses no "
-                      "corner. Range: >= 0.");
-    prm.declare_entry("Minimum plate thickness", "0", Double(0, huge),
-                      "[m] End of life: the plate's remaining thickness, as calipers across it read it at "
-                      "Gauge height above the design's edge, at the thinnest of the Gauge stations; 0: no "
-                      "limit. Range: >= 0.");
     prm.declare_entry("Gauge height", "0", Double(0, huge),
                       "[m] Where the plate's thickness is gauged, above the design's edge; 0: one plate "
                       "thickness above where the design's middle section first reaches its full thickness "
@@ -327,8 +311,7 @@ namespace abrade::coupling
                       "thickness are gauged, evenly spaced from end to end of the part as it is (the end ones "
                       "one Knife/Mesh size inside its ends: the corners as far as the mesh resolves them). "
                       "Range: [2, 10000].");
-    prm.declare_entry("Maximum worn mass", "0", Double(0, huge),
-                      "[kg] End of life: the mass worn off the knife; 0: no limit. Range: >= 0.");
+    lifetime::declare_end_of_life_criteria(prm); // (Maximum depth, ...: each criterion's own, lifetime/criteria/)
     prm.declare_entry("Target tonnes", "0", Double(0, huge),
                       "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
     prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");

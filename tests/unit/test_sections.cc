@@ -94,3 +94,19 @@ TEST(Sections, WindowZoomsToTheWornBottom)
   EXPECT_NE(gp.str().find("title 'update 2'"), std::string::npos);
   std::remove(file.c_str());
 }
+
+// How the box faces near a point (io::normal_magnitudes_near, which chooses the plane of the
+// section through a worn end face), by hand on the box [0, 1] x [-0.5, 0.5] x [0, 1]: nearest
+// (1, 0, 0.5) lie the end face's two triangles (centres 0.24 away, area 0.5 each, normal x),
+// then the four sides' triangles with two corners at x = 1 (centres at x = 5/6, 0.55 away) and
+// two of those with one (x = 2/3, 0.62 away), area 0.25 each, normals y or z: the x magnitude
+// is 1 / (1 + 6 x 0.25) = 0.4, y and z share 0.6.
+TEST(Sections, NormalMagnitudesNearAnEndFace)
+{
+  const std::string file = std::filesystem::temp_directory_path().string() + "/abrade_test_sections_box.stl";
+  abrade::io::write_stl(file, box(0.5, 1.0));
+  const auto n = abrade::io::normal_magnitudes_near(file, {1.0, 0.0, 0.5});
+  EXPECT_NEAR(n[0], 0.4, 1e-6);
+  EXPECT_NEAR(n[1] + n[2], 0.6, 1e-6);
+  std::remove(file.c_str());
+}

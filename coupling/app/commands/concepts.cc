@@ -17,7 +17,7 @@ namespace abrade::app
   {
     int concepts_command(const std::vector<std::string> &args, const std::string &typed)
     {
-      const CommandLine cl = parse("concepts", args, typed);
+      const CommandLine cl = parse("concepts", args, typed, {"FILES", "--set", "--output", "--quiet", "--seeds", "--jobs", "--knives", "--lifetime-updates"});
       if (launch().size > 1)
         throw InputError("command line",
                          "abrade concepts runs its runs side by side itself (--jobs); start it without mpirun");

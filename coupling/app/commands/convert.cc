@@ -13,7 +13,7 @@ namespace abrade::app
   {
     int convert_command(const std::vector<std::string> &args, const std::string &typed)
     {
-      const CommandLine cl = parse("convert", args, typed);
+      const CommandLine cl = parse("convert", args, typed, {"FILE", "--output"});
       if (cl.file.empty() || cl.output.empty())
         throw InputError("command line", "convert needs an input file and --output FILE.step");
       fem::convert_to_step(cl.file, cl.output);

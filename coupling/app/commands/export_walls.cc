@@ -19,7 +19,7 @@ namespace abrade::app
   {
     int export_walls_command(const std::vector<std::string> &args, const std::string &typed)
     {
-      const CommandLine cl = parse("export-walls", args, typed);
+      const CommandLine cl = parse("export-walls", args, typed, {"FILE", "--set", "--output"});
       if (cl.output.empty())
         throw InputError("command line", "export-walls needs --output DIR");
       coupling::ParameterFile p(cl.file, cl.sets);

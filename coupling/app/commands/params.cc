@@ -13,7 +13,7 @@ namespace abrade::app
   {
     int params_command(const std::vector<std::string> &args, const std::string &typed)
     {
-      const CommandLine       cl = parse("params", args, typed);
+      const CommandLine       cl = parse("params", args, typed, {"--format"});
       coupling::ParameterFile p;
       if (cl.format == "prm")
         std::cout << p.canonical_text();

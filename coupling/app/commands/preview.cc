@@ -11,7 +11,7 @@ namespace abrade::app
   {
     int preview_command(const std::vector<std::string> &args, const std::string &typed)
     {
-      CommandLine cl = parse("preview", args, typed);
+      CommandLine cl = parse("preview", args, typed, {"FILE", "--set", "--output", "--quiet"});
       if (cl.output.empty())
         throw InputError("command line", "preview needs --output DIR (the case's own output directory is its "
                                          "run's): abrade preview FILE.prm --output DIR");

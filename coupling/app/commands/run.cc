@@ -200,7 +200,7 @@ namespace abrade::app
   {
     int run_command(const std::vector<std::string> &args, const std::string &typed)
     {
-      return run_job(parse("run", args, typed));
+      return run_job(parse("run", args, typed, {"FILE", "--set", "--output", "--quiet", "--resume"}));
     }
   } // namespace
 

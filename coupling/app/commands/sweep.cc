@@ -16,7 +16,7 @@ namespace abrade::app
   {
     int sweep_command(const std::vector<std::string> &args, const std::string &typed)
     {
-      const CommandLine cl = parse("sweep", args, typed);
+      const CommandLine cl = parse("sweep", args, typed, {"FILE", "--set", "--output", "--quiet", "--seeds", "--jobs", "--lifetime-updates", "--vary", "--edge-height", "--wall"});
       if (launch().size > 1)
         throw InputError("command line", "abrade sweep runs its runs side by side itself (--jobs); start it without mpirun");
       if (cl.file.empty())

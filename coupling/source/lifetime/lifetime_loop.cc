@@ -35,20 +35,23 @@ namespace abrade::coupling::lifetime
 {
   namespace
   {
-    enum CriterionIndex
-    {
-      depth_criterion,
-      recession_criterion,
-      mass_criterion,
-      edge_criterion,      ///< the edge's recession gauged along its length (edge_gauge.h)
-      thickness_criterion, ///< the plate thickness lost at the gauge height (the thinnest station)
-      n_criteria
-    };
-
     /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum; 3 the
     /// updates' records of every criterion (beds, relative variance) and the beds of the next;
-    /// 4 the beds' deviations at every criterion's places (place_scatter.h).
-    const std::string state_format = "abrade lifetime state 5";
+    /// 4 the beds' deviations at every criterion's places (place_scatter.h); 6 every
+    /// criterion's entries named after the criterion (end_of_life_criterion.h), not numbered.
+    const std::string state_format = "abrade lifetime state 6";
+
+    /// A criterion's entries in the state file: "history_" + this ("maximum_depth").
+    std::string state_key(const EndOfLifeCriterion &c)
+    {
+      std::string k = c.name();
+      std::replace(k.begin(), k.end(), ' ', '_');
+      return k;
+    }
+
+    // the quantities every run keeps whatever its limits: the depth (the worn-through life's
+    // interval, the deepest point's bed spread) and the worn mass (the worn volume's spread)
+    const std::string depth_name = "maximum depth", mass_name = "maximum worn mass";
   } // namespace
 
   LifetimeLoop::LifetimeLoop(JobContext &ctx) : ctx(ctx) {}
@@ -112,9 +115,6 @@ namespace abrade::coupling::lifetime
     s.fixed_cycles  = prm.get_integer("Cycles per update");
     s.fraction      = prm.get_double("Depth increment fraction");
     s.smoothing     = prm.get_double("Smoothing radius");
-    s.max_depth     = prm.get_double("Maximum depth");
-    s.max_recession = prm.get_double("Maximum recession");
-    s.max_worn_mass = prm.get_double("Maximum worn mass");
     s.target_tonnes = prm.get_double("Target tonnes");
     for (const auto &p : dealii::Utilities::split_string_list(prm.get("Profile planes")))
       s.planes.push_back(std::stod(p));
@@ -137,8 +137,9 @@ namespace abrade::coupling::lifetime
           ctx.parameters.fail({"Lifetime"}, "Replay run", "Wear source = replay needs the directory of a lifetime run");
         s.replay_run = ctx.parameters.path_beside(prm.get("Replay run"));
       }
-    s.max_edge_recession  = prm.get_double("Maximum edge recession");
-    s.min_plate_thickness = prm.get_double("Minimum plate thickness");
+    criteria = make_end_of_life_criteria();
+    for (auto &c : criteria)
+      c->parse_parameters(prm);
     s.gauge_height        = prm.get_double("Gauge height");
     s.gauge_stations      = prm.get_integer("Gauge stations");
     prm.leave_subsection();
@@ -173,11 +174,14 @@ namespace abrade::coupling::lifetime
           }
     if (s.analytic && s.tonnes_per_cycle <= 0)
       ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle", "the analytic wear rate is per tonne: set Tonnes per cycle > 0");
-    if (s.max_depth <= 0 && s.max_recession <= 0 && s.max_worn_mass <= 0 && s.max_edge_recession <= 0 &&
-        s.min_plate_thickness <= 0)
-      ctx.parameters.fail({"Lifetime"}, "Maximum depth",
-                          "no end-of-life criterion: set Maximum depth, Maximum recession, Maximum edge recession, "
-                          "Minimum plate thickness or Maximum worn mass > 0");
+    if (std::none_of(criteria.begin(), criteria.end(), [](const auto &c) { return c->active(); }))
+      {
+        std::string keys;
+        for (std::size_t c = 0; c < criteria.size(); ++c)
+          keys += (c == 0 ? "" : c + 1 == criteria.size() ? " or " : ", ") + criteria[c]->parameter();
+        ctx.parameters.fail({"Lifetime"}, criteria[criterion_named(depth_name)]->parameter(),
+                            "no end-of-life criterion: set " + keys + " > 0");
+      }
   }
 
   void LifetimeLoop::set_up()
@@ -214,13 +218,7 @@ namespace abrade::coupling::lifetime
                                                               io::format_number(calibration.smoothing_radius, 17)
                                                                                         : std::string()));
     volume0           = knife->volume();
-    criteria          = {{"maximum depth", s.max_depth},
-                         {"maximum recession", s.max_recession},
-                         {"maximum worn mass", s.max_worn_mass},
-                         {"maximum edge recession", s.max_edge_recession},
-                         // the thickness lost at the thinnest station reaching design - minimum
-                         {"minimum plate thickness",
-                          s.min_plate_thickness > 0 ? design_thickness - s.min_plate_thickness : 0.0}};
+    const std::size_t n_criteria = criteria.size();
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
     records.assign(n_criteria, {});
     place_scatter.assign(n_criteria, {});
@@ -290,36 +288,24 @@ namespace abrade::coupling::lifetime
                                                int(s.gauge_stations), frame.z0 + s.gauge_height, knife_parameters.mesh_size)
                         .second;
     design_thickness = *std::max_element(design_sections.thickness.begin(), design_sections.thickness.end());
-    if (s.min_plate_thickness > 0 && !(s.min_plate_thickness < design_thickness))
-      ctx.parameters.fail({"Lifetime"}, "Minimum plate thickness",
-                          io::format_number(s.min_plate_thickness) + " m is not less than the design's plate thickness at "
-                          "the gauge height (" + io::format_number(design_thickness) + " m at " +
-                          io::format_number(s.gauge_height) + " m above the edge)");
-    // a limit the part cannot reach is "reached" only by an extrapolation far beyond anything
-    // the run followed (Maximum depth = 1 m on a 30 mm knife gave 5.5e8 t without a word): said
-    // on the terminal, in the summary's warnings and beside the life (a run that only wants a
-    // number of updates may set such a limit on purpose)
-    auto unreachable = [&](const std::string &what) {
-      ctx.log.warning(what);
-      warnings.push_back(what);
-    };
-    if (s.max_depth > knife->thickness())
-      unreachable("Lifetime/Maximum depth " + io::format_number(s.max_depth) + " m is more than the part's plate "
-                  "thickness (" + io::format_number(knife->thickness()) + " m): no depth below the design reaches it, "
-                  "and a life to it is an extrapolation beyond the part (a length in millimetres?)");
-    {
-      const dealii::BoundingBox<3> box(knife->design_surface().vertices);
-      const double size = std::max({box.side_length(0), box.side_length(1), box.side_length(2)});
-      if (s.max_recession > size)
-        unreachable("Lifetime/Maximum recession " + io::format_number(s.max_recession) + " m is more than the part's "
-                    "largest extent (" + io::format_number(size) + " m): no edge recedes that far, and a life to it "
-                    "is an extrapolation beyond the part (a length in millimetres?)");
-    }
-    if (s.max_depth >= 0.5 * knife->thickness() && s.max_depth <= knife->thickness())
-      warnings.push_back("Maximum depth " + io::format_number(s.max_depth) + " m is at least half the plate thickness (" +
-                         io::format_number(knife->thickness()) +
-                         " m): the wear depth below the design is the distance to the nearest design surface and "
-                         "cannot exceed that; the edge's recession is Maximum recession (of the Recession points)");
+    // every criterion's limit on the design: one the design makes impossible is refused, one
+    // it makes implausible said (on the terminal, in the summary's warnings and beside the life)
+    std::vector<std::string> said;
+    limits.clear();
+    for (const auto &c : criteria)
+      try
+        {
+          limits.push_back({c->name(), c->limit(design_now(), said)});
+        }
+      catch (const CriterionRefused &e)
+        {
+          ctx.parameters.fail({"Lifetime"}, e.key, e.what());
+        }
+    for (const auto &w : said)
+      {
+        ctx.log.warning(w);
+        warnings.push_back(w);
+      }
     // a followed point away from the knife would follow the nearest surface point without a word
     const std::vector<double> off = knife->depth_below_design(s.recession_points);
     std::vector<double>       points;
@@ -387,25 +373,29 @@ namespace abrade::coupling::lifetime
       throw InputError(file, "corrupt lifetime checkpoint (history of " + std::to_string(t.size()) + " points)");
     if (cycles < 0 || tonnes < 0 || t.front() != 0 || !std::is_sorted(t.begin(), t.end()) || t.back() != tonnes)
       throw InputError(file, "corrupt lifetime checkpoint (negative or decreasing tonnes or cycles)");
-    history.assign(t.size(), {0.0, std::vector<double>(n_criteria, 0.0)});
+    history.assign(t.size(), {0.0, std::vector<double>(criteria.size(), 0.0)});
     for (std::size_t k = 0; k < t.size(); ++k)
       history[k].tonnes = t[k];
-    for (std::size_t c = 0; c < n_criteria; ++c)
+    for (std::size_t c = 0; c < criteria.size(); ++c)
       {
-        const auto v = state.numbers("history_criterion_" + std::to_string(c));
+        const std::string key = state_key(*criteria[c]);
+        if (!state.has("history_" + key))
+          throw InputError(file, "the checkpoint has no history of the end-of-life criterion '" + criteria[c]->name() +
+                                   "' (made by an abrade without it); start afresh without --resume");
+        const auto v = state.numbers("history_" + key);
         if (v.size() != t.size())
-          throw InputError(file, "corrupt lifetime checkpoint (criterion history " + std::to_string(c) + ")");
+          throw InputError(file, "corrupt lifetime checkpoint (criterion history " + key + ")");
         for (std::size_t k = 0; k < v.size(); ++k)
           history[k].values[c] = v[k];
-        const auto beds = state.numbers("record_beds_" + std::to_string(c));
-        const auto var  = state.numbers("record_relative_variance_" + std::to_string(c));
+        const auto beds = state.numbers("record_beds_" + key);
+        const auto var  = state.numbers("record_relative_variance_" + key);
         if (long(beds.size()) != done || var.size() != beds.size())
-          throw InputError(file, "corrupt lifetime checkpoint (update records of criterion " + std::to_string(c) + ")");
-        const auto seeds = state.numbers("record_bed_seeds_" + std::to_string(c));
-        const auto rates = state.numbers("record_bed_rates_" + std::to_string(c));
+          throw InputError(file, "corrupt lifetime checkpoint (update records of criterion " + key + ")");
+        const auto seeds = state.numbers("record_bed_seeds_" + key);
+        const auto rates = state.numbers("record_bed_rates_" + key);
         const double all = std::accumulate(beds.begin(), beds.end(), 0.0);
         if (seeds.size() != rates.size() || double(seeds.size()) != all)
-          throw InputError(file, "corrupt lifetime checkpoint (the beds of criterion " + std::to_string(c) + ")");
+          throw InputError(file, "corrupt lifetime checkpoint (the beds of criterion " + key + ")");
         records[c].clear();
         for (long k = 0, first = 0; k < done; first += long(beds[k]), ++k)
           records[c].push_back({t[k + 1], v[k + 1], std::size_t(beds[k]), var[k],
@@ -413,18 +403,18 @@ namespace abrade::coupling::lifetime
                                 std::vector<double>(rates.begin() + first, rates.begin() + first + long(beds[k]))});
         try
           {
-            place_scatter[c].set_numbers(state.numbers("place_scatter_" + std::to_string(c)));
+            place_scatter[c].set_numbers(state.numbers("place_scatter_" + key));
           }
         catch (const std::invalid_argument &e)
           {
             throw InputError(file,
                              std::string("corrupt lifetime checkpoint (") + e.what() + ")");
           }
-        place_values[c] = state.numbers("place_values_" + std::to_string(c));
-        place_factor[c] = state.number("place_factor_" + std::to_string(c));
+        place_values[c] = state.numbers("place_values_" + key);
+        place_factor[c] = state.number("place_factor_" + key);
         if (place_scatter[c].updates() != std::size_t(done) || place_values[c].size() != place_scatter[c].places() ||
             !(place_factor[c] >= 0 && place_factor[c] <= 1))
-          throw InputError(file, "corrupt lifetime checkpoint (the places of criterion " + std::to_string(c) + ")");
+          throw InputError(file, "corrupt lifetime checkpoint (the places of criterion " + key + ")");
       }
     trajectory_rows.clear();
     for (long k = 1; k <= done; ++k)
@@ -682,39 +672,7 @@ namespace abrade::coupling::lifetime
   {
     Step st;
     st.volume_before = knife->volume();
-    st.depth_before  = knife->wear_depth();
-    st.followed_mean    = knife->at_followed_points(rates.mean, s.recession_points);
-    for (const auto &seed : rates.seed)
-      st.followed_seed.push_back(knife->at_followed_points(seed, s.recession_points));
-    if (rates.seed.size() > 1) // (one bed: no scatter to keep)
-      for (const auto &seed : rates.seed)
-        st.design_seed.push_back(knife->at_followed_points(seed, knife->design_surface().vertices));
-    {
-      // where the gauges read the knife now (its sections after the last update)
-      const std::size_t stations = sections.x.size();
-      const double      z        = frame.z0 + s.gauge_height;
-      fem::SolidSurface at;
-      std::vector<bool> edge(stations), faces(stations);
-      for (std::size_t i = 0; i < stations; ++i)
-        {
-          edge[i]  = std::isfinite(sections.height[i]);
-          faces[i] = std::isfinite(sections.y_low[i]) && std::isfinite(sections.y_high[i]);
-          at.vertices.push_back(edge[i] ? sections.lowest[i] : knife->surface().vertices.front());
-          at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_low[i], z) : at.vertices.back());
-          at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_high[i], z) : at.vertices.back());
-        }
-      const fem::SurfaceTransfer transfer(knife->surface(), at);
-      for (const auto &seed : rates.seed)
-        {
-          const auto there = transfer(seed);
-          st.edge_seed.emplace_back(stations, 0.0), st.faces_seed.emplace_back(stations, 0.0);
-          for (std::size_t i = 0; i < stations; ++i)
-            {
-              st.edge_seed.back()[i]  = edge[i] ? there[3 * i] : 0.0;
-              st.faces_seed.back()[i] = faces[i] ? 0.5 * (there[3 * i + 1] + there[3 * i + 2]) : 0.0;
-            }
-        }
-    }
+    st.beds          = rates_at_places(rates, n);
     const fem::SolidSurface before = knife->surface();
     st.before                      = before;
     const dem::Parallel     ranks  = dem::Parallel::world();
@@ -796,7 +754,7 @@ namespace abrade::coupling::lifetime
         ctx.log.warning("update " + std::to_string(update) + ": " + error + "; retried with " + std::to_string(n) +
                         " cycles");
       }
-    st.cycles = n;
+    st.cycles = st.beds.cycles = n;
     if (!st.result.worn_through.empty())
       {
         // end of life within this update: where the depth increment first reaches the local
@@ -812,15 +770,13 @@ namespace abrade::coupling::lifetime
         end = "worn through within update " + std::to_string(update);
         const auto &p = before.vertices[first];
         deepest = {p[0], p[1], p[2]};
-        // the other criteria within the same update, from the depths this update would give
-        // (the depth criterion and the worn mass; whichever is reached first ends life)
-        double depth_end = 0;
-        for (std::size_t v = 0; v < rates.mean.size(); ++v)
-          depth_end = std::max(depth_end, st.depth_before[v] + n * rates.mean[v]);
+        // the other criteria within the same update, as the whole update would have left them
+        // (the depth and the worn mass: projected()); whichever is reached first ends life
         TrajectoryPoint next = history.back();
         next.tonnes          = tonnes + n * tonnes_per_cycle_now;
-        next.values[depth_criterion] = depth_end;
-        next.values[mass_criterion] += n * rates.archard_volume * knife_parameters.density;
+        const PartNow now    = part_now();
+        for (std::size_t c = 0; c < criteria.size(); ++c)
+          next.values[c] = criteria[c]->projected(now, st.beds, next.values[c]);
         worn_through_rival = history;
         worn_through_rival.push_back(next);
       }
@@ -830,48 +786,17 @@ namespace abrade::coupling::lifetime
   // 5. Record: the wear depth below the design, volumes, followed points; each criterion's
   //    update record (its value, the beds' relative variance of its rate at the place that ends
   //    life, chosen on the beds' mean) for the interval.
-  double LifetimeLoop::add_update_records(const Rates &rates, const Step &st)
+  double LifetimeLoop::add_update_records(const Rates &, const Step &st)
   {
-    const long  n    = st.cycles;
-    const auto &now  = history.back();
-    auto        keep = [&](std::size_t c, const std::vector<double> &bed_rates) {
-      records[c].push_back(
-        {now.tonnes, now.values[c], bed_rates.size(), relative_variance(bed_rates), beds_of_update, bed_rates});
-    };
-    // depth: at the vertex that is deepest after this update
-    std::size_t deepest_vertex = 0;
-    double      most           = -1;
-    for (std::size_t v = 0; v < rates.mean.size(); ++v)
-      if (st.depth_before[v] + n * rates.mean[v] > most)
-        most = st.depth_before[v] + n * rates.mean[v], deepest_vertex = v;
-    std::vector<double> bed(rates.seed.size());
-    for (std::size_t k = 0; k < bed.size(); ++k)
-      bed[k] = rates.seed[k][deepest_vertex];
-    keep(depth_criterion, bed);
-    const double spread = std::sqrt(relative_variance(bed));
-    // recession: at the followed point that has receded most after this update (the tip
-    // recedes faster than its depth, by a factor the same for all beds)
-    const auto  recession = knife->recession_at(s.recession_points);
-    std::size_t followed  = std::max_element(recession.begin(), recession.end()) - recession.begin();
-    for (std::size_t k = 0; k < bed.size(); ++k)
-      bed[k] = st.followed_seed[k][followed];
-    keep(recession_criterion, bed);
-    // worn mass: the whole knife's volume
-    keep(mass_criterion, rates.seed_volume);
-    // the gauges: the beds' rates where the worst station's edge was gauged before the move,
-    // and the mean of the two faces' at the thinnest station's gauge height (interpolated on
-    // the surface: a gauge's point moves as the triangle under it does; the nearest vertex's
-    // rate alone overstated the gauged edge's bed scatter)
-    const EdgeGauge g = gauge(sections, design_at_sections);
-    auto at_station = [&](const std::vector<std::vector<double>> &seed, std::size_t i) {
-      std::vector<double> r;
-      for (const auto &bed : seed)
-        r.push_back(bed[i]);
-      return r;
-    };
-    keep(edge_criterion, at_station(st.edge_seed, g.recession_station));
-    keep(thickness_criterion, at_station(st.faces_seed, g.thinnest_station));
-    return spread;
+    const auto   &now  = history.back();
+    const PartNow part = part_now();
+    for (std::size_t c = 0; c < criteria.size(); ++c)
+      {
+        const std::vector<double> bed_rates = criteria[c]->bed_rates(part, st.beds);
+        records[c].push_back(
+          {now.tonnes, now.values[c], bed_rates.size(), relative_variance(bed_rates), beds_of_update, bed_rates});
+      }
+    return std::sqrt(records[criterion_named(depth_name)].back().relative_variance);
   }
 
   // 5b. The worst of many places: each criterion's quantity at all its places and the beds'
@@ -881,40 +806,105 @@ namespace abrade::coupling::lifetime
   void LifetimeLoop::add_place_scatter(const Rates &rates, const Step &st)
   {
     const std::size_t beds = rates.seed.size();
-    auto add = [&](std::size_t c, std::vector<double> now, const std::vector<std::vector<double>> &bed_rates) {
-      std::vector<double> &before = place_values[c];
-      if (before.empty())
-        before.assign(now.size(), 0.0);
-      if (before.size() != now.size())
-        return; // (the places cannot change: a criterion without them)
-      std::vector<double> increment(now.size());
-      for (std::size_t p = 0; p < now.size(); ++p)
-        {
-          if (!std::isfinite(now[p]))
-            now[p] = before[p]; // (no section there)
-          increment[p] = now[p] - before[p];
-        }
-      place_scatter[c].add_update(increment, beds > 1 ? bed_rates : std::vector<std::vector<double>>());
-      before          = now;
-      place_factor[c] = place_scatter[c].maximum_factor(now);
-    };
-    add(depth_criterion, knife->at_followed_points(knife->wear_depth(), knife->design_surface().vertices),
-        st.design_seed);
-    add(recession_criterion, knife->recession_at(s.recession_points), st.followed_seed);
-    add(mass_criterion, {}, {}); // (one quantity: no places)
-    // the gauge's stations (the beds' rates where they were gauged before the move: move_knife)
-    const std::size_t   stations = sections.x.size();
-    std::vector<double> recession(stations), lost(stations);
+    const PartNow     part = part_now();
+    for (std::size_t c = 0; c < criteria.size(); ++c)
+      {
+        Places               p      = criteria[c]->places(part, st.beds);
+        std::vector<double> &now    = p.values;
+        std::vector<double> &before = place_values[c];
+        if (before.empty())
+          before.assign(now.size(), 0.0);
+        if (before.size() != now.size())
+          continue; // (the places cannot change: a criterion without them)
+        std::vector<double> increment(now.size());
+        for (std::size_t k = 0; k < now.size(); ++k)
+          {
+            if (!std::isfinite(now[k]))
+              now[k] = before[k]; // (no reading there)
+            increment[k] = now[k] - before[k];
+          }
+        place_scatter[c].add_update(increment, beds > 1 ? p.bed_rates : std::vector<std::vector<double>>());
+        before          = now;
+        place_factor[c] = place_scatter[c].maximum_factor(now);
+      }
+  }
+
+  PartNow LifetimeLoop::part_now() const
+  {
+    return {*knife,
+            s.recession_points,
+            sections,
+            design_at_sections,
+            gauge(sections, design_at_sections),
+            design_thickness,
+            s.gauge_height,
+            frame.z0 + s.gauge_height,
+            volume0,
+            knife_parameters.density};
+  }
+
+  PartNow LifetimeLoop::design_now() const
+  {
+    return {*knife,
+            s.recession_points,
+            design_sections,
+            design_sections,
+            gauge(design_sections, design_sections),
+            design_thickness,
+            s.gauge_height,
+            frame.z0 + s.gauge_height,
+            knife->volume(),
+            knife_parameters.density};
+  }
+
+  std::size_t LifetimeLoop::criterion_named(const std::string &name) const
+  {
+    for (std::size_t c = 0; c < criteria.size(); ++c)
+      if (criteria[c]->name() == name)
+        return c;
+    throw std::logic_error("the end-of-life criterion '" + name + "' is not registered");
+  }
+
+  // Before the move: the wear depth, and each bed's depth rate where the criteria read the
+  // knife: the followed points, the points the design's vertices moved to (more than one bed),
+  // the gauges' stations (interpolated on the surface: what moves those points; 0 where there
+  // is no section).
+  BedRates LifetimeLoop::rates_at_places(const Rates &rates, long n) const
+  {
+    BedRates b;
+    b.cycles       = n;
+    b.rates        = &rates;
+    b.depth_before = knife->wear_depth();
+    for (const auto &seed : rates.seed)
+      b.followed.push_back(knife->at_followed_points(seed, s.recession_points));
+    if (rates.seed.size() > 1) // (one bed: no scatter to keep)
+      for (const auto &seed : rates.seed)
+        b.design_points.push_back(knife->at_followed_points(seed, knife->design_surface().vertices));
+    // where the gauges read the knife now (its sections after the last update)
+    const std::size_t stations = sections.x.size();
+    const double      z        = frame.z0 + s.gauge_height;
+    fem::SolidSurface at;
+    std::vector<bool> edge(stations), faces(stations);
     for (std::size_t i = 0; i < stations; ++i)
       {
-        // as the gauge reads them (edge_gauge.cc): a section cut away entirely has receded to
-        // the design's top; the thickness lost from the design's largest
-        recession[i] = (std::isfinite(sections.height[i]) ? sections.height[i] : design_at_sections.top[i]) -
-                       design_at_sections.height[i];
-        lost[i]      = design_thickness - sections.thickness[i];
+        edge[i]  = std::isfinite(sections.height[i]);
+        faces[i] = std::isfinite(sections.y_low[i]) && std::isfinite(sections.y_high[i]);
+        at.vertices.push_back(edge[i] ? sections.lowest[i] : knife->surface().vertices.front());
+        at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_low[i], z) : at.vertices.back());
+        at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_high[i], z) : at.vertices.back());
       }
-    add(edge_criterion, recession, st.edge_seed);
-    add(thickness_criterion, lost, st.faces_seed);
+    const fem::SurfaceTransfer transfer(knife->surface(), at);
+    for (const auto &seed : rates.seed)
+      {
+        const auto there = transfer(seed);
+        b.edge.emplace_back(stations, 0.0), b.faces.emplace_back(stations, 0.0);
+        for (std::size_t i = 0; i < stations; ++i)
+          {
+            b.edge.back()[i]  = edge[i] ? there[3 * i] : 0.0;
+            b.faces.back()[i] = faces[i] ? 0.5 * (there[3 * i + 1] + there[3 * i + 2]) : 0.0;
+          }
+      }
+    return b;
   }
 
   void LifetimeLoop::gauge_the_knife()
@@ -928,7 +918,7 @@ namespace abrade::coupling::lifetime
   {
     if (e.criterion == EndOfLife::none)
       return {};
-    return life_interval(criteria[e.criterion].limit, records[e.criterion], 0.95, place_factor[e.criterion]);
+    return life_interval(limits[e.criterion].limit, records[e.criterion], 0.95, place_factor[e.criterion]);
   }
 
   // Lifetime/Target interval: while the life's interval is wider than asked, the next updates
@@ -937,7 +927,7 @@ namespace abrade::coupling::lifetime
   {
     if (!(s.target_interval > 0))
       return;
-    const LifeInterval li   = current_interval(end_of_life(criteria, history));
+    const LifeInterval li   = current_interval(end_of_life(limits, history));
     long               want = beds_now;
     // with few degrees of freedom the interval is mostly t's width and the one-update
     // extrapolation's: three beds until it has four, then at most twice the beds per update
@@ -983,8 +973,9 @@ namespace abrade::coupling::lifetime
     const double swept     = st.volume_before - knife->volume();
     gauge_the_knife();
     const EdgeGauge g      = gauge(sections, design_at_sections);
-    history.push_back({tonnes, {dmax, *std::max_element(recession.begin(), recession.end()),
-                                worn * knife_parameters.density, g.recession, design_thickness - g.thinnest}});
+    history.push_back({tonnes, {}});
+    for (const auto &c : criteria)
+      history.back().values.push_back(c->value(part_now()));
     const double spread = add_update_records(rates, st);
     add_place_scatter(rates, st);
 
@@ -1082,12 +1073,13 @@ namespace abrade::coupling::lifetime
     for (const auto &p : history)
       t.push_back(p.tonnes);
     state.set("history_tonnes", t);
-    for (std::size_t c = 0; c < n_criteria; ++c)
+    for (std::size_t c = 0; c < criteria.size(); ++c)
       {
+        const std::string   key = state_key(*criteria[c]);
         std::vector<double> v;
         for (const auto &p : history)
           v.push_back(p.values[c]);
-        state.set("history_criterion_" + std::to_string(c), v);
+        state.set("history_" + key, v);
         std::vector<double> beds, var, seeds, rates; // (the last two: every update's beds, one after another)
         for (const auto &r : records[c])
           {
@@ -1095,13 +1087,13 @@ namespace abrade::coupling::lifetime
             seeds.insert(seeds.end(), r.bed_seeds.begin(), r.bed_seeds.end());
             rates.insert(rates.end(), r.bed_rates.begin(), r.bed_rates.end());
           }
-        state.set("record_beds_" + std::to_string(c), beds);
-        state.set("record_relative_variance_" + std::to_string(c), var);
-        state.set("record_bed_seeds_" + std::to_string(c), seeds);
-        state.set("record_bed_rates_" + std::to_string(c), rates);
-        state.set("place_scatter_" + std::to_string(c), place_scatter[c].numbers());
-        state.set("place_values_" + std::to_string(c), place_values[c]);
-        state.set("place_factor_" + std::to_string(c), place_factor[c]);
+        state.set("record_beds_" + key, beds);
+        state.set("record_relative_variance_" + key, var);
+        state.set("record_bed_seeds_" + key, seeds);
+        state.set("record_bed_rates_" + key, rates);
+        state.set("place_scatter_" + key, place_scatter[c].numbers());
+        state.set("place_values_" + key, place_values[c]);
+        state.set("place_factor_" + key, place_factor[c]);
       }
     for (std::size_t k = 0; k < trajectory_rows.size(); ++k)
       state.set("trajectory_row_" + std::to_string(k + 1), trajectory_rows[k]);
@@ -1111,10 +1103,10 @@ namespace abrade::coupling::lifetime
 
   bool LifetimeLoop::stop_here()
   {
-    const EndOfLife e = end_of_life(criteria, history);
+    const EndOfLife e = end_of_life(limits, history);
     if (e.reached)
       {
-        end = criteria[e.criterion].name + " reached";
+        end = limits[e.criterion].name + " reached";
         return true;
       }
     if (s.target_tonnes > 0 && tonnes >= s.target_tonnes)
@@ -1143,17 +1135,20 @@ namespace abrade::coupling::lifetime
   {
     FinalLife    f;
     EndOfLife   &e = f.e;
-    e              = end_of_life(criteria, history);
+    e              = end_of_life(limits, history);
     std::string &criterion = f.criterion, &method = f.method;
     std::vector<double> &where = f.where;
     LifeInterval        &li    = f.li;
     const std::vector<UpdateRecord> *&interval_records = f.interval_records;
-    criterion = e.criterion == EndOfLife::none ? "none" : criteria[e.criterion].name;
+    criterion = e.criterion == EndOfLife::none ? "none" : limits[e.criterion].name;
     method    = e.reached ? "interpolated within update " + std::to_string(e.update)
                                       : (e.extrapolated ? "extrapolated past the last update by the recent course's power "
                                                           "law (exponent " + io::format_number(e.exponent, 3) + ")"
                                                         : "none");
-    where = deepest;
+    // where: the criterion's place on the part as it is (the deepest point: the plate worn
+    // through, or no criterion)
+    where = e.criterion != EndOfLife::none && !worn_through ? criteria[e.criterion]->where(part_now(), deepest, false)
+                                                            : deepest;
     li    = current_interval(e);
     // the updates the interval came from (their beds pair this run with another: life_beds.csv)
     interval_records = e.criterion == EndOfLife::none ? nullptr : &records[e.criterion];
@@ -1164,16 +1159,15 @@ namespace abrade::coupling::lifetime
       return i;
     };
     if (worn_through)
-      if (const EndOfLife rival = end_of_life(criteria, worn_through_rival);
+      if (const EndOfLife rival = end_of_life(limits, worn_through_rival);
           rival.reached && rival.tonnes < worn_through_tonnes)
         {
-          e = rival, criterion = criteria[e.criterion].name;
+          e = rival, criterion = limits[e.criterion].name;
           method = "interpolated within update " + std::to_string(e.update) + " (before the plate wears through)";
           end    = criterion + " reached";
-          if (e.criterion != depth_criterion)
-            where = {};
+          where  = criteria[e.criterion]->where(part_now(), deepest, true);
           // its interval: relative, from the updates recorded before the last one
-          li = carried_to(life_interval(criteria[e.criterion].limit, records[e.criterion]), e.tonnes);
+          li = carried_to(life_interval(limits[e.criterion].limit, records[e.criterion]), e.tonnes);
           interval_records = &records[e.criterion];
           worn_through = false;
         }
@@ -1182,32 +1176,14 @@ namespace abrade::coupling::lifetime
         e.tonnes = worn_through_tonnes, e.reached = true, e.extrapolated = false;
         criterion = "worn through", method = "interpolated within update " + std::to_string(update);
         // its interval: the depth's, relative, at the last update recorded before it
-        li = carried_to(records[depth_criterion].empty()
-                          ? LifeInterval{}
-                          : life_interval(history.back().values[depth_criterion], records[depth_criterion]),
+        const std::size_t depth = criterion_named(depth_name);
+        li = carried_to(records[depth].empty() ? LifeInterval{}
+                                               : life_interval(history.back().values[depth], records[depth]),
                         worn_through_tonnes);
-        interval_records = &records[depth_criterion];
+        interval_records = &records[depth];
       }
     // the calibrated W's uncertainty (Lifetime/Calibration): a component of its own
     li = add_calibration(li, calibration.relative_sd, calibration.dof);
-    if (e.criterion == mass_criterion && !worn_through)
-      where = {}; // the whole knife
-    if ((e.criterion == edge_criterion || e.criterion == thickness_criterion) && !worn_through)
-      {
-        const EdgeGauge   g = gauge(sections, design_at_sections);
-        const std::size_t k = e.criterion == edge_criterion ? g.recession_station : g.thinnest_station;
-        const auto        p = e.criterion == edge_criterion
-                                ? sections.lowest[k]
-                                : dealii::Point<3>(sections.x[k], 0.5 * (sections.y_low[k] + sections.y_high[k]),
-                                                   frame.z0 + s.gauge_height);
-        where = {p[0], p[1], p[2]};
-      }
-    if (e.criterion == recession_criterion && !worn_through)
-      {
-        const auto r = knife->recession_at(s.recession_points);
-        const auto p = s.recession_points[std::max_element(r.begin(), r.end()) - r.begin()];
-        where        = {p[0], p[1], p[2]};
-      }
     return f;
   }
 
@@ -1260,22 +1236,23 @@ namespace abrade::coupling::lifetime
     r["extrapolated"]                    = e.extrapolated;
     r["seeds"]                           = static_cast<long>(s.seeds.size());
     std::vector<double> beds_per_update;
-    for (const auto &u : records[depth_criterion])
+    for (const auto &u : records[criterion_named(depth_name)])
       beds_per_update.push_back(double(u.beds));
     r["beds_per_update"]                 = beds_per_update;
     r["wear_rate_relative_spread"]       = li.bed_relative_sd; // one bed's, at the place that ends life
     // the beds' relative standard deviation of the whole knife's worn volume, as one bed's over
     // the run (abrade calibrate divides it by sqrt(seeds) for its replicate part)
-    if (!records[mass_criterion].empty() && history.back().values[mass_criterion] > 0)
+    if (const std::size_t mass = criterion_named(mass_name);
+        !records[mass].empty() && history.back().values[mass] > 0)
       {
         // c sqrt(sum dQ_u^2 / n_u) / Q_U: the relative standard error of the worn volume,
         // times sqrt(seeds)
-        const auto [c2, dof] = pooled_relative_variance(records[mass_criterion]);
+        const auto [c2, dof] = pooled_relative_variance(records[mass]);
         double     sum = 0, before = 0;
-        for (const auto &u : records[mass_criterion])
+        for (const auto &u : records[mass])
           sum += (u.value - before) * (u.value - before) / double(u.beds), before = u.value;
         r["worn_volume_relative_spread"] =
-          std::sqrt(c2 * sum) / history.back().values[mass_criterion] * std::sqrt(double(s.seeds.size()));
+          std::sqrt(c2 * sum) / history.back().values[mass] * std::sqrt(double(s.seeds.size()));
       }
     r["confidence"] = li.confidence;
     // every update's beds at the place that ends life and the life's elasticity to each update:
@@ -1352,19 +1329,16 @@ namespace abrade::coupling::lifetime
     const EndOfLife           &e     = f.e;
     const std::vector<double> &where = f.where;
     TrajectoryMarks marks;
-    marks.depth_limit     = s.max_depth;
-    marks.recession_limit = s.max_recession;
-    marks.edge_limit      = s.max_edge_recession;
-    marks.plate_limit     = s.min_plate_thickness;
+    for (const auto &c : criteria)
+      c->mark_limit(marks);
     marks.recession_points = std::max<std::size_t>(1, s.recession_points.size());
-    if (e.extrapolated &&
-        (e.criterion == depth_criterion || e.criterion == recession_criterion || e.criterion == edge_criterion))
+    if (e.extrapolated && criteria[e.criterion]->drawn_in_trajectory())
       {
         marks.extrapolated = true;
         marks.last_tonnes  = history.back().tonnes;
         marks.last_value   = history.back().values[e.criterion];
         marks.life         = e.tonnes;
-        marks.limit        = criteria[e.criterion].limit;
+        marks.limit        = limits[e.criterion].limit;
       }
     // the cross-section through the place that ended the life, the quantity drawn there
     WorstSection worst;
@@ -1373,20 +1347,18 @@ namespace abrade::coupling::lifetime
     const auto mm = [](double v) { return io::format_number(1000 * v, 4) + " mm"; };
     const int  c  = e.criterion == EndOfLife::none || worn_through ? -1 : int(e.criterion);
     const std::string after = " after update " + std::to_string(worst.updates);
-    if (c >= 0 && c != mass_criterion)
-      worst.mark.text = (c == depth_criterion       ? "depth below the design "
-                         : c == recession_criterion ? "recession of the followed point (circled) "
-                         : c == edge_criterion      ? "edge recession (a height gauge, between the dashed lines) "
-                                                    : "plate thickness lost ") +
-                        mm(history.back().values[c]) + after + " (end of life at " + mm(criteria[c].limit) + ")";
+    const double      depth = history.back().values[criterion_named(depth_name)];
+    if (c >= 0 && !criteria[c]->section_label().empty())
+      worst.mark.text = criteria[c]->section_label() + mm(history.back().values[c]) + after + " (end of life at " +
+                        mm(limits[c].limit) + ")";
     else
-      worst.mark.text = worn_through ? "worn through (circled); the largest depth below the design " +
-                                         mm(history.back().values[depth_criterion]) + after
-                                     : (c == mass_criterion ? "the whole part's worn mass ends the life; " : "") +
-                                         std::string("the deepest point, ") +
-                                         mm(history.back().values[depth_criterion]) + " below the design" + after;
-    worst.mark.lowest_points = c == edge_criterion;
-    worst.mark.to_design     = c == depth_criterion || c < 0 || c == mass_criterion;
+      worst.mark.text = worn_through ? "worn through (circled); the largest depth below the design " + mm(depth) + after
+                                     : (c >= 0 ? criteria[c]->whole_part_note() : std::string()) +
+                                         "the deepest point, " + mm(depth) + " below the design" + after;
+    if (c >= 0)
+      criteria[c]->section_drawing(worst.mark);
+    else
+      worst.mark.to_design = true;
     plot_lifetime(ctx.output.root(), s.planes, frame, marks, &worst);
   }
 
@@ -1413,7 +1385,7 @@ namespace abrade::coupling::lifetime
                        " cycles (no end-of-life criterion grows)");
       }
     line << "Lifetime: " << end << " after " << cycles << " cycles; predicted life " << e.tonnes << " t ("
-         << describe(e, criteria) << ")";
+         << describe(e, limits) << ")";
     if (li.dof >= 1 && e.tonnes > 0)
       line << ", " << 100 * li.confidence << " % interval " << li.low << " ... " << li.high << " t (+-"
            << io::format_number(100 * li.relative_half_width, 3) << " %, " << li.dof << " degrees of freedom)";

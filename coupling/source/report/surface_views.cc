@@ -102,6 +102,24 @@ namespace abrade::report
       return poly && poly->GetNumberOfPoints() > 0 ? poly : nullptr;
     }
 
+    /// Calls @p f(c, ids, p) for every triangle c of @p poly: its point ids and its points.
+    template <class F>
+    void each_triangle(vtkPolyData *poly, F &&f)
+    {
+      for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          poly->GetCellPoints(c, n, ids);
+          if (n != 3)
+            continue;
+          Eigen::Vector3d p[3]; // (GetPoint returns one buffer: each point copied before the next is read)
+          for (int k = 0; k < 3; ++k)
+            p[k] = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[k]));
+          f(c, ids, p);
+        }
+    }
+
     /// @p fixed: the frame to draw in (else @p align's principal axes, or as it is).
     bool write_triangles(const SurfacePicture &s, const std::string &out, bool align, double scale,
                          std::vector<double> &values, bool &as_points, const Frame *fixed = nullptr,
@@ -139,26 +157,13 @@ namespace abrade::report
             data << 1000 * p[0] << ' ' << 1000 * p[1] << ' ' << 1000 * p[2] << ' ' << v << '\n';
             values.push_back(v);
           }
-      for (vtkIdType c = 0; c < poly->GetNumberOfCells() && !as_points; ++c)
-        {
-          vtkIdType        n;
-          const vtkIdType *ids;
-          poly->GetCellPoints(c, n, ids);
-          if (n != 3)
-            continue;
-          if (crop.radius > 0)
-            {
-              Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-              for (int k = 0; k < 3; ++k)
-                centre += Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[k])) / 3;
-              if (outside(centre))
-                continue;
-            }
+      each_triangle(poly, [&](vtkIdType c, const vtkIdType *ids, const Eigen::Vector3d *corner) {
+          if (outside((corner[0] + corner[1] + corner[2]) / 3))
+            return;
           double x[3][4];
           for (int k = 0; k < 3; ++k)
             {
-              double p[3];
-              poly->GetPoint(ids[k], p);
+              double p[3] = {corner[k][0], corner[k][1], corner[k][2]};
               place(p);
               const double v = scale * (at_points ? at_points->GetComponent(ids[k], 0) : at_cells->GetComponent(c, 0));
               x[k][0] = 1000 * p[0], x[k][1] = 1000 * p[1], x[k][2] = 1000 * p[2], x[k][3] = std::isfinite(v) ? v : 0.0;
@@ -166,7 +171,7 @@ namespace abrade::report
             }
           auto line = [&](int k) { data << x[k][0] << ' ' << x[k][1] << ' ' << x[k][2] << ' ' << x[k][3] << '\n'; };
           line(0), line(1), data << '\n', line(2), line(2), data << "\n\n";
-        }
+        });
       return bool(data);
     }
 
@@ -198,30 +203,20 @@ namespace abrade::report
       const Eigen::Vector3d centre(crop.centre[0], crop.centre[1], crop.centre[2]);
       Eigen::Vector3d       facing = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
       std::vector<Eigen::Vector3d> inside;
-      for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
-        {
-          vtkIdType        n;
-          const vtkIdType *ids;
-          poly->GetCellPoints(c, n, ids);
-          if (n != 3)
-            continue;
-          Eigen::Vector3d p[3];
-          double          value = 0;
+      each_triangle(poly, [&](vtkIdType c, const vtkIdType *ids, const Eigen::Vector3d *p) {
+          double value = 0;
           for (int k = 0; k < 3; ++k)
-            {
-              p[k] = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[k]));
-              value += (at_points ? at_points->GetComponent(ids[k], 0) : at_cells ? at_cells->GetComponent(c, 0) : 0.0) / 3;
-            }
+            value += (at_points ? at_points->GetComponent(ids[k], 0) : at_cells ? at_cells->GetComponent(c, 0) : 0.0) / 3;
           const Eigen::Vector3d m = (p[0] + p[1] + p[2]) / 3;
           if ((m - centre).norm() > crop.radius)
-            continue;
+            return;
           Eigen::Vector3d a = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]); // area x normal
           if (a.dot(m - middle) < 0)
             a = -a;
           facing += a * (std::abs(value) + 1e-12);
           inside.push_back(m);
           mean += m;
-        }
+        });
       if (inside.empty())
         return {};
       mean /= double(inside.size());
@@ -273,19 +268,10 @@ namespace abrade::report
     size.largest_extent = std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
     double    sum = 0;
     vtkIdType n   = 0;
-    for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
-      {
-        vtkIdType        k;
-        const vtkIdType *ids;
-        poly->GetCellPoints(c, k, ids);
-        for (vtkIdType e = 0; e < k; ++e, ++n)
-          {
-            // (GetPoint returns one buffer: each point copied before the next is read)
-            const Eigen::Vector3d a = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[e]));
-            const Eigen::Vector3d b = Eigen::Map<const Eigen::Vector3d>(poly->GetPoint(ids[(e + 1) % k]));
-            sum += (a - b).norm();
-          }
-      }
+    each_triangle(poly, [&](vtkIdType, const vtkIdType *, const Eigen::Vector3d *p) {
+      for (int e = 0; e < 3; ++e, ++n)
+        sum += (p[e] - p[(e + 1) % 3]).norm();
+    });
     size.mean_edge = n > 0 ? sum / double(n) : 0.0;
     return size;
   }

@@ -61,29 +61,22 @@ namespace abrade::io
 
   std::array<double, 3> normal_magnitudes_near(const std::string &file, const std::array<double, 3> &point)
   {
-    const auto poly = read_polydata(file);
+    const PolyData surface = triangles_of(read_polydata(file).Get());
     struct Near
     {
       double                distance, area;
       std::array<double, 3> normal;
     };
     std::vector<Near> triangles;
-    for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+    const auto       &x = surface.points;
+    for (const auto &t : surface.triangles)
       {
-        vtkIdType        n;
-        const vtkIdType *ids;
-        poly->GetCellPoints(c, n, ids);
-        if (n != 3)
-          continue;
-        double p[3][3];
-        for (int k = 0; k < 3; ++k)
-          poly->GetPoint(ids[k], p[k]);
-        double e1[3], e2[3], m[3], d2 = 0;
+        double e1[3], e2[3], d2 = 0;
         for (int i = 0; i < 3; ++i)
           {
-            e1[i] = p[1][i] - p[0][i], e2[i] = p[2][i] - p[0][i];
-            m[i] = (p[0][i] + p[1][i] + p[2][i]) / 3;
-            d2 += (m[i] - point[i]) * (m[i] - point[i]);
+            e1[i]          = x[3 * t[1] + i] - x[3 * t[0] + i], e2[i] = x[3 * t[2] + i] - x[3 * t[0] + i];
+            const double m = (x[3 * t[0] + i] + x[3 * t[1] + i] + x[3 * t[2] + i]) / 3;
+            d2 += (m - point[i]) * (m - point[i]);
           }
         const std::array<double, 3> a = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
                                          e1[0] * e2[1] - e1[1] * e2[0]};

@@ -31,6 +31,7 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/lifetime/edge_gauge.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
+#include <abrade/coupling/lifetime/end_of_life_criterion.h>
 #include <abrade/coupling/lifetime/life_interval.h>
 #include <abrade/coupling/lifetime/place_scatter.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
@@ -65,7 +66,7 @@ namespace abrade::coupling::lifetime
       long                          fixed_cycles = 0;
       double                        fraction     = 0.05;
       double                        smoothing    = 0;
-      double                        max_depth = 0, max_recession = 0, max_worn_mass = 0, target_tonnes = 0;
+      double                        target_tonnes = 0;
       std::vector<double>           planes;
       std::vector<dealii::Point<3>> recession_points;
       long                          max_updates = 1;
@@ -74,7 +75,7 @@ namespace abrade::coupling::lifetime
       double                        seed_scatter = 0;
       bool                          rate_is_volume = false; // Analytic wear is = volume
       double                        target_interval = 0; ///< relative half-width; 0: none
-      double                        max_edge_recession = 0, min_plate_thickness = 0, gauge_height = 0;
+      double                        gauge_height = 0;
       long                          gauge_stations = 41;
       long                          max_beds = 0;        ///< per update, with a target interval
       std::string                   calibration_file;    ///< Lifetime/Calibration, resolved; empty: none
@@ -89,17 +90,10 @@ namespace abrade::coupling::lifetime
       fem::KnifeModel::UpdateResult result;
       double                       volume_before = 0;
       std::string                  error;
-      // before the move: the wear depth, and the depth rates at the followed points (mean and
-      // per seed)
-      std::vector<double>              depth_before, followed_mean;
-      fem::SolidSurface                before; ///< the surface the rates were found on
-      std::vector<std::vector<double>> followed_seed;
-      /// each seed's depth rate at the points the design's vertices moved to (place_scatter.h)
-      std::vector<std::vector<double>> design_seed;
-      /// each seed's depth rate where the gauges read the knife before the move, per station:
-      /// at the section's lowest point, and the mean of the two faces' at the gauge height
-      /// (interpolated on the surface: what moves those points; 0 where there is no section)
-      std::vector<std::vector<double>> edge_seed, faces_seed;
+      fem::SolidSurface            before; ///< the surface the rates were found on
+      /// the beds' depth rates where the criteria read the part before the move (the gauges'
+      /// points interpolated on the surface: what moves those points)
+      BedRates                     beds;
     };
 
     // the steps of run()
@@ -148,6 +142,13 @@ namespace abrade::coupling::lifetime
     void choose_beds();
     /// The gauges' sections of the knife as it is and of its design at the same stations.
     void gauge_the_knife();
+    /// The part as the criteria read it: the knife as it is now, or its design.
+    PartNow part_now() const;
+    PartNow design_now() const;
+    /// The beds' rates where the criteria read the knife, before it moves (move_knife()).
+    BedRates rates_at_places(const Rates &rates, long cycles) const;
+    /// The criterion of that name (one every run has: the depth, the worn mass).
+    std::size_t criterion_named(const std::string &name) const;
     /// The pilot cycle that sizes the first update (previous_largest).
     void size_first_update();
     /// The wear filter's length from the first cycle (the particle's footprint unless given);
@@ -176,7 +177,9 @@ namespace abrade::coupling::lifetime
     double                       tonnes = 0;
     double                       archard_total = 0;
     double                       volume0 = 0;
-    std::vector<Criterion>       criteria;
+    /// every registered end-of-life criterion (end_of_life_criterion.h) and their limits
+    std::vector<std::unique_ptr<EndOfLifeCriterion>> criteria;
+    std::vector<Criterion>       limits;
     std::vector<TrajectoryPoint> history;      ///< per update (and the fresh knife) the criteria's values
     std::vector<std::string>     trajectory_rows; ///< trajectory.csv's rows as written (rebuilt from them on resume)
     std::vector<std::vector<UpdateRecord>> records; ///< per criterion, per update (life_interval.h)
