@@ -8,6 +8,7 @@
 #include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_section.h>
 #include <abrade/dem/contact_law.h>
+#include <abrade/dem/wall_motion_model.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/lifetime/end_of_life_criterion.h>
 #include <abrade/coupling/run_size.h>
@@ -20,7 +21,10 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <stdexcept>
 #include <filesystem>
 
 namespace abrade::coupling
@@ -80,9 +84,91 @@ namespace abrade::coupling
       {"constant", dem::SizeDistribution::Kind::constant},
       {"uniform", dem::SizeDistribution::Kind::uniform},
       {"normal", dem::SizeDistribution::Kind::normal}};
-    const Choices<dem::WallMotion::Kind> motion_types = {{"fixed", dem::WallMotion::Kind::fixed},
-                                                         {"prescribed", dem::WallMotion::Kind::prescribed},
-                                                         {"rigid body", dem::WallMotion::Kind::rigid_body}};
+    /// The entries a plugin declares, with their defaults as a parameter file writes them.
+    class DeclaredEntries : public dem::ParameterSection
+    {
+    public:
+      std::vector<std::pair<std::string, std::string>> entries;
+
+      void declare_number(const std::string &name, double value, double, double, const std::string &) override
+      {
+        entries.emplace_back(name, io::format_number(value, 15));
+      }
+      void declare_vector(const std::string &name, const std::array<double, 3> &v, const std::string &) override
+      {
+        entries.emplace_back(name, io::format_number(v[0], 15) + "," + io::format_number(v[1], 15) + "," +
+                                     io::format_number(v[2], 15));
+      }
+      void declare_bool(const std::string &name, bool value, const std::string &) override
+      {
+        entries.emplace_back(name, value ? "true" : "false");
+      }
+      void declare_text(const std::string &name, const std::string &value, const std::string &) override
+      {
+        entries.emplace_back(name, value);
+      }
+      void declare_choices(const std::string &name, const std::string &value, const std::vector<std::string> &,
+                           const std::string &) override
+      {
+        entries.emplace_back(name, value);
+      }
+      double number(const std::string &name) const override
+      {
+        throw std::logic_error("parameter '" + name + "' read from a section that was only declared");
+      }
+      [[noreturn]] void fail(const std::string &name, const std::string &why) const override
+      {
+        throw std::logic_error("parameter '" + name + "': " + why);
+      }
+    };
+
+    /// Whether the value @p a of an entry is its default @p b: the same text but for blanks and
+    /// case, or the same numbers ("0,0,0" and "0, 0, 0.0"; "yes" and "true").
+    bool same_value(std::string a, std::string b)
+    {
+      for (auto *s : {&a, &b})
+        {
+          s->erase(std::remove_if(s->begin(), s->end(), [](unsigned char c) { return std::isspace(c); }), s->end());
+          std::transform(s->begin(), s->end(), s->begin(), [](unsigned char c) { return std::tolower(c); });
+          if (*s == "yes")
+            *s = "true";
+          if (*s == "no")
+            *s = "false";
+        }
+      if (a == b)
+        return true;
+      const auto x = split_string_list(a), y = split_string_list(b);
+      if (x.size() != y.size())
+        return false;
+      try
+        {
+          for (std::size_t k = 0; k < x.size(); ++k)
+            if (std::stod(x[k]) != std::stod(y[k]))
+              return false;
+          return true;
+        }
+      catch (const std::exception &)
+        {
+          return false;
+        }
+    }
+
+    /// Motion/Type: the registered wall motions (wall_motion_model.h), as a pattern and their
+    /// documentation ("fixed; prescribed: velocities per phase; ...").
+    Selection wall_motion_selection()
+    {
+      std::string names;
+      for (const auto &n : dem::wall_motion_names())
+        names += (names.empty() ? "" : "|") + n;
+      return Selection(names);
+    }
+    std::string wall_motion_documentation()
+    {
+      std::string doc;
+      for (const auto &m : dem::make_wall_motions())
+        doc += (doc.empty() ? "" : "; ") + m->name() + (m->documentation().empty() ? "" : ": " + m->documentation());
+      return doc + ".";
+    }
 
     /// The registered wear laws' names, as a pattern and as documentation.
     Selection wear_law_selection() { return Selection(dem::wear_law_names("|")); }
@@ -642,11 +728,8 @@ namespace abrade::coupling
                           "[s] Simulated time between probe samples; 0: every step. Range: >= 0.");
         prm.leave_subsection();
         prm.enter_subsection("Motion");
-        prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed",
-                          selection_of(motion_types),
-                          "fixed; prescribed: velocities per phase; rigid body: the degrees of "
-                          "freedom listed in 'Free degrees of freedom' move under gravity and particle "
-                          "forces, the others follow the prescribed velocities.");
+        prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed", wall_motion_selection(),
+                          wall_motion_documentation());
         declare_vector(prm, "Centre", "0, 0, 0",
                        "[m] Rotation centre (a hinge point) in the geometry's coordinates before "
                        "Offset; it moves with the wall. Torques are reported about it.");
@@ -657,20 +740,16 @@ namespace abrade::coupling
         prm.declare_entry("Angular velocities", "", Anything(),
                           "[rad/s] Angular velocity per phase about the centre: 'phase: wx, wy, wz; "
                           "...'. Phases not listed: not rotating.");
-        prm.declare_entry("Mass", "0", Double(0, huge), "[kg] Rigid body: mass. Range: >= 0.");
-        declare_vector(prm, "Inertia", "0, 0, 0", "[kg m^2] Rigid body: principal moments about the centre.");
-        prm.declare_entry("Free degrees of freedom", "", List(Selection("tx|ty|tz|rx|ry|rz")),
-                          "Rigid body: which of tx, ty, tz, rx, ry, rz move freely.");
-        prm.declare_entry("Gravity", "true", Bool(), "Rigid body: whether gravity acts on it.");
-        prm.declare_entry("Body", "", Anything(),
-                          "Rigid body: walls with the same Body name move as one body (a grab's two "
-                          "shells): their forces, torques about the common Centre, masses and "
-                          "inertias add up. They need the same Type, Centre, free degrees of freedom "
-                          "and free phases. Empty: a body of its own.");
-        prm.declare_entry("Free in phases", "", Anything(),
-                          "Rigid body: the phases in which the free degrees of freedom are free, "
-                          "comma separated; in the others the wall follows Velocities and Angular "
-                          "velocities entirely (a grab hoisted by its crane). Empty: all phases.");
+        // each motion's own parameters (the rigid body's in Motion itself)
+        for (const auto &motion : dem::make_wall_motions())
+          {
+            if (!motion->section().empty())
+              prm.enter_subsection(motion->section());
+            PluginSection section(prm);
+            motion->declare_parameters(section);
+            if (!motion->section().empty())
+              prm.leave_subsection();
+          }
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -1153,27 +1232,41 @@ namespace abrade::coupling
         auto              mp   = wp;
         mp.push_back("Motion");
         auto             &m    = w.motion;
-        m.kind   = get_choice(prm, "Type", motion_types);
         m.centre = rotation * get_vector(prm, "Centre") + offset;
         for (const auto &[phase, v] : read_phase_vectors(f, mp, "Velocities", c.phases))
           m.phases[phase].velocity = v;
         for (const auto &[phase, v] : read_phase_vectors(f, mp, "Angular velocities", c.phases))
           m.phases[phase].angular_velocity = v;
-        m.mass    = prm.get_double("Mass");
-        m.inertia = get_vector(prm, "Inertia");
-        m.gravity = prm.get_bool("Gravity");
-        static const std::vector<std::string> dofs = {"tx", "ty", "tz", "rx", "ry", "rz"};
-        for (const auto &d : get_list(prm, "Free degrees of freedom"))
-          m.free[std::find(dofs.begin(), dofs.end(), d) - dofs.begin()] = true;
-        m.body = trim(prm.get("Body"));
-        if (m.kind == dem::WallMotion::Kind::rigid_body && m.body.empty() && !(m.mass > 0))
-          f.fail(mp, "Mass", "a rigid-body wall needs a positive mass (or a Body whose other walls have one)");
-        for (const auto &phase : split_string_list(prm.get("Free in phases")))
-          {
-            if (std::none_of(c.phases.begin(), c.phases.end(), [&](const auto &p) { return p.first == phase; }))
-              f.fail(mp, "Free in phases", "'" + phase + "' is not a phase of Simulation/Phases");
-            m.free_phases.insert(phase);
-          }
+        {
+          std::shared_ptr<dem::WallMotionModel> motion = dem::make_wall_motion(prm.get("Type"));
+          dem::MotionContext                    context;
+          for (const auto &p : c.phases)
+            context.phases.push_back(p.first);
+          auto sp = mp;
+          if (!motion->section().empty())
+            {
+              prm.enter_subsection(motion->section());
+              sp.push_back(motion->section());
+            }
+          motion->parse_parameters(PluginSection(f, sp), context, m);
+          if (!motion->section().empty())
+            prm.leave_subsection();
+          // another motion's entries in Motion itself (the rigid body's Mass, Body, ...) set on
+          // this wall would be ignored without a word (a Body on a prescribed wall left the body)
+          for (const auto &other : dem::make_wall_motions())
+            if (other->section().empty() && other->name() != motion->name())
+              {
+                DeclaredEntries declared;
+                other->declare_parameters(declared);
+                for (const auto &[key, default_value] : declared.entries)
+                  if (!same_value(prm.get(key), default_value))
+                    f.fail(mp, key, "is an entry of Type = " + other->name() + ", and this wall's Type is " +
+                                      motion->name() + ": it would be ignored (set Type = " + other->name() +
+                                      ", or leave it out)");
+              }
+          m.kind  = motion->kind();
+          m.model = std::move(motion);
+        }
         prm.leave_subsection();
         prm.leave_subsection();
         c.walls.push_back(std::move(wc));

@@ -97,7 +97,8 @@ TEST(ToyCriterion, EndsALifeAtTheAnalyticCrossing)
   std::filesystem::remove_all(dir);
   abrade::coupling::ParameterFile params(std::string(ABRADE_TESTS_DIR) + "/lifetime/analytic_uniform.prm",
                                          {"Lifetime/Maximum depth=0", "Lifetime/Maximum point depth=0.003",
-                                          "Lifetime/Maximum updates=4", "Output/Directory=" + dir});
+                                          "Lifetime/Maximum updates=4", "Output/Directory=" + dir,
+                                          "Lifetime/Recession points=0.075, 0.03, 0.15"});
   abrade::io::OutputDirectory out(dir);
   abrade::io::Json            results;
   abrade::io::Timers          timers;
@@ -109,6 +110,8 @@ TEST(ToyCriterion, EndsALifeAtTheAnalyticCrossing)
   const std::string summary = results.dump();
   EXPECT_NE(summary.find("\"end_of_life_criterion\": \"maximum point depth\""), std::string::npos) << summary;
   EXPECT_NEAR(results["lifetime"]["predicted_tonnes_to_end_of_life"].number(), 3000.0, 3.0) << summary;
+  // where: the toy's where(), the followed point
+  EXPECT_NE(summary.find("\"end_of_life_where\": [0.075, 0.03, 0.15]"), std::string::npos) << summary;
   // it was followed and kept like the others: in the checkpoint, under its name
   std::ifstream      state(dir + "/checkpoint/loop-2.txt");
   std::ostringstream text;

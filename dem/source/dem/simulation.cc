@@ -4,6 +4,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/closest_point.h>
 #include <abrade/dem/contact_law.h>
+#include <abrade/dem/wall_motion_model.h>
 #include "simulation_impl.h"
 
 #include <omp.h>
@@ -19,6 +20,9 @@ namespace abrade::dem
 {
   namespace
   {
+    /// The name of a wall's motion (wall_motion_model.h; "" without one: its kind decides).
+    std::string motion_name(const Wall &w) { return w.motion.model ? w.motion.model->name() : std::string(); }
+
     /// Half kick of a particle's spin: w += h_ii T (h_ii: half step / moment of inertia), then
     /// the rolling resistance (torque magnitude @p rolling, the contacts' sum of mu_r |F_n| R,
     /// opposed to w) slows the spin by h_ii rolling, but never reverses it. Applied as a torque
@@ -222,8 +226,8 @@ namespace abrade::dem
     if (!w.motion.body.empty())
       for (const Wall &o : walls)
         if (o.motion.body == w.motion.body &&
-            (o.motion.kind != w.motion.kind || o.motion.free != w.motion.free || o.motion.centre != w.motion.centre ||
-             o.motion.free_phases != w.motion.free_phases))
+            (o.motion.kind != w.motion.kind || motion_name(o) != motion_name(w) || o.motion.free != w.motion.free ||
+             o.motion.centre != w.motion.centre || o.motion.free_phases != w.motion.free_phases))
           throw InputError("wall '" + w.name + "'", "walls of one body ('" + w.motion.body + "', with '" + o.name +
                                                        "') need the same motion type, centre, free degrees of freedom "
                                                        "and free phases");

@@ -1,6 +1,7 @@
 // Walls: a triangle mesh with a material and a motion, and what the particles do to it
 // (wall.h).
 #include <abrade/dem/wall.h>
+#include <abrade/dem/wall_motion_model.h>
 
 #include <Eigen/Geometry>
 
@@ -21,17 +22,26 @@ namespace abrade::dem
     tangential_impulse.assign(mesh.n_triangles(), 0.0);
   }
 
-  void Wall::set_phase(const std::string &phase)
+  void Wall::set_phase(const std::string &name)
   {
     if (motion.kind == WallMotion::Kind::fixed)
       return;
-    PhaseVelocity pv;
-    if (auto it = motion.phases.find(phase); it != motion.phases.end())
-      pv = it->second;
+    phase         = name;
+    time_in_phase = 0;
     free_in_phase = motion.free_phases.empty() || motion.free_phases.count(phase) > 0;
+    if (motion.model)
+      prescribe(motion.model->velocity(motion, phase, 0));
+    else if (auto it = motion.phases.find(phase); it != motion.phases.end())
+      prescribe(it->second);
+    else
+      prescribe({});
+  }
+
+  void Wall::prescribe(const PhaseVelocity &pv)
+  {
+    const bool rb = free_now();
     for (int d = 0; d < 3; ++d)
       {
-        const bool rb = free_now();
         if (!(rb && motion.free[d]))
           velocity[d] = pv.velocity[d];
         if (!(rb && motion.free[3 + d]))
@@ -43,6 +53,9 @@ namespace abrade::dem
   {
     if (motion.kind == WallMotion::Kind::fixed)
       return;
+    if (motion.model && motion.model->time_dependent()) // (midpoint: second order in dt)
+      prescribe(motion.model->velocity(motion, phase, time_in_phase + 0.5 * dt));
+    time_in_phase += dt;
     const double angle = angular_velocity.norm() * dt;
     if (angle > 0)
       rotation = Eigen::AngleAxisd(angle, angular_velocity.normalized()).toRotationMatrix() * rotation;
@@ -54,6 +67,9 @@ namespace abrade::dem
         for (int d = 0; d < 3; ++d)
           current[3 * v + d] = p[d];
       }
+    // the contacts at the new positions see the velocity there, not the step's middle one
+    if (motion.model && motion.model->time_dependent())
+      prescribe(motion.model->velocity(motion, phase, time_in_phase));
   }
 
   void Wall::accelerate(const Vec3 &gravity, double dt, const Vec3 &f, const Vec3 &t, double mass, const Vec3 &inertia)

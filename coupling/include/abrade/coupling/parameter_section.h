@@ -24,9 +24,21 @@ namespace abrade::coupling
 
     void   declare_number(const std::string &name, double value, double lo, double hi, const std::string &doc) override;
     double number(const std::string &name) const override;
+    void   declare_vector(const std::string &name, const std::array<double, 3> &value, const std::string &doc) override;
+    std::array<double, 3> vector(const std::string &name) const override;
+    void                  declare_bool(const std::string &name, bool value, const std::string &doc) override;
+    bool                  boolean(const std::string &name) const override;
+    void        declare_text(const std::string &name, const std::string &value, const std::string &doc) override;
+    std::string text(const std::string &name) const override;
+    void        declare_choices(const std::string &name, const std::string &value,
+                                const std::vector<std::string> &choices, const std::string &doc) override;
+    std::vector<std::string> chosen(const std::string &name) const override;
     [[noreturn]] void fail(const std::string &name, const std::string &why) const override;
 
   private:
+    /// Reads are for sections of a file only.
+    void readable(const std::string &name) const;
+
     dealii::ParameterHandler &prm;
     ParameterFile            *file = nullptr;
     std::vector<std::string>  path;

@@ -17,15 +17,27 @@ namespace abrade::coupling::lifetime
     }
   } // namespace
 
+  // A name is lower-case words (the checkpoint keeps a criterion's entries under it, blanks as
+  // '_': "history_maximum_depth"), not "tonnes" (history_tonnes is the trajectory's); names and
+  // parameters are each registered once.
   EndOfLifeCriterionRegistration::EndOfLifeCriterionRegistration(EndOfLifeCriterionFactory make)
   {
-    const std::string name = make()->name();
+    const auto  made  = make();
+    const auto  name  = made->name();
+    auto        wrong = [&](const char *why) {
+      std::fprintf(stderr, "abrade: the end-of-life criterion '%s' %s\n", name.c_str(), why);
+      std::abort();
+    };
+    if (name.empty() || name == "tonnes" ||
+        name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789 ") != std::string::npos)
+      wrong("is not a name of lower-case words (nor 'tonnes')");
     for (const auto &other : factories())
-      if (other()->name() == name)
-        {
-          std::fprintf(stderr, "abrade: the end-of-life criterion '%s' is registered twice\n", name.c_str());
-          std::abort();
-        }
+      {
+        if (other()->name() == name)
+          wrong("is registered twice");
+        if (other()->parameter() == made->parameter())
+          wrong("declares the parameter of another criterion");
+      }
     factories().push_back(make);
   }
 

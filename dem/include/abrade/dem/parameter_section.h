@@ -1,8 +1,11 @@
 #pragma once
-// A subsection of the parameter file as the DEM's plugins (wear laws, contact sub-models) see
-// it, so that they declare, read and check their own parameters while the DEM library knows no
+// A subsection of the parameter file as the DEM's plugins (wear laws, contact sub-models, wall
+// motions) see it, so that they declare, read and check their own parameters while the DEM library knows no
 // parameter-file library (coupling/parameter_section.h maps it onto deal.II's ParameterHandler).
+#include <array>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace abrade::dem
 {
@@ -18,8 +21,38 @@ namespace abrade::dem
     virtual void declare_number(const std::string &name, double value, double lo, double hi,
                                 const std::string &doc) = 0;
     virtual double number(const std::string &name) const = 0;
+
+    // Entries other than numbers (a section that holds numbers only need not have them).
+    /// Three numbers x, y, z.
+    virtual void declare_vector(const std::string &name, const std::array<double, 3> &value, const std::string &doc)
+    {
+      unsupported(name);
+    }
+    virtual std::array<double, 3> vector(const std::string &name) const { unsupported(name); }
+    virtual void declare_bool(const std::string &name, bool value, const std::string &doc) { unsupported(name); }
+    virtual bool boolean(const std::string &name) const { unsupported(name); }
+    /// Any text (a name, a list the plugin checks itself).
+    virtual void declare_text(const std::string &name, const std::string &value, const std::string &doc)
+    {
+      unsupported(name);
+    }
+    virtual std::string text(const std::string &name) const { unsupported(name); }
+    /// A comma-separated list of some of @p choices.
+    virtual void declare_choices(const std::string &name, const std::string &value,
+                                 const std::vector<std::string> &choices, const std::string &doc)
+    {
+      unsupported(name);
+    }
+    virtual std::vector<std::string> chosen(const std::string &name) const { unsupported(name); }
+
     /// An input error naming the entry @p name and where it was set.
     [[noreturn]] virtual void fail(const std::string &name, const std::string &why) const = 0;
+
+  private:
+    [[noreturn]] static void unsupported(const std::string &name)
+    {
+      throw std::logic_error("parameter '" + name + "': this parameter section holds numbers only");
+    }
   };
 
 } // namespace abrade::dem

@@ -8,12 +8,15 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace abrade::dem
 {
+  class WallMotionModel;
+
   /// Velocity of a wall during one named phase of the operating cycle.
   struct PhaseVelocity
   {
@@ -30,6 +33,9 @@ namespace abrade::dem
       rigid_body  ///< free degrees of freedom driven by gravity and particle forces
     };
     Kind kind = Kind::fixed;
+    /// The motion chosen by Motion/Type (wall_motion_model.h), which prescribes the velocities;
+    /// none: the velocity table below, constant in each phase.
+    std::shared_ptr<const WallMotionModel> model;
     /// Rotation centre (a hinge point), moves with the wall. Torques are taken about it.
     Vec3 centre = Vec3::Zero();
     /// Prescribed velocities; phases not listed keep the wall at rest. For a rigid body, the
@@ -67,6 +73,8 @@ namespace abrade::dem
 
     // --- loads (from particles, this step) ---
     bool free_in_phase = true;  ///< set by set_phase
+    std::string phase;          ///< the phase set by set_phase
+    double      time_in_phase = 0; ///< [s] since set_phase
     Vec3 force  = Vec3::Zero(); ///< total force on the wall [N]
     Vec3 torque = Vec3::Zero(); ///< about the current centre [N m]
     std::vector<double> normal_impulse;     ///< per triangle, accumulated |F_n| dt [N s]
@@ -83,7 +91,8 @@ namespace abrade::dem
     void initialise();
     /// Sets the velocity the current phase prescribes (rigid bodies: the prescribed DOFs only).
     void set_phase(const std::string &phase);
-    /// Advances the pose by dt with the current (angular) velocity and updates vertex positions.
+    /// Advances the pose by dt with the current (angular) velocity and updates vertex positions;
+    /// a motion whose velocity changes within the phase sets it at the step's middle first.
     void advance(double dt);
     /// Rigid body: velocity update from the loads @p f and @p t (this step's, of this wall or of
     /// its whole body) on @p mass and @p inertia, and gravity.
@@ -102,5 +111,9 @@ namespace abrade::dem
     }
     /// Current geometry of the wall as a mesh (reference topology).
     TriangleMesh current_mesh() const;
+
+  private:
+    /// Sets the velocities of the prescribed degrees of freedom (all, unless free now).
+    void prescribe(const PhaseVelocity &pv);
   };
 } // namespace abrade::dem

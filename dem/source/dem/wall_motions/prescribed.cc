@@ -1,0 +1,20 @@
+// Motion/Type = prescribed: the wall moves with the velocities its table gives each phase
+// (Motion/Velocities and Angular velocities, constant in a phase: its position piecewise linear)
+// (wall_motion_model.h).
+#include <abrade/dem/wall_motion_model.h>
+
+namespace abrade::dem
+{
+  namespace
+  {
+    class Prescribed : public WallMotionModel
+    {
+    public:
+      std::string      name() const override { return "prescribed"; }
+      std::string      documentation() const override { return "velocities per phase"; }
+      WallMotion::Kind kind() const override { return WallMotion::Kind::prescribed; }
+    };
+  } // namespace
+
+  ABRADE_REGISTER_WALL_MOTION(Prescribed);
+} // namespace abrade::dem
