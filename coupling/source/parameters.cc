@@ -11,6 +11,7 @@
 #include <abrade/dem/wall_motion_model.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/lifetime/end_of_life_criterion.h>
+#include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/coupling/run_size.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/coarse_graining.h>
@@ -397,42 +398,11 @@ namespace abrade::coupling
                       "thickness are gauged, evenly spaced from end to end of the part as it is (the end ones "
                       "one Knife/Mesh size inside its ends: the corners as far as the mesh resolves them). "
                       "Range: [2, 10000].");
+    lifetime::declare_wear_sources(prm); // (Wear source and each source's own: lifetime/wear_sources/)
     lifetime::declare_end_of_life_criteria(prm); // (Maximum depth, ...: each criterion's own, lifetime/criteria/)
     prm.declare_entry("Target tonnes", "0", Double(0, huge),
                       "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
     prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");
-    prm.declare_entry("Wear source", "dem", Selection("dem|analytic|replay"),
-                      "dem: every update runs the DEM cycles on the knife's current surface; analytic: "
-                      "the wear comes from 'Analytic wear rate' instead (verification of the loop, or "
-                      "wear rates measured elsewhere); replay: the unfiltered wear another lifetime run of "
-                      "this case stored (its wear/ directory, 'Replay run'), carried onto this run's "
-                      "surface: the same life at another Smoothing radius (a candidate footprint for "
-                      "abrade calibrate) or W without a DEM run (docs/field.md).");
-    prm.declare_entry("Replay run", "", Anything(),
-                      "[directory] Wear source = replay: the output directory of the lifetime run whose "
-                      "stored wear (wear/update_*.wear) is replayed (relative to this file; give an absolute path on the command line). Its beds are "
-                      "the replay's; beyond the tonnes it reached its last update's wear is used (warned). "
-                      "The wear is scaled by this case's W over the stored run's.");
-    prm.declare_entry("Analytic wear rate", "1e-6", Anything(),
-                      "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
-                      "inward normal, as a function of the knife's current coordinates x, y, z (the "
-                      "knife's own frame, see Recession points), of t, the tonnes handled so far, and of "
-                      "zlow, the z of the knife's lowest wearable point now, and zedge, the z of its lowest "
-                      "wearable point within a longest triangle edge of the point along x (the edge "
-                      "runs along x), e.g. '1e-6*exp(-z/0.01)', '1e-6*(1+t/5000)' or "
-                      "'1e-6*(z < zedge + 0.003)' (a band on the edge line that follows each part of it up); "
-                      "evaluated at the surface's vertices. muparser syntax.");
-    prm.declare_entry("Analytic wear is", "depth", Selection("depth|volume"),
-                      "Wear source = analytic: depth: the surface recedes by the rate x tonnes along its "
-                      "normal (the offset surface, exact: verification of the motion); volume: the rate x "
-                      "tonnes x each vertex's area is a volume removed, as the DEM's Archard volume is, "
-                      "and every update's moved surface is corrected so that the knife loses exactly it "
-                      "(an offset surface loses less at convex edges).");
-    prm.declare_entry("Analytic seed scatter", "0", Double(0, 1),
-                      "[-] Wear source = analytic: each bed's rate is multiplied by a lognormal factor "
-                      "of mean 1 and this relative standard deviation, drawn from the bed's seed (a fresh "
-                      "one every update): a known bed-to-bed scatter (verification of the life's "
-                      "interval). Range: [0, 1].");
     prm.declare_entry("Target interval", "0", Double(0, 1),
                       "[-] The life's 95 % interval asked for, as a relative half-width (0.1: +-10 %); "
                       "while the interval is wider, the next updates draw more beds (the seeds' beds "

@@ -124,19 +124,11 @@ namespace abrade::coupling::lifetime
         s.recession_points.emplace_back(std::stod(xyz[0]), std::stod(xyz[1]), std::stod(xyz[2]));
       }
     s.max_updates     = prm.get_integer("Maximum updates");
-    s.analytic        = prm.get("Wear source") == "analytic";
-    s.rate_expression = prm.get("Analytic wear rate");
-    s.seed_scatter    = prm.get_double("Analytic seed scatter");
-    s.rate_is_volume  = prm.get("Analytic wear is") == "volume";
+    source_choice     = make_wear_source_choice(prm.get("Wear source"));
+    source_choice->parse_parameters(ctx.parameters);
     s.target_interval = prm.get_double("Target interval");
     s.max_beds        = prm.get_integer("Maximum beds");
     s.calibration_file = ctx.parameters.path_beside(prm.get("Calibration"));
-    if (prm.get("Wear source") == "replay")
-      {
-        if (prm.get("Replay run").empty())
-          ctx.parameters.fail({"Lifetime"}, "Replay run", "Wear source = replay needs the directory of a lifetime run");
-        s.replay_run = ctx.parameters.path_beside(prm.get("Replay run"));
-      }
     criteria = make_end_of_life_criteria();
     for (auto &c : criteria)
       c->parse_parameters(prm);
@@ -156,13 +148,14 @@ namespace abrade::coupling::lifetime
           ctx.parameters.fail({"Lifetime"}, "Seeds",
                               "seed " + std::to_string(s.seeds[a]) +
                                 " is given twice: the same bed twice is no replicate (its interval would be zero)");
-    if (!s.analytic && s.tonnes_per_cycle == 0 && !dem_case.payload_height)
+    const bool particles = source_choice->from_particles();
+    if (particles && s.tonnes_per_cycle == 0 && !dem_case.payload_height)
       ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
                           "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");
-    if (!s.analytic &&
+    if (particles &&
         std::none_of(dem_case.walls.begin(), dem_case.walls.end(), [](const auto &w) { return w.solid_model; }))
       ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
-    if (!s.analytic)
+    if (particles)
       for (const auto &w : dem_case.walls)
         if (w.solid_model && !dem::law_recording(w.wear, dem_case.wear_field))
           {
@@ -172,8 +165,6 @@ namespace abrade::coupling::lifetime
                                   ", the field the lifetime loop wears the knife by: add " +
                                   (law ? law->name() : std::string("its law")));
           }
-    if (s.analytic && s.tonnes_per_cycle <= 0)
-      ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle", "the analytic wear rate is per tonne: set Tonnes per cycle > 0");
     if (std::none_of(criteria.begin(), criteria.end(), [](const auto &c) { return c->active(); }))
       {
         std::string keys;
@@ -192,19 +183,8 @@ namespace abrade::coupling::lifetime
     knife_parameters = read_knife_parameters(ctx.parameters);
     read_settings();
     build_knife();
-    if (s.analytic)
-      try
-        {
-          source = make_analytic_wear_source(s.rate_expression, s.tonnes_per_cycle, s.seed_scatter, s.rate_is_volume);
-        }
-      catch (const std::invalid_argument &e)
-        {
-          ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
-        }
-    else if (!s.replay_run.empty())
-      replay_stored_wear();
-    else
-      source = make_dem_wear_source(dem_case, s.seeds, s.tonnes_per_cycle, ctx);
+    source = source_choice->make(
+      {ctx, dem_case, s.seeds, s.tonnes_per_cycle, knife->design_surface(), knife_parameters.mesh_size});
     take_calibration();
 
     ctx.output.subdirectory("beds");
@@ -250,7 +230,7 @@ namespace abrade::coupling::lifetime
     trajectory.flush();
     ctx.log.line("Lifetime: knife of " + std::to_string(knife->triangulation().n_active_cells()) + " cells, " +
                  std::to_string(beds_now) + " fresh bed(s) per update, wear from " +
-                 (s.analytic ? "the analytic rate " + s.rate_expression : std::string("the DEM")));
+                 source_choice->description());
   }
 
   // The knife: the parametric one or a user's part (its faces chosen, placed), checked against
@@ -450,7 +430,7 @@ namespace abrade::coupling::lifetime
       }
     catch (const std::domain_error &e) // an analytic rate that is negative or not a number
       {
-        ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
+        ctx.parameters.fail({"Lifetime"}, source_choice->rate_parameter(), e.what());
       }
     store_wear(wear, beds);
     // the DEM's warnings (Simulation/On error = continue): each kind logged once, all counted
@@ -484,7 +464,7 @@ namespace abrade::coupling::lifetime
       }
     catch (const std::domain_error &e)
       {
-        ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
+        ctx.parameters.fail({"Lifetime"}, source_choice->rate_parameter(), e.what());
       }
     store_wear(wear, beds);
     resolve_smoothing(wear);
@@ -516,40 +496,12 @@ namespace abrade::coupling::lifetime
     write_stored_wear(stored_wear_file(ctx.output.root(), stored.update), stored);
   }
 
-  // Lifetime/Wear source = replay: another run's stored wear (stored_wear.h), scaled to this
-  // case's W where the stored run had another.
-  void LifetimeLoop::replay_stored_wear()
-  {
-    std::error_code ec;
-    if (std::filesystem::equivalent(s.replay_run, ctx.output.root(), ec))
-      ctx.parameters.fail({"Lifetime"}, "Replay run", s.replay_run + " is this run's own output directory: its stored "
-                          "wear would be overwritten by the replay's; give the replay another --output");
-    try
-      {
-        source = make_replayed_wear_source(s.replay_run, knife->design_surface(), knife_parameters.mesh_size,
-                                           dem_case.coarse_graining);
-      }
-    catch (const InputError &e)
-      {
-        ctx.parameters.fail({"Lifetime"}, "Replay run", e.what());
-      }
-    std::string scaled;
-    const double w_case = case_wear_coefficient(dem_case), w_stored = source->wear_coefficient();
-    if (w_case > 0 && w_stored > 0 && w_case != w_stored)
-      {
-        source = make_calibrated_wear_source(std::move(source), w_case);
-        scaled = ", scaled by this case's W over the stored run's, " + io::format_number(w_case, 4) + " / " +
-                 io::format_number(w_stored, 4);
-      }
-    ctx.log.line("wear replayed from " + s.replay_run + " (its stored wear, no DEM" + scaled + ")");
-  }
-
   // Lifetime/Calibration: the calibrated W replaces the case's (wear_calibration.h).
   void LifetimeLoop::take_calibration()
   {
     if (s.calibration_file.empty())
       return;
-    if (s.analytic)
+    if (!source_choice->from_particles())
       ctx.parameters.fail({"Lifetime"}, "Calibration", "an analytic wear rate has no coefficient to calibrate (DEM wear only)");
     io::require_input_file(s.calibration_file);
     calibration = read_wear_calibration(s.calibration_file);
@@ -624,7 +576,7 @@ namespace abrade::coupling::lifetime
             ctx.log.warning(warnings.back());
           }
       }
-    if (s.smoothing <= 0 && !s.analytic)
+    if (s.smoothing <= 0 && source_choice->from_particles())
       s.smoothing = wear.particle_radius;
     if (!smoothing_checked && s.smoothing > 0 && s.smoothing < 0.5 * knife_parameters.mesh_size)
       ctx.log.warning("Lifetime/Smoothing radius (" + io::format_number(s.smoothing) + " m) is below half the "
@@ -1218,9 +1170,8 @@ namespace abrade::coupling::lifetime
     if (particle_radius > 0) // (the size W and the footprint hold for: docs/coarse-graining.md)
       r["particle_radius"] = particle_radius;
     r["coarse_graining_factor"] = dem_case.coarse_graining;
-    r["wear_source"]      = s.analytic ? "analytic" : s.replay_run.empty() ? "dem" : "replay";
-    if (!s.replay_run.empty()) // (its stored wear, carried onto this run's surfaces: stored_wear.h)
-      r["replayed_run"] = s.replay_run;
+    r["wear_source"]      = source_choice->name();
+    source_choice->add_results(r);
     r["wear_field"] = dem_case.wear_field;
     if (source->wear_coefficient() > 0) // the coefficient the depths scale with (abrade calibrate rescales it)
       {

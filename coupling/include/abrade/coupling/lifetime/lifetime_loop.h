@@ -70,16 +70,11 @@ namespace abrade::coupling::lifetime
       std::vector<double>           planes;
       std::vector<dealii::Point<3>> recession_points;
       long                          max_updates = 1;
-      bool                          analytic    = false;
-      std::string                   rate_expression;
-      double                        seed_scatter = 0;
-      bool                          rate_is_volume = false; // Analytic wear is = volume
       double                        target_interval = 0; ///< relative half-width; 0: none
       double                        gauge_height = 0;
       long                          gauge_stations = 41;
       long                          max_beds = 0;        ///< per update, with a target interval
       std::string                   calibration_file;    ///< Lifetime/Calibration, resolved; empty: none
-      std::string                   replay_run;          ///< Lifetime/Replay run, resolved (Wear source = replay)
     };
 
     /// The outcome of moving the knife by one update.
@@ -99,7 +94,6 @@ namespace abrade::coupling::lifetime
     // the steps of run()
     void      set_up();
     void      take_calibration();
-    void      replay_stored_wear();
     void      store_wear(const CycleWear &wear, std::vector<int> &beds);
     CycleWear run_cycles();
     Rates     filter(const CycleWear &wear);
@@ -166,6 +160,7 @@ namespace abrade::coupling::lifetime
     EdgeSections                          design_at_sections; ///< the design's at the same stations
     double                                design_thickness = 0; ///< the design's largest at the gauge height
     std::unique_ptr<fem::SolidOutput>     knife_output;
+    std::unique_ptr<WearSourceChoice>     source_choice; ///< Lifetime/Wear source
     std::unique_ptr<WearSource>           source;
     std::unique_ptr<LifetimeCheckpoints>  checkpoints;
     io::CsvWriter                         trajectory;

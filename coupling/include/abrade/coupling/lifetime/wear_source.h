@@ -1,12 +1,15 @@
 #pragma once
-// Where a lifetime update's wear comes from (Lifetime/Wear source): the DEM's operating cycle on
-// the knife's current surface, or a known analytic rate (verification). The loop asks for one
+// Where a lifetime update's wear comes from (Lifetime/Wear source, a registered choice): the
+// DEM's operating cycle on the knife's current surface, a DEM run's stored wear, or a known
+// analytic rate (verification). The loop asks for one
 // cycle's wear per bed seed, as a wear volume at every vertex of the knife's surface: deposited
 // where the contacts happened (barycentric weights of each contact point, dem/wear.h), so that
 // wear at the chisel's tip stays on the tip's vertices.
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/fem/solid_surface.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <memory>
 #include <string>
@@ -56,6 +59,62 @@ namespace abrade::coupling::lifetime
     virtual std::string name() const { return "DEM"; }
   };
 
+  /// What a wear source is made from at the lifetime loop's set-up.
+  struct WearSourceSetUp
+  {
+    JobContext              &ctx;
+    const DemCase           &dem_case;
+    const std::vector<int>  &seeds;            ///< Lifetime/Seeds
+    double                   tonnes_per_cycle; ///< Lifetime/Tonnes per cycle (0: the DEM's payload)
+    const fem::SolidSurface &design;           ///< the part's design surface
+    double                   mesh_size;        ///< Knife/Mesh size [m]
+  };
+
+  /// A choice of Lifetime/Wear source, as a plugin: a class in a file of its own in
+  /// coupling/source/lifetime/wear_sources/ that declares, reads and checks its own entries (in
+  /// subsection Lifetime) and makes the WearSource the loop draws every cycle's wear from;
+  /// registered there with one line, ABRADE_REGISTER_WEAR_SOURCE(Class). Its library is linked
+  /// whole into the programs (abrade_program), which is what makes a registration in a file
+  /// nothing names reach them.
+  class WearSourceChoice
+  {
+  public:
+    virtual ~WearSourceChoice() = default;
+    /// The name written in Lifetime/Wear source ("dem").
+    virtual std::string name() const = 0;
+    /// What it does, a sentence for Wear source's documentation.
+    virtual std::string documentation() const = 0;
+    /// Whether its wear comes from particles (the DEM's, or stored by a DEM run): the part is
+    /// then a solid-model wall whose wear laws record Output/Wear field, its W can be calibrated
+    /// and the wear filter's length defaults to the particle radius. Otherwise a known rate.
+    virtual bool from_particles() const = 0;
+    /// Declares its entries (in subsection Lifetime, which the caller has entered).
+    virtual void declare_parameters(dealii::ParameterHandler &) const {}
+    /// Reads and checks them (in subsection Lifetime, entered); refusals through file.fail().
+    virtual void parse_parameters(ParameterFile &) {}
+    /// The source (refusals through ctx.parameters.fail()).
+    virtual std::unique_ptr<WearSource> make(const WearSourceSetUp &set_up) const = 0;
+    /// The entry a cycle's std::domain_error is about (a rate that is negative somewhere).
+    virtual std::string rate_parameter() const { return "Wear source"; }
+    /// Where the wear comes from, for the log ("the DEM").
+    virtual std::string description() const = 0;
+    /// What it adds to summary.json's results.lifetime.
+    virtual void add_results(io::Json &) const {}
+  };
+
+  using WearSourceFactory = std::unique_ptr<WearSourceChoice> (*)();
+  /// The registered wear sources, one new instance each, in the order of their names.
+  std::vector<std::unique_ptr<WearSourceChoice>> make_wear_source_choices();
+  /// A new one of that name; nullptr if there is none.
+  std::unique_ptr<WearSourceChoice> make_wear_source_choice(const std::string &name);
+  /// Declares Lifetime/Wear source and every registered source's entries (in Lifetime, entered).
+  void declare_wear_sources(dealii::ParameterHandler &prm);
+  /// Adds a wear source (ABRADE_REGISTER_WEAR_SOURCE); a name registered twice is a bug.
+  struct WearSourceRegistration
+  {
+    explicit WearSourceRegistration(WearSourceFactory make);
+  };
+
   /// The coefficient of the knife's law of Output/Wear field in case @p c (Archard's W; 0: none).
   double case_wear_coefficient(const DemCase &c);
 
@@ -82,3 +141,11 @@ namespace abrade::coupling::lifetime
   /// twister: the same on every platform).
   double standard_normal_of_seed(int seed);
 } // namespace abrade::coupling::lifetime
+
+#define ABRADE_WEAR_SOURCE_CAT2(a, b) a##b
+#define ABRADE_WEAR_SOURCE_CAT(a, b) ABRADE_WEAR_SOURCE_CAT2(a, b)
+/// One line in a wear source's file registers it (at namespace scope).
+#define ABRADE_REGISTER_WEAR_SOURCE(Class)                                                                  \
+  static const ::abrade::coupling::lifetime::WearSourceRegistration ABRADE_WEAR_SOURCE_CAT(              \
+    abrade_wear_source_, __LINE__)(                                                                          \
+    []() -> std::unique_ptr<::abrade::coupling::lifetime::WearSourceChoice> { return std::make_unique<Class>(); })
