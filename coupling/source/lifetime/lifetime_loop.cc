@@ -125,6 +125,8 @@ namespace abrade::coupling::lifetime
       }
     s.max_updates     = prm.get_integer("Maximum updates");
     source_choice     = make_wear_source_choice(prm.get("Wear source"));
+    if (!source_choice) // (the pattern lists the registered ones: a program without its plugins)
+      ctx.parameters.fail({"Lifetime"}, "Wear source", "no wear source of that name is registered in this program");
     source_choice->parse_parameters(ctx.parameters);
     s.target_interval = prm.get_double("Target interval");
     s.max_beds        = prm.get_integer("Maximum beds");
@@ -165,6 +167,10 @@ namespace abrade::coupling::lifetime
                                   ", the field the lifetime loop wears the knife by: add " +
                                   (law ? law->name() : std::string("its law")));
           }
+    // a known rate is per tonne: nothing weighs a payload
+    if (!particles && s.tonnes_per_cycle <= 0)
+      ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
+                          "the " + source_choice->name() + " wear rate is per tonne: set Tonnes per cycle > 0");
     if (std::none_of(criteria.begin(), criteria.end(), [](const auto &c) { return c->active(); }))
       {
         std::string keys;
@@ -502,7 +508,8 @@ namespace abrade::coupling::lifetime
     if (s.calibration_file.empty())
       return;
     if (!source_choice->from_particles())
-      ctx.parameters.fail({"Lifetime"}, "Calibration", "an analytic wear rate has no coefficient to calibrate (DEM wear only)");
+      ctx.parameters.fail({"Lifetime"}, "Calibration", "a known wear rate (Wear source = " + source_choice->name() +
+                                                         ") has no coefficient to calibrate (DEM wear only)");
     io::require_input_file(s.calibration_file);
     calibration = read_wear_calibration(s.calibration_file);
     if (!(source->wear_coefficient() > 0))

@@ -50,8 +50,6 @@ namespace abrade::coupling::lifetime
         expression   = prm.get("Analytic wear rate");
         scatter      = prm.get_double("Analytic seed scatter");
         as_volume    = prm.get("Analytic wear is") == "volume";
-        if (!(prm.get_double("Tonnes per cycle") > 0))
-          file.fail({"Lifetime"}, "Tonnes per cycle", "the analytic wear rate is per tonne: set Tonnes per cycle > 0");
       }
 
       std::unique_ptr<WearSource> make(const WearSourceSetUp &s) const override
