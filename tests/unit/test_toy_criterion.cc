@@ -8,13 +8,9 @@
 // surface), so the life to a limit L is L / r: 3 mm at 1 um/t is 3000 t, crossed exactly at the
 // end of the second 1500 t update. The run's own depth criterion is switched off (0), so only
 // the toy can end it.
-#include <abrade/common/json.h>
-#include <abrade/common/log.h>
-#include <abrade/common/output_directory.h>
-#include <abrade/common/timer.h>
-#include <abrade/coupling/jobs.h>
+#include "lifetime_in_process.h"
+
 #include <abrade/coupling/lifetime/end_of_life_criterion.h>
-#include <abrade/coupling/parameter_file.h>
 
 #include <gtest/gtest.h>
 
@@ -93,19 +89,12 @@ TEST(ToyCriterion, DeclaresItsParameter)
 // a lifetime run that only the toy can end ends by it, at the analytic life
 TEST(ToyCriterion, EndsALifeAtTheAnalyticCrossing)
 {
-  const std::string dir = std::filesystem::temp_directory_path().string() + "/abrade_toy_criterion";
-  std::filesystem::remove_all(dir);
-  abrade::coupling::ParameterFile params(std::string(ABRADE_TESTS_DIR) + "/lifetime/analytic_uniform.prm",
-                                         {"Lifetime/Maximum depth=0", "Lifetime/Maximum point depth=0.003",
-                                          "Lifetime/Maximum updates=4", "Output/Directory=" + dir,
-                                          "Lifetime/Recession points=0.075, 0.03, 0.15"});
-  abrade::io::OutputDirectory out(dir);
-  abrade::io::Json            results;
-  abrade::io::Timers          timers;
-  abrade::io::Log             log;
-  log.set_echo(false);
-  abrade::coupling::JobContext ctx{params, out, results, timers, log};
-  abrade::coupling::run_lifetime_job(ctx);
+  std::string      dir;
+  abrade::io::Json results = run_analytic_lifetime("abrade_toy_criterion",
+                                                   {"Lifetime/Maximum depth=0", "Lifetime/Maximum point depth=0.003",
+                                                    "Lifetime/Maximum updates=4",
+                                                    "Lifetime/Recession points=0.075, 0.03, 0.15"},
+                                                   &dir);
 
   const std::string summary = results.dump();
   EXPECT_NE(summary.find("\"end_of_life_criterion\": \"maximum point depth\""), std::string::npos) << summary;

@@ -6,19 +6,14 @@
 // The truth: a depth d per cycle everywhere moves the surface to the offset surface, d below the
 // design after each cycle; with 1 t per cycle and the life's limit 3 mm at 2 um per cycle the
 // life is 1500 t (the run's updates are 750 cycles: 1.5 mm, a tenth of the 15 mm mesh).
-#include <abrade/common/json.h>
-#include <abrade/common/log.h>
-#include <abrade/common/output_directory.h>
-#include <abrade/common/timer.h>
-#include <abrade/coupling/jobs.h>
+#include "lifetime_in_process.h"
+
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/coupling/parameter_file.h>
 #include <abrade/fem/knife_geometry.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 
 namespace
 {
@@ -81,19 +76,9 @@ TEST(ToyWearSource, IsAChoiceBesideTheBuiltInOnes)
 
 TEST(ToyWearSource, DrivesALifeToTheAnalyticCrossing)
 {
-  const std::string dir = std::filesystem::temp_directory_path().string() + "/abrade_toy_wear_source";
-  std::filesystem::remove_all(dir);
-  abrade::coupling::ParameterFile params(std::string(ABRADE_TESTS_DIR) + "/lifetime/analytic_uniform.prm",
-                                         {"Lifetime/Wear source=toy", "Lifetime/Toy rate=2e-6",
-                                          "Lifetime/Maximum depth=0.003", "Lifetime/Maximum updates=4",
-                                          "Output/Directory=" + dir});
-  abrade::io::OutputDirectory out(dir);
-  abrade::io::Json            results;
-  abrade::io::Timers          timers;
-  abrade::io::Log             log;
-  log.set_echo(false);
-  abrade::coupling::JobContext ctx{params, out, results, timers, log};
-  abrade::coupling::run_lifetime_job(ctx);
+  abrade::io::Json results = run_analytic_lifetime("abrade_toy_wear_source",
+                                                   {"Lifetime/Wear source=toy", "Lifetime/Toy rate=2e-6",
+                                                    "Lifetime/Maximum depth=0.003", "Lifetime/Maximum updates=4"});
   const std::string summary = results.dump();
   EXPECT_NE(summary.find("\"wear_source\": \"toy\""), std::string::npos) << summary;
   EXPECT_NEAR(results["lifetime"]["predicted_tonnes_to_end_of_life"].number(), 1500.0, 1.5) << summary;

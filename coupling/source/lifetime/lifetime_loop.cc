@@ -745,10 +745,9 @@ namespace abrade::coupling::lifetime
   // 5. Record: the wear depth below the design, volumes, followed points; each criterion's
   //    update record (its value, the beds' relative variance of its rate at the place that ends
   //    life, chosen on the beds' mean) for the interval.
-  double LifetimeLoop::add_update_records(const Rates &, const Step &st)
+  double LifetimeLoop::add_update_records(const PartNow &part, const Step &st)
   {
-    const auto   &now  = history.back();
-    const PartNow part = part_now();
+    const auto &now = history.back();
     for (std::size_t c = 0; c < criteria.size(); ++c)
       {
         const std::vector<double> bed_rates = criteria[c]->bed_rates(part, st.beds);
@@ -762,10 +761,9 @@ namespace abrade::coupling::lifetime
   //     rates there, for the factor on its interval (place_scatter.h): the depth at the points
   //     the design's vertices moved to, the followed points' recession, the gauge's stations'
   //     edge recession and plate thickness lost. (The worn mass is one quantity: factor 1.)
-  void LifetimeLoop::add_place_scatter(const Rates &rates, const Step &st)
+  void LifetimeLoop::add_place_scatter(const PartNow &part, const Rates &rates, const Step &st)
   {
     const std::size_t beds = rates.seed.size();
-    const PartNow     part = part_now();
     for (std::size_t c = 0; c < criteria.size(); ++c)
       {
         Places               p      = criteria[c]->places(part, st.beds);
@@ -931,12 +929,13 @@ namespace abrade::coupling::lifetime
     const double worn      = volume0 - knife->volume();
     const double swept     = st.volume_before - knife->volume();
     gauge_the_knife();
-    const EdgeGauge g      = gauge(sections, design_at_sections);
+    const PartNow   part = part_now(); // (the knife as the criteria read it after this update)
+    const EdgeGauge &g   = part.gauge;
     history.push_back({tonnes, {}});
     for (const auto &c : criteria)
-      history.back().values.push_back(c->value(part_now()));
-    const double spread = add_update_records(rates, st);
-    add_place_scatter(rates, st);
+      history.back().values.push_back(c->value(part));
+    const double spread = add_update_records(part, st);
+    add_place_scatter(part, rates, st);
 
     // the row by column name (the header: set_up)
     std::vector<std::pair<std::string, double>> row = {

@@ -3,52 +3,23 @@
 #include <abrade/coupling/lifetime/wear_source.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 
 namespace abrade::coupling::lifetime
 {
+  using Registry = io::PluginRegistry<WearSourceChoice>;
+
   namespace
   {
-    std::vector<WearSourceFactory> &factories()
-    {
-      static std::vector<WearSourceFactory> f;
-      return f;
-    }
 
     /// The default of Lifetime/Wear source.
     const std::string default_source = "dem";
   } // namespace
 
-  WearSourceRegistration::WearSourceRegistration(WearSourceFactory make)
-  {
-    const std::string name = make()->name();
-    for (const auto &other : factories())
-      if (other()->name() == name)
-        {
-          std::fprintf(stderr, "abrade: the wear source '%s' is registered twice\n", name.c_str());
-          std::abort();
-        }
-    factories().push_back(make);
-  }
+  WearSourceRegistration::WearSourceRegistration(WearSourceFactory make) { Registry::add(make, "wear source"); }
 
-  std::vector<std::unique_ptr<WearSourceChoice>> make_wear_source_choices()
-  {
-    std::vector<std::unique_ptr<WearSourceChoice>> all;
-    for (const auto &make : factories())
-      all.push_back(make());
-    // (the order of registration is the linker's: by name, the same in every build)
-    std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) { return a->name() < b->name(); });
-    return all;
-  }
+  std::vector<std::unique_ptr<WearSourceChoice>> make_wear_source_choices() { return Registry::make_all(); }
 
-  std::unique_ptr<WearSourceChoice> make_wear_source_choice(const std::string &name)
-  {
-    for (const auto &make : factories())
-      if (auto c = make(); c->name() == name)
-        return c;
-    return nullptr;
-  }
+  std::unique_ptr<WearSourceChoice> make_wear_source_choice(const std::string &name) { return Registry::make(name); }
 
   void declare_wear_sources(dealii::ParameterHandler &prm)
   {

@@ -2,20 +2,9 @@
 // The motions themselves are in wall_motions/, a library of their own linked whole.
 #include <abrade/dem/wall_motion_model.h>
 
-#include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-
 namespace abrade::dem
 {
-  namespace
-  {
-    std::vector<WallMotionFactory> &factories()
-    {
-      static std::vector<WallMotionFactory> f;
-      return f;
-    }
-  } // namespace
+  using Registry = io::PluginRegistry<WallMotionModel>;
 
   PhaseVelocity WallMotionModel::velocity(const WallMotion &motion, const std::string &phase, double) const
   {
@@ -23,27 +12,9 @@ namespace abrade::dem
     return it == motion.phases.end() ? PhaseVelocity{} : it->second;
   }
 
-  WallMotionRegistration::WallMotionRegistration(WallMotionFactory make)
-  {
-    const std::string name = make()->name();
-    for (const auto &other : factories())
-      if (other()->name() == name)
-        {
-          std::fprintf(stderr, "abrade: the wall motion '%s' is registered twice\n", name.c_str());
-          std::abort();
-        }
-    factories().push_back(make);
-  }
+  WallMotionRegistration::WallMotionRegistration(WallMotionFactory make) { Registry::add(make, "wall motion"); }
 
-  std::vector<std::unique_ptr<WallMotionModel>> make_wall_motions()
-  {
-    std::vector<std::unique_ptr<WallMotionModel>> all;
-    for (const auto &make : factories())
-      all.push_back(make());
-    // (the order of registration is the linker's: by name, the same in every build)
-    std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) { return a->name() < b->name(); });
-    return all;
-  }
+  std::vector<std::unique_ptr<WallMotionModel>> make_wall_motions() { return Registry::make_all(); }
 
   std::vector<std::string> wall_motion_names()
   {
@@ -53,11 +24,5 @@ namespace abrade::dem
     return names;
   }
 
-  std::unique_ptr<WallMotionModel> make_wall_motion(const std::string &name)
-  {
-    for (const auto &make : factories())
-      if (auto m = make(); m->name() == name)
-        return m;
-    return nullptr;
-  }
+  std::unique_ptr<WallMotionModel> make_wall_motion(const std::string &name) { return Registry::make(name); }
 } // namespace abrade::dem

@@ -2,20 +2,12 @@
 // its factory with ABRADE_REGISTER_END_OF_LIFE_CRITERION before main() runs.
 #include <abrade/coupling/lifetime/end_of_life_criterion.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
 namespace abrade::coupling::lifetime
 {
-  namespace
-  {
-    std::vector<EndOfLifeCriterionFactory> &factories()
-    {
-      static std::vector<EndOfLifeCriterionFactory> f;
-      return f;
-    }
-  } // namespace
+  using Registry = io::PluginRegistry<EndOfLifeCriterion>;
 
   // A name is lower-case words (the checkpoint keeps a criterion's entries under it, blanks as
   // '_': "history_maximum_depth"), not "tonnes" (history_tonnes is the trajectory's); names and
@@ -31,25 +23,13 @@ namespace abrade::coupling::lifetime
     if (name.empty() || name == "tonnes" ||
         name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789 ") != std::string::npos)
       wrong("is not a name of lower-case words (nor 'tonnes')");
-    for (const auto &other : factories())
-      {
-        if (other()->name() == name)
-          wrong("is registered twice");
-        if (other()->parameter() == made->parameter())
-          wrong("declares the parameter of another criterion");
-      }
-    factories().push_back(make);
+    for (const auto &other : Registry::make_all())
+      if (other->parameter() == made->parameter())
+        wrong("declares the parameter of another criterion");
+    Registry::add(make, "end-of-life criterion");
   }
 
-  std::vector<std::unique_ptr<EndOfLifeCriterion>> make_end_of_life_criteria()
-  {
-    std::vector<std::unique_ptr<EndOfLifeCriterion>> all;
-    for (const auto &make : factories())
-      all.push_back(make());
-    // (the order of registration is the linker's: by name, the same in every build)
-    std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) { return a->name() < b->name(); });
-    return all;
-  }
+  std::vector<std::unique_ptr<EndOfLifeCriterion>> make_end_of_life_criteria() { return Registry::make_all(); }
 
   void declare_end_of_life_criteria(dealii::ParameterHandler &prm)
   {

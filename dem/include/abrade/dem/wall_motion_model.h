@@ -17,6 +17,7 @@
 // velocities when a phase begins and, for a motion whose velocity changes within a phase
 // (time_dependent()), at the middle of every step (Wall::advance()). One virtual call per wall
 // and step: nothing per contact.
+#include <abrade/common/plugin_registry.h>
 #include <abrade/dem/parameter_section.h>
 #include <abrade/dem/wall.h>
 
@@ -72,9 +73,6 @@ namespace abrade::dem
   };
 } // namespace abrade::dem
 
-#define ABRADE_WALL_MOTION_CAT2(a, b) a##b
-#define ABRADE_WALL_MOTION_CAT(a, b) ABRADE_WALL_MOTION_CAT2(a, b)
 /// One line in a motion's file registers it (at namespace scope).
-#define ABRADE_REGISTER_WALL_MOTION(Class)                                                                       \
-  static const ::abrade::dem::WallMotionRegistration ABRADE_WALL_MOTION_CAT(abrade_wall_motion_, __LINE__)( \
-    []() -> std::unique_ptr<::abrade::dem::WallMotionModel> { return std::make_unique<Class>(); })
+#define ABRADE_REGISTER_WALL_MOTION(Class)                                                                \
+  ABRADE_REGISTER_PLUGIN(::abrade::dem::WallMotionRegistration, ::abrade::dem::WallMotionModel, Class)

@@ -22,6 +22,7 @@
 // A criterion reads the part through PartNow (the solid model, the followed points, the
 // gauges' sections) and the beds' rates through BedRates, both filled by the loop; it keeps no
 // state between updates (a resumed run rebuilds none).
+#include <abrade/common/plugin_registry.h>
 #include <abrade/coupling/lifetime/edge_gauge.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
@@ -143,10 +144,7 @@ namespace abrade::coupling::lifetime
   };
 } // namespace abrade::coupling::lifetime
 
-#define ABRADE_CRITERION_CAT2(a, b) a##b
-#define ABRADE_CRITERION_CAT(a, b) ABRADE_CRITERION_CAT2(a, b)
 /// One line in a criterion's file registers it (at namespace scope).
-#define ABRADE_REGISTER_END_OF_LIFE_CRITERION(Class)                                                     \
-  static const ::abrade::coupling::lifetime::EndOfLifeCriterionRegistration ABRADE_CRITERION_CAT(        \
-    abrade_criterion_, __LINE__)(                                                                          \
-    []() -> std::unique_ptr<::abrade::coupling::lifetime::EndOfLifeCriterion> { return std::make_unique<Class>(); })
+#define ABRADE_REGISTER_END_OF_LIFE_CRITERION(Class)                                                   \
+  ABRADE_REGISTER_PLUGIN(::abrade::coupling::lifetime::EndOfLifeCriterionRegistration,                 \
+                         ::abrade::coupling::lifetime::EndOfLifeCriterion, Class)

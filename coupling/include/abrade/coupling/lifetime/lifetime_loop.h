@@ -126,10 +126,10 @@ namespace abrade::coupling::lifetime
     /// This update's record of every criterion's quantity (its value after the update, the
     /// beds' relative variance of its rate at the place that ends life); returns the relative
     /// bed-to-bed spread of the deepest point's rate.
-    double add_update_records(const Rates &rates, const Step &step);
+    double add_update_records(const PartNow &part, const Step &step);
     /// Each criterion's quantity at its places after this update and the beds' rates there
     /// (place_scatter.h); the factors for the worst place.
-    void add_place_scatter(const Rates &rates, const Step &step);
+    void add_place_scatter(const PartNow &part, const Rates &rates, const Step &step);
     /// The life of the criterion that ends it and its interval, from the trajectory so far.
     LifeInterval current_interval(const EndOfLife &e) const;
     /// The beds of the next update under Lifetime/Target interval.

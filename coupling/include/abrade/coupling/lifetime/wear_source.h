@@ -5,6 +5,7 @@
 // cycle's wear per bed seed, as a wear volume at every vertex of the knife's surface: deposited
 // where the contacts happened (barycentric weights of each contact point, dem/wear.h), so that
 // wear at the chisel's tip stays on the tip's vertices.
+#include <abrade/common/plugin_registry.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/fem/solid_surface.h>
@@ -142,10 +143,7 @@ namespace abrade::coupling::lifetime
   double standard_normal_of_seed(int seed);
 } // namespace abrade::coupling::lifetime
 
-#define ABRADE_WEAR_SOURCE_CAT2(a, b) a##b
-#define ABRADE_WEAR_SOURCE_CAT(a, b) ABRADE_WEAR_SOURCE_CAT2(a, b)
 /// One line in a wear source's file registers it (at namespace scope).
-#define ABRADE_REGISTER_WEAR_SOURCE(Class)                                                                  \
-  static const ::abrade::coupling::lifetime::WearSourceRegistration ABRADE_WEAR_SOURCE_CAT(              \
-    abrade_wear_source_, __LINE__)(                                                                          \
-    []() -> std::unique_ptr<::abrade::coupling::lifetime::WearSourceChoice> { return std::make_unique<Class>(); })
+#define ABRADE_REGISTER_WEAR_SOURCE(Class)                                                             \
+  ABRADE_REGISTER_PLUGIN(::abrade::coupling::lifetime::WearSourceRegistration,                         \
+                         ::abrade::coupling::lifetime::WearSourceChoice, Class)
