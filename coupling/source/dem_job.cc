@@ -198,6 +198,8 @@ namespace abrade::coupling
 
   void report_coarse_graining(const DemCase &c, JobContext &ctx)
   {
+    for (const auto &n : c.notes)
+      ctx.log.line(n);
     for (const auto &w : c.warnings)
       ctx.log.warning(w);
     if (c.coarse_graining == 1)

@@ -5,13 +5,16 @@
 #include <abrade/common/file_extension.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/coupling/walls/wall_parameters.h>
 
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <functional>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -162,7 +165,126 @@ namespace abrade::coupling
       return msg;
     }
 
-    void apply_override(dealii::ParameterHandler &prm, const Override &o, bool lenient)
+    /// Says whose entry @p key of subsection @p path is, when it is not the reader's (an entry of
+    /// another wall geometry or motion: foreign_entry_hint), or "".
+    using EntryHint = std::function<std::string(const std::vector<std::string> &path, const std::string &key)>;
+
+    std::vector<std::string> lines_of(const std::string &text)
+    {
+      std::vector<std::string> lines;
+      std::istringstream       in(text);
+      for (std::string l; std::getline(in, l);)
+        lines.push_back(l);
+      return lines;
+    }
+
+    /// What a line of a parameter file is: in which subsections, and the key it sets ("": none).
+    struct LineEntry
+    {
+      std::vector<std::string> path;
+      std::string              key;
+    };
+
+    std::vector<LineEntry> entries_by_line(const std::vector<std::string> &lines)
+    {
+      std::vector<LineEntry>   entries;
+      std::vector<std::string> path;
+      for (const auto &line : lines)
+        {
+          const std::string l  = dealii::Utilities::trim(line.substr(0, line.find('#')));
+          const auto        eq = l.find('=');
+          entries.push_back({path, l.rfind("set ", 0) == 0 && eq != std::string::npos
+                                     ? dealii::Utilities::trim(l.substr(4, eq - 4))
+                                     : ""});
+          if (l.rfind("subsection ", 0) == 0)
+            path.push_back(dealii::Utilities::trim(l.substr(11)));
+          else if (l == "end" && !path.empty())
+            path.pop_back();
+        }
+      return entries;
+    }
+
+    /// The key of deal.II's "No entry with name <KEY> was declared" (or "" for other messages).
+    std::string undeclared_key(const std::string &msg)
+    {
+      for (const std::string start : {"No entry with name <", "entry <"})
+        if (const auto a = msg.find(start); a != std::string::npos)
+          if (const auto b = msg.find('>', a); b != std::string::npos &&
+                                               (msg.find("was declared") != std::string::npos ||
+                                                msg.find("not yet declared") != std::string::npos))
+            return msg.substr(a + start.size(), b - a - start.size());
+      return "";
+    }
+
+    /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
+    /// another geometry or motion than the wall's when they come before the choice, from another
+    /// file than the one that made it (or the choice is a --set): an included base case whose
+    /// wall the including file made another geometry (cases/knife_bed/lifetime.prm turns
+    /// knife_bed.prm's chisel knife into the solid model) keeps working, while such an entry set
+    /// beside the choice or after it is an error. Returns a sentence per wall that lost entries.
+    std::vector<std::string> leave_out_base_entries(std::string &text, std::vector<std::pair<std::string, int>> origin,
+                                                    const std::string &file, const DeclarationLists &lists,
+                                                    const std::vector<Override> &overrides)
+    {
+      std::vector<std::string> lines   = lines_of(text);
+      const auto               entries = entries_by_line(lines);
+      if (origin.size() != lines.size()) // (no file: the embedded default case)
+        for (std::size_t n = origin.size(); n < lines.size(); ++n)
+          origin.emplace_back(file, int(n + 1));
+      // the file and line that chose each wall's geometry ("geometry WALL") and motion ("motion
+      // WALL"), the last that did
+      const auto choice_of = [](const std::vector<std::string> &p, const std::string &key) -> std::string {
+        if (p.empty() || p[0].rfind("Wall ", 0) != 0)
+          return "";
+        if (p.size() == 1 && key == "Geometry")
+          return "geometry " + p[0];
+        if (p.size() == 2 && p[1] == "Motion" && key == "Type")
+          return "motion " + p[0];
+        return "";
+      };
+      std::map<std::string, std::pair<std::string, std::size_t>> chooser;
+      for (std::size_t n = 0; n < lines.size(); ++n)
+        if (const std::string c = choice_of(entries[n].path, entries[n].key); !c.empty())
+          chooser[c] = {origin[n].first, n};
+      for (const auto &o : overrides)
+        if (const std::string c = choice_of(o.path, o.key); !c.empty())
+          chooser[c] = {"--set", lines.size()};
+      std::map<std::string, std::vector<std::string>> left_out; // per wall: "KEY (file:line)"
+      for (std::size_t n = 0; n < lines.size(); ++n)
+        {
+          const auto &[path, key] = entries[n];
+          if (key.empty() || path.empty() || foreign_entry_hint(lists, path, key).empty())
+            continue;
+          const auto chosen = chooser.find((path.size() == 1 ? "geometry " : "motion ") + path[0]);
+          if (chosen == chooser.end() || chosen->second.first == origin[n].first || n > chosen->second.second)
+            continue; // (set beside the choice, or after it: the strict reading refuses it)
+          left_out[path[0]].push_back(key + " (" + origin[n].first + ":" + std::to_string(origin[n].second) + ")");
+          for (std::size_t k = n; k < lines.size(); ++k) // (with its continuation lines)
+            {
+              const bool more = !lines[k].empty() && lines[k].back() == '\\';
+              lines[k]        = "";
+              if (!more)
+                break;
+            }
+        }
+      if (left_out.empty())
+        return {};
+      text.clear();
+      for (const auto &l : lines)
+        text += l + "\n";
+      std::vector<std::string> notes;
+      for (const auto &[wall, keys] : left_out)
+        {
+          std::string list;
+          for (const auto &k : keys)
+            list += (list.empty() ? "" : ", ") + k;
+          notes.push_back(wall + ": left out, as entries of another geometry or motion than the one chosen for it in another "
+                          "file: " + list);
+        }
+      return notes;
+    }
+
+    void apply_override(dealii::ParameterHandler &prm, const Override &o, bool lenient, const EntryHint &hint = {})
     {
       std::size_t entered = 0;
       try
@@ -180,7 +302,8 @@ namespace abrade::coupling
             prm.leave_subsection();
           if (lenient)
             return;
-          throw InputError("--set '" + o.text + "'", with_rename_hint(one_line(e)));
+          const std::string msg = with_rename_hint(one_line(e));
+          throw InputError("--set '" + o.text + "'", msg + (hint && !undeclared_key(msg).empty() ? hint(o.path, o.key) : ""));
         }
       for (; entered > 0; --entered)
         prm.leave_subsection();
@@ -189,7 +312,7 @@ namespace abrade::coupling
     /// Parses @p text (of @p file, includes expanded); an error names the file and line the
     /// offending line comes from (@p origin).
     void parse_into(dealii::ParameterHandler &prm, const std::string &file, const std::string &text, bool lenient,
-                    const std::vector<std::pair<std::string, int>> &origin)
+                    const std::vector<std::pair<std::string, int>> &origin, const EntryHint &hint = {})
     {
       std::istringstream in(text);
       try
@@ -213,8 +336,15 @@ namespace abrade::coupling
                 {
                   used = 0;
                 }
-              if (colon != std::string::npos && used == colon && n >= 1 && std::size_t(n) <= origin.size())
+              const bool line_known = colon != std::string::npos && used == colon && n >= 1;
+              if (line_known && std::size_t(n) <= origin.size())
                 msg = origin[n - 1].first + ":" + std::to_string(origin[n - 1].second) + rest.substr(colon);
+              if (const std::string key = undeclared_key(msg); line_known && hint && !key.empty())
+                {
+                  const auto entries = entries_by_line(lines_of(text));
+                  if (std::size_t(n) <= entries.size())
+                    msg += hint(entries[n - 1].path, key);
+                }
             }
           throw InputError("", with_rename_hint(msg));
         }
@@ -243,14 +373,25 @@ namespace abrade::coupling
     parse_into(lists, file, text, true, origin);
     for (const auto &o : overrides)
       apply_override(lists, o, true);
-    const DeclarationLists l = read_lists(lists);
+    DeclarationLists l = read_lists(lists);
     check_wall_list(l, overrides);
+    // ... and each wall's geometry and motion, which decide the entries it has
+    dealii::ParameterHandler choices;
+    declare_wall_choices(choices, l.walls);
+    parse_into(choices, file, text, true, origin);
+    for (const auto &o : overrides)
+      apply_override(choices, o, true);
+    l.wall_choices = read_wall_choices(choices, l.walls);
+    notes_         = leave_out_base_entries(text, origin, file, l, overrides);
 
     // pass 2: everything, strictly
     declare_parameters(prm, l);
-    parse_into(prm, file, text, false, origin);
+    const EntryHint hint = [&l](const std::vector<std::string> &path, const std::string &key) {
+      return foreign_entry_hint(l, path, key);
+    };
+    parse_into(prm, file, text, false, origin, hint);
     for (const auto &o : overrides)
-      apply_override(prm, o, false);
+      apply_override(prm, o, false, hint);
   }
 
   void ParameterFile::check_wall_list(const DeclarationLists &l, const std::vector<Override> &overrides) const

@@ -86,6 +86,31 @@ namespace abrade::coupling
     return out;
   }
 
+  void PluginSection::declare_choice(const std::string &name, const std::string &value,
+                                     const std::vector<std::string> &choices, const std::string &doc)
+  {
+    std::string names;
+    for (const auto &c : choices)
+      names += (names.empty() ? "" : "|") + c;
+    prm.declare_entry(name, value, dealii::Patterns::Selection(names), doc);
+  }
+
+  void PluginSection::declare_numbers(const std::string &name, const std::string &value, unsigned int least,
+                                      unsigned int most, double lo, double hi, const std::string &doc)
+  {
+    prm.declare_entry(name, value, dealii::Patterns::List(dealii::Patterns::Double(lo, hi), least, most), doc);
+  }
+
+  std::vector<double> PluginSection::numbers(const std::string &name) const
+  {
+    readable(name);
+    std::vector<double> out;
+    for (const auto &s : dealii::Utilities::split_string_list(prm.get(name)))
+      if (!s.empty())
+        out.push_back(std::stod(s)); // (the pattern checked them)
+    return out;
+  }
+
   void PluginSection::fail(const std::string &name, const std::string &why) const
   {
     if (!file)

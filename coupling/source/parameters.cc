@@ -7,23 +7,19 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_section.h>
+#include <abrade/coupling/material_parameters.h>
+#include <abrade/coupling/walls/wall_parameters.h>
 #include <abrade/dem/contact_law.h>
-#include <abrade/dem/wall_motion_model.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/lifetime/end_of_life_criterion.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/coupling/run_size.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/coarse_graining.h>
-#include <abrade/dem/mesh_io.h>
-#include <abrade/fem/solid_file.h>
-
-#include <Eigen/Geometry>
 
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <stdexcept>
 #include <filesystem>
@@ -85,95 +81,6 @@ namespace abrade::coupling
       {"constant", dem::SizeDistribution::Kind::constant},
       {"uniform", dem::SizeDistribution::Kind::uniform},
       {"normal", dem::SizeDistribution::Kind::normal}};
-    /// The entries a plugin declares, with their defaults as a parameter file writes them.
-    class DeclaredEntries : public dem::ParameterSection
-    {
-    public:
-      std::vector<std::pair<std::string, std::string>> entries;
-
-      void declare_number(const std::string &name, double value, double, double, const std::string &) override
-      {
-        entries.emplace_back(name, io::format_number(value, 15));
-      }
-      void declare_vector(const std::string &name, const std::array<double, 3> &v, const std::string &) override
-      {
-        entries.emplace_back(name, io::format_number(v[0], 15) + "," + io::format_number(v[1], 15) + "," +
-                                     io::format_number(v[2], 15));
-      }
-      void declare_bool(const std::string &name, bool value, const std::string &) override
-      {
-        entries.emplace_back(name, value ? "true" : "false");
-      }
-      void declare_text(const std::string &name, const std::string &value, const std::string &) override
-      {
-        entries.emplace_back(name, value);
-      }
-      void declare_choices(const std::string &name, const std::string &value, const std::vector<std::string> &,
-                           const std::string &) override
-      {
-        entries.emplace_back(name, value);
-      }
-      double number(const std::string &name) const override
-      {
-        throw std::logic_error("parameter '" + name + "' read from a section that was only declared");
-      }
-      [[noreturn]] void fail(const std::string &name, const std::string &why) const override
-      {
-        throw std::logic_error("parameter '" + name + "': " + why);
-      }
-    };
-
-    /// Whether the value @p a of an entry is its default @p b: the same text but for blanks and
-    /// case, or the same numbers ("0,0,0" and "0, 0, 0.0"; "yes" and "true").
-    bool same_value(std::string a, std::string b)
-    {
-      for (auto *s : {&a, &b})
-        {
-          s->erase(std::remove_if(s->begin(), s->end(), [](unsigned char c) { return std::isspace(c); }), s->end());
-          std::transform(s->begin(), s->end(), s->begin(), [](unsigned char c) { return std::tolower(c); });
-          if (*s == "yes")
-            *s = "true";
-          if (*s == "no")
-            *s = "false";
-        }
-      if (a == b)
-        return true;
-      const auto x = split_string_list(a), y = split_string_list(b);
-      if (x.size() != y.size())
-        return false;
-      try
-        {
-          for (std::size_t k = 0; k < x.size(); ++k)
-            if (std::stod(x[k]) != std::stod(y[k]))
-              return false;
-          return true;
-        }
-      catch (const std::exception &)
-        {
-          return false;
-        }
-    }
-
-    /// Motion/Type: the registered wall motions (wall_motion_model.h), as a pattern and their
-    /// documentation ("fixed; prescribed: velocities per phase; ...").
-    Selection wall_motion_selection()
-    {
-      std::string names;
-      for (const auto &n : dem::wall_motion_names())
-        names += (names.empty() ? "" : "|") + n;
-      return Selection(names);
-    }
-    std::string wall_motion_documentation()
-    {
-      std::string doc;
-      for (const auto &m : dem::make_wall_motions())
-        doc += (doc.empty() ? "" : "; ") + m->name() + (m->documentation().empty() ? "" : ": " + m->documentation());
-      return doc + ".";
-    }
-
-    /// The registered wear laws' names, as a pattern and as documentation.
-    Selection wear_law_selection() { return Selection(dem::wear_law_names("|")); }
-
     /// The volume fields of the registered laws ("archard_volume|oka_volume").
     std::string volume_field_names(const std::string &separator = ", ")
     {
@@ -187,16 +94,6 @@ namespace abrade::coupling
 
     Selection volume_field_selection() { return Selection(volume_field_names("|")); }
 
-    std::string wear_law_documentation()
-    {
-      std::string doc = "Wear laws evaluated per triangle of this wall (any of " + dem::wear_law_names() +
-                        "; empty: none), each with its parameters in the subsection of its name; all are "
-                        "reported per phase (docs/physics.md).";
-      for (const auto &law : dem::registered_wear_laws())
-        doc += " " + law->name() + ": " + law->documentation();
-      return doc;
-    }
-
     std::vector<std::string> get_list(ParameterHandler &prm, const std::string &name)
     {
       std::vector<std::string> out;
@@ -206,44 +103,6 @@ namespace abrade::coupling
       return out;
     }
 
-    void declare_material(ParameterHandler &prm, double G, double nu, double rho, bool rotation_option)
-    {
-      prm.enter_subsection("Material");
-      prm.declare_entry("Shear modulus", std::to_string(G), Double(0, huge),
-                        "[Pa] Shear modulus G. Give either G or Young's modulus; when both are "
-                        "non-zero, Young's modulus wins. Range: >= 0.");
-      prm.declare_entry("Young's modulus", "0", Double(0, huge),
-                        "[Pa] Young's modulus E = 2 G (1 + nu); 0: use the shear modulus. Range: >= 0.");
-      prm.declare_entry("Poisson's ratio", std::to_string(nu), Double(-0.999, 0.4999),
-                        "[-] Poisson's ratio nu. Range: (-1, 0.5).");
-      prm.declare_entry("Density", std::to_string(rho), Double(1e-12, huge),
-                        "[kg/m^3] Density. Range: > 0.");
-      if (rotation_option)
-        prm.declare_entry("Rotation", "false", Bool(),
-                          "Whether particles rotate. false caps the angular velocity at 0 rad/s, "
-                          "as the seed's iron-ore pellet model does (a stand-in for non-spherical "
-                          "shape).");
-      prm.leave_subsection();
-    }
-
-    void declare_interaction(ParameterHandler &prm, double e, double mu, const std::string &with)
-    {
-      prm.enter_subsection("Interaction");
-      prm.declare_entry("Restitution", std::to_string(e), Double(1e-6, 1),
-                        "[-] Coefficient of restitution of " + with + " contacts. Range: (0, 1].");
-      prm.declare_entry("Friction", std::to_string(mu), Double(0, huge),
-                        "[-] Static friction coefficient of " + with + " contacts (Coulomb limit of "
-                        "the tangential force). Range: >= 0.");
-      prm.declare_entry("Rolling friction", "0", Double(0, huge),
-                        "[-] Rolling friction coefficient of " + with + " contacts (EDEM constant "
-                        "directional torque, or the epsd spring's limit mu_r R* |F_n|: Simulation/Rolling "
-                        "model; acts only on rotating particles). Range: >= 0.");
-      // the optional sub-models' own entries (contact_law.h)
-      PluginSection section(prm);
-      dem::for_each_model<dem::RollingModels>([&](auto m) { m.declare_parameters(section); });
-      dem::for_each_model<dem::CohesionModels>([&](auto m) { m.declare_parameters(section); });
-      prm.leave_subsection();
-    }
   } // namespace
 
   std::string bad_name(const std::string &name)
@@ -601,245 +460,12 @@ namespace abrade::coupling
 
     for (const auto &name : lists.walls)
       {
-        prm.enter_subsection("Wall " + name);
-        prm.declare_entry("Geometry", "box", Selection("box|plate|chisel knife|clamshell shell|file|solid model"),
-                          "Wall geometry: box (open-top container, inward normals), plate (a "
-                          "rectangle), chisel knife (the knife-bed reference knife, see cases.md), "
-                          "clamshell shell (one shell of a grab: Shell ... below), "
-                          "file (a surface mesh), or solid model (the surface of the FEM knife of "
-                          "subsection Knife; lifetime runs move it with its wear).");
-        prm.declare_entry("File", "", Anything(),
-                          "Surface mesh file (STL ASCII/binary, OBJ, PLY, VTK, VTP) or CAD file "
-                          "(STEP/IGES: its surfaces meshed by Gmsh to 'Maximum edge length') when "
-                          "Geometry = file; relative to the parameter file's directory.");
-        prm.declare_entry("File scale", "1", Double(1e-12, huge),
-                          "[m per file unit] 0.001 for a mesh in millimetres. Range: > 0.");
-        declare_vector(prm, "Box min", "-1, -1, 0", "[m] Box: lower corner.");
-        declare_vector(prm, "Box max", "1, 1, 1", "[m] Box: upper corner.");
-        declare_vector(prm, "Plate centre", "0, 0, 0", "[m] Plate: centre.");
-        prm.declare_entry("Plate normal", "z", Selection("x|y|z|-x|-y|-z"), "Plate: normal direction.");
-        prm.declare_entry("Plate size", "1, 1", List(Double(0, huge), 2, 2),
-                          "[m] Plate: side lengths along the two in-plane axes (cyclic order after "
-                          "the normal: y,z for x; z,x for y; x,y for z).");
-        prm.declare_entry("Knife length", "0.4", Double(0, huge), "[m] Chisel knife: length along X.");
-        prm.declare_entry("Knife height", "0.5", Double(0, huge), "[m] Chisel knife: height along Z.");
-        prm.declare_entry("Knife thickness", "0.03", Double(0, huge), "[m] Chisel knife: thickness along Y.");
-        prm.declare_entry("Bevel height", "0.04", Double(0, huge),
-                          "[m] Chisel knife: height of the bevel that forms the bottom edge.");
-        prm.declare_entry("Shell radius", "0.6", Double(0, huge),
-                          "[m] Clamshell shell: radius of its bottom about the hinge (the hinge is the "
-                          "shell's origin, its axis along Y; Offset places it).");
-        prm.declare_entry("Shell width", "1", Double(0, huge), "[m] Clamshell shell: width along the hinge (Y).");
-        prm.declare_entry("Shell sector", "90", Double(1, 180),
-                          "[deg] Clamshell shell: angle its bottom spans, from the lip. Range: [1, 180].");
-        prm.declare_entry("Shell opening", "0", Double(0, 180),
-                          "[deg] Clamshell shell: angle of its lip from straight down at t = 0 (0: "
-                          "closed). Range: [0, 180].");
-        prm.declare_entry("Shell side", "+x", Selection("+x|-x"),
-                          "Clamshell shell: which way it opens (the other shell of the grab: the other side).");
-        prm.declare_entry("Knife mount", "", Anything(),
-                          "Solid model: the name of a shell wall whose lip carries this knife (a "
-                          "clamshell shell, or a file with 'Lip centre' set). The knife (subsection Knife) lies along the shell's width, its edge "
-                          "'Knife protrusion' beyond the lip, its height along the shell's bottom, and "
-                          "it moves with the shell (the shell's Motion is used; this wall's own Motion "
-                          "and Offset are ignored). Empty: placed by Offset.");
-        prm.declare_entry("Lip centre", "", List(Double(-huge, huge), 0, 3),
-                          "[m] A shell read from a file (Geometry = file) that carries a knife: the "
-                          "centre of its lip, in the file's coordinates in metres (after File scale, before "
-                          "Rotation and Offset): 'x, y, z'. "
-                          "Empty: the wall has no lip.");
-        declare_vector(prm, "Lip direction", "0, 1, 0",
-                       "Shell from a file: the direction along its lip. Its sign decides which face of "
-                       "a mounted knife faces the material: the knife's inner face looks along "
-                       "'Lip inward' x 'Lip direction', which should point into the shell.");
-        declare_vector(prm, "Lip inward", "0, 0, 1",
-                       "Shell from a file: the direction from the lip into the shell along its bottom "
-                       "(the mounted knife's height runs this way).");
-        prm.declare_entry("Knife protrusion", "0.02", Double(0, huge),
-                          "[m] Mounted knife: how far its edge stands beyond the shell's lip. Range: >= 0.");
-        declare_vector(prm, "Offset", "0, 0, 0", "[m] Translation applied to the geometry.");
-        declare_vector(prm, "Rotation axis", "0, 0, 1",
-                       "[-] Axis of a rotation of the geometry about the origin (right-handed), before Offset: "
-                       "a point p of the geometry (a file's, in metres after File scale, or a primitive's) becomes "
-                       "R p + Offset. 'Lip centre', its directions and Motion/Centre are given before the rotation "
-                       "and turn with it; Motion/Velocities, Angular velocities and the Layer probe's Axis are in "
-                       "the global frame and do not.");
-        prm.declare_entry("Rotation angle", "0", Double(-360, 360),
-                          "[deg] Angle of that rotation; 0: none. Not for a mounted knife (the shell places it). "
-                          "Range: [-360, 360].");
-        prm.declare_entry("Maximum edge length", "0", Double(0, huge),
-                          "[m] Refine the mesh until no triangle edge is longer than this (per-"
-                          "triangle wear needs triangles smaller than a particle); 0: as given. "
-                          "Range: >= 0.");
-        prm.declare_entry("Flip normals", "false", Bool(), "Reverse the orientation of every triangle.");
-        declare_material(prm, 7e10, 0.3, 7800, false);
-        declare_interaction(prm, 0.6, name == "knife" ? 0.4 : 0.5, "particle-wall");
-        prm.enter_subsection("Wear");
-        prm.declare_entry("Laws", name == "knife" ? "archard" : "", List(wear_law_selection()),
-                          wear_law_documentation());
-        for (const auto &law : dem::registered_wear_laws())
-          {
-            prm.enter_subsection(law->section());
-            PluginSection section(prm);
-            law->declare_parameters(section);
-            prm.leave_subsection();
-          }
-        prm.leave_subsection();
-        prm.enter_subsection("Layer probe");
-        prm.declare_entry("Enabled", name == "knife" ? "true" : "false", Bool(),
-                          "Record the particles in direct contact with this wall (the thesis' "
-                          "geometry bin, which moves with the wall): their number and mean velocity "
-                          "along Axis, in walls/NAME_layer.csv.");
-        declare_vector(prm, "Axis", "1, 0, 0", "[-] Direction of the velocities the probe reports.");
-        prm.declare_entry("Thickness", "0", Double(0, huge),
-                          "[m] Largest distance from the wall's surface to a particle centre in the "
-                          "layer; 0: 1.5 x the largest particle radius (one layer). Range: >= 0.");
-        prm.declare_entry("Interval", "0.001", Double(0, huge),
-                          "[s] Simulated time between probe samples; 0: every step. Range: >= 0.");
-        prm.leave_subsection();
-        prm.enter_subsection("Motion");
-        prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed", wall_motion_selection(),
-                          wall_motion_documentation());
-        declare_vector(prm, "Centre", "0, 0, 0",
-                       "[m] Rotation centre (a hinge point) in the geometry's coordinates before "
-                       "Offset; it moves with the wall. Torques are reported about it.");
-        prm.declare_entry("Velocities", name == "knife" ? "penetration: 0, 0, -1.5; travel: 1.5, 0, 0" : "",
-                          Anything(),
-                          "[m/s] Translational velocity per phase: 'phase: vx, vy, vz; phase: vx, vy, "
-                          "vz'. Phases not listed: at rest.");
-        prm.declare_entry("Angular velocities", "", Anything(),
-                          "[rad/s] Angular velocity per phase about the centre: 'phase: wx, wy, wz; "
-                          "...'. Phases not listed: not rotating.");
-        // each motion's own parameters (the rigid body's in Motion itself)
-        for (const auto &motion : dem::make_wall_motions())
-          {
-            if (!motion->section().empty())
-              prm.enter_subsection(motion->section());
-            PluginSection section(prm);
-            motion->declare_parameters(section);
-            if (!motion->section().empty())
-              prm.leave_subsection();
-          }
-        prm.leave_subsection();
-        prm.leave_subsection();
+        const auto chosen = lists.wall_choices.find(name);
+        declare_wall(prm, name, chosen == lists.wall_choices.end() ? nullptr : &chosen->second);
       }
   }
 
   // -----------------------------------------------------------------------------------------------
-
-  namespace
-  {
-    dem::Material read_material(ParameterFile &f, const std::vector<std::string> &path, const std::string &name)
-    {
-      auto &prm = f.handler();
-      prm.enter_subsection("Material");
-      const double E = prm.get_double("Young's modulus"), G = prm.get_double("Shear modulus");
-      const double nu = prm.get_double("Poisson's ratio"), rho = prm.get_double("Density");
-      const bool   rot = path.size() == 1 && path[0] == "Particles" ? prm.get_bool("Rotation") : true;
-      prm.leave_subsection();
-      auto mp = path;
-      mp.push_back("Material");
-      if (E <= 0 && G <= 0)
-        f.fail(mp, "Shear modulus", "give a positive shear modulus or Young's modulus");
-      dem::Material m = E > 0 ? dem::Material{name, E, nu, rho, rot} : dem::Material::from_shear_modulus(name, G, nu, rho, rot);
-      return m;
-    }
-
-    dem::Interaction read_interaction(ParameterFile &f, const std::vector<std::string> &path)
-    {
-      auto &prm = f.handler();
-      prm.enter_subsection("Interaction");
-      dem::Interaction i{prm.get_double("Restitution"), prm.get_double("Friction"), prm.get_double("Rolling friction")};
-      auto             ip = path;
-      ip.push_back("Interaction");
-      PluginSection section(f, ip);
-      dem::for_each_model<dem::RollingModels>([&](auto m) { m.parse_parameters(section, i); });
-      dem::for_each_model<dem::CohesionModels>([&](auto m) { m.parse_parameters(section, i); });
-      prm.leave_subsection();
-      return i;
-    }
-
-    // "phase: a, b, c; phase: a, b, c"
-    std::map<std::string, Vec3> read_phase_vectors(ParameterFile &f, const std::vector<std::string> &path,
-                                                   const std::string &key, const std::vector<Phase> &phases)
-    {
-      std::map<std::string, Vec3> out;
-      const std::string           text = f.handler().get(key);
-      for (const auto &item : split_string_list(text, ';'))
-        {
-          if (trim(item).empty())
-            continue;
-          const auto colon = item.find(':');
-          if (colon == std::string::npos)
-            f.fail(path, key, "expected 'phase: x, y, z', got '" + item + "'");
-          const std::string phase = trim(item.substr(0, colon));
-          const auto        v     = split_string_list(item.substr(colon + 1));
-          Vec3              vec;
-          try
-            {
-              if (v.size() != 3)
-                throw std::invalid_argument("size");
-              for (int d = 0; d < 3; ++d)
-                {
-                  std::size_t used = 0;
-                  vec[d]           = std::stod(v[d], &used);
-                  if (used != v[d].size() || !std::isfinite(vec[d]))
-                    throw std::invalid_argument("junk");
-                }
-            }
-          catch (const std::exception &)
-            {
-              f.fail(path, key, "phase '" + phase + "': expected three finite numbers, got '" + trim(item.substr(colon + 1)) + "'");
-            }
-          if (std::none_of(phases.begin(), phases.end(), [&](const Phase &p) { return p.first == phase; }) &&
-              phase != "settle")
-            f.fail(path, key, "unknown phase '" + phase + "' (Simulation/Phases defines the phases)");
-          out[phase] = vec;
-        }
-      return out;
-    }
-
-  } // namespace
-
-  namespace
-  {
-    /// Places every mounted knife on its shell's lip and gives it the shell's motion (one rigid
-    /// body with it). Knife frame: x along the length from 0, y across the thickness, z from
-    /// the edge up; on the shell: x along the hinge (y; -y on a -x shell), z along the shell's
-    /// bottom from the lip inwards, +y towards the shell's inside (the hinge), the edge 'Knife
-    /// protrusion' beyond the lip.
-    void mount_knives(ParameterFile &f, DemCase &c)
-    {
-      auto &prm = f.handler();
-      prm.enter_subsection("Knife");
-      const double length = prm.get_double("Length");
-      prm.leave_subsection();
-      c.mounted_knife_length = length;
-      for (auto &wc : c.walls)
-        {
-          if (wc.mount.empty())
-            continue;
-          const std::vector<std::string> wp = {"Wall " + wc.wall.name};
-          auto shell = std::find_if(c.walls.begin(), c.walls.end(), [&](const auto &o) { return o.wall.name == wc.mount; });
-          if (shell == c.walls.end() || !shell->lip)
-            f.fail(wp, "Knife mount",
-                   "'" + wc.mount + "' is not a wall with a lip (in Walls; Geometry = clamshell shell, or a file with 'Lip centre')");
-          const Vec3 along = shell->lip->along, up = shell->lip->inward, lip = shell->lip->centre;
-          const Vec3 across = up.cross(along);
-          wc.rotation.col(0)  = along, wc.rotation.col(1) = across, wc.rotation.col(2) = up;
-          wc.offset           = lip - wc.protrusion * up - 0.5 * length * along;
-          wc.wall.motion      = shell->wall.motion;
-          if (wc.wall.motion.kind == dem::WallMotion::Kind::rigid_body)
-            {
-              if (shell->wall.motion.body.empty())
-                shell->wall.motion.body = "shell " + shell->wall.name;
-              wc.wall.motion.body = shell->wall.motion.body;
-              wc.wall.motion.mass = 0; // the shell's mass is the body's
-              wc.wall.motion.inertia = Vec3::Zero();
-            }
-        }
-    }
-  } // namespace
 
   namespace
   {
@@ -879,6 +505,7 @@ namespace abrade::coupling
   {
     ParameterHandler &prm = f.handler();
     DemCase           c;
+    c.notes = f.notes();
 
     prm.enter_subsection("Output");
     c.snapshot_interval = prm.get_double("Snapshot interval");
@@ -1024,223 +651,7 @@ namespace abrade::coupling
     check_run_size(c, f); // a run of years, or of more memory than there is, is refused here
 
     for (const auto &name : get_list(prm, "Walls"))
-      {
-        const std::vector<std::string> wp = {"Wall " + name};
-        prm.enter_subsection(wp[0]);
-        DemCase::WallCase wc;
-        dem::Wall        &w = wc.wall;
-        w.name              = name;
-        const std::string geometry = prm.get("Geometry");
-        if (geometry == "box")
-          w.mesh = dem::primitives::box_container(get_vector(prm, "Box min"), get_vector(prm, "Box max"));
-        else if (geometry == "plate")
-          {
-            const std::string n    = prm.get("Plate normal");
-            const int         axis = n.back() - 'x';
-            const auto        size = split_string_list(prm.get("Plate size"));
-            w.mesh = dem::primitives::plate(get_vector(prm, "Plate centre"), axis, std::stod(size[0]),
-                                            std::stod(size[1]), 0, n[0] == '-');
-          }
-        else if (geometry == "solid model")
-          w.mesh = dem::TriangleMesh(); // filled from the FEM knife by the job
-        else if (geometry == "clamshell shell")
-          {
-            const double h = prm.get_double("Maximum edge length");
-            w.mesh = dem::primitives::clamshell_shell(prm.get_double("Shell radius"), prm.get_double("Shell width"),
-                                                      prm.get_double("Shell sector") * M_PI / 180,
-                                                      prm.get_double("Shell opening") * M_PI / 180,
-                                                      prm.get("Shell side") == "+x" ? 1 : -1,
-                                                      h > 0 ? h : 0.1 * prm.get_double("Shell radius"));
-          }
-        else if (geometry == "chisel knife")
-          w.mesh = dem::primitives::chisel_knife(prm.get_double("Knife length"), prm.get_double("Knife height"),
-                                                 prm.get_double("Knife thickness"), prm.get_double("Bevel height"));
-        else
-          {
-            const std::string file = f.path_beside(prm.get("File"));
-            if (file.empty())
-              f.fail(wp, "File", "Geometry = file needs a mesh file");
-            c.input_files.push_back(file);
-            // CAD (a shell from a design tool): Gmsh meshes its surfaces to triangles of the
-            // wall's 'Maximum edge length'
-            const bool cad = fem::is_cad_file(file);
-            if (cad && !(prm.get_double("Maximum edge length") > 0))
-              f.fail(wp, "Maximum edge length",
-                     "a CAD file (" + file + ") is meshed to this size: give a positive length");
-            try
-              {
-                if (cad)
-                  {
-                    const double scale = prm.get_double("File scale");
-                    w.mesh = wall_mesh(fem::read_cad_surface(file, prm.get_double("Maximum edge length") / scale),
-                                       scale * Eigen::Matrix3d::Identity(), dem::Vec3::Zero());
-                  }
-                else
-                  w.mesh = dem::read_surface_mesh(file, prm.get_double("File scale"));
-              }
-            catch (const InputError &e)
-              {
-                f.fail(wp, "File", e.what());
-              }
-          }
-        const Vec3 offset = get_vector(prm, "Offset");
-        const Vec3 axis   = get_vector(prm, "Rotation axis");
-        const double angle = prm.get_double("Rotation angle");
-        if (angle != 0 && !(axis.norm() > 0))
-          f.fail(wp, "Rotation axis", "must not be zero");
-        // placement: p -> rotation p + offset (the rotation about the origin first)
-        const Eigen::Matrix3d rotation =
-          angle == 0 ? Eigen::Matrix3d::Identity()
-                     : Eigen::AngleAxisd(angle * M_PI / 180, axis.normalized()).toRotationMatrix();
-        wc.offset         = offset;
-        wc.rotation       = rotation;
-        wc.solid_model    = geometry == "solid model";
-        if (geometry == "clamshell shell")
-          {
-            const auto &sh = wc.shell = DemCase::WallCase::Shell{
-              prm.get_double("Shell radius"), prm.get_double("Shell opening") * M_PI / 180, prm.get("Shell side") == "+x" ? 1 : -1};
-            // along the hinge, mirrored with the shell, so that a knife's +y face is inside both shells
-            const double th = sh->opening;
-            wc.lip          = DemCase::WallCase::Lip{
-              offset + Vec3(sh->side * sh->radius * std::sin(th), 0, -sh->radius * std::cos(th)), Vec3(0, sh->side, 0),
-              Vec3(sh->side * std::cos(th), 0, std::sin(th))};
-          }
-        if (const auto centre = get_list(prm, "Lip centre"); !centre.empty())
-          {
-            if (geometry != "file")
-              f.fail(wp, "Lip centre", "only a wall with Geometry = file takes a lip (a clamshell shell has its own)");
-            if (centre.size() != 3)
-              f.fail(wp, "Lip centre", "needs three numbers 'x, y, z' (or nothing)");
-            const Vec3 along = get_vector(prm, "Lip direction");
-            Vec3       in    = get_vector(prm, "Lip inward");
-            if (!(along.norm() > 0))
-              f.fail(wp, "Lip direction", "must not be zero");
-            in -= in.dot(along.normalized()) * along.normalized(); // square to the lip
-            if (!(in.norm() > 1e-9 * along.norm()))
-              f.fail(wp, "Lip inward", "must not be parallel to 'Lip direction'");
-            wc.lip = DemCase::WallCase::Lip{rotation * get_vector(prm, "Lip centre") + offset,
-                                            rotation * along.normalized(), rotation * in.normalized()};
-          }
-        wc.mount = trim(prm.get("Knife mount"));
-        if (!wc.mount.empty() && !wc.solid_model)
-          f.fail(wp, "Knife mount", "only a wall with Geometry = solid model (a knife) can be mounted on a shell");
-        wc.protrusion = prm.get_double("Knife protrusion");
-        if (!wc.mount.empty() && angle != 0)
-          f.fail(wp, "Rotation angle", "a mounted knife is placed by its shell's lip: no rotation of its own");
-        if (geometry == "clamshell shell" && angle != 0)
-          f.fail(wp, "Rotation angle", "a clamshell shell opens about its hinge (Shell opening): no rotation");
-        for (auto &v : w.mesh.vertices)
-          v = rotation * v;
-        w.mesh.translate(offset);
-        if (const double h = prm.get_double("Maximum edge length"); h > 0)
-          {
-            // the triangles a refinement makes, about: each becomes ~ its area over that of an
-            // equilateral triangle of edge h, at least itself
-            double made = 0;
-            for (const auto &t : w.mesh.triangles)
-              {
-                const Vec3 a = w.mesh.vertices[t[0]], b = w.mesh.vertices[t[1]], c3 = w.mesh.vertices[t[2]];
-                made += std::max(1.0, 0.5 * (b - a).cross(c3 - a).norm() / (0.433 * h * h));
-              }
-            constexpr double most_triangles = 2e7;
-            if (!(made <= most_triangles))
-              f.fail(wp, "Maximum edge length",
-                     "refining the wall's " + std::to_string(w.mesh.n_triangles()) + " triangles to edges of " +
-                       std::to_string(h) + " m makes about " + std::to_string(long(std::min(made, 1e18))) +
-                       " triangles, more than " + std::to_string(long(most_triangles)) +
-                       " (each in every contact search): a longer edge, about the particle radius, is enough");
-            w.mesh.refine(h);
-          }
-        if (prm.get_bool("Flip normals"))
-          w.mesh.flip();
-        wc.material    = read_material(f, wp, name);
-        wc.interaction = read_interaction(f, wp);
-
-        prm.enter_subsection("Wear");
-        dem::WearContext context;
-        context.coarse_graining = c.coarse_graining;
-        for (const auto &law_name : get_list(prm, "Laws"))
-          {
-            auto law = dem::make_wear_law(law_name); // (the pattern checked the name)
-            if (law->uses_particle_size() && c.fine_fill)
-              f.fail({wp[0], "Wear"}, "Laws",
-                     "wear law " + law_name + " uses the real particle size, which a multi-level coarse graining "
-                     "(Particles/Coarse graining/Fine region) gives two of: not supported");
-            prm.enter_subsection(law->section());
-            PluginSection section(f, {wp[0], "Wear", law->section()});
-            law->parse_parameters(section, context);
-            prm.leave_subsection();
-            wc.wear.push_back(std::move(law));
-          }
-        prm.leave_subsection();
-        prm.enter_subsection("Layer probe");
-        wc.probe           = prm.get_bool("Enabled");
-        wc.probe_axis      = get_vector(prm, "Axis");
-        wc.probe_thickness = prm.get_double("Thickness");
-        wc.probe_interval  = prm.get_double("Interval");
-        prm.leave_subsection();
-        if (wc.probe && !(wc.probe_axis.norm() > 0))
-          f.fail({wp[0], "Layer probe"}, "Axis", "must not be zero");
-        if (c.coarse_graining != 1 && !wc.wear.empty())
-          {
-            // a wear pattern is resolved by the triangles: they should stay smaller than a particle
-            double longest = 0;
-            for (const auto &t : w.mesh.triangles)
-              for (int k = 0; k < 3; ++k)
-                longest = std::max(longest, (w.mesh.vertices[t[k]] - w.mesh.vertices[t[(k + 1) % 3]]).norm());
-            if (longest > c.fill.sizes.largest())
-              c.warnings.push_back("Wall " + name + ": its triangles (edges up to " + io::format_number(longest) +
-                                   " m) are larger than the coarse-grained particles (radius " +
-                                   io::format_number(c.fill.sizes.largest()) +
-                                   " m): the wear pattern is resolved only to the triangles (Maximum edge length)");
-          }
-        if (wc.probe && wc.probe_thickness > 0 && c.coarse_graining != 1)
-          c.warnings.push_back("Wall " + name + "/Layer probe/Thickness is fixed (" + io::format_number(wc.probe_thickness) +
-                               " m) while the particles are coarse-grained: 0 ties it to the simulated radius");
-
-        prm.enter_subsection("Motion");
-        auto              mp   = wp;
-        mp.push_back("Motion");
-        auto             &m    = w.motion;
-        m.centre = rotation * get_vector(prm, "Centre") + offset;
-        for (const auto &[phase, v] : read_phase_vectors(f, mp, "Velocities", c.phases))
-          m.phases[phase].velocity = v;
-        for (const auto &[phase, v] : read_phase_vectors(f, mp, "Angular velocities", c.phases))
-          m.phases[phase].angular_velocity = v;
-        {
-          std::shared_ptr<dem::WallMotionModel> motion = dem::make_wall_motion(prm.get("Type"));
-          dem::MotionContext                    context;
-          for (const auto &p : c.phases)
-            context.phases.push_back(p.first);
-          auto sp = mp;
-          if (!motion->section().empty())
-            {
-              prm.enter_subsection(motion->section());
-              sp.push_back(motion->section());
-            }
-          motion->parse_parameters(PluginSection(f, sp), context, m);
-          if (!motion->section().empty())
-            prm.leave_subsection();
-          // another motion's entries in Motion itself (the rigid body's Mass, Body, ...) set on
-          // this wall would be ignored without a word (a Body on a prescribed wall left the body)
-          for (const auto &other : dem::make_wall_motions())
-            if (other->section().empty() && other->name() != motion->name())
-              {
-                DeclaredEntries declared;
-                other->declare_parameters(declared);
-                for (const auto &[key, default_value] : declared.entries)
-                  if (!same_value(prm.get(key), default_value))
-                    f.fail(mp, key, "is an entry of Type = " + other->name() + ", and this wall's Type is " +
-                                      motion->name() + ": it would be ignored (set Type = " + other->name() +
-                                      ", or leave it out)");
-              }
-          m.kind  = motion->kind();
-          m.model = std::move(motion);
-        }
-        prm.leave_subsection();
-        prm.leave_subsection();
-        c.walls.push_back(std::move(wc));
-      }
+      c.walls.push_back(read_wall(f, name, c));
     mount_knives(f, c);
     return c;
   }

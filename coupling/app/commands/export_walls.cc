@@ -28,6 +28,8 @@ namespace abrade::app
       out.claim();
       io::Log                  log; // to the terminal
       log.set_echo(true);
+      for (const auto &note : c.notes)
+        log.line(note);
       coupling::fill_solid_model_walls(c, p, out.root(), log); // the FEM knife's surface, placed
       for (const auto &w : c.walls)
         {

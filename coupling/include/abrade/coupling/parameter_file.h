@@ -52,6 +52,8 @@ namespace abrade::coupling
     std::string identity_text();
     /// The files read: the parameter file and every file it includes (none for the default case).
     std::vector<std::string> files_read() const;
+    /// What the reading decided that a user may want to know (a base case's entries left out).
+    const std::vector<std::string> &notes() const { return notes_; }
 
   private:
     /// The walls listed: at most 1,000, names that can be file names, and each listed in the
@@ -63,6 +65,7 @@ namespace abrade::coupling
     std::string              text; ///< the file's content, its includes expanded in place
     /// the file and line each line of text comes from (includes expanded)
     std::vector<std::pair<std::string, int>> origin;
+    std::vector<std::string>                 notes_;
   };
 
   /// The embedded default case used by `abrade run` without a file.

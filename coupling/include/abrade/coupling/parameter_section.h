@@ -33,6 +33,11 @@ namespace abrade::coupling
     void        declare_choices(const std::string &name, const std::string &value,
                                 const std::vector<std::string> &choices, const std::string &doc) override;
     std::vector<std::string> chosen(const std::string &name) const override;
+    void declare_choice(const std::string &name, const std::string &value, const std::vector<std::string> &choices,
+                        const std::string &doc) override;
+    void declare_numbers(const std::string &name, const std::string &value, unsigned int least, unsigned int most,
+                         double lo, double hi, const std::string &doc) override;
+    std::vector<double> numbers(const std::string &name) const override;
     [[noreturn]] void fail(const std::string &name, const std::string &why) const override;
 
   private:

@@ -3,11 +3,13 @@
 // structs of the DEM (which knows nothing of deal.II). One subsection per component, one
 // "Wall NAME" subsection per wall.
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/walls/wall_geometry.h>
 #include <abrade/dem/generation.h>
 #include <abrade/dem/simulation.h>
 #include <abrade/dem/wear.h>
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,10 +17,19 @@
 
 namespace abrade::coupling
 {
+  /// A wall's Geometry and Motion/Type, which decide the entries it has.
+  struct WallChoices
+  {
+    std::string geometry, motion;
+  };
+
   /// Names that shape the declaration (read in the first pass).
   struct DeclarationLists
   {
     std::vector<std::string> walls = {"container", "knife"};
+    /// each wall's choices, read from the file (a wall not here has every geometry's and
+    /// motion's entries: `abrade params`)
+    std::map<std::string, WallChoices> wall_choices;
   };
 
   /// Why @p name cannot be a wall or phase name (it becomes a file name: letters, digits, '_'
@@ -50,6 +61,7 @@ namespace abrade::coupling
     double                   wear_profile_band = 0.01, wear_filter_length = 0.0275; ///< Output/...
     std::string              wear_field = "archard_volume"; ///< Output/Wear field
     std::vector<std::string> warnings;            ///< parameters that do not follow it, ...
+    std::vector<std::string> notes;               ///< what the reading decided (ParameterFile::notes)
     std::string              bed_file;
     std::vector<std::string> input_files; ///< the mesh files read (no output may replace one)
     std::vector<Phase>       phases;
@@ -69,21 +81,12 @@ namespace abrade::coupling
       /// is a knife mounted on a shell's lip).
       dem::Vec3        offset   = dem::Vec3::Zero();
       Eigen::Matrix3d  rotation = Eigen::Matrix3d::Identity();
-      /// A clamshell shell: its radius, lip angle at t = 0 [rad] and side (+1: opens to +x).
-      struct Shell
-      {
-        double radius = 0, opening = 0;
-        int    side   = 1;
-      };
+      using Shell = ShellShape;
       std::optional<Shell> shell;
-      /// Where a knife sits on this wall (a shell's lip): the lip's centre at t = 0, a unit
-      /// vector along it, and a unit vector from the lip into the shell along its bottom (the
-      /// mounted knife's inner face looks along inward x along). Parametric shells have one;
-      /// a shell read from a file gets one from 'Lip centre', 'Lip direction', 'Lip inward'.
-      struct Lip
-      {
-        dem::Vec3 centre, along, inward;
-      };
+      /// Where a knife sits on this wall (a shell's lip), at t = 0 in the global frame
+      /// (wall_geometry.h). Parametric shells have one; a shell read from a file gets one from
+      /// 'Lip centre', 'Lip direction', 'Lip inward'.
+      using Lip = WallLip;
       std::optional<Lip> lip;
       std::string          mount; ///< the shell whose lip carries this knife ("": none)
       double               protrusion = 0.02; ///< of a mounted knife's edge beyond the lip [m]

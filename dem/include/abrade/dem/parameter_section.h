@@ -1,6 +1,6 @@
 #pragma once
 // A subsection of the parameter file as the DEM's plugins (wear laws, contact sub-models, wall
-// motions) see it, so that they declare, read and check their own parameters while the DEM library knows no
+// motions; the coupling's wall geometries) see it, so that they declare, read and check their own parameters while the DEM library knows no
 // parameter-file library (coupling/parameter_section.h maps it onto deal.II's ParameterHandler).
 #include <array>
 #include <stdexcept>
@@ -44,6 +44,20 @@ namespace abrade::dem
       unsupported(name);
     }
     virtual std::vector<std::string> chosen(const std::string &name) const { unsupported(name); }
+    /// One of @p choices (read with text()).
+    virtual void declare_choice(const std::string &name, const std::string &value,
+                                const std::vector<std::string> &choices, const std::string &doc)
+    {
+      unsupported(name);
+    }
+    /// From @p least to @p most comma-separated numbers in [@p lo, @p hi] (default @p value, as
+    /// a parameter file writes it: "1, 1").
+    virtual void declare_numbers(const std::string &name, const std::string &value, unsigned int least,
+                                 unsigned int most, double lo, double hi, const std::string &doc)
+    {
+      unsupported(name);
+    }
+    virtual std::vector<double> numbers(const std::string &name) const { unsupported(name); }
 
     /// An input error naming the entry @p name and where it was set.
     [[noreturn]] virtual void fail(const std::string &name, const std::string &why) const = 0;

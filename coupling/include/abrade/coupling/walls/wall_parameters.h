@@ -1,0 +1,41 @@
+#pragma once
+// The subsection "Wall NAME" of every wall: its geometry (a plugin, walls/wall_geometry.h), its
+// placement, material, contact, wear laws, contact-layer probe and motion (a plugin,
+// dem/wall_motion_model.h), declared and read into the DEM's wall.
+//
+// A wall declares only the entries of its own geometry and motion: the file is read once
+// leniently for each wall's Geometry and Motion/Type (wall_choices()), then every entry is
+// declared and the file read strictly. An entry of another geometry or motion set on a wall is
+// then an error that says whose entry it is (foreign_entry_hint()).
+#include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace abrade::coupling
+{
+  /// First pass, after the wall names: declares each wall's Geometry and Motion/Type (any text)
+  /// and reads what the file chose. A wall whose choice is not registered (a typing error) gets
+  /// none: all entries are declared for it, and the strict pass refuses the choice itself.
+  void declare_wall_choices(dealii::ParameterHandler &prm, const std::vector<std::string> &walls);
+  std::map<std::string, WallChoices> read_wall_choices(dealii::ParameterHandler &prm,
+                                                       const std::vector<std::string> &walls);
+
+  /// Declares subsection "Wall @p name" with the entries of the chosen geometry and motion
+  /// (@p choices; nullptr: of every one, as `abrade params` lists them).
+  void declare_wall(dealii::ParameterHandler &prm, const std::string &name, const WallChoices *choices);
+
+  /// Reads and checks wall @p name of case @p c (whose phases, particles and coarse graining are
+  /// read), adding its warnings and input files to @p c.
+  DemCase::WallCase read_wall(ParameterFile &f, const std::string &name, DemCase &c);
+
+  /// Places every mounted part on its shell's lip and gives it the shell's motion.
+  void mount_knives(ParameterFile &f, DemCase &c);
+
+  /// When @p key (in subsection @p path) is an entry of another geometry or motion than the
+  /// wall's, a sentence that says so; otherwise "".
+  std::string foreign_entry_hint(const DeclarationLists &lists, const std::vector<std::string> &path,
+                                 const std::string &key);
+} // namespace abrade::coupling
