@@ -1,29 +1,13 @@
 // The registry of the program's commands (command.h).
 #include "command.h"
 
-#include <algorithm>
-#include <stdexcept>
-
 namespace abrade::app
 {
-  namespace
-  {
-    std::vector<Command> &registry()
-    {
-      static std::vector<Command> commands; // (built before main(), by the registrations)
-      return commands;
-    }
-  } // namespace
+  using Registry = io::PluginRegistry<Command>;
 
-  const std::vector<Command> &registered_commands() { return registry(); }
+  CommandRegistration::CommandRegistration(std::unique_ptr<Command> (*make)()) { Registry::add(make, "command"); }
 
-  CommandRegistration::CommandRegistration(const std::string &name, const std::string &usage, CommandFunction run)
-  {
-    auto &commands = registry();
-    if (std::any_of(commands.begin(), commands.end(), [&](const Command &c) { return c.name == name; }))
-      throw std::logic_error("command " + name + " registered twice");
-    const auto at = std::lower_bound(commands.begin(), commands.end(), name,
-                                     [](const Command &c, const std::string &n) { return c.name < n; });
-    commands.insert(at, {name, usage, run});
-  }
+  std::vector<std::unique_ptr<Command>> make_commands() { return Registry::make_all(); }
+
+  std::unique_ptr<Command> make_command(const std::string &name) { return Registry::make(name); }
 } // namespace abrade::app

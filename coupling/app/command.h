@@ -8,6 +8,9 @@
 // its name. main.cc finds the command in the registry and turns what it throws into the exit
 // code (an InputError 2, a RunError 3). The files are compiled into the program itself (not a
 // library), so every registration runs before main().
+#include <abrade/common/plugin_registry.h>
+
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,26 +20,44 @@ namespace abrade::app
   /// summary.json's provenance).
   using CommandFunction = int (*)(const std::vector<std::string> &args, const std::string &typed);
 
-  struct Command
+  /// A command: what ABRADE_REGISTER_COMMAND makes of its name, usage and function.
+  class Command
   {
-    std::string     name;
-    std::string     usage; ///< "  abrade NAME ...\n      what it does\n"
-    CommandFunction run;
+  public:
+    virtual ~Command() = default;
+    virtual std::string name() const = 0;
+    /// "  abrade NAME ...\n      what it does\n"
+    virtual std::string usage() const = 0;
+    virtual int run(const std::vector<std::string> &args, const std::string &typed) const = 0;
   };
 
-  /// Every registered command, by name.
-  const std::vector<Command> &registered_commands();
+  /// One new instance of every registered command, in the order of their names (of --help).
+  std::vector<std::unique_ptr<Command>> make_commands();
+  /// A new command of that name; nullptr if there is none.
+  std::unique_ptr<Command> make_command(const std::string &name);
 
   /// Adds a command (ABRADE_REGISTER_COMMAND); a name registered twice is a bug.
   struct CommandRegistration
   {
-    CommandRegistration(const std::string &name, const std::string &usage, CommandFunction run);
+    explicit CommandRegistration(std::unique_ptr<Command> (*make)());
   };
 } // namespace abrade::app
 
-#define ABRADE_REGISTER_COMMAND_CAT2(a, b) a##b
-#define ABRADE_REGISTER_COMMAND_CAT(a, b) ABRADE_REGISTER_COMMAND_CAT2(a, b)
-/// One line in a command's file registers it: its name, its usage, its function.
-#define ABRADE_REGISTER_COMMAND(name, usage, function)                                                        \
-  static const ::abrade::app::CommandRegistration ABRADE_REGISTER_COMMAND_CAT(abrade_command_, __LINE__)( \
-    name, usage, function)
+/// One line in a command's file registers it, at namespace scope: its name, its usage, its
+/// function (a class of those, registered in the one plugin registry).
+#define ABRADE_REGISTER_COMMAND(name_, usage_, function_)                                                    \
+  namespace                                                                                                \
+  {                                                                                                        \
+    class ABRADE_PLUGIN_CAT(AbradeCommand, __LINE__) final : public ::abrade::app::Command               \
+    {                                                                                                      \
+    public:                                                                                                \
+      std::string name() const override { return name_; }                                                \
+      std::string usage() const override { return usage_; }                                              \
+      int run(const std::vector<std::string> &args, const std::string &typed) const override              \
+      {                                                                                                    \
+        return function_(args, typed);                                                                     \
+      }                                                                                                    \
+    };                                                                                                     \
+  }                                                                                                        \
+  ABRADE_REGISTER_PLUGIN(::abrade::app::CommandRegistration, ::abrade::app::Command,                       \
+                         ABRADE_PLUGIN_CAT(AbradeCommand, __LINE__))

@@ -28,8 +28,8 @@ namespace
   std::string usage()
   {
     std::string text = "usage:\n";
-    for (const auto &c : app::registered_commands())
-      text += c.usage;
+    for (const auto &c : app::make_commands())
+      text += c->usage();
     return text + "  abrade --version\n";
   }
 
@@ -61,21 +61,20 @@ int main(int argc, char **argv)
           std::cout << usage();
           return 0;
         }
-      for (const auto &command : app::registered_commands())
-        if (command.name == name)
-          {
-            // --help (or -h) anywhere after it: the command's usage
-            for (std::size_t k = 1; k < words.size(); ++k)
-              if (words[k] == "--help" || words[k] == "-h")
-                {
-                  std::cout << "usage:\n" << command.usage;
-                  return 0;
-                }
-            std::string typed;
-            for (int k = 0; k < argc; ++k)
-              typed += (k ? " " : "") + io::shell_quote(argv[k]);
-            return command.run(std::vector<std::string>(words.begin() + 1, words.end()), typed);
-          }
+      if (const auto command = app::make_command(name))
+        {
+          // --help (or -h) anywhere after it: the command's usage
+          for (std::size_t k = 1; k < words.size(); ++k)
+            if (words[k] == "--help" || words[k] == "-h")
+              {
+                std::cout << "usage:\n" << command->usage();
+                return 0;
+              }
+          std::string typed;
+          for (int k = 0; k < argc; ++k)
+            typed += (k ? " " : "") + io::shell_quote(argv[k]);
+          return command->run(std::vector<std::string>(words.begin() + 1, words.end()), typed);
+        }
       throw InputError("command line", "unknown command '" + name + "'\n" + usage());
     }
   catch (const InputError &e)

@@ -5,6 +5,7 @@
 #include <abrade/common/file_extension.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameter_text.h>
 #include <abrade/coupling/walls/wall_parameters.h>
 
 #include <deal.II/base/utilities.h>
@@ -169,41 +170,6 @@ namespace abrade::coupling
     /// another wall geometry or motion: foreign_entry_hint), or "".
     using EntryHint = std::function<std::string(const std::vector<std::string> &path, const std::string &key)>;
 
-    std::vector<std::string> lines_of(const std::string &text)
-    {
-      std::vector<std::string> lines;
-      std::istringstream       in(text);
-      for (std::string l; std::getline(in, l);)
-        lines.push_back(l);
-      return lines;
-    }
-
-    /// What a line of a parameter file is: in which subsections, and the key it sets ("": none).
-    struct LineEntry
-    {
-      std::vector<std::string> path;
-      std::string              key;
-    };
-
-    std::vector<LineEntry> entries_by_line(const std::vector<std::string> &lines)
-    {
-      std::vector<LineEntry>   entries;
-      std::vector<std::string> path;
-      for (const auto &line : lines)
-        {
-          const std::string l  = dealii::Utilities::trim(line.substr(0, line.find('#')));
-          const auto        eq = l.find('=');
-          entries.push_back({path, l.rfind("set ", 0) == 0 && eq != std::string::npos
-                                     ? dealii::Utilities::trim(l.substr(4, eq - 4))
-                                     : ""});
-          if (l.rfind("subsection ", 0) == 0)
-            path.push_back(dealii::Utilities::trim(l.substr(11)));
-          else if (l == "end" && !path.empty())
-            path.pop_back();
-        }
-      return entries;
-    }
-
     /// The key of deal.II's "No entry with name <KEY> was declared" (or "" for other messages).
     std::string undeclared_key(const std::string &msg)
     {
@@ -214,74 +180,6 @@ namespace abrade::coupling
                                                 msg.find("not yet declared") != std::string::npos))
             return msg.substr(a + start.size(), b - a - start.size());
       return "";
-    }
-
-    /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
-    /// another geometry or motion than the wall's when they come before the choice, from another
-    /// file than the one that made it (or the choice is a --set): an included base case whose
-    /// wall the including file made another geometry (cases/knife_bed/lifetime.prm turns
-    /// knife_bed.prm's chisel knife into the solid model) keeps working, while such an entry set
-    /// beside the choice or after it is an error. Returns a sentence per wall that lost entries.
-    std::vector<std::string> leave_out_base_entries(std::string &text, std::vector<std::pair<std::string, int>> origin,
-                                                    const std::string &file, const DeclarationLists &lists,
-                                                    const std::vector<Override> &overrides)
-    {
-      std::vector<std::string> lines   = lines_of(text);
-      const auto               entries = entries_by_line(lines);
-      if (origin.size() != lines.size()) // (no file: the embedded default case)
-        for (std::size_t n = origin.size(); n < lines.size(); ++n)
-          origin.emplace_back(file, int(n + 1));
-      // the file and line that chose each wall's geometry ("geometry WALL") and motion ("motion
-      // WALL"), the last that did
-      const auto choice_of = [](const std::vector<std::string> &p, const std::string &key) -> std::string {
-        if (p.empty() || p[0].rfind("Wall ", 0) != 0)
-          return "";
-        if (p.size() == 1 && key == "Geometry")
-          return "geometry " + p[0];
-        if (p.size() == 2 && p[1] == "Motion" && key == "Type")
-          return "motion " + p[0];
-        return "";
-      };
-      std::map<std::string, std::pair<std::string, std::size_t>> chooser;
-      for (std::size_t n = 0; n < lines.size(); ++n)
-        if (const std::string c = choice_of(entries[n].path, entries[n].key); !c.empty())
-          chooser[c] = {origin[n].first, n};
-      for (const auto &o : overrides)
-        if (const std::string c = choice_of(o.path, o.key); !c.empty())
-          chooser[c] = {"--set", lines.size()};
-      std::map<std::string, std::vector<std::string>> left_out; // per wall: "KEY (file:line)"
-      for (std::size_t n = 0; n < lines.size(); ++n)
-        {
-          const auto &[path, key] = entries[n];
-          if (key.empty() || path.empty() || foreign_entry_hint(lists, path, key).empty())
-            continue;
-          const auto chosen = chooser.find((path.size() == 1 ? "geometry " : "motion ") + path[0]);
-          if (chosen == chooser.end() || chosen->second.first == origin[n].first || n > chosen->second.second)
-            continue; // (set beside the choice, or after it: the strict reading refuses it)
-          left_out[path[0]].push_back(key + " (" + origin[n].first + ":" + std::to_string(origin[n].second) + ")");
-          for (std::size_t k = n; k < lines.size(); ++k) // (with its continuation lines)
-            {
-              const bool more = !lines[k].empty() && lines[k].back() == '\\';
-              lines[k]        = "";
-              if (!more)
-                break;
-            }
-        }
-      if (left_out.empty())
-        return {};
-      text.clear();
-      for (const auto &l : lines)
-        text += l + "\n";
-      std::vector<std::string> notes;
-      for (const auto &[wall, keys] : left_out)
-        {
-          std::string list;
-          for (const auto &k : keys)
-            list += (list.empty() ? "" : ", ") + k;
-          notes.push_back(wall + ": left out, as entries of another geometry or motion than the one chosen for it in another "
-                          "file: " + list);
-        }
-      return notes;
     }
 
     void apply_override(dealii::ParameterHandler &prm, const Override &o, bool lenient, const EntryHint &hint = {})
@@ -363,7 +261,6 @@ namespace abrade::coupling
         std::size_t              inclusions = 0;
         expand_includes(f, chain, text, origin, inclusions);
       }
-    std::vector<Override> overrides;
     for (const auto &s : set)
       overrides.push_back(parse_override(s));
 
@@ -382,7 +279,10 @@ namespace abrade::coupling
     for (const auto &o : overrides)
       apply_override(choices, o, true);
     l.wall_choices = read_wall_choices(choices, l.walls);
-    notes_         = leave_out_base_entries(text, origin, file, l, overrides);
+    notes_         = leave_out_replaced_entries(text, origin, file, l, overrides);
+    overrides.erase(std::remove_if(overrides.begin(), overrides.end(),
+                                   [&l](const Override &o) { return is_foreign_default(l, o.path, o.key, o.value); }),
+                    overrides.end());
 
     // pass 2: everything, strictly
     declare_parameters(prm, l);
@@ -422,7 +322,7 @@ namespace abrade::coupling
     for (std::string line; std::getline(in, line);)
       {
         const std::string t = dealii::Utilities::trim(line.substr(0, line.find('#')));
-        if (t.rfind("subsection ", 0) == 0)
+        if (t.rfind("subsection ", 0) == 0 || t.rfind("SUBSECTION ", 0) == 0)
           sections.insert(dealii::Utilities::trim(t.substr(11)));
       }
     for (const auto &o : overrides)
@@ -441,26 +341,17 @@ namespace abrade::coupling
 
   std::string ParameterFile::locate(const std::vector<std::string> &path, const std::string &key) const
   {
-    // Walk the file's subsection structure and find the last "set KEY" inside PATH (the one that
-    // takes effect), in the file it comes from.
-    std::istringstream       in(text);
-    std::string              line, where = file;
-    std::vector<std::string> current;
-    for (std::size_t n = 0; std::getline(in, line); ++n)
-      {
-        std::string l = dealii::Utilities::trim(line.substr(0, line.find('#')));
-        if (l.rfind("subsection ", 0) == 0)
-          current.push_back(dealii::Utilities::trim(l.substr(11)));
-        else if (l == "end" && !current.empty())
-          current.pop_back();
-        else if (l.rfind("set ", 0) == 0 && current == path)
-          {
-            const auto eq = l.find('=');
-            if (eq != std::string::npos && dealii::Utilities::trim(l.substr(4, eq - 4)) == key)
-              where = n < origin.size() ? origin[n].first + ":" + std::to_string(origin[n].second)
-                                        : file + ":" + std::to_string(n + 1);
-          }
-      }
+    // the --set that gives it, or the last "set KEY" inside PATH (the one that takes effect), in
+    // the file it comes from
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+      if (o->path == path && o->key == key)
+        return "--set '" + o->text + "'";
+    const auto  entries = entries_by_line(lines_of(text));
+    std::string where   = file;
+    for (std::size_t n = 0; n < entries.size(); ++n)
+      if (entries[n].path == path && entries[n].key == key)
+        where = n < origin.size() ? origin[n].first + ":" + std::to_string(origin[n].second)
+                                  : file + ":" + std::to_string(n + 1);
     return where;
   }
 

@@ -131,18 +131,13 @@ namespace abrade::coupling
 
   void declare_parameters(ParameterHandler &prm, const DeclarationLists &lists)
   {
-    std::string jobs; // (the registry's names: jobs.cc)
-    for (const auto &job : registered_jobs())
-      jobs += (jobs.empty() ? "" : "|") + job.name;
-    prm.declare_entry("Job", "dem", Selection(jobs),
-                      "What `abrade run` does. dem: one DEM simulation of the phases in "
-                      "Simulation/Phases (generate or load the bed, run, write output); bed: only "
-                      "generate and settle the bed and save it to Particles/Settling/Bed file (for "
-                      "studies whose runs start from one bed); knife: "
-                      "build the knife's solid model (subsection Knife), check its mesh and write "
-                      "it (VTU, STL) with its volume and mass; lifetime: alternate DEM cycles "
-                      "(on the knife's solid model) and geometry updates until end of life "
-                      "(subsection Lifetime).");
+    std::string jobs, job_doc; // (the registered jobs: jobs.h)
+    for (const auto &job : make_jobs())
+      {
+        jobs += (jobs.empty() ? "" : "|") + job->name();
+        job_doc += (job_doc.empty() ? "" : "; ") + job->name() + ": " + job->documentation();
+      }
+    prm.declare_entry("Job", "dem", Selection(jobs), "What `abrade run` does. " + job_doc + ".");
     declare_lists(prm);
     std::string names;
     for (const auto &w : lists.walls)

@@ -26,7 +26,7 @@ inline abrade::io::Json run_analytic_lifetime(const std::string &name, std::vect
   abrade::io::Log                 log;
   log.set_echo(false);
   abrade::coupling::JobContext ctx{params, out, results, timers, log};
-  abrade::coupling::run_lifetime_job(ctx);
+  abrade::coupling::make_job("lifetime")->run(ctx);
   if (dir)
     *dir = out_dir;
   return results;

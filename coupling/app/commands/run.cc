@@ -132,9 +132,7 @@ namespace abrade::app
     };
     try
       {
-        for (const auto &job : coupling::registered_jobs())
-          if (job.name == job_name)
-            job.run(ctx);
+        coupling::make_job(job_name)->run(ctx); // (the pattern of Job checked the name)
       }
     catch (const std::exception &e)
       {

@@ -1,5 +1,6 @@
 // The DEM wear source: one operating cycle per bed seed on the knife's current surface.
 #include <abrade/common/timer.h>
+#include <abrade/coupling/bed_preparation.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/dem/wear.h>

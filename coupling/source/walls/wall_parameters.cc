@@ -11,6 +11,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -27,39 +28,43 @@ namespace abrade::coupling
 
     Vec3 vec(const std::array<double, 3> &v) { return Vec3(v[0], v[1], v[2]); }
 
-    /// The names of the entries a plugin declares (whose entry a key is: foreign_entry_hint).
-    class DeclaredNames : public dem::ParameterSection
+    /// The entries a plugin declares, with their defaults as a parameter file writes them.
+    class DeclaredEntries : public dem::ParameterSection
     {
     public:
-      std::vector<std::string> names;
+      std::map<std::string, std::string> defaults;
 
-      void declare_number(const std::string &name, double, double, double, const std::string &) override
+      void declare_number(const std::string &name, double value, double, double, const std::string &) override
       {
-        names.push_back(name);
+        defaults[name] = io::format_number(value, 15);
       }
-      void declare_vector(const std::string &name, const std::array<double, 3> &, const std::string &) override
+      void declare_vector(const std::string &name, const std::array<double, 3> &v, const std::string &) override
       {
-        names.push_back(name);
+        defaults[name] =
+          io::format_number(v[0], 15) + ", " + io::format_number(v[1], 15) + ", " + io::format_number(v[2], 15);
       }
-      void declare_bool(const std::string &name, bool, const std::string &) override { names.push_back(name); }
-      void declare_text(const std::string &name, const std::string &, const std::string &) override
+      void declare_bool(const std::string &name, bool value, const std::string &) override
       {
-        names.push_back(name);
+        defaults[name] = value ? "true" : "false";
       }
-      void declare_choices(const std::string &name, const std::string &, const std::vector<std::string> &,
+      void declare_text(const std::string &name, const std::string &value, const std::string &) override
+      {
+        defaults[name] = value;
+      }
+      void declare_choices(const std::string &name, const std::string &value, const std::vector<std::string> &,
                            const std::string &) override
       {
-        names.push_back(name);
+        defaults[name] = value;
       }
-      void declare_choice(const std::string &name, const std::string &, const std::vector<std::string> &,
+      void declare_choice(const std::string &name, const std::string &value, const std::vector<std::string> &,
                           const std::string &) override
       {
-        names.push_back(name);
+        defaults[name] = value;
       }
-      void declare_numbers(const std::string &name, const std::string &, unsigned int, unsigned int, double, double,
-                           const std::string &) override
+      void declare_numbers(const std::string &name, const std::string &value, unsigned int, unsigned int, double,
+                           double, const std::string &) override
       {
-        names.push_back(name);
+        defaults[name] = value;
       }
       double number(const std::string &name) const override
       {
@@ -69,16 +74,14 @@ namespace abrade::coupling
       {
         throw std::logic_error("parameter '" + name + "': " + why);
       }
-
-      bool has(const std::string &key) const { return std::find(names.begin(), names.end(), key) != names.end(); }
     };
 
     template <class Plugin>
-    DeclaredNames names_of(const Plugin &plugin)
+    std::map<std::string, std::string> defaults_of(const Plugin &plugin)
     {
-      DeclaredNames declared;
+      DeclaredEntries declared;
       plugin.declare_parameters(declared);
-      return declared;
+      return declared.defaults;
     }
 
     void declare_geometry(ParameterHandler &prm, const WallChoices *choices)
@@ -92,7 +95,7 @@ namespace abrade::coupling
           doc += std::string(k == 0 ? "" : k + 1 == geometries.size() ? ", or " : ", ") + g->name() + " (" +
                  g->documentation() + ")";
         }
-      prm.declare_entry("Geometry", "box", dealii::Patterns::Selection(names),
+      prm.declare_entry("Geometry", default_wall_choices("").geometry, dealii::Patterns::Selection(names),
                         "Wall geometry: " + doc + ". A wall takes the entries of its own geometry only.");
       PluginSection section(prm);
       for (const auto &g : geometries)
@@ -162,7 +165,7 @@ namespace abrade::coupling
           names += (names.empty() ? "" : "|") + m->name();
           doc += (doc.empty() ? "" : "; ") + m->name() + (m->documentation().empty() ? "" : ": " + m->documentation());
         }
-      prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed", dealii::Patterns::Selection(names), doc + ".");
+      prm.declare_entry("Type", default_wall_choices(name).motion, dealii::Patterns::Selection(names), doc + ".");
       PluginSection section(prm);
       section.declare_vector("Centre", {0, 0, 0},
                              "[m] Rotation centre (a hinge point) in the geometry's coordinates before "
@@ -382,9 +385,10 @@ namespace abrade::coupling
     for (const auto &name : walls)
       {
         prm.enter_subsection("Wall " + name);
-        prm.declare_entry("Geometry", "box", dealii::Patterns::Anything());
+        const WallChoices defaults = default_wall_choices(name);
+        prm.declare_entry("Geometry", defaults.geometry, dealii::Patterns::Anything());
         prm.enter_subsection("Motion");
-        prm.declare_entry("Type", name == "knife" ? "prescribed" : "fixed", dealii::Patterns::Anything());
+        prm.declare_entry("Type", defaults.motion, dealii::Patterns::Anything());
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -473,27 +477,79 @@ namespace abrade::coupling
       }
   }
 
+  WallChoices default_wall_choices(const std::string &name)
+  {
+    return {"box", name == "knife" ? "prescribed" : "fixed"};
+  }
+
+  std::optional<PluginEntry> plugin_entry(const std::vector<std::string> &path, const std::string &key)
+  {
+    if (path.empty() || path[0].rfind("Wall ", 0) != 0 || path.size() > 2 || (path.size() == 2 && path[1] != "Motion"))
+      return std::nullopt;
+    PluginEntry entry;
+    if (path.size() == 1)
+      {
+        entry.family = "Geometry";
+        for (const auto &g : make_wall_geometries())
+          if (const auto d = defaults_of(*g); d.count(key))
+            entry.defaults[g->name()] = d.at(key);
+      }
+    else
+      {
+        entry.family = "Motion/Type";
+        for (const auto &m : dem::make_wall_motions())
+          if (const auto d = defaults_of(*m); m->section().empty() && d.count(key))
+            entry.defaults[m->name()] = d.at(key);
+      }
+    if (entry.defaults.empty())
+      return std::nullopt;
+    return entry;
+  }
+
+  bool same_value(std::string a, std::string b)
+  {
+    for (auto *s : {&a, &b})
+      {
+        s->erase(std::remove_if(s->begin(), s->end(), [](unsigned char c) { return std::isspace(c); }), s->end());
+        std::transform(s->begin(), s->end(), s->begin(), [](unsigned char c) { return std::tolower(c); });
+        if (*s == "yes")
+          *s = "true";
+        if (*s == "no")
+          *s = "false";
+      }
+    if (a == b)
+      return true;
+    const auto x = split_string_list(a), y = split_string_list(b);
+    if (x.size() != y.size())
+      return false;
+    try
+      {
+        for (std::size_t k = 0; k < x.size(); ++k)
+          if (std::stod(x[k]) != std::stod(y[k]))
+            return false;
+        return true;
+      }
+    catch (const std::exception &)
+      {
+        return false;
+      }
+  }
+
   std::string foreign_entry_hint(const DeclarationLists &lists, const std::vector<std::string> &path,
                                  const std::string &key)
   {
-    if (path.empty() || path[0].rfind("Wall ", 0) != 0)
+    const auto entry = plugin_entry(path, key);
+    if (!entry)
       return "";
     const std::string name   = path[0].substr(5);
     const auto        chosen = lists.wall_choices.find(name);
     if (chosen == lists.wall_choices.end())
       return "";
-    const auto whose = [&](const std::string &family, const std::string &theirs, const std::string &ours) {
-      return " '" + key + "' is an entry of " + family + " = " + theirs + ", and wall " + name + "'s " + family +
-             " is " + ours + ": set " + family + " = " + theirs + ", or leave it out.";
-    };
-    if (path.size() == 1)
-      for (const auto &g : make_wall_geometries())
-        if (g->name() != chosen->second.geometry && names_of(*g).has(key))
-          return whose("Geometry", g->name(), chosen->second.geometry);
-    if (path.size() == 2 && path[1] == "Motion")
-      for (const auto &m : dem::make_wall_motions())
-        if (m->section().empty() && m->name() != chosen->second.motion && names_of(*m).has(key))
-          return whose("Motion/Type", m->name(), chosen->second.motion);
-    return "";
+    const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
+    if (entry->defaults.count(ours))
+      return ""; // (its own)
+    const std::string theirs = entry->defaults.begin()->first;
+    return " '" + key + "' is an entry of " + entry->family + " = " + theirs + ", and wall " + name + "'s " +
+           entry->family + " is " + ours + ": set " + entry->family + " = " + theirs + ", or leave it out.";
   }
 } // namespace abrade::coupling

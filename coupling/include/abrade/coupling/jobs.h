@@ -1,14 +1,17 @@
 #pragma once
-// What `abrade run` can do. Each job is a named, self-describing entry in one registry
-// (jobs.cc); the parameter `Job` selects one. A job reads its parameters, writes its files into
-// the output directory, and fills the "results" object of summary.json.
+// What `abrade run` can do: each job is a plugin, a class in its own file of
+// coupling/source/jobs/ registered with one line, and the parameter `Job` selects one. A job
+// reads its parameters, writes its files into the output directory, and fills the "results"
+// object of summary.json.
 #include <abrade/common/json.h>
+#include <abrade/common/plugin_registry.h>
 #include <abrade/common/log.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/common/timer.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/dem/simulation.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,29 +27,33 @@ namespace abrade::coupling
     bool                    resume = false;
   };
 
-  struct JobInfo
+  /// A job: what `Job = NAME` makes `abrade run` do. One class in a file of its own in
+  /// coupling/source/jobs/, registered there with one line, ABRADE_REGISTER_JOB(MyJob).
+  class Job
   {
-    std::string name;
-    std::string description;
-    void (*run)(JobContext &);
+  public:
+    virtual ~Job() = default;
+    /// The name written in Job ("dem").
+    virtual std::string name() const = 0;
+    /// What it does, a phrase for Job's documentation.
+    virtual std::string documentation() const = 0;
+    /// Reads its parameters from @p ctx, writes its files and fills the results.
+    virtual void run(JobContext &ctx) const = 0;
   };
 
-  /// All jobs, in one place.
-  const std::vector<JobInfo> &registered_jobs();
+  using JobFactory = std::unique_ptr<Job> (*)();
 
-  struct DemCase;
-  /// Loads the settled bed from @p bed_file if it exists (relative: in the output directory),
-  /// otherwise generates, settles and saves it there (empty: generate, save nothing); sets the
-  /// simulation up. Returns true when the bed was loaded.
-  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed_file);
-  /// Logs the case's coarse graining (and records it in summary.json) and the parameters that
-  /// do not follow it.
-  void report_coarse_graining(const DemCase &c, JobContext &ctx);
+  /// One new instance of every registered job, in the order of their names.
+  std::vector<std::unique_ptr<Job>> make_jobs();
+  /// A new job of that name; nullptr if there is none.
+  std::unique_ptr<Job> make_job(const std::string &name);
 
-  // the jobs
-  void run_dem_job(JobContext &ctx);
-  void run_lifetime_job(JobContext &ctx);
-  void run_knife_job(JobContext &ctx);
-  /// Job 'bed': generate and settle the particles and save the bed, nothing else.
-  void run_bed_job(JobContext &ctx);
+  /// Adds a job (ABRADE_REGISTER_JOB); a name registered twice is a bug.
+  struct JobRegistration
+  {
+    explicit JobRegistration(JobFactory make);
+  };
 } // namespace abrade::coupling
+
+/// One line in a job's file registers it (at namespace scope).
+#define ABRADE_REGISTER_JOB(Class) ABRADE_REGISTER_PLUGIN(::abrade::coupling::JobRegistration, ::abrade::coupling::Job, Class)

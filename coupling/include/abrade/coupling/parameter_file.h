@@ -66,6 +66,7 @@ namespace abrade::coupling
     /// the file and line each line of text comes from (includes expanded)
     std::vector<std::pair<std::string, int>> origin;
     std::vector<std::string>                 notes_;
+    std::vector<Override>                    overrides; ///< the --set overrides, in order
   };
 
   /// The embedded default case used by `abrade run` without a file.

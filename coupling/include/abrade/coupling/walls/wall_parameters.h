@@ -4,13 +4,15 @@
 // dem/wall_motion_model.h), declared and read into the DEM's wall.
 //
 // A wall declares only the entries of its own geometry and motion: the file is read once
-// leniently for each wall's Geometry and Motion/Type (wall_choices()), then every entry is
+// leniently for each wall's Geometry and Motion/Type (read_wall_choices()), then every entry is
 // declared and the file read strictly. An entry of another geometry or motion set on a wall is
-// then an error that says whose entry it is (foreign_entry_hint()).
+// then an error that says whose entry it is (foreign_entry_hint()), unless it is that plugin's
+// default or a replaced choice's (ParameterFile leaves those out: plugin_entry()).
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,25 @@ namespace abrade::coupling
 
   /// Places every mounted part on its shell's lip and gives it the shell's motion.
   void mount_knives(ParameterFile &f, DemCase &c);
+
+  /// A wall's Geometry and Motion/Type where the file does not set them.
+  WallChoices default_wall_choices(const std::string &name);
+
+  /// An entry of a wall that a geometry (in Wall NAME) or a motion (in Wall NAME/Motion)
+  /// declares: which choice it depends on ("Geometry" or "Motion/Type"), and each plugin that
+  /// declares it with its default there.
+  struct PluginEntry
+  {
+    std::string                        family;
+    std::map<std::string, std::string> defaults; ///< plugin name -> default, as a file writes it
+  };
+  /// The plugins that declare @p key in subsection @p path, if @p path is a wall's or its
+  /// Motion and any does.
+  std::optional<PluginEntry> plugin_entry(const std::vector<std::string> &path, const std::string &key);
+
+  /// Whether the value @p a of an entry is @p b: the same text but for blanks and case, or the
+  /// same numbers ("0,0,0" and "0, 0, 0.0"; "yes" and "true").
+  bool same_value(std::string a, std::string b);
 
   /// When @p key (in subsection @p path) is an entry of another geometry or motion than the
   /// wall's, a sentence that says so; otherwise "".

@@ -9,7 +9,9 @@
 // 5. Write the wear and probe tables, and report throughput, loads and wear per phase in
 //    summary.json.
 #include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/progress.h>
+#include <abrade/coupling/bed_preparation.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
@@ -34,186 +36,19 @@ namespace abrade::coupling
 {
   namespace
   {
-    void flush_warnings(dem::Simulation &sim, io::Log &log)
+    class DemJob : public Job
     {
-      for (const auto &w : sim.take_warnings())
-        log.warning(w);
-    }
-
-    std::string fmt(double v, int precision = 4)
-    {
-      std::ostringstream s;
-      s.precision(precision);
-      s << v;
-      return s.str();
-    }
-
-  } // namespace
-
-  namespace
-  {
-    /// The bed's top: the highest particle's top [m].
-    double bed_top(const dem::Simulation &sim) // collective
-    {
-      const auto &P   = sim.particles();
-      double      top = -std::numeric_limits<double>::infinity();
-      for (std::size_t i = 0; i < P.size(); ++i)
-        top = std::max(top, P.z[i] + P.radius[i]);
-      return sim.parallel().max(top);
-    }
-  } // namespace
-
-  namespace
-  {
-    /// A saved bed must hold the particles the parameters describe: a bed made at another
-    /// radius or coarse-graining factor (the same Bed file, rerun with another Factor) would
-    /// otherwise run silently with the old particles.
-    void check_bed_sizes(const DemCase &c, const dem::Simulation &sim, const std::string &bed) // collective
-    {
-      const auto &P  = sim.particles();
-      double      lo = std::numeric_limits<double>::infinity(), hi = 0;
-      for (std::size_t i = 0; i < P.size(); ++i)
-        lo = std::min(lo, P.radius[i]), hi = std::max(hi, P.radius[i]);
-      lo = -sim.parallel().max(-lo), hi = sim.parallel().max(hi);
-      const auto  &d        = c.fill.sizes;
-      const bool   constant = d.kind == dem::SizeDistribution::Kind::constant;
-      double       want_lo = constant ? d.radius : d.min, want_hi = constant ? d.radius : d.max;
-      const bool   two     = bool(c.fine_fill); // a fine region: its radii too
-      if (two)
-        want_lo = std::min(want_lo, constant ? c.fine_fill->sizes.radius : c.fine_fill->sizes.min);
-      const double tol = 1e-9 * want_hi;
-      if (lo < want_lo - tol || hi > want_hi + tol || (constant && !two && lo < want_hi - tol))
-        throw InputError(bed, "the bed's radii are " + fmt(lo) + (hi > lo ? ".." + fmt(hi) : std::string()) +
-                                " m, the parameters give " + fmt(want_lo) +
-                                (want_hi > want_lo ? ".." + fmt(want_hi) : std::string()) +
-                                " m (Particles/Generation, x Particles/Coarse graining/Factor " +
-                                fmt(c.coarse_graining) +
-                                "): it was made for other particles; name another Particles/Settling/Bed file or "
-                                "delete this one");
-    }
-  } // namespace
-
-  namespace
-  {
-    /// Generates the particles of @p c into @p sim (the fine region first, if any) and lets
-    /// them settle.
-    void generate_and_settle(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
-    {
-      dem::FillRegion   fill = c.fill;
-      dem::TriangleMesh region;
-      if (!c.region_mesh_file.empty())
-        {
-          region      = dem::read_surface_mesh(c.region_mesh_file);
-          fill.inside = &region;
-        }
-      for (std::size_t w = 0; w < sim.n_walls(); ++w)
-        fill.avoid.push_back(sim.wall(w).current_mesh());
+    public:
+      std::string name() const override { return "dem"; }
+      std::string documentation() const override
       {
-        io::ScopedTimer t(ctx.timers, "generate");
-        if (c.fine_fill) // multi-level coarse graining: the finer particles first, in their box
-          {
-            dem::FillRegion fine = *c.fine_fill;
-            fine.avoid           = fill.avoid;
-            const long n         = dem::fill_region(sim, fine);
-            ctx.log.line("Generated " + std::to_string(n) + " particles of radius " + fmt(fine.sizes.largest()) +
-                         " m in the fine region (seed " + std::to_string(fine.seed) + ")");
-          }
-        const long n = dem::fill_region(sim, fill);
-        ctx.log.line("Generated " + std::to_string(n) + " particles (seed " + std::to_string(fill.seed) + ")");
+        return "one DEM simulation of the phases in Simulation/Phases (generate or load the bed, run, write output)";
       }
-      sim.setup();
-      flush_warnings(sim, ctx.log);
-      {
-        io::ScopedTimer  t(ctx.timers, "settle");
-        io::ProgressLine progress("settling", c.settle_max_time);
-        const double     t0 = sim.time();
-        sim.settle(c.settle_ke, c.settle_max_time, [&](const dem::Simulation &s) {
-          const double ke = s.kinetic_energy() / std::max<std::size_t>(1, s.n_particles());
-          progress.update(s.time() - t0, "kinetic energy " + fmt(ke, 3) + " J per particle");
-        });
-      }
-      const double ke = sim.kinetic_energy() / std::max<std::size_t>(1, sim.n_particles());
-      ctx.log.line("Settled for " + fmt(sim.time()) + " s: kinetic energy " + fmt(ke) + " J per particle, top at z = " +
-                   fmt(bed_top(sim), 4) + " m");
-      if (c.settle_ke > 0 && ke > c.settle_ke)
-        ctx.log.warning("the bed did not settle below " + fmt(c.settle_ke) +
-                        " J per particle within Particles/Settling/Maximum time");
-    }
-  } // namespace
-
-  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
-  {
-    if (dem::is_imported_bed(bed)) // another code's bed, as it is (read_dem_case checked it is there)
-      {
-        io::ScopedTimer t(ctx.timers, "import bed");
-        const auto      imported = dem::import_bed(sim, bed, c.fill.material);
-        sim.setup();
-        ctx.log.line("Imported the bed " + bed + " (" + imported.format +
-                     (imported.timestep >= 0 ? ", timestep " + std::to_string(imported.timestep) : std::string()) +
-                     "): " + std::to_string(sim.n_particles()) + " particles, top at z = " + fmt(bed_top(sim), 4) +
-                     " m");
-        return true;
-      }
-    if (bed.empty()) // no bed file: generated for this run alone
-      {
-        generate_and_settle(c, sim, ctx);
-        return false;
-      }
-    if (std::filesystem::path(bed).is_relative())
-      bed = ctx.output.shared_file(bed);
-    // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes; the
-    // reduction is also what makes the others wait for a bed rank 0 has just saved)
-    const auto saved = [&] {
-      const bool here = std::filesystem::exists(bed);
-      return sim.parallel().max(sim.parallel().rank() == 0 && here ? 1.0 : 0.0) > 0;
+      void run(JobContext &ctx) const override;
     };
-    const bool made = !saved();
-    if (made)
-      {
-        // The bed is made in a simulation of its own and the run goes on from the file, as a
-        // later run, a resumed one and every cycle of a lifetime run do: the settling leaves
-        // contact histories and wall states that the file does not hold (a lifetime run killed
-        // before its first update once resumed to a life of 1.4e7 t against 5.0e6 t
-        // uninterrupted: its first cycle had gone on from the settled simulation)
-        dem::Simulation settling(c.settings);
-        build_simulation(c, settling);
-        generate_and_settle(c, settling, ctx);
-        flush_warnings(settling, ctx.log);
-        dem::save_bed(settling, bed);
-        ctx.log.line("Saved the settled bed to " + bed);
-        if (!saved())
-          throw RunError("the settled bed " + bed + " was saved but is not there");
-      }
-    {
-      io::ScopedTimer t(ctx.timers, "load bed");
-      dem::load_bed(sim, bed);
-      check_bed_sizes(c, sim, bed);
-      sim.setup();
-    }
-    if (!made)
-      ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.n_particles()) + " particles, top at z = " +
-                   fmt(bed_top(sim), 4) + " m");
-    return !made;
-  }
+  } // namespace
 
-  void report_coarse_graining(const DemCase &c, JobContext &ctx)
-  {
-    for (const auto &n : c.notes)
-      ctx.log.line(n);
-    for (const auto &w : c.warnings)
-      ctx.log.warning(w);
-    if (c.coarse_graining == 1)
-      return;
-    const double r = c.fill.sizes.largest();
-    ctx.log.line("Coarse graining: the particles are " + fmt(c.coarse_graining) + " times the real ones (largest radius " +
-                 fmt(r) + " m for " + fmt(r / c.coarse_graining) + " m)");
-    io::Json &j             = ctx.results["coarse_graining"];
-    j["factor"]             = c.coarse_graining;
-    j["largest_radius"]     = r;
-    j["real_largest_radius"] = r / c.coarse_graining;
-  }
-
-  void run_dem_job(JobContext &ctx)
+  void DemJob::run(JobContext &ctx) const
   {
     DemCase c = read_dem_case(ctx.parameters);
     report_coarse_graining(c, ctx);
@@ -224,8 +59,8 @@ namespace abrade::coupling
     const bool loaded = prepare_bed(c, sim, ctx, c.bed_file);
     sim.set_time(0);
     flush_warnings(sim, ctx.log);
-    ctx.log.line("Particles: " + std::to_string(sim.n_particles()) + ", time step " + fmt(sim.dt()) +
-                 " s (" + fmt(sim.dt() / sim.rayleigh_time_step()) + " x Rayleigh)");
+    ctx.log.line("Particles: " + std::to_string(sim.n_particles()) + ", time step " + io::format_number(sim.dt()) +
+                 " s (" + io::format_number(sim.dt() / sim.rayleigh_time_step()) + " x Rayleigh)");
 
     // wear laws and contact-layer probes
     std::vector<dem::WallWearLaws> laws;
@@ -299,7 +134,7 @@ namespace abrade::coupling
             output.write_forces(s);
           if (snapshot_every && s.step_number() % snapshot_every == 0)
             output.write_snapshot(s);
-          progress.update(s.time(), name + "  t = " + fmt(s.time(), 3) + " s");
+          progress.update(s.time(), name + "  t = " + io::format_number(s.time(), 3) + " s");
         });
         if (!snapshot_every)
           output.write_snapshot(sim);
@@ -324,7 +159,7 @@ namespace abrade::coupling
             const double held = sim.mass_above(*c.payload_height);
             ph["mass_above_payload_height"] = held;
             payload_table->row(name, {held});
-            ctx.log.line("Phase " + name + ": " + fmt(held, 4) + " kg above the payload height");
+            ctx.log.line("Phase " + name + ": " + io::format_number(held, 4) + " kg above the payload height");
           }
         for (std::size_t w = 0; w < sim.n_walls(); ++w)
           {
@@ -336,10 +171,10 @@ namespace abrade::coupling
             wj["mean_torque"]    = std::vector<double>{torque[0], torque[1], torque[2]};
             wj["peak_torque"]    = peak_torque[w];
           }
-        ctx.log.line("Phase " + name + ": " + std::to_string(steps) + " steps, " + fmt(rate, 3) +
+        ctx.log.line("Phase " + name + ": " + std::to_string(steps) + " steps, " + io::format_number(rate, 3) +
                      " particle-steps/s" +
                      (mean_threads < sim.threads() - 0.05
-                        ? ", on " + fmt(mean_threads, 2) + " of " + std::to_string(sim.threads()) +
+                        ? ", on " + io::format_number(mean_threads, 2) + " of " + std::to_string(sim.threads()) +
                             " threads on average: the machine was busy and fewer threads were faster"
                         : std::string()));
       }
@@ -407,4 +242,6 @@ namespace abrade::coupling
     r["neighbour_rebuilds"] = stats.rebuilds;
     r["particle_steps_per_second"] = sim.throughput(stats0, stats);
   }
+
+  ABRADE_REGISTER_JOB(DemJob);
 } // namespace abrade::coupling

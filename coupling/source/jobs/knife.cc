@@ -139,7 +139,21 @@ namespace abrade::coupling
     }
   } // namespace
 
-  void run_knife_job(JobContext &ctx)
+  namespace
+  {
+    class KnifeJob : public Job
+    {
+    public:
+      std::string name() const override { return "knife"; }
+      std::string documentation() const override
+      {
+        return "build the knife's solid model (subsection Knife), check its mesh and write it (VTU, STL) with its volume and mass";
+      }
+      void run(JobContext &ctx) const override;
+    };
+  } // namespace
+
+  void KnifeJob::run(JobContext &ctx) const
   {
     const KnifeParameters     kp = read_knife_parameters(ctx.parameters);
     const fem::KnifeGeometry &k  = kp.geometry;
@@ -242,4 +256,6 @@ namespace abrade::coupling
       }
     write_case_scene(ctx, surface, faces, dir);
   }
+
+  ABRADE_REGISTER_JOB(KnifeJob);
 } // namespace abrade::coupling

@@ -5,13 +5,28 @@
 //
 //   abrade run cases/knife_bed/knife_bed.prm --set Job=bed --set "Particles/Settling/Bed file=$PWD/bed.bed"
 #include <abrade/common/error.h>
+#include <abrade/coupling/bed_preparation.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/parameters.h>
 
 namespace abrade::coupling
 {
-  void run_bed_job(JobContext &ctx)
+  namespace
+  {
+    class BedJob : public Job
+    {
+    public:
+      std::string name() const override { return "bed"; }
+      std::string documentation() const override
+      {
+        return "only generate and settle the bed and save it to Particles/Settling/Bed file (for studies whose runs start from one bed)";
+      }
+      void run(JobContext &ctx) const override;
+    };
+  } // namespace
+
+  void BedJob::run(JobContext &ctx) const
   {
     DemCase c = read_dem_case(ctx.parameters);
     report_coarse_graining(c, ctx);
@@ -25,4 +40,6 @@ namespace abrade::coupling
     ctx.results["bed_loaded"] = loaded;
     ctx.results["bed_file"]   = c.bed_file;
   }
+
+  ABRADE_REGISTER_JOB(BedJob);
 } // namespace abrade::coupling

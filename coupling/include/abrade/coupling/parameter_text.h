@@ -1,0 +1,51 @@
+#pragma once
+// The text of a parameter file as deal.II's ParameterHandler reads it, line by line: which
+// subsections a line is in and what it sets, for the reader's own messages (where a key is set)
+// and for leaving out the entries of a wall's replaced geometry or motion.
+#include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace abrade::coupling
+{
+  /// The lines of @p text.
+  std::vector<std::string> lines_of(const std::string &text);
+
+  /// What a line of a parameter file is. A line ending in '\' and the ones it continues into are
+  /// one (deal.II trims each line and joins it with the next): the first holds what they say,
+  /// and `last` is the last of them.
+  struct LineEntry
+  {
+    std::vector<std::string> path;  ///< the subsections it is in
+    std::string              key;   ///< the key it sets ("": none)
+    std::string              value; ///< the value it gives the key, comment removed
+    std::size_t              last = 0;
+  };
+
+  /// Every line of @p lines, as deal.II reads it ("set" and "SET", "subsection" and
+  /// "SUBSECTION", "end" and "END").
+  std::vector<LineEntry> entries_by_line(const std::vector<std::string> &lines);
+
+  /// Whether @p key = @p value (in subsection @p path) is an entry of another geometry or motion
+  /// than the wall's (@p lists) at that one's default: a no-op, left out.
+  bool is_foreign_default(const DeclarationLists &lists, const std::vector<std::string> &path, const std::string &key,
+                          const std::string &value);
+
+  /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
+  /// another geometry or motion than the wall's (@p lists), when they are
+  ///  - that geometry's or motion's defaults (a parameters.prm written by an earlier version,
+  ///    or `abrade params --format prm`, has every one's), silently, or
+  ///  - the entries of the geometry or motion chosen when they were set, which a later choice
+  ///    replaced (an included base case whose wall the including file, or a --set, made another
+  ///    geometry: cases/knife_bed/lifetime.prm turns knife_bed.prm's chisel knife into the solid
+  ///    model); each is named in a returned note.
+  /// Any other entry of another geometry or motion stays, for the strict reading to refuse.
+  /// @p origin: the file and line of each line of @p text (none: all of @p file).
+  std::vector<std::string> leave_out_replaced_entries(std::string &text,
+                                                      std::vector<std::pair<std::string, int>> origin,
+                                                      const std::string &file, const DeclarationLists &lists,
+                                                      const std::vector<Override> &overrides);
+} // namespace abrade::coupling

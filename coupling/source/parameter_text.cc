@@ -1,0 +1,166 @@
+// A parameter file's text line by line, and the entries of a wall's replaced geometry or motion
+// left out of it (parameter_text.h).
+#include <abrade/coupling/parameter_text.h>
+#include <abrade/coupling/walls/wall_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <map>
+#include <sstream>
+
+namespace abrade::coupling
+{
+  using dealii::Utilities::trim;
+
+  namespace
+  {
+    /// Whether @p line starts with keyword @p word in one of deal.II's spellings ("set",
+    /// "SET"), followed by a blank.
+    bool starts_with(const std::string &line, const std::string &word)
+    {
+      std::string upper = word;
+      for (auto &c : upper)
+        c = char(std::toupper(static_cast<unsigned char>(c)));
+      return line.rfind(word + " ", 0) == 0 || line.rfind(upper + " ", 0) == 0;
+    }
+  } // namespace
+
+  std::vector<std::string> lines_of(const std::string &text)
+  {
+    std::vector<std::string> lines;
+    std::istringstream       in(text);
+    for (std::string l; std::getline(in, l);)
+      lines.push_back(l);
+    return lines;
+  }
+
+  std::vector<LineEntry> entries_by_line(const std::vector<std::string> &lines)
+  {
+    std::vector<LineEntry>   entries(lines.size());
+    std::vector<std::string> path;
+    for (std::size_t n = 0; n < lines.size();)
+      {
+        std::string joined;
+        std::size_t last = n;
+        for (;; ++last)
+          {
+            std::string t    = trim(lines[last]);
+            const bool  more = !t.empty() && t.back() == '\\' && last + 1 < lines.size();
+            if (more)
+              t.pop_back();
+            joined += t;
+            if (!more)
+              break;
+          }
+        const std::string l = trim(joined.substr(0, joined.find('#')));
+        for (std::size_t k = n; k <= last; ++k)
+          entries[k].path = path, entries[k].last = last;
+        if (starts_with(l, "subsection"))
+          path.push_back(trim(l.substr(11)));
+        else if ((l == "end" || l == "END") && !path.empty())
+          path.pop_back();
+        else if (const auto eq = l.find('='); starts_with(l, "set") && eq != std::string::npos)
+          {
+            entries[n].key   = trim(l.substr(4, eq - 4));
+            entries[n].value = trim(l.substr(eq + 1));
+          }
+        n = last + 1;
+      }
+    return entries;
+  }
+
+  bool is_foreign_default(const DeclarationLists &lists, const std::vector<std::string> &path, const std::string &key,
+                          const std::string &value)
+  {
+    const auto entry  = plugin_entry(path, key);
+    const auto chosen = entry ? lists.wall_choices.find(path[0].substr(5)) : lists.wall_choices.end();
+    if (chosen == lists.wall_choices.end())
+      return false;
+    const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
+    if (entry->defaults.count(ours))
+      return false;
+    for (const auto &[plugin, default_value] : entry->defaults)
+      if (same_value(value, default_value))
+        return true;
+    return false;
+  }
+
+  std::vector<std::string> leave_out_replaced_entries(std::string &text, std::vector<std::pair<std::string, int>> origin,
+                                                      const std::string &file, const DeclarationLists &lists,
+                                                      const std::vector<Override> &overrides)
+  {
+    std::vector<std::string> lines   = lines_of(text);
+    const auto               entries = entries_by_line(lines);
+    for (std::size_t n = origin.size(); n < lines.size(); ++n) // (no file: the embedded default case)
+      origin.emplace_back(file, int(n + 1));
+    const auto where = [&](std::size_t n) { return origin[n].first + ":" + std::to_string(origin[n].second); };
+    /// "Geometry" or "Motion/Type" of the wall of subsection path, when key is that choice
+    const auto choice_in = [](const std::vector<std::string> &path, const std::string &key) -> std::string {
+      if (path.size() == 1 && path[0].rfind("Wall ", 0) == 0 && key == "Geometry")
+        return "Geometry";
+      if (path.size() == 2 && path[0].rfind("Wall ", 0) == 0 && path[1] == "Motion" && key == "Type")
+        return "Motion/Type";
+      return "";
+    };
+    // where each wall's final choice was made (the last line that made it, or a --set)
+    std::map<std::pair<std::string, std::string>, std::string> final_choice;
+    for (std::size_t n = 0; n < lines.size(); ++n)
+      if (const auto family = choice_in(entries[n].path, entries[n].key); !family.empty())
+        final_choice[{entries[n].path[0], family}] = where(n);
+    for (const auto &o : overrides)
+      if (const auto family = choice_in(o.path, o.key); !family.empty())
+        final_choice[{o.path[0], family}] = "--set '" + o.text + "'";
+
+    // the choice in effect at each line, from the wall's default on
+    std::map<std::pair<std::string, std::string>, std::string> current;
+    const auto choice_at = [&](const std::string &wall, const std::string &family) -> std::string & {
+      const auto it = current.find({wall, family});
+      if (it != current.end())
+        return it->second;
+      const WallChoices d = default_wall_choices(wall.substr(5));
+      return current[{wall, family}] = family == "Geometry" ? d.geometry : d.motion;
+    };
+    // per wall, choice replaced and by what: "KEY (file:line)"
+    std::map<std::vector<std::string>, std::vector<std::string>> left_out;
+    for (std::size_t n = 0; n < lines.size(); ++n)
+      {
+        const LineEntry &e = entries[n];
+        if (e.key.empty() || e.path.empty())
+          continue;
+        if (const auto family = choice_in(e.path, e.key); !family.empty())
+          {
+            choice_at(e.path[0], family) = e.value;
+            continue;
+          }
+        const auto entry  = plugin_entry(e.path, e.key);
+        const auto chosen = lists.wall_choices.find(e.path[0].substr(5));
+        if (!entry || chosen == lists.wall_choices.end())
+          continue;
+        const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
+        if (entry->defaults.count(ours))
+          continue; // (its own)
+        const std::string then       = choice_at(e.path[0], entry->family);
+        const bool        is_default = is_foreign_default(lists, e.path, e.key, e.value);
+        if (!is_default && !entry->defaults.count(then))
+          continue; // (another's entry, not replaced: the strict reading refuses it)
+        if (!is_default)
+          left_out[{e.path[0], entry->family, then, ours, final_choice[{e.path[0], entry->family}]}].push_back(
+            e.key + " (" + where(n) + ")");
+        for (std::size_t k = n; k <= e.last; ++k)
+          lines[k].clear();
+      }
+    text.clear();
+    for (const auto &l : lines)
+      text += l + "\n";
+    std::vector<std::string> notes;
+    for (const auto &[choice, keys] : left_out)
+      {
+        std::string list;
+        for (const auto &k : keys)
+          list += (list.empty() ? "" : ", ") + k;
+        notes.push_back(choice[0] + ": left out, as entries of " + choice[1] + " = " + choice[2] + ", which " +
+                        choice[4] + " replaced by " + choice[3] + ": " + list);
+      }
+    return notes;
+  }
+} // namespace abrade::coupling
