@@ -31,7 +31,7 @@ subsection Simulation
   # and jammed pairs reach 35 % in a bed in ten: the limit is a check of the time step, which
   # the tenth makes safe (at 0.2 the pellet that left the box passed 40 % first)
   set Maximum overlap fraction = 0.5
-  # a pair jammed under the knife past it (50.02 % in one of 12 beds at update 5, session 20)
+  # a pair jammed under the knife past it (50.02 % in one of 12 beds at one update of this case)
   # is a warning, logged and counted per update in trajectory.csv, not the end of the run: the
   # main job's first run must not stop on one pellet
   set On error = continue

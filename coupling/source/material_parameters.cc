@@ -33,7 +33,7 @@ namespace abrade::coupling
     if (rotation_option)
       prm.declare_entry("Rotation", "false", Bool(),
                         "Whether particles rotate. false caps the angular velocity at 0 rad/s, "
-                        "as the seed's iron-ore pellet model does (a stand-in for non-spherical "
+                        "as the thesis' iron-ore pellet model does (a stand-in for non-spherical "
                         "shape).");
     prm.leave_subsection();
   }

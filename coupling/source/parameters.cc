@@ -395,7 +395,7 @@ namespace abrade::coupling
                       "[Minimum radius, Maximum radius].");
     prm.declare_entry("Radius", "0.0275", Double(1e-9, huge),
                       "[m] Particle radius (constant), or the mean of the normal distribution. "
-                      "The seed's coarse-grained pellets: 0.0275. Range: > 0.");
+                      "The thesis' coarse-grained pellets (docs/physics.md): 0.0275. Range: > 0.");
     prm.declare_entry("Minimum radius", "0", Double(0, huge), "[m] Smallest radius (uniform, normal). Range: >= 0.");
     prm.declare_entry("Maximum radius", "0", Double(0, huge), "[m] Largest radius (uniform, normal). Range: >= 0.");
     prm.declare_entry("Standard deviation", "0", Double(0, huge), "[m] Of the normal distribution. Range: >= 0.");

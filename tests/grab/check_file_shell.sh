@@ -28,7 +28,7 @@ print(f"{len(a)} knife triangles, largest vertex difference {worst:.2e} m")
 sys.exit(0 if worst < 1e-6 else 1)
 PY
 # a lip on anything but a file is refused, as is a knife mounted on a wall without a lip
-bash "$(dirname "$0")/../expect_error.sh" 2 "Lip centre: only a wall with Geometry = file" -- \
+bash "$(dirname "$0")/../expect_error.sh" 2 "'Lip centre' is an entry of Geometry = file, and wall right's Geometry is clamshell shell" -- \
   "$abrade" export-walls "$prm" --output "$out/bad" --set "Wall right/Lip centre=0, 0, 0"
 bash "$(dirname "$0")/../expect_error.sh" 2 "is not a wall with a lip" -- \
   "$abrade" export-walls "$prm" --output "$out/bad" --set "Wall right/Geometry=file" \

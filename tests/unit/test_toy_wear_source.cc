@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 
 namespace
 {
@@ -82,4 +84,25 @@ TEST(ToyWearSource, DrivesALifeToTheAnalyticCrossing)
   const std::string summary = results.dump();
   EXPECT_NE(summary.find("\"wear_source\": \"toy\""), std::string::npos) << summary;
   EXPECT_NEAR(results["lifetime"]["predicted_tonnes_to_end_of_life"].number(), 1500.0, 1.5) << summary;
+}
+
+// the outputs that hold the wear field's volume are named after the field (Output/Wear field):
+// an Oka run's trajectory and summary say oka_volume, and none says archard
+TEST(ToyWearSource, NamesItsOutputsAfterTheWearField)
+{
+  std::string            dir;
+  const abrade::io::Json results =
+    run_analytic_lifetime("abrade_toy_wear_field",
+                          {"Lifetime/Wear source=toy", "Lifetime/Toy rate=2e-6", "Lifetime/Maximum depth=0.003",
+                           "Lifetime/Maximum updates=1", "Output/Wear field=oka_volume"},
+                          &dir);
+  const std::string summary = results.dump();
+  EXPECT_NE(summary.find("\"oka_volume\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"worn_over_oka\""), std::string::npos) << summary;
+  std::ifstream trajectory(dir + "/trajectory.csv");
+  std::string   header;
+  std::getline(trajectory, header);
+  EXPECT_NE(header.find(",oka_volume,swept_over_oka,"), std::string::npos) << header;
+  EXPECT_EQ(header.find("archard"), std::string::npos) << header;
+  EXPECT_EQ(summary.find("archard"), std::string::npos) << summary;
 }

@@ -39,8 +39,9 @@ namespace abrade::coupling::lifetime
     /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum; 3 the
     /// updates' records of every criterion (beds, relative variance) and the beds of the next;
     /// 4 the beds' deviations at every criterion's places (place_scatter.h); 6 every
-    /// criterion's entries named after the criterion (end_of_life_criterion.h), not numbered.
-    const std::string state_format = "abrade lifetime state 6";
+    /// criterion's entries named after the criterion (end_of_life_criterion.h), not numbered; 7
+    /// the wear so far as wear_total (of whichever Wear field).
+    const std::string state_format = "abrade lifetime state 7";
 
     /// A criterion's entries in the state file: "history_" + this ("maximum_depth").
     std::string state_key(const EndOfLifeCriterion &c)
@@ -213,12 +214,13 @@ namespace abrade::coupling::lifetime
     place_factor.assign(n_criteria, 1.0);
     beds_now          = long(s.seeds.size());
 
+    field_columns = WearFieldColumns(dem_case.wear_field);
     std::vector<std::string> columns = {"update", "cycles", "tonnes", "max_depth", "mean_depth",
-                                        "max_vertex_displacement", "worn_volume", "worn_mass", "archard_volume",
-                                        "swept_over_archard", "min_scaled_jacobian", "remeshed", "point_recession",
+                                        "max_vertex_displacement", "worn_volume", "worn_mass", field_columns.volume,
+                                        field_columns.swept_over, "min_scaled_jacobian", "remeshed", "point_recession",
                                         "wear_rate_spread"};
     for (const auto &phase : source->phases())
-      columns.push_back("archard_volume_" + phase); // this update's wear per phase of the cycle
+      columns.push_back(field_columns.volume + "_" + phase); // this update's wear per phase of the cycle
     for (std::size_t p = 1; p < s.recession_points.size(); ++p)
       columns.push_back("point_recession_" + std::to_string(p + 1));
     columns.insert(columns.end(), {"tonnes_per_cycle", "deepest_x", "deepest_y", "deepest_z", "dem_warnings", "beds",
@@ -347,7 +349,7 @@ namespace abrade::coupling::lifetime
     update        = done;
     cycles        = long(state.number("cycles"));
     tonnes        = state.number("tonnes");
-    archard_total = state.number("archard_total");
+    wear_total = state.number("wear_total");
     s.smoothing   = state.number("smoothing_radius");
     volume0       = state.number("design_volume");
     deepest       = state.numbers("deepest_point");
@@ -655,7 +657,7 @@ namespace abrade::coupling::lifetime
             // does not: the surface is built anew as a set only from the third attempt on
             // a source of volumes (the DEM's): the knife loses exactly the volume worn
             st.result = knife->apply_wear(depth(n), attempt >= 2 || n == 1,
-                                          source->removes_volume() ? n * rates.archard_volume : 0.0);
+                                          source->removes_volume() ? n * rates.wear_volume : 0.0);
           }
         catch (const std::exception &e)
           {
@@ -910,7 +912,7 @@ namespace abrade::coupling::lifetime
     const long n = st.cycles;
     cycles += n;
     tonnes += n * wear.tonnes_per_cycle;
-    archard_total += n * rates.archard_volume;
+    wear_total += n * rates.wear_volume;
 
     const fem::SolidSurface &surface = knife->surface();
     const auto               depth   = knife->wear_depth();
@@ -948,8 +950,8 @@ namespace abrade::coupling::lifetime
       {"max_vertex_displacement", *std::max_element(travel.begin(), travel.end())},
       {"worn_volume", worn},
       {"worn_mass", worn * knife_parameters.density},
-      {"archard_volume", n * rates.archard_volume},
-      {"swept_over_archard", swept / (n * rates.archard_volume)},
+      {field_columns.volume, n * rates.wear_volume},
+      {field_columns.swept_over, swept / (n * rates.wear_volume)},
       {"min_scaled_jacobian", st.result.quality.min_scaled_jacobian},
       {"remeshed", st.result.remeshed ? 1.0 : 0.0},
       {"wear_rate_spread", spread},
@@ -965,7 +967,7 @@ namespace abrade::coupling::lifetime
       {"plate_thickness_x", sections.x[g.thinnest_station]}};
     const auto &phases = source->phases();
     for (std::size_t k = 0; k < wear.phase_volume.size(); ++k) // (a count that differs: CsvWriter says which)
-      row.push_back({"archard_volume_" + (k < phases.size() ? phases[k] : std::to_string(k)), n * wear.phase_volume[k]});
+      row.push_back({field_columns.volume + "_" + (k < phases.size() ? phases[k] : std::to_string(k)), n * wear.phase_volume[k]});
     const auto point_depth = knife->wear_depth_below(s.recession_points);
     for (std::size_t p = 0; p < recession.size(); ++p)
       {
@@ -984,7 +986,7 @@ namespace abrade::coupling::lifetime
     std::ostringstream line;
     line << "update " << update << ": " << n << " cycles (" << tonnes << " t), wear depth " << dmax
          << " m (largest vertex displacement " << *std::max_element(travel.begin(), travel.end())
-         << " m), swept/Archard volume " << swept / (n * rates.archard_volume) << (st.result.remeshed ? ", remeshed" : "");
+         << " m), swept/" << field_columns.volume << " " << swept / (n * rates.wear_volume) << (st.result.remeshed ? ", remeshed" : "");
     // the depth scaled so that the offset surface removes the volume worn
     if (st.result.offset_scale != 1)
       line << " (the depth x " << io::format_number(st.result.offset_scale) << " to remove the volume worn)";
@@ -992,14 +994,14 @@ namespace abrade::coupling::lifetime
     // of a remesh before the step, taken off the step's volume; of one after it, not
     const double taken_off = st.result.remesh_volume_taken_off;
     if (taken_off != 0)
-      line << " (a remesh before the step took " << io::format_number(-taken_off / (n * rates.archard_volume))
+      line << " (a remesh before the step took " << io::format_number(-taken_off / (n * rates.wear_volume))
            << " of it, the step the rest)";
     if (const double after = st.result.remesh_volume_change - taken_off; after != 0)
-      line << " (the remesh's own share " << io::format_number(-after / (n * rates.archard_volume)) << ")";
+      line << " (the remesh's own share " << io::format_number(-after / (n * rates.wear_volume)) << ")";
     ctx.log.line(line.str());
     // a source of volumes: every update removes the volume worn, remeshed or not (within 2 %)
-    if (const double ratio = swept / (n * rates.archard_volume);
-        source->removes_volume() && rates.archard_volume > 0 && std::abs(ratio - 1) > 0.02)
+    if (const double ratio = swept / (n * rates.wear_volume);
+        source->removes_volume() && rates.wear_volume > 0 && std::abs(ratio - 1) > 0.02)
       {
         ++updates_off_volume;
         ctx.log.warning("update " + std::to_string(update) + ": the knife lost " + io::format_number(ratio) +
@@ -1022,7 +1024,7 @@ namespace abrade::coupling::lifetime
     state.set("update", double(update));
     state.set("cycles", double(cycles));
     state.set("tonnes", tonnes);
-    state.set("archard_total", archard_total);
+    state.set("wear_total", wear_total);
     state.set("smoothing_radius", s.smoothing);
     state.set("design_volume", volume0);
     state.set("deepest_point", deepest);
@@ -1165,8 +1167,8 @@ namespace abrade::coupling::lifetime
     r["max_vertex_displacement"] = travel.empty() ? 0.0 : *std::max_element(travel.begin(), travel.end());
     r["worn_volume"]   = volume0 - knife->volume();
     r["worn_mass"]     = (volume0 - knife->volume()) * knife_parameters.density;
-    r["archard_volume"] = archard_total;
-    r["worn_over_archard"] = archard_total > 0 ? (volume0 - knife->volume()) / archard_total : 0.0;
+    r[field_columns.volume]    = wear_total; // (named after the Wear field: archard_volume)
+    r[field_columns.worn_over] = wear_total > 0 ? (volume0 - knife->volume()) / wear_total : 0.0;
     r["remeshes"]      = static_cast<long>(knife->n_remeshes());
     r["dem_warnings"]  = dem_warnings_total; // overlaps, lost particles, time step (this run; per update: trajectory.csv)
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it

@@ -80,7 +80,7 @@ namespace abrade::coupling::lifetime
         const double slope = c.footprint_slope_assumed ? fnumber("dlnw_dlnr") : fnumber("dlnlife_dlnr");
         c.footprint = true, c.smoothing_radius = r, c.coefficient = w;
         // W's error given the footprint: the fit's at the fitted footprint (calibration.json
-        // written before session 27 has the best-ranked run's only)
+        // of an earlier version has the best-ranked run's only)
         if (const auto sd_log_w = fp->get_optional<double>("log_wear_coefficient_standard_error"))
           {
             const double w_dof = fp->get<double>("wear_coefficient_degrees_of_freedom", c.dof);

@@ -24,7 +24,7 @@ namespace abrade::coupling::lifetime
           }
         r.seed.push_back(std::move(depth));
         r.seed_volume.push_back(std::accumulate(volume.begin(), volume.end(), 0.0)); // the source's volume
-        r.archard_volume += r.seed_volume.back() / wear.seed_volume.size();
+        r.wear_volume += r.seed_volume.back() / wear.seed_volume.size();
       }
     r.largest = r.mean.empty() ? 0.0 : *std::max_element(r.mean.begin(), r.mean.end());
     return r;

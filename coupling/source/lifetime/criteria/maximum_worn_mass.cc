@@ -32,7 +32,7 @@ namespace abrade::coupling::lifetime
       }
       double projected(const PartNow &now, const BedRates &beds, double before) const override
       {
-        return before + beds.cycles * beds.rates->archard_volume * now.density;
+        return before + beds.cycles * beds.rates->wear_volume * now.density;
       }
       std::vector<double> where(const PartNow &, const std::vector<double> &, bool) const override { return {}; }
       std::string whole_part_note() const override { return "the whole part's worn mass ends the life; "; }

@@ -11,7 +11,7 @@ namespace abrade::dem
     double      youngs_modulus = 0; ///< E [Pa]
     double      poisson_ratio  = 0; ///< nu [-]
     double      density        = 0; ///< rho [kg/m^3]
-    /// false: angular velocity is capped at 0 (the seed's non-rotating pellets).
+    /// false: angular velocity is capped at 0 (the thesis' non-rotating pellets: docs/physics.md).
     bool rotation = true;
 
     double shear_modulus() const { return youngs_modulus / (2 * (1 + poisson_ratio)); }

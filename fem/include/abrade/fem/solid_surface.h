@@ -121,7 +121,7 @@ namespace abrade::fem
   /// @p worn_id. Exact however often the part is remeshed: an unworn face keeps its design id (a
   /// clamped face, also where its rim moved within its plane; a curved one too, whose faces'
   /// centres lie off it by their sagitta), a worn one wears. (The nearest face of the surface
-  /// before the update, which the remeshes used until session 19, is a clamped face for a worn
+  /// before the update, which earlier remeshes used, is a clamped face for a worn
   /// face's centre nearer the rim than the wear is deep.) Returns the number of faces that keep
   /// an id other than @p worn_id.
   std::size_t set_ids_from_design(dealii::Triangulation<3> &tria, const SolidSurface &design, double tolerance,

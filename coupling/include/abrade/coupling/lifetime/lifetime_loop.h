@@ -30,6 +30,7 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/lifetime/edge_gauge.h>
+#include <abrade/coupling/lifetime/wear_field_columns.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
 #include <abrade/coupling/lifetime/end_of_life_criterion.h>
 #include <abrade/coupling/lifetime/life_interval.h>
@@ -166,11 +167,13 @@ namespace abrade::coupling::lifetime
     io::CsvWriter                         trajectory;
     std::string                           hash;
 
+    WearFieldColumns             field_columns; ///< the Wear field's outputs' names (trajectory.csv, summary.json)
+
     // the loop's state (all of it is in the checkpoint)
     long                         update = 0; ///< the update being made (the last one done, after it)
     long                         cycles = 0;
     double                       tonnes = 0;
-    double                       archard_total = 0;
+    double                       wear_total = 0; ///< the Wear field's volume so far [m^3]
     double                       volume0 = 0;
     /// every registered end-of-life criterion (end_of_life_criterion.h) and their limits
     std::vector<std::unique_ptr<EndOfLifeCriterion>> criteria;

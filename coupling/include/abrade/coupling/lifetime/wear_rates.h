@@ -15,7 +15,7 @@ namespace abrade::coupling::lifetime
     std::vector<std::vector<double>> seed;  ///< per seed: wear depth per cycle at each vertex [m]
     std::vector<double>              mean;  ///< the seeds' mean
     double                           largest = 0;        ///< of the mean
-    double                           archard_volume = 0; ///< per cycle, the seeds' mean [m^3]
+    double                           wear_volume = 0; ///< per cycle, the seeds' mean [m^3] (Output/Wear field)
     std::vector<double>              seed_volume;        ///< per cycle and seed [m^3]
   };
 

@@ -47,7 +47,7 @@ namespace abrade::coupling::lifetime
     /// The wear of one cycle on the knife's current @p surface (its vertex order), after
     /// @p tonnes handled so far, on one bed per seed of @p bed_seeds.
     virtual CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) = 0;
-    /// The phases of the cycle (trajectory columns archard_volume_<phase>).
+    /// The phases of the cycle (trajectory columns FIELD_<phase>: archard_volume_penetration).
     virtual std::vector<std::string> phases() const = 0;
     /// The coefficient the wear scales with (the knife's law of Output/Wear field: Archard's W;
     /// 0: none, or not the DEM's).
