@@ -63,6 +63,7 @@ namespace abrade::coupling
       return scene;
     DemCase c = read_dem_case(file);
     scene.present = true;
+    scene.notes  = c.notes; // (what the reading left out)
     for (int d = 0; d < 3; ++d)
       {
         scene.domain[d] = c.settings.domain_min[d], scene.domain[3 + d] = c.settings.domain_max[d];

@@ -84,7 +84,9 @@ namespace abrade::coupling
             throw InputError(file + ":" + std::to_string(n), "a line of " + std::to_string(line.size()) +
                                                                " characters, more than " +
                                                                std::to_string(max_line_length));
-          const std::string t = dealii::Utilities::trim(line.substr(0, line.find('#')));
+          std::string t = line.substr(0, line.find('#'));
+          std::replace(t.begin(), t.end(), '\t', ' '); // (deal.II reads a tab as a blank)
+          t = dealii::Utilities::trim(t);
           if (t.rfind("include ", 0) == 0 || t.rfind("INCLUDE ", 0) == 0)
             {
               std::filesystem::path included(dealii::Utilities::trim(t.substr(8)));
@@ -321,7 +323,9 @@ namespace abrade::coupling
     std::istringstream    in(text);
     for (std::string line; std::getline(in, line);)
       {
-        const std::string t = dealii::Utilities::trim(line.substr(0, line.find('#')));
+        std::string t = line.substr(0, line.find('#'));
+        std::replace(t.begin(), t.end(), '\t', ' '); // (deal.II reads a tab as a blank)
+        t = dealii::Utilities::trim(t);
         if (t.rfind("subsection ", 0) == 0 || t.rfind("SUBSECTION ", 0) == 0)
           sections.insert(dealii::Utilities::trim(t.substr(11)));
       }

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -44,7 +45,9 @@ namespace abrade::coupling
         std::size_t last = n;
         for (;; ++last)
           {
-            std::string t    = trim(lines[last]);
+            std::string t = lines[last];
+            std::replace(t.begin(), t.end(), '\t', ' '); // (deal.II reads a tab as a blank)
+            t               = trim(t);
             const bool  more = !t.empty() && t.back() == '\\' && last + 1 < lines.size();
             if (more)
               t.pop_back();
@@ -111,6 +114,21 @@ namespace abrade::coupling
       if (const auto family = choice_in(o.path, o.key); !family.empty())
         final_choice[{o.path[0], family}] = "--set '" + o.text + "'";
 
+    // the choice each block of a wall's subsection makes (its last; the block: from one
+    // 'subsection Wall NAME' to its 'end', keyed by its first line), in effect for the whole
+    // block: a file written in alphabetical order (parameters.prm) sets Box min before Geometry
+    std::vector<std::size_t>                                   block(lines.size(), 0);
+    std::map<std::pair<std::size_t, std::string>, std::string> block_choice;
+    for (std::size_t n = 0; n < lines.size(); ++n)
+      {
+        const auto &p = entries[n].path;
+        if (p.empty())
+          continue;
+        block[n] = n > 0 && !entries[n - 1].path.empty() && entries[n - 1].path[0] == p[0] ? block[n - 1] : n;
+        if (const auto family = choice_in(p, entries[n].key); !family.empty())
+          block_choice[{block[n], family}] = entries[n].value;
+      }
+
     // the choice in effect at each line, from the wall's default on
     std::map<std::pair<std::string, std::string>, std::string> current;
     const auto choice_at = [&](const std::string &wall, const std::string &family) -> std::string & {
@@ -139,7 +157,8 @@ namespace abrade::coupling
         const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
         if (entry->defaults.count(ours))
           continue; // (its own)
-        const std::string then       = choice_at(e.path[0], entry->family);
+        const auto        in_block   = block_choice.find({block[n], entry->family});
+        const std::string then       = in_block != block_choice.end() ? in_block->second : choice_at(e.path[0], entry->family);
         const bool        is_default = is_foreign_default(lists, e.path, e.key, e.value);
         if (!is_default && !entry->defaults.count(then))
           continue; // (another's entry, not replaced: the strict reading refuses it)

@@ -665,7 +665,6 @@ namespace abrade::coupling
           gp << "set output 'layer_velocity.png'\nset ylabel 'contact-layer velocity along the axis [m/s]'\nplot ";
           per_combo("layer.dat", "1:2");
         }
-        io::run_gnuplot(root + "/plots", "plots.gp", o.quiet);
       }
 
       /// The last snapshot of the wall of every run: the final wear state.

@@ -214,6 +214,17 @@ TEST(ToyWallGeometry, LeavesOutWhatDealIIReadsAsOneEntry)
     << params.notes()[0];
   EXPECT_EQ(wall_named(read_dem_case(params), "w").wall.mesh.n_triangles(), 10u); // (the box)
 
+  // in the order a parameters.prm is written (Bevel height before Geometry), with a tab after
+  // set: the block's own choice holds for the whole block
+  const std::string sorted = write(dir / "sorted.prm", "set Walls = w\n"
+                                                       "subsection Wall w\n"
+                                                       "  set\tBevel height = 0.05\n"
+                                                       "  set Geometry = chisel knife\n"
+                                                       "end\n");
+  ParameterFile replaced(sorted, {"Wall w/Geometry=tetrahedron"});
+  ASSERT_EQ(replaced.notes().size(), 1u);
+  EXPECT_NE(replaced.notes()[0].find("Bevel height (" + sorted + ":3)"), std::string::npos) << replaced.notes()[0];
+
   write(dir / "mistake.prm", "set Walls = w\n"
                              "subsection Wall w\n"
                              "  set Geometry = plate\n"

@@ -983,6 +983,14 @@ namespace abrade::coupling::lifetime
     char stl[64];
     std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
     io::write_stl(ctx.output.file(stl), surface.as_polydata());
+    log_update(rates, st, dmax, swept);
+  }
+  /// The update's line in the log, with the remesh's share of the swept volume, and a warning
+  /// when the knife did not lose the volume worn.
+  void LifetimeLoop::log_update(const Rates &rates, const Step &st, double dmax, double swept)
+  {
+    const long  n      = st.cycles;
+    const auto &travel = knife->vertex_displacement();
     std::ostringstream line;
     line << "update " << update << ": " << n << " cycles (" << tonnes << " t), wear depth " << dmax
          << " m (largest vertex displacement " << *std::max_element(travel.begin(), travel.end())
@@ -1012,6 +1020,7 @@ namespace abrade::coupling::lifetime
                         "); the worn mass at the end counts the volume lost");
       }
   }
+
 
   // 6. Checkpoint: the knife and the loop's state, written aside and then renamed, so that a
   //    kill never leaves half of one (lifetime_checkpoints.h).
@@ -1152,14 +1161,18 @@ namespace abrade::coupling::lifetime
   /// the warnings.
   void LifetimeLoop::write_results(const FinalLife &f)
   {
-    const EndOfLife    &e = f.e;
-    const LifeInterval &li = f.li;
-    const std::string &criterion = f.criterion, &method = f.method;
-    const std::vector<double> &where = f.where;
-    const std::vector<UpdateRecord> *interval_records = f.interval_records;
+    io::Json &r = ctx.results["lifetime"];
+    write_totals(r);
+    write_life(r, f);
+    write_interval(r, f.li);
+    write_warnings(r, f.li);
+  }
+
+  /// What the run did: cycles, tonnes, the wear, the remeshes, where its wear came from.
+  void LifetimeLoop::write_totals(io::Json &r) const
+  {
     const auto  &depth = knife->wear_depth();
     const auto  &travel = knife->vertex_displacement();
-    io::Json    &r     = ctx.results["lifetime"];
     r["end"]           = end;
     r["cycles"]        = cycles;
     r["tonnes"]        = tonnes;
@@ -1188,11 +1201,18 @@ namespace abrade::coupling::lifetime
         if (dem_case.wear_field == "archard_volume")
           r["archard_coefficient"] = source->wear_coefficient();
       }
+  }
+
+  /// The end of life: when, by which criterion, where; the beds behind it.
+  void LifetimeLoop::write_life(io::Json &r, const FinalLife &f)
+  {
+    const EndOfLife    &e = f.e;
+    const LifeInterval &li = f.li;
     if (e.criterion != EndOfLife::none)
       r["predicted_tonnes_to_end_of_life"] = e.tonnes;
-    r["end_of_life_criterion"]           = criterion;
-    r["end_of_life_method"]              = method;
-    r["end_of_life_where"]               = where;
+    r["end_of_life_criterion"]           = f.criterion;
+    r["end_of_life_method"]              = f.method;
+    r["end_of_life_where"]               = f.where;
     r["extrapolated"]                    = e.extrapolated;
     r["seeds"]                           = static_cast<long>(s.seeds.size());
     std::vector<double> beds_per_update;
@@ -1217,8 +1237,8 @@ namespace abrade::coupling::lifetime
     r["confidence"] = li.confidence;
     // every update's beds at the place that ends life and the life's elasticity to each update:
     // `abrade concepts` pairs two runs' lives on them (paired_life.h)
-    if (interval_records && li.life.tonnes > 0)
-      write_life_beds(ctx.output.file("life_beds.csv"), life_beds(*interval_records, li));
+    if (f.interval_records && li.life.tonnes > 0)
+      write_life_beds(ctx.output.file("life_beds.csv"), life_beds(*f.interval_records, li));
     else
       std::filesystem::remove(ctx.output.file("life_beds.csv")); // (none: no older one left standing)
     if (li.dof >= 1 && li.life.tonnes > 0)
@@ -1227,6 +1247,11 @@ namespace abrade::coupling::lifetime
         r["predicted_tonnes_high"] = li.high;
         r["relative_half_width"]   = li.relative_half_width;
       }
+  }
+
+  /// The life's 95 % interval, its components, the calibration it holds, the target.
+  void LifetimeLoop::write_interval(io::Json &r, const LifeInterval &li)
+  {
     io::Json &iv                = r["interval"];
     iv["method"]                = "the life from the whole trajectory (crossing, or a power law past the last update); "
                                   "its variance from every update's beds, carried by the gradient, interval on ln L "
@@ -1266,6 +1291,11 @@ namespace abrade::coupling::lifetime
                                     " %) is the larger, and beds do not narrow it: a better calibration does"
                                 : std::string("a larger Maximum beds narrows it")));
       }
+  }
+
+  /// The run's warnings, into summary.json (and the interval's and the DEM's onto the terminal).
+  void LifetimeLoop::write_warnings(io::Json &r, const LifeInterval &li)
+  {
     if (li.dof < 1)
       warnings.push_back("one bed per update: the predicted life has no interval; set Lifetime/Seeds = 1, 2, 3 (three "
                          "or more beds) or a Lifetime/Target interval");
@@ -1281,6 +1311,7 @@ namespace abrade::coupling::lifetime
                       " DEM warning(s) in this run's cycles (Simulation/On error = continue): the life rests on "
                       "cycles the DEM flagged; log.txt names each kind, trajectory.csv counts them per update");
   }
+
 
   /// trajectory.png and the cross-sections, the one through where the life ended with the
   /// quantity that ended it drawn.

@@ -38,8 +38,8 @@ namespace abrade::coupling
   /// another geometry or motion than the wall's (@p lists), when they are
   ///  - that geometry's or motion's defaults (a parameters.prm written by an earlier version,
   ///    or `abrade params --format prm`, has every one's), silently, or
-  ///  - the entries of the geometry or motion chosen when they were set, which a later choice
-  ///    replaced (an included base case whose wall the including file, or a --set, made another
+  ///  - the entries of the geometry or motion chosen when they were set (by the same block of
+  ///    the wall's subsection, or before it), which a later choice replaced (an included base case whose wall the including file, or a --set, made another
   ///    geometry: cases/knife_bed/lifetime.prm turns knife_bed.prm's chisel knife into the solid
   ///    model); each is named in a returned note.
   /// Any other entry of another geometry or motion stays, for the strict reading to refuse.

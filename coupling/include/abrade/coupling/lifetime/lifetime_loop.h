@@ -101,6 +101,7 @@ namespace abrade::coupling::lifetime
     long      choose_cycles(const Rates &rates) const;
     Step      move_knife(const Rates &rates, long cycles);
     void      record(const CycleWear &wear, const Rates &rates, const Step &step);
+    void      log_update(const Rates &rates, const Step &step, double deepest_depth, double swept);
     void      checkpoint();
     bool      stop_here();
     void      finish();
@@ -117,6 +118,10 @@ namespace abrade::coupling::lifetime
     };
     FinalLife final_life();
     void      write_results(const FinalLife &f);
+    void      write_totals(io::Json &results) const;
+    void      write_life(io::Json &results, const FinalLife &f);
+    void      write_interval(io::Json &results, const LifeInterval &li);
+    void      write_warnings(io::Json &results, const LifeInterval &li);
     void      plot(const FinalLife &f);
     void      conclude(const FinalLife &f);
 
