@@ -6,6 +6,7 @@
 #include <abrade/common/error.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/generation.h>
+#include <abrade/dem/thread_governor.h>
 
 #include <gtest/gtest.h>
 
@@ -149,6 +150,26 @@ TEST(Engine, TheSameBitsWithAnyNumberOfThreadsWorking)
   EXPECT_GT(impulse, 1.0); // the walls were hit
   EXPECT_TRUE(one == three) << "one thread working on three shares differs from three threads";
   EXPECT_TRUE(two == three) << "two threads working on three shares differ from three threads";
+}
+
+TEST(Engine, ASimulationGoesOnWithTheGovernorOfTheOneBefore)
+{
+  // a lifetime run's cycles are short simulations, one after another: the next goes on with
+  // the team the one before kept (Settings::governor), not with every thread again
+  Settings s = quiet_settings(5e-5, true);
+  s.threads  = 3;
+  Simulation first(s);
+  first.thread_governor()->record_step(0); // (a governor that has measured something)
+  first.pin_thread_team(1);                // what a busy machine would have taught it
+  s.governor = first.thread_governor();
+  Simulation next(s);
+  EXPECT_EQ(next.thread_governor(), first.thread_governor());
+  EXPECT_EQ(next.thread_governor()->team(), 1);
+  // a governor of another thread count is not taken
+  s.threads = 2;
+  Simulation other(s);
+  EXPECT_NE(other.thread_governor(), first.thread_governor());
+  EXPECT_EQ(other.thread_governor()->team(), 2);
 }
 
 TEST(Engine, TangentialHistorySurvivesRebuilds)

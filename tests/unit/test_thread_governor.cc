@@ -58,6 +58,42 @@ TEST(ThreadGovernor, BusyMachineFallsBackToOneThread)
   EXPECT_EQ(g.team(), 1);
 }
 
+TEST(ThreadGovernor, ShortSimulationsOnABusyMachineGoOnWithWhatTheOnesBeforeFound)
+{
+  // a lifetime run's cycles: 40 simulations of 0.3 s each (shorter than the first wait), a
+  // busy machine. A fresh governor in each works them all on two threads (0.4x); one carried
+  // from each to the next finds one thread in the first and keeps it.
+  auto many = [](bool carried) {
+    Outcome        all;
+    ThreadGovernor g(2);
+    for (int k = 0; k < 40; ++k)
+      {
+        if (carried)
+          g.carry_on();
+        else
+          g = ThreadGovernor(2);
+        Outcome o;
+        while (o.seconds < 0.3)
+          {
+            const double dt = busy(g.team(), 0);
+            o.seconds += dt, ++o.steps, g.record_step(dt);
+          }
+        all.seconds += o.seconds, all.steps += o.steps;
+      }
+    return relative_throughput(all, busy, 1);
+  };
+  const double fresh = many(false), carried = many(true);
+  EXPECT_LT(fresh, 0.5) << "the made-up machine no longer shows the problem";
+  EXPECT_GT(carried, 0.9);
+  // a trial under way when a simulation ends is dropped: the kept team goes on
+  ThreadGovernor g(2);
+  for (int s = 0; s < 200 && !(g.team() == 1); ++s) // into the first trial (one thread)
+    g.record_step(busy(g.team(), 0));
+  ASSERT_EQ(g.team(), 1);
+  g.carry_on();
+  EXPECT_EQ(g.team(), 2) << "the trial's team, not the kept one";
+}
+
 TEST(ThreadGovernor, QuietMachineKeepsEveryThread)
 {
   ThreadGovernor g(2);

@@ -6,7 +6,9 @@
 #include <abrade/common/atomic_file.h>
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/json.h>
 #include <abrade/common/error.h>
+#include <abrade/common/wear_field_names.h>
 #include <abrade/report/report.h>
 
 // (property_tree includes boost/bind.hpp, which otherwise prints a deprecation message)
@@ -499,7 +501,10 @@ namespace abrade::report
               seen.push_back(name);
               std::string clean = name;
               std::replace(clean.begin(), clean.end(), '\'', ' ');
-              shapes.push_back({snapshot, "archard_depth", clean});
+              // as the run's Output/Wear field saw it (Archard's volume by default)
+              const std::string field =
+                io::summary_string(run + "/summary.json", "wear_field").value_or("archard_volume");
+              shapes.push_back({snapshot, io::wear_surface_field(field), clean});
             }
           if (!shapes.empty())
             {
@@ -508,8 +513,8 @@ namespace abrade::report
               o.align = true, o.top_percentile = 0.99;
               render_surfaces(dir + "/report", "worn_shapes.png", shapes, o);
               page.png(dir + "/report/worn_shapes.png",
-                       "Each variant's worn knife (a knife first, else the first wall with wear) coloured by Archard wear "
-                       "depth after the run (its lowest bed seed), in the table's order, seen along its principal axes; "
+                       "Each variant's worn knife (a knife first, else the first wall with wear) coloured by the wear "
+                       "depth of its Output/Wear field (Archard's by default) after the run (its lowest bed seed), in the table's order, seen along its principal axes; "
                        "one colour range, whose top is the 99th percentile (the deepest 1 % share its colour).");
             }
         }

@@ -40,8 +40,38 @@ namespace abrade::dem
     return p;
   }
 
+  Parallel Parallel::split(int group) const
+  {
+    Parallel part;
+    part.machine_ranks = ranks_on_this_machine();
+    if (!distributed())
+      return part;
+    MPI_Comm sub;
+    MPI_Comm_split(comm, group, my_rank, &sub);
+    int size = 1;
+    MPI_Comm_size(sub, &size);
+    if (size == 1)
+      {
+        MPI_Comm_free(&sub);
+        return part;
+      }
+    part.comm    = sub;
+    part.n_ranks = size;
+    MPI_Comm_rank(sub, &part.my_rank);
+    part.owned_comm = std::shared_ptr<void>(new MPI_Comm(sub), [](void *c) {
+      int finalised = 0;
+      MPI_Finalized(&finalised);
+      if (!finalised)
+        MPI_Comm_free(static_cast<MPI_Comm *>(c));
+      delete static_cast<MPI_Comm *>(c);
+    });
+    return part;
+  }
+
   int Parallel::ranks_on_this_machine() const
   {
+    if (machine_ranks > 0)
+      return machine_ranks;
     if (!distributed())
       return 1;
     MPI_Comm local;
@@ -90,6 +120,17 @@ namespace abrade::dem
     std::string s = my_rank == root ? text : std::string(n, ' ');
     MPI_Bcast(s.data(), n, MPI_CHAR, root, comm);
     return s;
+  }
+
+  void Parallel::broadcast(std::vector<double> &values, int root) const
+  {
+    const MpiTimer t(*this);
+    if (!distributed())
+      return;
+    long n = static_cast<long>(values.size());
+    MPI_Bcast(&n, 1, MPI_LONG, root, comm);
+    values.resize(n);
+    MPI_Bcast(values.data(), static_cast<int>(n), MPI_DOUBLE, root, comm);
   }
 
   void Parallel::exchange_known(const std::vector<std::vector<double>> &send, const std::vector<int> &counts,

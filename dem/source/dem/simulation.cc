@@ -168,18 +168,26 @@ namespace abrade::dem
 
   Simulation::Simulation(const Settings &s) : config(s), impl(std::make_unique<Impl>())
   {
-    impl->parallel  = config.distribute ? Parallel::world() : Parallel();
+    impl->parallel  = !config.distribute ? Parallel() : config.ranks ? *config.ranks : Parallel::world();
     // n_threads is the count of shares (the arithmetic); the governor's team works on them
     const int threads = config.threads > 0 ? config.threads : default_thread_count(impl->parallel);
     impl->n_threads   = config.shares > 0 ? config.shares : threads;
-    impl->governor    = ThreadGovernor(std::min(threads, impl->n_threads), config.adapt_threads);
+    const int team    = std::min(threads, impl->n_threads);
+    if (config.governor && config.governor->threads() == team)
+      {
+        impl->governor = config.governor;
+        impl->governor->carry_on();
+      }
+    else
+      impl->governor = std::make_shared<ThreadGovernor>(team, config.adapt_threads);
     with_contact_law(config.contact, [&](auto law) { impl->history = decltype(law)::history; });
   }
 
   int Simulation::shares() const { return impl->n_threads; }
-  int Simulation::threads() const { return impl->governor.threads(); }
+  int Simulation::threads() const { return impl->governor->threads(); }
+  std::shared_ptr<ThreadGovernor> Simulation::thread_governor() const { return impl->governor; }
 
-  void Simulation::pin_thread_team(int team) { impl->governor.pin(team); }
+  void Simulation::pin_thread_team(int team) { impl->governor->pin(team); }
 
   Simulation::Simulation(Simulation &&) noexcept = default;
   Simulation &Simulation::operator=(Simulation &&) noexcept = default;
@@ -796,9 +804,9 @@ namespace abrade::dem
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.loop_seconds += seconds;
     stats.thread_steps += m.team();
-    const long kept_before = m.governor.changes();
-    m.governor.record_step(seconds);
-    stats.team_changes += m.governor.changes() - kept_before;
+    const long kept_before = m.governor->changes();
+    m.governor->record_step(seconds);
+    stats.team_changes += m.governor->changes() - kept_before;
     stats.particle_steps += static_cast<long>(n2);
     stats.ghost_steps += static_cast<long>(P.n_ghost);
   }

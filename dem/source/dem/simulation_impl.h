@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace abrade::dem
@@ -21,8 +22,9 @@ namespace abrade::dem
     int n_threads = 1;
     /// How many threads work on the shares now (thread_governor.h); a share s is worked by
     /// thread s % team.
-    ThreadGovernor governor;
-    int            team() const { return governor.team(); }
+    /// (Shared with the simulations before and after this one when Settings::governor is set.)
+    std::shared_ptr<ThreadGovernor> governor;
+    int            team() const { return governor->team(); }
 
     // the ranks and who owns which part of space
     Parallel      parallel;

@@ -17,6 +17,14 @@ namespace abrade::dem
     current_team = kept_team = std::clamp(team, 1, max_team);
   }
 
+  void ThreadGovernor::carry_on()
+  {
+    if (in_trial)
+      current_team = kept_team, in_trial = false;
+    steps = 0, seconds = 0;
+    until_trial = std::max(until_trial, 1);
+  }
+
   bool ThreadGovernor::record_step(double step_seconds)
   {
     if (!adaptive)

@@ -1,5 +1,6 @@
 // The registry of wear laws (wear_law.h): one factory per line of wear_laws/registered.h.
 #include <abrade/common/error.h>
+#include <abrade/common/wear_field_names.h>
 #include <abrade/dem/wear_law.h>
 
 #include <algorithm>
@@ -59,12 +60,7 @@ namespace abrade::dem
     };
   } // namespace
 
-  std::string WearField::depth_name() const
-  {
-    const std::string suffix = "_volume";
-    const bool        ends   = name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-    return (ends ? name.substr(0, name.size() - suffix.size()) : name) + "_depth";
-  }
+  std::string WearField::depth_name() const { return io::wear_depth_name(name); }
 
   const std::vector<std::unique_ptr<WearLaw>> &registered_wear_laws()
   {

@@ -1,5 +1,6 @@
 // Lifetime/Wear source = dem: every update runs the DEM's operating cycle on the knife's current
-// surface, one bed per seed (dem_wear_source.cc; wear_source.h).
+// surface, one bed per seed (dem_wear_source.cc; wear_source.h); under mpirun the beds side by
+// side on groups of the ranks.
 #include <abrade/coupling/lifetime/wear_source.h>
 
 namespace abrade::coupling::lifetime
@@ -16,10 +17,26 @@ namespace abrade::coupling::lifetime
       }
       bool        from_particles() const override { return true; }
       std::string description() const override { return "the DEM"; }
+      void declare_parameters(dealii::ParameterHandler &prm) const override
+      {
+        prm.declare_entry("Ranks per bed", "0", dealii::Patterns::Integer(0),
+                          "[-] Wear source = dem, under mpirun: the beds of an update run side by side, "
+                          "each on a group of about this many ranks (at most one group per bed), and every "
+                          "bed's wear is the same as on that many ranks alone. 0: the ranks shared out "
+                          "evenly among the beds (4 ranks, 2 beds: 2 groups of 2; 2 ranks, 3 beds: 2 groups "
+                          "of 1, one running 2 beds). A number at least the rank count: every bed on all "
+                          "ranks, one after another. Range: [0, inf).");
+      }
+
+      void parse_parameters(ParameterFile &file) override { ranks_per_bed = file.handler().get_integer("Ranks per bed"); }
+
       std::unique_ptr<WearSource> make(const WearSourceSetUp &s) const override
       {
-        return make_dem_wear_source(s.dem_case, s.seeds, s.tonnes_per_cycle, s.ctx);
+        return make_dem_wear_source(s.dem_case, s.seeds, s.tonnes_per_cycle, ranks_per_bed, s.ctx);
       }
+
+    private:
+      int ranks_per_bed = 0;
     };
   } // namespace
 

@@ -7,9 +7,14 @@
 //
 // Every collective here must be called by all ranks in the same order; the engine calls them at
 // the same points of every step on every rank.
+//
+// split() cuts the ranks into groups that each run a simulation of their own (the beds of a
+// lifetime update side by side: an ensemble); a group of one rank is serial, as a run of one
+// process is, so that its results are those of that run.
 #include <mpi.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,9 +28,14 @@ namespace abrade::dem
     /// MPI_COMM_WORLD if MPI is initialised (and not finalised) with more than one rank,
     /// otherwise serial.
     static Parallel world();
+    /// The ranks of this one that give the same @p group, as a Parallel of their own (ranked
+    /// as here; serial when alone). Its ranks_on_this_machine() stays this one's: the groups
+    /// on a machine share its cores. Collective.
+    Parallel split(int group) const;
 
     int  rank() const { return my_rank; }
-    /// Ranks that share this machine (1 when serial).
+    /// Ranks that share this machine (1 when serial; for a group of split(), the ranks of the
+    /// Parallel it was split from). Collective when distributed.
     int  ranks_on_this_machine() const;
     int  size() const { return n_ranks; }
     bool distributed() const { return n_ranks > 1; }
@@ -42,6 +52,8 @@ namespace abrade::dem
     std::pair<double, int> max_location(double v) const;
     /// @p text as held by rank @p root, on every rank.
     std::string broadcast(const std::string &text, int root) const;
+    /// @p values as held by rank @p root, on every rank (in place).
+    void broadcast(std::vector<double> &values, int root) const;
 
     /// Sends send[r] to rank r and returns what every rank sent here, concatenated in rank
     /// order; the counts received from each rank go to @p received (if given). Collective
@@ -69,6 +81,8 @@ namespace abrade::dem
 
     MPI_Comm       comm    = MPI_COMM_NULL;
     int            my_rank = 0, n_ranks = 1;
+    int            machine_ranks = 0;   ///< set by split(): the ranks on this machine; 0: count them
+    std::shared_ptr<void> owned_comm;   ///< a communicator of split(), freed with its last copy
     mutable double mpi_seconds = 0, sent_bytes = 0;
     friend class MpiTimer;
   };

@@ -33,11 +33,14 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace abrade::dem
 {
+  class ThreadGovernor;
+
   struct Settings
   {
     Vec3   gravity           = Vec3(0, 0, -9.81); ///< [m/s^2]
@@ -57,6 +60,11 @@ namespace abrade::dem
     /// Work with fewer of the threads while that is faster (a busy machine; thread_governor.h).
     /// The results do not depend on it: the work is cut into `shares` shares either way.
     bool   adapt_threads = true;
+    /// The governor of an earlier simulation (Simulation::thread_governor()), to go on with
+    /// what it found out about the machine: the many short simulations of a lifetime run's
+    /// cycles end before a fresh governor would adapt. Used when it governs as many threads
+    /// as this simulation has; unset: a fresh one.
+    std::shared_ptr<ThreadGovernor> governor;
     /// Particles outside this box are lost.
     Vec3   domain_min = Vec3::Constant(-1e3), domain_max = Vec3::Constant(1e3);
     /// Overlap beyond this fraction of the smaller radius is reported.
@@ -66,6 +74,9 @@ namespace abrade::dem
     bool   stop_on_error = true;
     /// Spread the particles over the MPI ranks when running under mpirun with several ranks.
     bool   distribute = true;
+    /// The ranks to spread them over when distributing (a group of Parallel::split(): one bed
+    /// of an ensemble); unset: all of them (Parallel::world()).
+    std::optional<Parallel> ranks;
     /// Cut the domains again when the largest rank owns more than this times the mean count.
     double rebalance_threshold = 1.1;
   };
@@ -156,6 +167,8 @@ namespace abrade::dem
     int threads() const;
     /// Works with @p team of shares() from now on, without adapting (tests, benchmarks).
     void pin_thread_team(int team);
+    /// What chooses how many threads work (for Settings::governor of the next simulation).
+    std::shared_ptr<ThreadGovernor> thread_governor() const;
     const Settings       &settings() const { return config; }
     /// Messages (warnings) collected so far; the caller decides where they are printed.
     std::vector<std::string> take_warnings();

@@ -20,7 +20,9 @@
 // A team smaller than the shares works share s on thread s % team, so a team of T takes
 // ceil(S / T) shares' time per step: with 16 shares and one busy core the governor keeps 15
 // threads, which work at the speed of 8 (one share each would need more shares than threads, a
-// force buffer each; not done). It has no clock of its
+// force buffer each; not done). A lifetime run's cycles are many short simulations, each
+// shorter than the first wait on a busy machine: one governor goes from each to the next
+// (carry_on()). It has no clock of its
 // own: the caller gives it each step's wall time, so it is tested with made-up timings.
 namespace abrade::dem
 {
@@ -38,6 +40,11 @@ namespace abrade::dem
     bool record_step(double seconds);
     /// Stops adapting and works with @p team threads from now on (tests, benchmarks).
     void pin(int team);
+    /// Goes on in a new simulation (Settings::governor): a trial under way is dropped (its
+    /// window mixed two simulations' steps), the kept team works on, and the next window
+    /// measures the new simulation's steps before any trial. What was learnt stays: the kept
+    /// team and the wait between trials.
+    void carry_on();
     /// The number of times the team kept after a trial differed from the one before it.
     long changes() const { return kept_changes; }
 

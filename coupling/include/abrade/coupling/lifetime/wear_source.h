@@ -134,9 +134,11 @@ namespace abrade::coupling::lifetime
   /// The DEM: one cycle per bed seed from that seed's settled bed (beds/bed-seedN.bed in the
   /// output directory, settled on first use; the beds of derived seeds are deleted after their
   /// cycle), on every knife wall (a grab's two knives are averaged vertex by vertex).
-  /// @p tonnes_per_cycle 0: the DEM's payload (Simulation/Payload height).
+  /// @p tonnes_per_cycle 0: the DEM's payload (Simulation/Payload height). Under mpirun the
+  /// beds run side by side on groups of about @p ranks_per_bed ranks (0: the ranks shared out
+  /// among the beds; dem/ensemble.h), each bed's wear the same as on that many ranks alone.
   std::unique_ptr<WearSource> make_dem_wear_source(const DemCase &c, const std::vector<int> &base_seeds,
-                                                   double tonnes_per_cycle, JobContext &ctx);
+                                                   double tonnes_per_cycle, int ranks_per_bed, JobContext &ctx);
 
   /// The standard normal number that seed @p seed draws (Box-Muller on a 64-bit Mersenne
   /// twister: the same on every platform).
