@@ -4,7 +4,7 @@
 # one process, on this machine.
 #
 #   bench/lifetime_ensemble.sh [--case FILE.prm] [--set ENTRY=VALUE]... [--updates N] [--repeat N]
-#                              [--ways "np1 np1-t1 np2 np2-shared"] [--busy N] [--output DIR]
+#                              [--ways "np1 np1-t1 np2 np2-shared"] [--busy N] [--before BINARY] [--output DIR]
 #
 # The ways, in turn, N times (default 3; medians reported, as shared machines are noisy):
 #   np1        one process, the default threads (all cores)
@@ -15,20 +15,22 @@
 # fresh ones). The script also checks that np2's trajectory.csv is byte-identical to np1's: a
 # bed on a group of one rank is the bed of one process. Writes results.md and runs.txt.
 #
+# --before BINARY: another build of abrade (the code before a change); a way written WAY@before
+# runs with it, interleaved with the others (np1@before np1-t1@before np1 np1-t1).
+#
 # --case: another lifetime case (default cases/knife_bed/lifetime.prm); --set: an entry for
 # every run (as abrade run's --set).
 #
 # --busy N: N processes spin on a core each for the whole benchmark (another user's job). With
 # --ways "np1 np1-t1" this asks whether the default threads keep at least 0.8x of one thread's
 # speed over a lifetime run's many short cycles (the thread governor carried from each
-# simulation to the next, thread_governor.h); cases/lifetime/small.prm has phases of about a
-# second:
+# simulation to the next, thread_governor.h); cases/lifetime/small.prm has phases of 0.1-0.5 s:
 #   bench/lifetime_ensemble.sh --busy 1 --ways "np1 np1-t1"
 #   bench/lifetime_ensemble.sh --busy 1 --ways "np1 np1-t1" --case cases/lifetime/small.prm --updates 4
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 abrade=${ABRADE:-$root/build/abrade}
-updates=1 repeat=3 out="" ways="np1 np1-t1 np2 np2-shared" busy=0 case=$root/cases/knife_bed/lifetime.prm sets=()
+updates=1 repeat=3 out="" ways="np1 np1-t1 np2 np2-shared" busy=0 case=$root/cases/knife_bed/lifetime.prm sets=() before=""
 while (($#)); do
   case $1 in
     --updates) updates=$2; shift 2 ;;
@@ -38,7 +40,8 @@ while (($#)); do
     --busy) busy=$2; shift 2 ;;
     --case) case=$(realpath "$2"); shift 2 ;;
     --set) sets+=(--set "$2"); shift 2 ;;
-    *) echo "usage: $0 [--case FILE.prm] [--set ENTRY=VALUE]... [--updates N] [--repeat N] [--ways \"np1 np1-t1 np2 np2-shared\"] [--busy N] [--output DIR]" >&2; exit 2 ;;
+    --before) before=$(realpath "$2"); shift 2 ;;
+    *) echo "usage: $0 [--case FILE.prm] [--set ENTRY=VALUE]... [--updates N] [--repeat N] [--ways \"np1 np1-t1 np2 np2-shared\"] [--busy N] [--before BINARY] [--output DIR]" >&2; exit 2 ;;
   esac
 done
 [[ -x $abrade ]] || { echo "build abrade first: scripts/setup.sh" >&2; exit 2; }
@@ -57,11 +60,15 @@ trap '((${#spinners[@]})) && kill "${spinners[@]}" 2>/dev/null; true' EXIT
 one_run() { # name, round, ranks, --set options...
   local name=$1 round=$2 ranks=$3
   shift 3
-  local dir=$out/$name-$round start end launch=()
+  local dir=$out/$name-$round start end launch=() binary=$abrade
+  if [[ $name == *@before ]]; then
+    [[ -x $before ]] || { echo "$name: give --before BINARY" >&2; exit 2; }
+    binary=$before
+  fi
   ((ranks == 1)) || launch=("${mpi[@]}")
   rm -rf "$dir"
   start=$(date +%s.%N)
-  "${launch[@]}" "$abrade" run "$case" --set "Lifetime/Maximum updates=$updates" ${sets[@]+"${sets[@]}"} "$@" --output "$dir" > "$dir.log" 2>&1 ||
+  "${launch[@]}" "$binary" run "$case" --set "Lifetime/Maximum updates=$updates" ${sets[@]+"${sets[@]}"} "$@" --output "$dir" > "$dir.log" 2>&1 ||
     { echo "$name failed: $dir.log" >&2; exit 1; }
   end=$(date +%s.%N)
   echo "$name $round $(python3 -c "print(f'{$end - $start:.2f}')")" >> "$out/runs.txt"
@@ -69,11 +76,11 @@ one_run() { # name, round, ranks, --set options...
 
 for ((round = 1; round <= repeat; ++round)); do
   for way in $ways; do
-    case $way in
-      np1) one_run np1 $round 1 ;;
-      np1-t1) one_run np1-t1 $round 1 --set "Simulation/Threads=1" ;;
-      np2) one_run np2 $round 2 --set "Simulation/Threads=1" ;;
-      np2-shared) one_run np2-shared $round 2 --set "Simulation/Threads=1" --set "Lifetime/Ranks per bed=2" ;;
+    case ${way%@before} in
+      np1) one_run $way $round 1 ;;
+      np1-t1) one_run $way $round 1 --set "Simulation/Threads=1" ;;
+      np2) one_run $way $round 2 --set "Simulation/Threads=1" ;;
+      np2-shared) one_run $way $round 2 --set "Simulation/Threads=1" --set "Lifetime/Ranks per bed=2" ;;
       *) echo "unknown way $way" >&2; exit 2 ;;
     esac
   done
@@ -94,14 +101,17 @@ for line in open(f"{out}/runs.txt"):
 med = {k: statistics.median(v) for k, v in times.items()}
 print(f"Lifetime case {case}{' ' + sets if sets else ''}, Maximum updates = {updates}, "
       f"medians of {repeat} interleaved runs [s]" + (f", {busy} busy process(es) spinning beside every run" if busy else "") + ":\n")
-print("| way | wall clock [s] | each run [s] | speed against np1 | against np1-t1 |")
+print("| way | wall clock [s] | each run [s] | speed against its build's np1 | against its np1-t1 |")
 print("|---|---|---|---|---|")
-for k in ["np1", "np1-t1", "np2", "np2-shared"]:
+for k in [w + s for s in ["@before", ""] for w in ["np1", "np1-t1", "np2", "np2-shared"]]:
     if k in med:
+        # against the same build's np1 and np1-t1
+        suffix = "@before" if k.endswith("@before") else ""
         each = ", ".join(f"{t:.1f}" for t in times[k])
-        print(f"| {k} | {med[k]:.1f} | {each} | " + (f"{med['np1'] / med[k]:.2f}" if "np1" in med else "-") + " | " +
-              (f"{med['np1-t1'] / med[k]:.2f}" if "np1-t1" in med else "-") + " |")
+        print(f"| {k} | {med[k]:.1f} | {each} | " +
+              (f"{med['np1' + suffix] / med[k]:.2f}" if "np1" + suffix in med else "-") + " | " +
+              (f"{med['np1-t1' + suffix] / med[k]:.2f}" if "np1-t1" + suffix in med else "-") + " |")
 if "np1" in med and "np2" in med:
     print("\nnp2's trajectory.csv byte-identical to np1's in every round.")
 PY
-echo "command: bench/lifetime_ensemble.sh --case $case ${sets[*]-} --updates $updates --repeat $repeat --ways \"$ways\" --busy $busy" | tee -a "$out/results.md"
+echo "command: bench/lifetime_ensemble.sh${before:+ --before $before} --case $case ${sets[*]-} --updates $updates --repeat $repeat --ways \"$ways\" --busy $busy" | tee -a "$out/results.md"

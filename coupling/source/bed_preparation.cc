@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <limits>
 
@@ -151,7 +152,18 @@ namespace abrade::coupling
         build_simulation(c, settling);
         generate_and_settle(c, settling, ctx);
         flush_warnings(settling, ctx.log);
-        dem::save_bed(settling, bed);
+        // rank 0 writes it alone: a failed write (a full disk) is every rank's, or the others
+        // would wait for rank 0 in the check below for ever
+        std::exception_ptr failure;
+        try
+          {
+            dem::save_bed(settling, bed);
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
+        sim.parallel().fail_together(failure);
         ctx.log.line("Saved the settled bed to " + bed);
         if (!saved())
           throw RunError("the settled bed " + bed + " was saved but is not there");

@@ -75,17 +75,8 @@ namespace abrade::coupling
   bool is_foreign_default(const DeclarationLists &lists, const std::vector<std::string> &path, const std::string &key,
                           const std::string &value)
   {
-    const auto entry  = plugin_entry(path, key);
-    const auto chosen = entry ? lists.wall_choices.find(path[0].substr(5)) : lists.wall_choices.end();
-    if (chosen == lists.wall_choices.end())
-      return false;
-    const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
-    if (entry->defaults.count(ours))
-      return false;
-    for (const auto &[plugin, default_value] : entry->defaults)
-      if (same_value(value, default_value))
-        return true;
-    return false;
+    const auto f = foreign_entry(lists, path, key);
+    return f && f->at_default(value);
   }
 
   std::vector<std::string> leave_out_replaced_entries(std::string &text, std::vector<std::pair<std::string, int>> origin,
@@ -150,20 +141,17 @@ namespace abrade::coupling
             choice_at(e.path[0], family) = e.value;
             continue;
           }
-        const auto entry  = plugin_entry(e.path, e.key);
-        const auto chosen = lists.wall_choices.find(e.path[0].substr(5));
-        if (!entry || chosen == lists.wall_choices.end())
-          continue;
-        const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
-        if (entry->defaults.count(ours))
-          continue; // (its own)
-        const auto        in_block   = block_choice.find({block[n], entry->family});
-        const std::string then       = in_block != block_choice.end() ? in_block->second : choice_at(e.path[0], entry->family);
-        const bool        is_default = is_foreign_default(lists, e.path, e.key, e.value);
-        if (!is_default && !entry->defaults.count(then))
+        const auto f = foreign_entry(lists, e.path, e.key);
+        if (!f)
+          continue; // (the wall's own, or no plugin's)
+        const std::string &family     = f->entry.family;
+        const auto         in_block   = block_choice.find({block[n], family});
+        const std::string  then       = in_block != block_choice.end() ? in_block->second : choice_at(e.path[0], family);
+        const bool         is_default = f->at_default(e.value);
+        if (!is_default && !f->entry.defaults.count(then))
           continue; // (another's entry, not replaced: the strict reading refuses it)
         if (!is_default)
-          left_out[{e.path[0], entry->family, then, ours, final_choice[{e.path[0], entry->family}]}].push_back(
+          left_out[{e.path[0], family, then, f->ours, final_choice[{e.path[0], family}]}].push_back(
             e.key + " (" + where(n) + ")");
         for (std::size_t k = n; k <= e.last; ++k)
           lines[k].clear();

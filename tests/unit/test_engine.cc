@@ -157,19 +157,31 @@ TEST(Engine, ASimulationGoesOnWithTheGovernorOfTheOneBefore)
   // a lifetime run's cycles are short simulations, one after another: the next goes on with
   // the team the one before kept (Settings::governor), not with every thread again
   Settings s = quiet_settings(5e-5, true);
-  s.threads  = 3;
+  s.threads  = 2;
   Simulation first(s);
-  first.thread_governor()->record_step(0); // (a governor that has measured something)
-  first.pin_thread_team(1);                // what a busy machine would have taught it
-  s.governor = first.thread_governor();
+  // a busy machine, made up: two threads take 2.5 ms a step, one 1 ms; the governor keeps one
+  // thread, and is then in its next trial (two threads) when the simulation ends
+  const auto governor = first.thread_governor();
+  auto       step     = [&] { governor->record_step(governor->team() == 2 ? 2.5e-3 : 1e-3); };
+  for (int k = 0; k < 2000 && governor->changes() == 0; ++k)
+    step();
+  ASSERT_EQ(governor->team(), 1) << "the made-up busy machine did not teach it one thread";
+  for (int k = 0; k < 2000 && governor->team() == 1; ++k)
+    step();
+  ASSERT_EQ(governor->team(), 2) << "no trial of two threads";
+  s.governor = governor;
   Simulation next(s);
-  EXPECT_EQ(next.thread_governor(), first.thread_governor());
-  EXPECT_EQ(next.thread_governor()->team(), 1);
-  // a governor of another thread count is not taken
-  s.threads = 2;
+  EXPECT_EQ(next.thread_governor(), governor);
+  EXPECT_EQ(next.thread_governor()->team(), 1) << "the kept team, not the trial's";
+  // a governor of another thread count, or for a simulation that does not adapt, is not taken
+  s.threads = 3;
   Simulation other(s);
-  EXPECT_NE(other.thread_governor(), first.thread_governor());
-  EXPECT_EQ(other.thread_governor()->team(), 2);
+  EXPECT_NE(other.thread_governor(), governor);
+  EXPECT_EQ(other.thread_governor()->team(), 3);
+  s.threads = 2, s.adapt_threads = false;
+  Simulation fixed(s);
+  EXPECT_NE(fixed.thread_governor(), governor);
+  EXPECT_EQ(fixed.thread_governor()->team(), 2);
 }
 
 TEST(Engine, TangentialHistorySurvivesRebuilds)

@@ -47,8 +47,6 @@ TEST(Ensemble, CutsThreeRanksIntoGroupsOfTheWork)
       // every member run by exactly one group: its ranks
       for (std::size_t m = 0; m < members; ++m)
         EXPECT_EQ(world.sum(long(e.runs(m))), expected[m]) << "member " << m;
-      // a group of one rank is serial (as a program without mpirun), a larger one distributed
-      EXPECT_EQ(e.group().distributed(), e.group().size() > 1);
       // the groups share the machine's cores: each counts the world's ranks
       EXPECT_EQ(e.group().ranks_on_this_machine(), world.ranks_on_this_machine());
     }

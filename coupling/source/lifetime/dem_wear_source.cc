@@ -5,6 +5,7 @@
 #include <abrade/coupling/knife_parameters.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/dem/ensemble.h>
+#include <abrade/dem/thread_governor.h>
 #include <abrade/dem/wear.h>
 
 #include <algorithm>
@@ -163,6 +164,7 @@ namespace abrade::coupling::lifetime
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
         const std::string bed = "beds/bed-seed" + std::to_string(seed) + ".bed";
         prepare_bed(run, sim, cycle_ctx, bed);
+        governor->carry_on(); // (after the settling's steps: the cycle's are measured afresh)
         sim.set_time(0);
         std::vector<dem::WallWearLaws> laws;
         for (const auto &wc : run.walls)

@@ -486,24 +486,50 @@ namespace abrade::coupling
   {
     if (path.empty() || path[0].rfind("Wall ", 0) != 0 || path.size() > 2 || (path.size() == 2 && path[1] != "Motion"))
       return std::nullopt;
-    PluginEntry entry;
-    if (path.size() == 1)
-      {
-        entry.family = "Geometry";
-        for (const auto &g : make_wall_geometries())
-          if (const auto d = defaults_of(*g); d.count(key))
-            entry.defaults[g->name()] = d.at(key);
-      }
-    else
-      {
-        entry.family = "Motion/Type";
-        for (const auto &m : dem::make_wall_motions())
-          if (const auto d = defaults_of(*m); m->section().empty() && d.count(key))
-            entry.defaults[m->name()] = d.at(key);
-      }
-    if (entry.defaults.empty())
+    // every registered geometry's and motion's entries with their defaults, gathered once (the
+    // registries are complete before main): key -> plugin -> default, per family
+    using Table = std::map<std::string, std::map<std::string, std::string>>;
+    static const std::pair<Table, Table> tables = [] {
+      std::pair<Table, Table> t; // geometries', motions'
+      for (const auto &g : make_wall_geometries())
+        for (const auto &[k, d] : defaults_of(*g))
+          t.first[k][g->name()] = d;
+      for (const auto &m : dem::make_wall_motions())
+        if (m->section().empty())
+          for (const auto &[k, d] : defaults_of(*m))
+            t.second[k][m->name()] = d;
+      return t;
+    }();
+    const bool   geometry = path.size() == 1;
+    const Table &table    = geometry ? tables.first : tables.second;
+    const auto   found    = table.find(key);
+    if (found == table.end())
       return std::nullopt;
-    return entry;
+    return PluginEntry{geometry ? "Geometry" : "Motion/Type", found->second};
+  }
+
+  std::optional<ForeignEntry> foreign_entry(const DeclarationLists &lists, const std::vector<std::string> &path,
+                                            const std::string &key)
+  {
+    auto entry = plugin_entry(path, key);
+    if (!entry)
+      return std::nullopt;
+    const std::string wall   = path[0].substr(5);
+    const auto        chosen = lists.wall_choices.find(wall);
+    if (chosen == lists.wall_choices.end())
+      return std::nullopt;
+    const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
+    if (entry->defaults.count(ours))
+      return std::nullopt; // (its own)
+    return ForeignEntry{std::move(*entry), wall, ours};
+  }
+
+  bool ForeignEntry::at_default(const std::string &value) const
+  {
+    for (const auto &[plugin, default_value] : entry.defaults)
+      if (same_value(value, default_value))
+        return true;
+    return false;
   }
 
   bool same_value(std::string a, std::string b)
@@ -538,18 +564,11 @@ namespace abrade::coupling
   std::string foreign_entry_hint(const DeclarationLists &lists, const std::vector<std::string> &path,
                                  const std::string &key)
   {
-    const auto entry = plugin_entry(path, key);
-    if (!entry)
+    const auto f = foreign_entry(lists, path, key);
+    if (!f)
       return "";
-    const std::string name   = path[0].substr(5);
-    const auto        chosen = lists.wall_choices.find(name);
-    if (chosen == lists.wall_choices.end())
-      return "";
-    const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
-    if (entry->defaults.count(ours))
-      return ""; // (its own)
-    const std::string theirs = entry->defaults.begin()->first;
-    return " '" + key + "' is an entry of " + entry->family + " = " + theirs + ", and wall " + name + "'s " +
-           entry->family + " is " + ours + ": set " + entry->family + " = " + theirs + ", or leave it out.";
+    const std::string &family = f->entry.family, theirs = f->entry.defaults.begin()->first;
+    return " '" + key + "' is an entry of " + family + " = " + theirs + ", and wall " + f->wall + "'s " + family +
+           " is " + f->ours + ": set " + family + " = " + theirs + ", or leave it out.";
   }
 } // namespace abrade::coupling

@@ -1,9 +1,7 @@
 // Independent simulations side by side on groups of ranks (ensemble.h).
-#include <abrade/common/error.h>
 #include <abrade/dem/ensemble.h>
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace abrade::dem
 {
@@ -38,57 +36,9 @@ namespace abrade::dem
 
   void Ensemble::fail_together(const std::exception_ptr &failure) const
   {
-    enum Kind
-    {
-      none,
-      input,
-      run,
-      other
-    };
-    Kind        kind = none;
-    std::string message;
-    if (failure)
-      try
-        {
-          std::rethrow_exception(failure);
-        }
-      catch (const InputError &e)
-        {
-          kind = input, message = e.what();
-        }
-      catch (const RunError &e)
-        {
-          kind = run, message = e.what();
-        }
-      catch (const std::exception &e)
-        {
-          kind = other, message = e.what();
-        }
-      catch (...)
-        {
-          kind = other, message = "an exception of unknown type";
-        }
-    if (n_groups == 1) // the group's failures are agreed on already
-      {
-        if (failure)
-          std::rethrow_exception(failure);
-        return;
-      }
-    // the lowest failing rank (max_location of -rank among the failing ones)
-    const auto [flag, first] = all.max_location(kind != none ? double(all.size() - all.rank()) : 0.0);
-    if (!(flag > 0))
-      return;
-    message = all.broadcast(message, first);
-    std::vector<double> k{double(kind)};
-    all.broadcast(k, first);
-    switch (Kind(int(k[0])))
-      {
-        case input:
-          throw InputError("", message);
-        case run:
-          throw RunError(message);
-        default:
-          throw std::runtime_error(message);
-      }
+    if (n_groups > 1)
+      all.fail_together(failure);
+    else if (failure) // (the group's failures are agreed on already)
+      std::rethrow_exception(failure);
   }
 } // namespace abrade::dem

@@ -1,8 +1,10 @@
 // The processes one DEM simulation is spread over, and its collective operations (parallel.h).
+#include <abrade/common/error.h>
 #include <abrade/dem/parallel.h>
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
 
 namespace abrade::dem
 {
@@ -199,6 +201,62 @@ namespace abrade::dem
     if (received)
       *received = in;
     return data;
+  }
+
+  void Parallel::fail_together(const std::exception_ptr &failure) const
+  {
+    if (!distributed())
+      {
+        if (failure)
+          std::rethrow_exception(failure);
+        return;
+      }
+    enum Kind
+    {
+      none,
+      input,
+      run,
+      other
+    };
+    Kind        kind = none;
+    std::string message;
+    if (failure)
+      try
+        {
+          std::rethrow_exception(failure);
+        }
+      catch (const InputError &e)
+        {
+          kind = input, message = e.what();
+        }
+      catch (const RunError &e)
+        {
+          kind = run, message = e.what();
+        }
+      catch (const std::exception &e)
+        {
+          kind = other, message = e.what();
+        }
+      catch (...)
+        {
+          kind = other, message = "an exception of unknown type";
+        }
+    // the lowest failing rank: the largest n_ranks - rank among the failing ones
+    const auto [flag, first] = max_location(kind != none ? double(n_ranks - my_rank) : 0.0);
+    if (!(flag > 0))
+      return;
+    message = broadcast(message, first);
+    std::vector<double> k{double(kind)};
+    broadcast(k, first);
+    switch (Kind(int(k[0])))
+      {
+        case input:
+          throw InputError("", message);
+        case run:
+          throw RunError(message);
+        default:
+          throw std::runtime_error(message);
+      }
   }
 
   std::vector<double> Parallel::gather(const std::vector<double> &local) const

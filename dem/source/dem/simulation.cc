@@ -173,7 +173,7 @@ namespace abrade::dem
     const int threads = config.threads > 0 ? config.threads : default_thread_count(impl->parallel);
     impl->n_threads   = config.shares > 0 ? config.shares : threads;
     const int team    = std::min(threads, impl->n_threads);
-    if (config.governor && config.governor->threads() == team)
+    if (config.governor && config.governor->threads() == team && config.adapt_threads)
       {
         impl->governor = config.governor;
         impl->governor->carry_on();

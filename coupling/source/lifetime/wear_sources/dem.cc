@@ -20,12 +20,13 @@ namespace abrade::coupling::lifetime
       void declare_parameters(dealii::ParameterHandler &prm) const override
       {
         prm.declare_entry("Ranks per bed", "0", dealii::Patterns::Integer(0),
-                          "[-] Wear source = dem, under mpirun: the beds of an update run side by side, "
-                          "each on a group of about this many ranks (at most one group per bed), and every "
-                          "bed's wear is the same as on that many ranks alone. 0: the ranks shared out "
-                          "evenly among the beds (4 ranks, 2 beds: 2 groups of 2; 2 ranks, 3 beds: 2 groups "
-                          "of 1, one running 2 beds). A number at least the rank count: every bed on all "
-                          "ranks, one after another. Range: [0, inf).");
+                          "[-] Wear source = dem, under mpirun: the beds of an update run side by side on "
+                          "groups of ranks, as many groups as the rank count divided by this (rounded down; at "
+                          "least one, at most one per bed), their sizes differing by one at most (3 ranks, 2 per bed: one "
+                          "group of 3); a bed's wear is the same as on its group's number of ranks alone. 0: "
+                          "the ranks shared out evenly among the beds (4 ranks, 2 beds: 2 groups of 2; 2 ranks, "
+                          "3 beds: 2 groups of 1, one running 2 beds). A number at least the rank count: every "
+                          "bed on all ranks, one after another. Range: [0, inf).");
       }
 
       void parse_parameters(ParameterFile &file) override { ranks_per_bed = file.handler().get_integer("Ranks per bed"); }

@@ -45,8 +45,7 @@ namespace abrade::dem
     void share(std::string &text, std::size_t m) const;
 
     /// Fails on every rank when a member failed on any (a group's error is its own; the others
-    /// would wait for its results for ever): rethrows, everywhere, the failure of the lowest
-    /// rank that has one, as an InputError, a RunError or a std::runtime_error with its message.
+    /// would wait for its results for ever): Parallel::fail_together over all ranks.
     /// @p failure: this rank's (null: none). Collective over all ranks.
     void fail_together(const std::exception_ptr &failure) const;
 

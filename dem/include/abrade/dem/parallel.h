@@ -14,6 +14,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +68,12 @@ namespace abrade::dem
     /// neighbour-list builds): only the ranks with non-zero counts talk to each other.
     void exchange_known(const std::vector<std::vector<double>> &send, const std::vector<int> &receive_counts,
                         std::vector<double> &received) const;
+    /// Fails on every rank when any rank failed (an error found by one rank alone: the others
+    /// would wait for it in their next collective for ever): rethrows, everywhere, the failure
+    /// of the lowest rank that has one, as an InputError, a RunError or a std::runtime_error
+    /// with its message. @p failure: this rank's (null: none). Collective.
+    void fail_together(const std::exception_ptr &failure) const;
+
     /// Concatenation of every rank's @p local on rank 0 (empty elsewhere).
     std::vector<double> gather(const std::vector<double> &local) const;
 

@@ -63,7 +63,7 @@ namespace abrade::dem
     /// The governor of an earlier simulation (Simulation::thread_governor()), to go on with
     /// what it found out about the machine: the many short simulations of a lifetime run's
     /// cycles end before a fresh governor would adapt. Used when it governs as many threads
-    /// as this simulation has; unset: a fresh one.
+    /// as this simulation has and adapt_threads is on; unset: a fresh one.
     std::shared_ptr<ThreadGovernor> governor;
     /// Particles outside this box are lost.
     Vec3   domain_min = Vec3::Constant(-1e3), domain_max = Vec3::Constant(1e3);

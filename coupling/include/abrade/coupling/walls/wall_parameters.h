@@ -55,6 +55,21 @@ namespace abrade::coupling
   /// same numbers ("0,0,0" and "0, 0, 0.0"; "yes" and "true").
   bool same_value(std::string a, std::string b);
 
+  /// An entry set on a wall that belongs to another geometry or motion than the wall's own
+  /// choice (@p lists' wall_choices): the plugins that declare it, and the wall's choice.
+  struct ForeignEntry
+  {
+    PluginEntry entry;
+    std::string wall; ///< its name ("floor" of subsection "Wall floor")
+    std::string ours; ///< the wall's own choice in entry.family
+    /// Whether @p value is one of those plugins' default for it (a no-op).
+    bool at_default(const std::string &value) const;
+  };
+  /// @p key in subsection @p path as such an entry; nullopt when it is the wall's own (or no
+  /// plugin's, or not a wall's).
+  std::optional<ForeignEntry> foreign_entry(const DeclarationLists &lists, const std::vector<std::string> &path,
+                                            const std::string &key);
+
   /// When @p key (in subsection @p path) is an entry of another geometry or motion than the
   /// wall's, a sentence that says so; otherwise "".
   std::string foreign_entry_hint(const DeclarationLists &lists, const std::vector<std::string> &path,
