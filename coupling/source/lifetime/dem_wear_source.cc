@@ -130,9 +130,8 @@ namespace abrade::coupling::lifetime
         if (ensemble.groups() == 1 || announced)
           return;
         announced        = true;
-        const int ranks  = dem::Parallel::world().size(), g = ensemble.groups();
-        const int fewest = ranks / g, most = (ranks + g - 1) / g;
-        ctx.log.line("beds side by side on " + std::to_string(g) + " groups of ranks (" +
+        const int fewest = ensemble.smallest_group(), most = ensemble.largest_group();
+        ctx.log.line("beds side by side on " + std::to_string(ensemble.groups()) + " groups of ranks (" +
                      (fewest == most ? std::to_string(most) : std::to_string(fewest) + " or " + std::to_string(most)) +
                      " rank(s) each; Lifetime/Ranks per bed)");
       }

@@ -36,9 +36,6 @@ namespace abrade::dem
 
   void Ensemble::fail_together(const std::exception_ptr &failure) const
   {
-    if (n_groups > 1)
-      all.fail_together(failure);
-    else if (failure) // (the group's failures are agreed on already)
-      std::rethrow_exception(failure);
+    all.fail_together(failure);
   }
 } // namespace abrade::dem

@@ -33,6 +33,9 @@ namespace abrade::dem
 
     /// The number of groups.
     int groups() const { return n_groups; }
+    /// The fewest and the most ranks in a group (they differ by one at most).
+    int smallest_group() const { return all.size() / n_groups; }
+    int largest_group() const { return (all.size() + n_groups - 1) / n_groups; }
     /// This rank's group, the ranks it runs its members with.
     const Parallel &group() const { return own; }
     /// Whether this rank's group runs member @p m.
