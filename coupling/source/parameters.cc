@@ -8,6 +8,7 @@
 #include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_section.h>
 #include <abrade/coupling/material_parameters.h>
+#include <abrade/coupling/walls/grab_mechanism.h>
 #include <abrade/coupling/walls/wall_parameters.h>
 #include <abrade/dem/contact_law.h>
 #include <abrade/coupling/parameters.h>
@@ -458,6 +459,7 @@ namespace abrade::coupling
         const auto chosen = lists.wall_choices.find(name);
         declare_wall(prm, name, chosen == lists.wall_choices.end() ? nullptr : &chosen->second);
       }
+    declare_grab_mechanism(prm);
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -648,10 +650,11 @@ namespace abrade::coupling
     for (const auto &name : get_list(prm, "Walls"))
       c.walls.push_back(read_wall(f, name, c));
     mount_knives(f, c);
+    read_grab_mechanism(f, c);
     return c;
   }
 
-  void build_simulation(const DemCase &c, dem::Simulation &sim)
+  std::shared_ptr<dem::RopeGrabDriver> build_simulation(const DemCase &c, dem::Simulation &sim)
   {
     const int particle_material = sim.add_material(c.particle_material);
     sim.set_interaction(particle_material, particle_material, c.particle_interaction);
@@ -662,5 +665,10 @@ namespace abrade::coupling
         sim.set_interaction(particle_material, w.material, wc.interaction);
         sim.add_wall(std::move(w));
       }
+    if (!c.grab_mechanism)
+      return nullptr;
+    auto driver = std::make_shared<dem::RopeGrabDriver>(*c.grab_mechanism, sim);
+    sim.add_driver(driver);
+    return driver;
   }
 } // namespace abrade::coupling

@@ -34,6 +34,7 @@ namespace
     d.shell_inertia          = 4.0;
     d.closing_rope_stiffness = 2e5;
     d.holding_rope_stiffness = 4e5;
+    d.winch_acceleration     = 3;
     return d;
   }
 

@@ -25,6 +25,7 @@
 #include <abrade/dem/output.h>
 #include <abrade/dem/wear.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -46,6 +47,40 @@ namespace abrade::coupling
       }
       void run(JobContext &ctx) const override;
     };
+
+    /// What the grab's mechanism did in phase @p name: summary.json's phases/NAME/grab and a
+    /// line of the log.
+    void report_mechanism(const dem::RopeGrabDriver &mechanism, const std::string &name, io::Json &phase, io::Log &log)
+    {
+      const auto it = std::find_if(mechanism.phases().rbegin(), mechanism.phases().rend(),
+                                   [&](const auto &r) { return r.first == name; });
+      if (it == mechanism.phases().rend())
+        return;
+      const auto  &r     = it->second;
+      const double steps = std::max<long>(1, r.steps);
+      io::Json    &g     = phase["grab"];
+      g["hinge_height_start"]    = r.hinge_start;
+      g["hinge_height_end"]      = r.hinge_end;
+      g["hinge_height_lowest"]   = r.lowest_hinge;
+      g["hinge_height_highest"]  = r.highest_hinge;
+      g["shell_angle_start"]     = r.angle_start * 180 / M_PI;
+      g["shell_angle_end"]       = r.angle_end * 180 / M_PI;
+      g["head_distance_end"]     = r.head_distance_end;
+      g["closing_rope_tension_mean"] = r.closing_tension_sum / steps;
+      g["closing_rope_tension_peak"] = r.closing_tension_max;
+      g["holding_rope_tension_mean"] = r.holding_tension_sum / steps;
+      g["holding_rope_tension_peak"] = r.holding_tension_max;
+      g["closing_rope_hauled"]   = r.closing_hauled;
+      g["holding_rope_hauled"]   = r.holding_hauled;
+      g["closed_fraction_of_steps"] = double(r.steps_at_closed_stop) / steps;
+      log.line("Phase " + name + ": hinge " + io::format_number(r.hinge_start, 3) + " -> " +
+               io::format_number(r.hinge_end, 3) + " m (lowest " + io::format_number(r.lowest_hinge, 3) +
+               " m), shells " + io::format_number(r.angle_start * 180 / M_PI, 3) + " -> " +
+               io::format_number(r.angle_end * 180 / M_PI, 3) + " deg, closing rope " +
+               io::format_number(r.closing_tension_sum / steps / 1e3, 3) + " kN mean (peak " +
+               io::format_number(r.closing_tension_max / 1e3, 3) + "), holding ropes " +
+               io::format_number(r.holding_tension_sum / steps / 1e3, 3) + " kN mean");
+    }
   } // namespace
 
   void DemJob::run(JobContext &ctx) const
@@ -54,7 +89,7 @@ namespace abrade::coupling
     report_coarse_graining(c, ctx);
     fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"), ctx.log);
     dem::Simulation sim(c.settings);
-    build_simulation(c, sim);
+    const auto mechanism = build_simulation(c, sim);
 
     const bool loaded = prepare_bed(c, sim, ctx, c.bed_file);
     sim.set_time(0);
@@ -94,6 +129,12 @@ namespace abrade::coupling
     for (const auto &p : c.phases)
       path_length[p.first].assign(sim.n_walls(), 0.0);
     const auto       stats0 = sim.statistics();
+    std::unique_ptr<io::CsvWriter> mechanism_table; // grab_mechanism.csv: the mechanism over time
+    if (mechanism)
+      mechanism_table = std::make_unique<io::CsvWriter>(
+        ctx.output.file("grab_mechanism.csv"),
+        std::vector<std::string>{"phase", "time", "hinge_height", "shell_angle", "head_distance", "hinge_velocity",
+                                 "closing_rope_tension", "holding_rope_tension"});
     std::unique_ptr<io::CsvWriter> payload_table; // payload.csv: phase, mass above the payload height
     if (c.payload_height)
       payload_table = std::make_unique<io::CsvWriter>(ctx.output.file("payload.csv"),
@@ -131,7 +172,17 @@ namespace abrade::coupling
               peak_torque[w] = std::max(peak_torque[w], s.wall(w).torque.norm());
             }
           if (s.step_number() % force_every == 0)
-            output.write_forces(s);
+            {
+              output.write_forces(s);
+              if (mechanism_table)
+                {
+                  const auto &m = *mechanism;
+                  const auto &q = m.state();
+                  mechanism_table->row(name, {s.time(), q.z, q.angle * 180 / M_PI, m.mechanism().head_distance(q.angle),
+                                              q.z_rate, m.mechanism().closing_tension(q, m.closing_winch(name)),
+                                              m.mechanism().holding_tension(q, m.holding_winch(name))});
+                }
+            }
           if (snapshot_every && s.step_number() % snapshot_every == 0)
             output.write_snapshot(s);
           progress.update(s.time(), name + "  t = " + io::format_number(s.time(), 3) + " s");
@@ -154,6 +205,8 @@ namespace abrade::coupling
         ph["threads"]      = static_cast<long>(sim.threads());
         ph["shares"]       = static_cast<long>(sim.shares());
         ph["mean_threads"] = mean_threads;
+        if (mechanism)
+          report_mechanism(*mechanism, name, ph, ctx.log);
         if (c.payload_height)
           {
             const double held = sim.mass_above(*c.payload_height);
@@ -184,6 +237,8 @@ namespace abrade::coupling
     output.close();
     if (payload_table)
       payload_table->close();
+    if (mechanism_table)
+      mechanism_table->close();
 
     // wear per wall and phase: walls/NAME_wear.csv and summary.json
     ctx.results["wear_field"] = c.wear_field;

@@ -35,8 +35,8 @@ namespace abrade::dem
     if (!(shell_mass > 0) || !(shell_inertia >= 0) || !(lower_head_mass >= 0) || !(upper_head_mass >= 0))
       fail("the shells need a positive mass, the heads a mass >= 0 and the shells an inertia >= 0");
     if (!(closing_rope_stiffness >= 0) || !(holding_rope_stiffness >= 0) || !(closing_rope_damping >= 0) ||
-        !(holding_rope_damping >= 0))
-      fail("rope stiffness and damping must be >= 0");
+        !(holding_rope_damping >= 0) || !(winch_acceleration >= 0))
+      fail("rope stiffness and damping, and the winches' acceleration, must be >= 0");
     if (!(closed_angle > open_angle))
       fail("the closed angle (" + in_degrees(closed_angle) + ") must exceed the open angle (" +
            in_degrees(open_angle) + ")");
@@ -206,27 +206,28 @@ namespace abrade::dem
 
   // A stalled winch (the rope stretched to its maximum pull) pays out as fast as the grab draws
   // the rope: the stretch stays, no damping, the maximum pull.
-  double RopeGrab::tension(double stiffness, double damping, double stretch, double length_rate, const Winch &w)
+  double RopeGrab::tension(double stiffness, double damping, double stretch, double length_rate, double drum_speed,
+                           double maximum_pull)
   {
     if (!(stretch > 0) || stiffness == 0)
       return 0;
-    if (stiffness * stretch >= w.maximum_pull * (1 - 1e-12))
-      return w.maximum_pull;
-    return std::clamp(stiffness * stretch + damping * (length_rate + w.speed), 0.0, w.maximum_pull);
+    if (stiffness * stretch >= maximum_pull * (1 - 1e-12))
+      return maximum_pull;
+    return std::clamp(stiffness * stretch + damping * (length_rate + drum_speed), 0.0, maximum_pull);
   }
 
   double RopeGrab::closing_tension(const State &s, const Winch &closing) const
   {
     const double rate = -s.z_rate + (d.falls - 1) * head_distance_slope(s.angle) * s.angle_rate;
     return tension(d.closing_rope_stiffness, d.closing_rope_damping, closing_rope_length(s.z, s.angle) - s.closing_paid_out,
-                   rate, closing);
+                   rate, s.closing_drum_speed, closing.maximum_pull);
   }
 
   double RopeGrab::holding_tension(const State &s, const Winch &holding) const
   {
     const double rate = -s.z_rate - head_distance_slope(s.angle) * s.angle_rate;
     return tension(d.holding_rope_stiffness, d.holding_rope_damping, holding_rope_length(s.z, s.angle) - s.holding_paid_out,
-                   rate, holding);
+                   rate, s.holding_drum_speed, holding.maximum_pull);
   }
 
   // A winch whose maximum pull is below the rope's tension (a phase that asks for less, a
@@ -241,15 +242,21 @@ namespace abrade::dem
     paid_out = least;
   }
 
-  // One rope over one step. The winch hauls in at its speed against the tension @p t of the
-  // step's start; where that stretches the rope beyond the maximum pull, the drum then pays out
-  // (a stalled winch slips on its brake or its motor's torque) at the maximum pull.
+  // One rope over one step. The drum hauls in at its speed against the tension @p t of the
+  // step's start; where that stretches the rope beyond the maximum pull, it then pays out (a
+  // stalled winch slips on its brake or its motor's torque) at the maximum pull. A drum of
+  // maximum pull 0 follows the rope: no tension, no work.
   void RopeGrab::wind(double &paid_out, double length_before, double length_after, double t, double dt,
-                      const Winch &w, double stiffness, double damping, Work &ledger)
+                      double drum_speed, const Winch &w, double stiffness, double damping, Work &ledger)
   {
+    if (w.maximum_pull == 0)
+      {
+        paid_out = length_after;
+        return;
+      }
     const double stretch = length_before - paid_out;
-    paid_out -= w.speed * dt;
-    ledger.winches += t * w.speed * dt;
+    paid_out -= drum_speed * dt;
+    ledger.winches += t * drum_speed * dt;
     if (damping > 0 && stretch > 0) // the tension beyond k e, over the stretch's change
       ledger.damping += (t - stiffness * stretch) * ((length_after - paid_out) - stretch);
     if (stiffness > 0 && w.maximum_pull < std::numeric_limits<double>::infinity())
@@ -288,6 +295,13 @@ namespace abrade::dem
   void RopeGrab::step(State &s, double dt, const Eigen::Vector2d &particles, double g, const Winch &closing,
                       const Winch &holding)
   {
+    // the drums' speeds approach the winches' (a drum that follows its rope starts again from rest)
+    const auto drum = [&](double &speed, const Winch &w) {
+      const double most = d.winch_acceleration > 0 ? d.winch_acceleration * dt : std::numeric_limits<double>::infinity();
+      speed = w.maximum_pull == 0 ? 0.0 : std::clamp(w.speed, speed - most, speed + most);
+    };
+    drum(s.closing_drum_speed, closing);
+    drum(s.holding_drum_speed, holding);
     const double rope_c = closing_rope_length(s.z, s.angle), rope_h = holding_rope_length(s.z, s.angle);
     release(s.closing_paid_out, rope_c, closing, d.closing_rope_stiffness, ledger);
     release(s.holding_paid_out, rope_h, holding, d.holding_rope_stiffness, ledger);
@@ -321,10 +335,10 @@ namespace abrade::dem
     s.angle += dt * u[1];
     ledger.loads += particles.dot(Eigen::Vector2d(s.z - z0, s.angle - angle0));
 
-    wind(s.closing_paid_out, rope_c, closing_rope_length(s.z, s.angle), t_c, dt, closing, d.closing_rope_stiffness,
-         d.closing_rope_damping, ledger);
-    wind(s.holding_paid_out, rope_h, holding_rope_length(s.z, s.angle), t_h, dt, holding, d.holding_rope_stiffness,
-         d.holding_rope_damping, ledger);
+    wind(s.closing_paid_out, rope_c, closing_rope_length(s.z, s.angle), t_c, dt, s.closing_drum_speed, closing,
+         d.closing_rope_stiffness, d.closing_rope_damping, ledger);
+    wind(s.holding_paid_out, rope_h, holding_rope_length(s.z, s.angle), t_h, dt, s.holding_drum_speed, holding,
+         d.holding_rope_stiffness, d.holding_rope_damping, ledger);
   }
 
   // --- energy ---

@@ -4,6 +4,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/closest_point.h>
 #include <abrade/dem/contact_law.h>
+#include <abrade/dem/wall_driver.h>
 #include <abrade/dem/wall_motion_model.h>
 #include "simulation_impl.h"
 
@@ -274,6 +275,17 @@ namespace abrade::dem
   }
 
   void Simulation::add_hook(std::shared_ptr<StepHook> hook) { hooks.push_back(std::move(hook)); }
+
+  void Simulation::add_driver(std::shared_ptr<WallDriver> driver) { drivers.push_back(std::move(driver)); }
+
+  void Simulation::enter_phase(const std::string &phase)
+  {
+    current_phase = phase;
+    for (auto &w : walls)
+      w.set_phase(phase);
+    for (auto &driver : drivers)
+      driver->phase_changed(*this, phase);
+  }
 
   void Simulation::warn(const std::string &w) { warnings.push_back(w); }
 
@@ -788,6 +800,8 @@ namespace abrade::dem
     else
       half_kick<false>(P, h, m.team());
     accelerate_walls(dt);
+    for (auto &driver : drivers)
+      driver->drive(*this, dt);
 
     // built-in per-triangle impulses, then the plug-ins
     m.log.for_each([&](const WallContactRecord &r) {
@@ -844,9 +858,7 @@ namespace abrade::dem
   {
     if (!is_set_up)
       setup();
-    current_phase = phase;
-    for (auto &w : walls)
-      w.set_phase(phase);
+    enter_phase(phase);
     for (auto &hook : hooks)
       hook->phase_changed(*this, phase);
     const double steps = duration / time_step;
@@ -868,9 +880,7 @@ namespace abrade::dem
   {
     if (!is_set_up)
       setup();
-    current_phase = "settle";
-    for (auto &w : walls)
-      w.set_phase("settle");
+    enter_phase("settle");
     const double t0 = t;
     while (t - t0 < max_time)
       {

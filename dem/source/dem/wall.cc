@@ -28,6 +28,8 @@ namespace abrade::dem
       return;
     phase         = name;
     time_in_phase = 0;
+    if (motion.kind == WallMotion::Kind::driven) // (its mechanism knows the phase too)
+      return;
     free_in_phase = motion.free_phases.empty() || motion.free_phases.count(phase) > 0;
     if (motion.model)
       prescribe(motion.model->velocity(motion, phase, 0));

@@ -5,6 +5,7 @@
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/walls/wall_geometry.h>
 #include <abrade/dem/generation.h>
+#include <abrade/dem/rope_grab_driver.h>
 #include <abrade/dem/simulation.h>
 #include <abrade/dem/wear.h>
 
@@ -92,6 +93,8 @@ namespace abrade::coupling
       double               protrusion = 0.02; ///< of a mounted knife's edge beyond the lip [m]
     };
     std::vector<WallCase> walls;
+    /// The mechanism that moves a grab's walls (Grab mechanism; none: each wall's own motion).
+    std::optional<dem::RopeGrabRig> grab_mechanism;
     /// Knife/Length, by which mount_knives centres a mounted knife on its lip [m]
     double mounted_knife_length = 0.4;
     double snapshot_interval = 0.05, force_interval = 1e-3;
@@ -101,6 +104,7 @@ namespace abrade::coupling
   /// Reads and checks the DEM parameters; errors name the file, line and key.
   DemCase read_dem_case(ParameterFile &file);
 
-  /// Builds the simulation (materials, interactions, walls) of a case, without particles.
-  void build_simulation(const DemCase &c, dem::Simulation &sim);
+  /// Builds the simulation (materials, interactions, walls, the grab's mechanism) of a case,
+  /// without particles; returns the mechanism that moves the grab's walls (none: null).
+  std::shared_ptr<dem::RopeGrabDriver> build_simulation(const DemCase &c, dem::Simulation &sim);
 } // namespace abrade::coupling

@@ -39,9 +39,10 @@
 // slack below zero stretch. The closing rope's length below the crane is
 // L_c = -z + (n - 1) d + const (n falls between the heads, one line up from the upper head), the
 // holding ropes' L_h = -z - d + const; a rope's tension is k (L - lambda) (+ damping) where
-// lambda, the length the winch has paid out, changes at the winch's speed. A winch pulls at
-// most its maximum pull: beyond it, the drum pays out (a stall: the tension stays at the
-// maximum pull). A winch of maximum pull 0 keeps its rope slack.
+// lambda, the length the winch has paid out, changes at the drum's speed, which approaches the
+// speed asked for at the winch's acceleration. A winch pulls at most its maximum pull: beyond it,
+// the drum pays out (a stall: the tension stays at the maximum pull). A winch of maximum pull 0
+// lets its drum follow the rope at no tension (the rope kept just slack).
 //
 // Stops: the shells cannot close past the angle at which their lips meet, nor open past the
 // angle given as fully open; reaching one is a plastic impact (the shells stop; the vertical
@@ -78,6 +79,8 @@ namespace abrade::dem
     double closing_rope_damping   = 0; ///< [N s/m]
     double holding_rope_stiffness = 0; ///< [N/m] all holding ropes together
     double holding_rope_damping   = 0; ///< [N s/m]
+    /// [m/s^2] How fast a winch's drum changes speed towards the one asked for (0: at once).
+    double winch_acceleration = 0;
 
     /// Throws std::invalid_argument naming what is wrong (a linkage that cannot be assembled at
     /// the open pose, a non-positive mass, ...).
@@ -88,7 +91,9 @@ namespace abrade::dem
   struct Winch
   {
     double speed        = 0; ///< [m/s] hauling in (> 0) or paying out (< 0)
-    double maximum_pull = std::numeric_limits<double>::infinity(); ///< [N] stall pull; 0: the rope is kept slack
+    /// [N] Stall pull. 0: the drum follows the rope at no tension (a rope kept just slack: neither
+    /// pull nor slack length; the speed does not matter).
+    double maximum_pull = std::numeric_limits<double>::infinity();
   };
 
   class RopeGrab
@@ -111,6 +116,8 @@ namespace abrade::dem
       double angle_rate = 0; ///< [rad/s]
       double closing_paid_out = 0; ///< [m] lambda_c (same reference as closing_rope_length())
       double holding_paid_out = 0; ///< [m] lambda_h
+      double closing_drum_speed = 0; ///< [m/s] hauling in > 0 (it approaches the winch's speed)
+      double holding_drum_speed = 0; ///< [m/s]
     };
 
     /// Bookkeeping of the work done on the mechanism (energy()'s ledger).
@@ -165,7 +172,8 @@ namespace abrade::dem
     double vertical_velocity(Part part, const State &s) const;
     double angular_velocity(Part part, const State &s) const;
 
-    /// Rope tensions [N] in state @p s, the winches moving at @p closing / @p holding.
+    /// Rope tensions [N] in state @p s (its drums' speeds), the winches' maximum pulls those of
+    /// @p closing / @p holding.
     double closing_tension(const State &s, const Winch &closing) const;
     double holding_tension(const State &s, const Winch &holding) const;
     /// The shells' reaction at a stop in the last step [N m] (0: not at a stop): the torque
@@ -204,9 +212,10 @@ namespace abrade::dem
     Work           ledger;
     double         last_stop_reaction = 0;
 
-    static double tension(double stiffness, double damping, double stretch, double length_rate, const Winch &w);
+    static double tension(double stiffness, double damping, double stretch, double length_rate, double drum_speed,
+                          double maximum_pull);
     static void   release(double &paid_out, double length, const Winch &w, double stiffness, Work &ledger);
     static void   wind(double &paid_out, double length_before, double length_after, double t, double dt,
-                       const Winch &w, double stiffness, double damping, Work &ledger);
+                       double drum_speed, const Winch &w, double stiffness, double damping, Work &ledger);
   };
 } // namespace abrade::dem

@@ -9,8 +9,8 @@
 //   sim.run_phase("penetration", 0.2667);
 //
 // Each step is velocity Verlet: half kick, drift (walls move too), neighbour-list check, forces
-// (gravity, particle-particle, particle-wall Hertz-Mindlin), half kick, rigid-body walls, hooks,
-// checks. Neighbours come from a cell list with a Verlet skin, rebuilt when any particle (or
+// (gravity, particle-particle, particle-wall Hertz-Mindlin), half kick, rigid-body walls, the
+// mechanisms that drive walls, hooks, checks. Neighbours come from a cell list with a Verlet skin, rebuilt when any particle (or
 // wall) has moved far enough to bring a new pair into contact; particles are sorted by cell at
 // each rebuild. Threads (OpenMP) work over particles; the work is cut into a fixed number of
 // shares with a force buffer each, so the results do not depend on how many threads work on the
@@ -40,6 +40,7 @@
 namespace abrade::dem
 {
   class ThreadGovernor;
+  class WallDriver;
 
   struct Settings
   {
@@ -112,6 +113,9 @@ namespace abrade::dem
     void set_interaction(int material_a, int material_b, const Interaction &i);
     int  add_wall(Wall wall);
     void add_hook(std::shared_ptr<StepHook> hook);
+    /// A mechanism that moves some of the walls (wall_driver.h), called every step after the
+    /// rigid-body walls.
+    void add_driver(std::shared_ptr<WallDriver> driver);
     /// The particles owned by this rank (all of them in a serial run). Non-const access drops
     /// the ghost layer (the next step rebuilds it), so particles may be added or moved.
     ParticleStore       &particles();
@@ -186,6 +190,7 @@ namespace abrade::dem
     std::vector<PairCoefficients>           coefficients;
     std::vector<Wall>                       walls;
     std::vector<std::shared_ptr<StepHook>>  hooks;
+    std::vector<std::shared_ptr<WallDriver>> drivers;
     std::vector<std::string>                warnings;
     std::string                             current_phase;
     double                                  t         = 0;
@@ -210,6 +215,8 @@ namespace abrade::dem
     void permute_wall_histories(const std::vector<std::size_t> &order);
     /// Rigid-body walls: velocity updates from this step's loads (a body's walls together).
     void accelerate_walls(double dt);
+    /// Sets the walls (and the drivers) to @p phase.
+    void enter_phase(const std::string &phase);
     bool needs_rebuild() const;
     void compute_forces();
     /// Pair and wall forces with the contact law of Settings::contact (contact_law.h).

@@ -30,7 +30,8 @@ namespace abrade::dem
     {
       fixed,      ///< never moves
       prescribed, ///< piecewise-constant velocity per phase (piecewise-linear position)
-      rigid_body  ///< free degrees of freedom driven by gravity and particle forces
+      rigid_body, ///< free degrees of freedom driven by gravity and particle forces
+      driven      ///< moved by a mechanism (wall_driver.h), which sets its velocities every step
     };
     Kind kind = Kind::fixed;
     /// The motion chosen by Motion/Type (wall_motion_model.h), which prescribes the velocities;

@@ -1,0 +1,69 @@
+// The subsection "Grab mechanism" (walls/grab_mechanism.h).
+#include <abrade/coupling/parameter_section.h>
+#include <abrade/coupling/walls/grab_mechanism.h>
+#include <abrade/dem/rope_grab_driver.h>
+
+#include <algorithm>
+
+namespace abrade::coupling
+{
+  void declare_grab_mechanism(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Grab mechanism");
+    prm.declare_entry("Type", "none", dealii::Patterns::Selection("none|rope"),
+                      "none: the walls move as their own Motion says; rope: a rope grab's mechanism moves the "
+                      "walls of its shells and heads (upper head with holding ropes, closing rope reeved "
+                      "between the heads, tie rods to the shells; docs/grab.md), under the particles' loads, "
+                      "gravity and its winches.");
+    PluginSection section(prm);
+    dem::declare_rope_grab_parameters(section);
+    prm.leave_subsection();
+  }
+
+  void read_grab_mechanism(ParameterFile &f, DemCase &c)
+  {
+    auto &prm = f.handler();
+    prm.enter_subsection("Grab mechanism");
+    if (prm.get("Type") == "none")
+      {
+        prm.leave_subsection();
+        return;
+      }
+    const std::vector<std::string> path = {"Grab mechanism"};
+    std::vector<std::string>       phases;
+    for (const auto &p : c.phases)
+      phases.push_back(p.first);
+    dem::RopeGrabRig rig = dem::parse_rope_grab_parameters(PluginSection(f, path), phases);
+    prm.leave_subsection();
+
+    const auto key_of = [](dem::RopeGrab::Part part) {
+      switch (part)
+        {
+          case dem::RopeGrab::Part::right_shell:
+            return "Right shell walls";
+          case dem::RopeGrab::Part::left_shell:
+            return "Left shell walls";
+          case dem::RopeGrab::Part::lower_head:
+            return "Lower head walls";
+          default:
+            return "Upper head walls";
+        }
+    };
+    const auto claimed = rig.walls;
+    for (const auto &[name, part] : claimed)
+      {
+        const auto wc = std::find_if(c.walls.begin(), c.walls.end(), [&](const auto &w) { return w.wall.name == name; });
+        if (wc == c.walls.end())
+          f.fail(path, key_of(part), "'" + name + "' is not one of Walls");
+        if (wc->wall.motion.kind != dem::WallMotion::Kind::fixed)
+          f.fail({"Wall " + name, "Motion"}, "Type",
+                 "the grab's mechanism moves this wall (Grab mechanism/" + std::string(key_of(part)) +
+                   "): leave its Motion out");
+        for (const auto &knife : c.walls) // knives mounted on a shell ride with it
+          if (knife.mount == name &&
+              std::none_of(rig.walls.begin(), rig.walls.end(), [&](const auto &w) { return w.first == knife.wall.name; }))
+            rig.walls.emplace_back(knife.wall.name, part);
+      }
+    c.grab_mechanism = rig;
+  }
+} // namespace abrade::coupling
