@@ -92,6 +92,13 @@ namespace abrade::coupling
         w.mesh      = dem::TriangleMesh();
         w.mesh.vertices = {lowest};
         w.initialise();
+        if (c.grab_mechanism && std::any_of(c.grab_mechanism->walls.begin(), c.grab_mechanism->walls.end(),
+                                            [&](const auto &m) { return m.first == wc.wall.name; }))
+          {
+            scene.notes.push_back("wall " + wc.wall.name + " rides on the grab's rope mechanism, which its winches and "
+                                  "the particles move: its path is not drawn");
+            continue;
+          }
         if (w.motion.kind == dem::WallMotion::Kind::fixed)
           continue;
         if (w.motion.kind == dem::WallMotion::Kind::rigid_body)

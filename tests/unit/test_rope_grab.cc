@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 using namespace abrade::dem;
 
@@ -201,9 +203,10 @@ double synchronised_energy(const RopeGrab &grab, const RopeGrab::State &before, 
 
 // A cycle in vacuum: the grab, open and hanging on its holding ropes, is lowered by both
 // winches, then falls with the holding ropes slack while the closing winch hauls in and closes
-// it onto its stop, then is hoisted at the closing winch's stall pull. Energy: kinetic + gravity
-// + the ropes' elastic energy changes by the work the winches do on the ropes, less the rope
-// damping and the shells' impact on their stop, to 1e-4 of the winches' work.
+// it onto its stop, then is hoisted at the closing winch's stall pull, a constant load of the
+// particles' kind acting throughout. Energy: kinetic + gravity + the ropes' elastic energy
+// changes by the work the winches do on the ropes and the load's, less the rope damping and the
+// shells' impact on their stop, to 1e-4 of the winches' work.
 TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
 {
   for (const double damping : {0.0, 2e3})
@@ -211,6 +214,7 @@ TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
       RopeGrabDesign design       = coarse_grab();
       design.closing_rope_damping = damping;
       design.holding_rope_damping = damping;
+      design.open_angle           = 0; // it starts on its opening stop
       RopeGrab        grab(design);
       RopeGrab::State s;
       s.z     = 3;
@@ -230,7 +234,9 @@ TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
         {1.0, {0.4, 3 * m * g}, {0, 0}},   // closing: holding ropes slack
         {1.0, {0.5, 1.5 * m * g}, {0, 0}}, // hoisting on the closing rope
       };
-      double          e0 = 0, e1 = 0, most_angle = 0;
+      // a constant load of the particles' kind (a vertical force and a closing moment)
+      const Eigen::Vector2d particles(-300, 40);
+      double          e0 = 0, e1 = 0, most_angle = 0, least_angle = 0, lowered_angle = 0;
       RopeGrab::Work  w0, w1;
       bool            first = true;
       for (const Phase &p : cycle)
@@ -238,21 +244,27 @@ TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
           {
             const RopeGrab::State before = s;
             const RopeGrab::Work  work   = grab.work();
-            grab.step(s, dt, Eigen::Vector2d::Zero(), g, p.closing, p.holding);
+            grab.step(s, dt, particles, g, p.closing, p.holding);
             e1 = synchronised_energy(grab, before, s);
             w1 = work;
             if (first)
               e0 = e1, w0 = w1, first = false;
-            most_angle = std::max(most_angle, s.angle);
+            most_angle  = std::max(most_angle, s.angle);
+            least_angle = std::min(least_angle, s.angle);
+            if (&p == cycle)
+              lowered_angle = s.angle;
           }
       const double winches = w1.winches - w0.winches, dissipated = w1.damping - w0.damping,
-                   stops = w1.stops - w0.stops;
+                   stops = w1.stops - w0.stops, loads = w1.loads - w0.loads;
       EXPECT_EQ(most_angle, design.closed_angle) << "the shells closed onto their stop";
+      EXPECT_EQ(least_angle, design.open_angle) << "opened past its stop";
+      EXPECT_EQ(lowered_angle, design.open_angle) << "lowered on its holding ropes, it hangs open on its stop";
+      EXPECT_GT(std::abs(loads), 100.0);
       EXPECT_GT(stops, 100.0);
       EXPECT_GT(std::abs(winches), 1000.0);
-      EXPECT_NEAR(e1 - e0, winches - dissipated - stops, 1e-4 * std::abs(winches))
+      EXPECT_NEAR(e1 - e0, winches - dissipated - stops + loads, 1e-4 * std::abs(winches))
         << "damping " << damping << ": winches " << winches << " J, damping " << dissipated << " J, stop "
-        << stops << " J";
+        << stops << " J, loads " << loads << " J";
       if (damping > 0)
         EXPECT_GT(dissipated, 10.0);
       else
@@ -289,16 +301,151 @@ TEST(RopeGrab, ShellsStopPlasticallyKeepingTheVerticalMomentum)
   EXPECT_NEAR(grab.work().stops, lost, 2e-3 * lost);
 }
 
+// The kinetic energy against the bodies' own velocities, each found by differentiating its
+// position along the motion numerically: the heads (on the axis), each shell's centre of mass
+// (turned about the moving hinge) and its spin.
+TEST(RopeGrab, KineticEnergyIsTheBodiesOwn)
+{
+  const RopeGrabDesign design = coarse_grab();
+  const RopeGrab       grab(design);
+  for (const double angle : {-0.05, 0.4, 0.9})
+    {
+      RopeGrab::State s;
+      s.z          = 1.3;
+      s.angle      = angle;
+      s.z_rate     = -0.7;
+      s.angle_rate = 1.9;
+      const double h        = 1e-6;
+      const auto   position = [&](double t) {
+        const double z = s.z + t * s.z_rate, a = s.angle + t * s.angle_rate;
+        const double c = std::cos(a), sn = std::sin(a);
+        const Eigen::Vector2d shell(design.shell_centre.x() * c + design.shell_centre.y() * sn,
+                                    -design.shell_centre.x() * sn + design.shell_centre.y() * c);
+        // lower head, upper head, right shell's centre, left shell's centre (x mirrored)
+        return std::array<Eigen::Vector2d, 4>{Eigen::Vector2d(0, z), Eigen::Vector2d(0, z + grab.head_distance(a)),
+                                              Eigen::Vector2d(0, z) + shell,
+                                              Eigen::Vector2d(-shell.x(), z + shell.y())};
+      };
+      const auto   ahead = position(h), behind = position(-h);
+      const double masses[] = {design.lower_head_mass, design.upper_head_mass, design.shell_mass, design.shell_mass};
+      double       energy   = 2 * 0.5 * design.shell_inertia * s.angle_rate * s.angle_rate; // the shells' spin
+      for (int b = 0; b < 4; ++b)
+        energy += 0.5 * masses[b] * ((ahead[b] - behind[b]) / (2 * h)).squaredNorm();
+      EXPECT_NEAR(grab.kinetic_energy(s), energy, 1e-7 * energy) << "at " << angle << " rad";
+    }
+}
+
+// Hanging still on one rope, the grab bobs on it as a damped oscillator of its whole mass: on
+// the holding ropes open on the opening stop, on the closing rope closed on the closing stop
+// (the shells pressed onto the stop, the angle fixed: the rope's length changes by -dz). The
+// amplitude falls by exp(-2 pi zeta / sqrt(1 - zeta^2)) each period 2 pi / (omega sqrt(1 -
+// zeta^2)), omega^2 = k / m, zeta = c / (2 sqrt(k m)).
+TEST(RopeGrab, BobsOnItsRopeAsADampedOscillator)
+{
+  for (const bool closing : {false, true})
+    {
+      RopeGrabDesign design = coarse_grab();
+      const double   k = closing ? design.closing_rope_stiffness : design.holding_rope_stiffness;
+      const double   m = total_mass(design), zeta = 0.05;
+      (closing ? design.closing_rope_damping : design.holding_rope_damping) = 2 * zeta * std::sqrt(k * m);
+      RopeGrab        grab(design);
+      RopeGrab::State s;
+      s.z     = 2;
+      s.angle = closing ? design.closed_angle : design.open_angle;
+      // 1 % more stretch than the weight's: it starts 0.01 m g / k below its rest
+      grab.tension_ropes(s, closing ? 1.01 * m * g : 0, closing ? 0 : 1.01 * m * g);
+      const Winch brake{0, std::numeric_limits<double>::infinity()}, slack{0, 0};
+      const double dt = 1e-6, omega = std::sqrt(k / m), damped = omega * std::sqrt(1 - zeta * zeta);
+      const double rest = s.z + 0.01 * m * g / k;
+      std::vector<double> peaks; // |z - rest| at the turning points
+      double              previous_rate = 0;
+      for (int i = 0; i < int(2.5 * 2 * M_PI / damped / dt); ++i)
+        {
+          grab.step(s, dt, Eigen::Vector2d::Zero(), g, closing ? brake : slack, closing ? slack : brake);
+          if (i > 0 && (s.z_rate > 0) != (previous_rate > 0))
+            peaks.push_back(std::abs(s.z - rest));
+          previous_rate = s.z_rate;
+          ASSERT_EQ(s.angle, closing ? design.closed_angle : design.open_angle) << "left its stop";
+        }
+      ASSERT_GE(peaks.size(), 4u);
+      const double expected = std::exp(-2 * M_PI * zeta / std::sqrt(1 - zeta * zeta));
+      EXPECT_NEAR(peaks[2] / peaks[0], expected, 2e-3) << (closing ? "closing" : "holding") << " rope";
+      EXPECT_NEAR(peaks[3] / peaks[1], expected, 2e-3) << (closing ? "closing" : "holding") << " rope";
+    }
+}
+
+// While the shells turn and the hinge moves, a taut rope's tension is k e + c de/dt, with the
+// stretch's rate from the rope's length differentiated numerically along the motion, plus the
+// drum's hauling speed.
+TEST(RopeGrab, RopeTensionIsElasticPlusDampingOfTheStretchRate)
+{
+  RopeGrabDesign design       = coarse_grab();
+  design.closing_rope_damping = 3e3;
+  design.holding_rope_damping = 1e3;
+  const RopeGrab  grab(design);
+  RopeGrab::State s;
+  s.z                  = 1.5;
+  s.angle              = 0.5;
+  s.z_rate             = 0.3;
+  s.angle_rate         = -0.8;
+  s.closing_drum_speed = 0.6;
+  s.holding_drum_speed = -0.4;
+  grab.tension_ropes(s, 2000, 3000);
+  const Winch  free_pull{0.6, std::numeric_limits<double>::infinity()};
+  const double h    = 1e-6;
+  const auto   rate = [&](auto length) {
+    return (length(s.z + h * s.z_rate, s.angle + h * s.angle_rate) -
+            length(s.z - h * s.z_rate, s.angle - h * s.angle_rate)) / (2 * h);
+  };
+  const double closing_rate =
+    rate([&](double z, double a) { return grab.closing_rope_length(z, a); }) + s.closing_drum_speed;
+  const double holding_rate =
+    rate([&](double z, double a) { return grab.holding_rope_length(z, a); }) + s.holding_drum_speed;
+  EXPECT_NEAR(grab.closing_tension(s, free_pull), 2000 + 3e3 * closing_rate, 1e-5);
+  EXPECT_NEAR(grab.holding_tension(s, free_pull), 3000 + 1e3 * holding_rate, 1e-5);
+  EXPECT_GT(std::abs(closing_rate), 0.5); // the damping is a real part of the tension here
+}
+
+// A drum reaches the speed asked for at the winch's acceleration: paying out from rest, it has
+// paid out a t^2 / 2 after t.
+TEST(RopeGrab, DrumsRampUpAtTheWinchsAcceleration)
+{
+  const RopeGrabDesign design = coarse_grab();
+  RopeGrab             grab(design);
+  RopeGrab::State      s;
+  s.z = 3;
+  grab.tension_ropes(s, 0, total_mass(design) * g);
+  const double paid = s.holding_paid_out, dt = 1e-5, t = 0.2;
+  for (int i = 0; i < int(std::lround(t / dt)); ++i)
+    grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{0, 0}, Winch{-1.0, std::numeric_limits<double>::infinity()});
+  EXPECT_NEAR(s.holding_drum_speed, -design.winch_acceleration * t, 1e-9);
+  EXPECT_NEAR(s.holding_paid_out - paid, 0.5 * design.winch_acceleration * t * t, 1e-5);
+}
+
 TEST(RopeGrab, RefusesALinkageThatCannotWork)
 {
   RopeGrabDesign d = coarse_grab();
   d.tie_rod_length = 0.1; // cannot reach the shells
-  EXPECT_THROW(d.check(), std::invalid_argument);
+  EXPECT_THROW(d.check(), RopeGrabDesignError);
   d                = coarse_grab();
   d.closed_angle   = 2.5; // passes the toggle point (or the heads meet) before closing
-  EXPECT_THROW(d.check(), std::invalid_argument);
+  EXPECT_THROW(d.check(), RopeGrabDesignError);
   d            = coarse_grab();
   d.shell_mass = 0;
-  EXPECT_THROW(d.check(), std::invalid_argument);
+  EXPECT_THROW(d.check(), RopeGrabDesignError);
+  // massless heads and a shell without inertia whose centre of mass is on the hinge's
+  // vertical at some angle: a motion without inertia
+  d                 = coarse_grab();
+  d.lower_head_mass = d.upper_head_mass = d.shell_inertia = 0;
+  d.shell_centre    = {0.3, 0.0}; // level with the hinge at the open pose
+  try
+    {
+      d.check();
+      ADD_FAILURE() << "a singular mass matrix was accepted";
+    }
+  catch (const RopeGrabDesignError &e)
+    {
+      EXPECT_EQ(e.parameter, "Lower head mass");
+    }
   EXPECT_NO_THROW(coarse_grab().check());
 }

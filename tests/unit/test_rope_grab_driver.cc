@@ -41,7 +41,7 @@ namespace
     r.hinge                                         = hinge;
     r.phases                                        = phases;
     r.walls = {{"right", RopeGrab::Part::right_shell}, {"left", RopeGrab::Part::left_shell},
-               {"head", RopeGrab::Part::lower_head}};
+               {"head", RopeGrab::Part::lower_head}, {"top", RopeGrab::Part::upper_head}};
     return r;
   }
 
@@ -55,9 +55,10 @@ namespace
   }
 } // namespace
 
-// Plates on the shells and the lower head, no particles: closing on the winch, each plate's
-// vertices are where the mechanism's state puts them (the hinge moved by z - z0, a shell turned
-// by +-angle about it).
+// Plates on the shells and the heads, no particles: closing on the winch, held still a while
+// (a phase the mechanism does not move in), closing again. Each plate's vertices are where the
+// mechanism's state puts them: the hinge moved by z - z0, a shell turned by +-angle about it,
+// the upper head moved by z - z0 plus the head distance's change.
 TEST(RopeGrabDriver, WallsRideOnTheMechanismsParts)
 {
   Simulation sim(quiet_settings(1e-4, true));
@@ -65,35 +66,81 @@ TEST(RopeGrabDriver, WallsRideOnTheMechanismsParts)
   sim.add_wall(plate_wall("right", m, hinge + Vec3(0.3, 0, -0.3), 0.2));
   sim.add_wall(plate_wall("left", m, hinge + Vec3(-0.3, 0, -0.3), 0.2));
   sim.add_wall(plate_wall("head", m, hinge + Vec3(0, 0, 0.1), 0.2));
-  const std::vector<TriangleMesh> reference = {sim.wall(0).mesh, sim.wall(1).mesh, sim.wall(2).mesh};
+  sim.add_wall(plate_wall("top", m, hinge + Vec3(0, 0, 1.2), 0.2));
+  std::vector<TriangleMesh> reference;
+  for (int w = 0; w < 4; ++w)
+    reference.push_back(sim.wall(w).mesh);
   RopeGrabRig rig = coarse_rig({"closing"});
   rig.closing["closing"] = {1.0, 1e5}; // hauls in
   rig.holding["closing"] = {0, 0};     // slack
   auto driver = std::make_shared<RopeGrabDriver>(rig, sim);
   sim.add_driver(driver);
   sim.setup();
-  sim.run_phase("closing", 0.6);
+  const RopeGrab &grab = driver->mechanism();
 
+  const auto check_pose = [&](double z, double angle, const std::string &when) {
+    const Vec3 moved = hinge + Vec3(0, 0, z - hinge.z());
+    for (int w = 0; w < 4; ++w)
+      {
+        const double turned = w == 0 ? angle : w == 1 ? -angle : 0.0;
+        const Vec3   lift   = w == 3 ? Vec3(0, 0, grab.head_distance(angle) - grab.head_distance(0)) : Vec3::Zero();
+        const Eigen::Matrix3d turn = Eigen::AngleAxisd(turned, Vec3::UnitY()).toRotationMatrix();
+        for (std::size_t v = 0; v < reference[w].vertices.size(); ++v)
+          {
+            const Vec3 expected = moved + lift + turn * (reference[w].vertices[v] - hinge);
+            const Vec3 now(&sim.wall(w).current[3 * v]);
+            EXPECT_NEAR((now - expected).norm(), 0, 1e-9) << when << ": " << sim.wall(w).name << " vertex " << v;
+          }
+      }
+  };
+  sim.run_phase("closing", 0.3);
   // the walls move with the velocities the mechanism set in the step before: they are one
   // drift behind its state
-  const auto &q     = driver->state();
-  const double z    = q.z - sim.dt() * q.z_rate, angle = q.angle - sim.dt() * q.angle_rate;
-  EXPECT_GT(angle, 0.3) << "the shells closed";
-  const Vec3 moved = hinge + Vec3(0, 0, z - hinge.z());
-  for (int w = 0; w < 3; ++w)
-    {
-      const Eigen::Matrix3d turn = Eigen::AngleAxisd(w == 0 ? angle : w == 1 ? -angle : 0.0, Vec3::UnitY()).toRotationMatrix();
-      for (std::size_t v = 0; v < reference[w].vertices.size(); ++v)
-        {
-          const Vec3 expected = moved + turn * (reference[w].vertices[v] - hinge);
-          const Vec3 now(&sim.wall(w).current[3 * v]);
-          EXPECT_NEAR((now - expected).norm(), 0, 1e-9) << sim.wall(w).name << " vertex " << v;
-        }
-    }
-  // a wall's velocity is its part's
+  const auto &q = driver->state();
+  EXPECT_GT(q.angle, 0.2) << "the shells closed";
+  check_pose(q.z - sim.dt() * q.z_rate, q.angle - sim.dt() * q.angle_rate, "closing");
   EXPECT_DOUBLE_EQ(sim.wall(0).angular_velocity.y(), q.angle_rate);
   EXPECT_DOUBLE_EQ(sim.wall(1).angular_velocity.y(), -q.angle_rate);
   EXPECT_DOUBLE_EQ(sim.wall(2).velocity.z(), q.z_rate);
+
+  // held still: the mechanism takes the walls' pose and stays there
+  sim.run_phase("hold", 0.05);
+  check_pose(q.z, q.angle, "held");
+  EXPECT_EQ(q.z_rate, 0);
+  sim.run_phase("closing", 0.3);
+  EXPECT_GT(q.angle, 0.5);
+  check_pose(q.z - sim.dt() * q.z_rate, q.angle - sim.dt() * q.angle_rate, "closing again");
+}
+
+// A ball resting on the upper head's plate: its weight w reaches the mechanism as (-w, -w d')
+// (the upper head rises by d' for a unit turn of the shells).
+TEST(RopeGrabDriver, AWeightOnTheUpperHeadLoadsItThroughTheLinkage)
+{
+  Simulation sim(quiet_settings(2e-5, true));
+  const int  mw = sim.add_material(steel), mp = sim.add_material(heavy);
+  sim.set_interaction(mp, mw, {0.1, 0.5, 0.0});
+  const double r = 0.05, top = hinge.z() + 1.0;
+  sim.add_wall(plate_wall("right", mw, Vec3(0.5, 0, hinge.z() - 0.3), 0.2));
+  sim.add_wall(plate_wall("left", mw, Vec3(-0.5, 0, hinge.z() - 0.3), 0.2));
+  sim.add_wall(plate_wall("top", mw, Vec3(0, 0, top), 0.3));
+  sim.particles().add(0, 0.05, 0, top + r, r, heavy.density, mp);
+  const double w = 9.81 * heavy.density * 4.0 / 3.0 * M_PI * r * r * r;
+  RopeGrabRig  rig = coarse_rig({"hold"});
+  rig.walls        = {{"right", RopeGrab::Part::right_shell}, {"left", RopeGrab::Part::left_shell},
+               {"top", RopeGrab::Part::upper_head}};
+  auto driver = std::make_shared<RopeGrabDriver>(rig, sim);
+  sim.add_driver(driver);
+  sim.setup();
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  long            n    = 0;
+  sim.run_phase("hold", 0.5, [&](const Simulation &sim) {
+    if (sim.time() > 0.3)
+      mean += driver->particle_loads(), ++n;
+  });
+  mean /= n;
+  const double slope = driver->mechanism().head_distance_slope(0);
+  EXPECT_NEAR(mean[0], -w, 2e-3 * w);
+  EXPECT_NEAR(mean[1], -w * slope, 2e-3 * w * std::abs(slope));
 }
 
 // A heavy ball resting on a plate of the right shell, x from the hinge, while the grab hangs
@@ -112,7 +159,7 @@ TEST(RopeGrabDriver, ARestingWeightReachesTheMechanismAsAHandComputesIt)
   const double w = 9.81 * heavy.density * 4.0 / 3.0 * M_PI * r * r * r;
 
   RopeGrabRig rig = coarse_rig({"hold"});
-  rig.walls.pop_back(); // no head plate
+  rig.walls = {{"right", RopeGrab::Part::right_shell}, {"left", RopeGrab::Part::left_shell}};
   auto driver = std::make_shared<RopeGrabDriver>(rig, sim);
   sim.add_driver(driver);
   sim.setup();
@@ -137,6 +184,73 @@ TEST(RopeGrabDriver, ARestingWeightReachesTheMechanismAsAHandComputesIt)
   EXPECT_NEAR(driver->state().angle, 0, 1e-12) << "hanging open on its stop";
 }
 
+// The coarse grab's shells (0.4 m radius, open 60 degrees) lowered on the holding ropes onto a
+// floor of heavy balls in a box, then left standing with both ropes slack: it stands on its
+// lips, its hinge 0.4 cos 60 deg = 0.2 m above the balls' surface under the lips (less the
+// contacts' overlap, about 0.2 mm), open on its stop, at rest, the floor carrying its whole
+// weight.
+TEST(RopeGrabDriver, AFreeGrabStandsOnItsLipsOnARigidFloor)
+{
+  Settings settings = quiet_settings(0, true);
+  settings.threads  = 2;
+  Simulation   sim(settings);
+  const int    mw = sim.add_material(steel), mb = sim.add_material(heavy);
+  sim.set_interaction(mb, mw, {0.2, 0.5, 0.0});
+  sim.set_interaction(mb, mb, {0.2, 0.5, 0.0});
+  const double r = 0.02, top = 2 * r;
+  const Vec3   lo(-0.6, -0.36, 0), hi(0.6, 0.36, 0.5);
+  Wall         box;
+  box.name     = "floor";
+  box.material = mw;
+  box.mesh     = primitives::box_container(lo, hi);
+  sim.add_wall(box);
+  long id = 0;
+  for (double x = lo.x() + r; x < hi.x() - r + 1e-9; x += 2 * r)
+    for (double y = lo.y() + r; y < hi.y() - r + 1e-9; y += 2 * r)
+      sim.particles().add(id++, x, y, r, r, heavy.density, mb);
+  const Vec3 start(0, 0, top + 0.2 + 0.03); // lips 30 mm above the balls
+  for (const int side : {1, -1})
+    {
+      Wall shell;
+      shell.name     = side > 0 ? "right" : "left";
+      shell.material = mw;
+      shell.mesh     = primitives::clamshell_shell(0.4, 0.6, M_PI / 2, M_PI / 3, side, 0.04);
+      shell.mesh.translate(start);
+      sim.add_wall(shell);
+    }
+  RopeGrabRig rig = coarse_rig({"lowering", "standing"});
+  rig.hinge       = start;
+  rig.walls       = {{"right", RopeGrab::Part::right_shell}, {"left", RopeGrab::Part::left_shell}};
+  rig.holding["lowering"] = {-0.2, std::numeric_limits<double>::infinity()};
+  rig.closing["lowering"] = rig.closing["standing"] = rig.holding["standing"] = {0, 0}; // slack
+  auto driver = std::make_shared<RopeGrabDriver>(rig, sim);
+  sim.add_driver(driver);
+  sim.setup();
+  sim.settle(1e-7, 0.3);
+  sim.run_phase("lowering", 0.25);
+  sim.run_phase("standing", 0.5);
+  double floor_load = 0;
+  long   n          = 0;
+  sim.run_phase("standing", 0.1, [&](const Simulation &s) {
+    floor_load += -s.wall(0).force.z(), ++n;
+  });
+  const auto  &q      = driver->state();
+  const double weight = 9.81 * driver->mechanism().mass_matrix(0)(0, 0);
+  // the lips (x = +-0.4 sin 60 deg) rest on the column of balls nearest below them, on their
+  // surface there; the contacts' Hertz overlap is about 0.2 mm
+  const double lip = 0.4 * std::sin(M_PI / 3);
+  const double column = lo.x() + r + 2 * r * std::round((lip - lo.x() - r) / (2 * r));
+  const double surface = r + std::sqrt(r * r - (lip - column) * (lip - column));
+  EXPECT_LT(q.z, surface + 0.2) << "stands on its lips (0.2 m below the hinge) on the balls";
+  EXPECT_GT(q.z, surface + 0.2 - 5e-4) << "sank into the floor";
+  EXPECT_EQ(q.angle, 0) << "open on its stop";
+  EXPECT_NEAR(q.z_rate, 0, 1e-3);
+  EXPECT_EQ(driver->mechanism().holding_tension(q, Winch{0, 0}), 0);
+  EXPECT_NEAR(floor_load / n, weight + sim.particles().size() * 9.81 * heavy.density * 4.0 / 3.0 * M_PI * r * r * r,
+              2e-3 * weight)
+    << "the floor carries the grab and the balls";
+}
+
 TEST(RopeGrabDriver, RefusesAWallWithAMotionOfItsOwnAndGravityAcross)
 {
   Simulation sim(quiet_settings(1e-4, true));
@@ -146,7 +260,7 @@ TEST(RopeGrabDriver, RefusesAWallWithAMotionOfItsOwnAndGravityAcross)
   sim.add_wall(right);
   sim.add_wall(plate_wall("left", m, Vec3(-0.3, 0, 1.4), 0.2));
   RopeGrabRig rig = coarse_rig({"closing"});
-  rig.walls.pop_back();
+  rig.walls = {{"right", RopeGrab::Part::right_shell}, {"left", RopeGrab::Part::left_shell}};
   EXPECT_THROW(RopeGrabDriver(rig, sim), abrade::InputError);
   rig.walls.emplace_back("nowhere", RopeGrab::Part::upper_head);
   Settings across = quiet_settings(1e-4, true);

@@ -4,6 +4,7 @@
 #include <abrade/dem/rope_grab_driver.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace abrade::coupling
 {
@@ -59,6 +60,26 @@ namespace abrade::coupling
           f.fail({"Wall " + name, "Motion"}, "Type",
                  "the grab's mechanism moves this wall (Grab mechanism/" + std::string(key_of(part)) +
                    "): leave its Motion out");
+        // a parametric shell's origin is its hinge: the mechanism must turn it about that, on
+        // its own side, and its lips must not pass each other
+        const bool shell = part == dem::RopeGrab::Part::right_shell || part == dem::RopeGrab::Part::left_shell;
+        if (shell && wc->shell)
+          {
+            const dem::Vec3 hinge_of_wall = wc->offset;
+            if (std::abs(hinge_of_wall.x() - rig.hinge.x()) > 1e-9 || std::abs(hinge_of_wall.z() - rig.hinge.z()) > 1e-9)
+              f.fail(path, "Hinge",
+                     "the shell '" + name + "' turns about its hinge at its Offset (" + std::to_string(hinge_of_wall.x()) +
+                       ", " + std::to_string(hinge_of_wall.y()) + ", " + std::to_string(hinge_of_wall.z()) +
+                       "): the mechanism's Hinge must lie on that axis (the same x and z)");
+            if ((wc->shell->side > 0) != (part == dem::RopeGrab::Part::right_shell))
+              f.fail(path, key_of(part),
+                     "the shell '" + name + "' opens towards " + (wc->shell->side > 0 ? "+x" : "-x") +
+                       ": the right shell is the +x one, the left the -x one");
+            if (!(rig.design.closed_angle < wc->shell->opening))
+              f.fail(path, "Closed angle",
+                     "the shell '" + name + "' opens " + std::to_string(wc->shell->opening * 180 / M_PI) +
+                       " degrees from straight down: closing further would turn its lip past the middle");
+          }
         for (const auto &knife : c.walls) // knives mounted on a shell ride with it
           if (knife.mount == name &&
               std::none_of(rig.walls.begin(), rig.walls.end(), [&](const auto &w) { return w.first == knife.wall.name; }))

@@ -25,21 +25,27 @@ namespace abrade::dem
 
   void RopeGrabDesign::check() const
   {
-    const auto fail = [](const std::string &why) { throw std::invalid_argument("rope grab: " + why); };
+    const auto fail = [](const std::string &parameter, const std::string &why) {
+      throw RopeGrabDesignError(parameter, why);
+    };
     if (!(tie_rod_length > 0))
-      fail("the tie rods need a positive length");
+      fail("Tie rod length", "the tie rods need a positive length");
     if (!(upper_pin_offset >= 0))
-      fail("the upper head's tie-rod pins need an offset >= 0 from the axis");
+      fail("Upper pin offset", "the upper head's tie-rod pins need an offset >= 0 from the axis");
     if (falls < 1)
-      fail("the closing rope needs at least one fall between the heads");
-    if (!(shell_mass > 0) || !(shell_inertia >= 0) || !(lower_head_mass >= 0) || !(upper_head_mass >= 0))
-      fail("the shells need a positive mass, the heads a mass >= 0 and the shells an inertia >= 0");
+      fail("Falls", "the closing rope needs at least one fall between the heads");
+    if (!(shell_mass > 0) || !(shell_inertia >= 0))
+      fail("Shell mass", "the shells need a positive mass and an inertia >= 0");
+    if (!(lower_head_mass >= 0) || !(upper_head_mass >= 0))
+      fail("Lower head mass", "the heads need masses >= 0");
     if (!(closing_rope_stiffness >= 0) || !(holding_rope_stiffness >= 0) || !(closing_rope_damping >= 0) ||
-        !(holding_rope_damping >= 0) || !(winch_acceleration >= 0))
-      fail("rope stiffness and damping, and the winches' acceleration, must be >= 0");
+        !(holding_rope_damping >= 0))
+      fail("Closing rope stiffness", "rope stiffness and damping must be >= 0");
+    if (!(winch_acceleration >= 0))
+      fail("Winch acceleration", "the winches' acceleration must be >= 0");
     if (!(closed_angle > open_angle))
-      fail("the closed angle (" + in_degrees(closed_angle) + ") must exceed the open angle (" +
-           in_degrees(open_angle) + ")");
+      fail("Closed angle", "the closed angle (" + in_degrees(closed_angle) + ") must exceed the open angle (" +
+                             in_degrees(open_angle) + ")");
     // the tie rods reach the shells at every angle between the stops, and hauling the closing
     // rope in (a shorter head distance) closes the shells there: d' < 0 (no toggle point)
     const RopeGrab grab(*this, RopeGrab::unchecked);
@@ -49,16 +55,22 @@ namespace abrade::dem
         const double angle = open_angle + (closed_angle - open_angle) * i / samples;
         const Eigen::Vector2d p = grab.shell_pin(angle);
         if (std::abs(upper_pin_offset - p.x()) >= tie_rod_length)
-          fail("the tie rods (" + std::to_string(tie_rod_length) + " m) do not reach the shells' pins at " +
-               in_degrees(angle));
+          fail("Tie rod length", "the tie rods (" + std::to_string(tie_rod_length) +
+                                   " m) do not reach the shells' pins at " + in_degrees(angle));
         if (!(grab.head_distance_slope(angle) < 0))
-          fail("the linkage passes its toggle point at " + in_degrees(angle) +
-               " (there, a shorter head distance does not close the shells): move the shells' pins or "
-               "lengthen the tie rods");
+          fail("Shell pin", "the linkage passes its toggle point at " + in_degrees(angle) +
+                              " (there, a shorter head distance does not close the shells): move the shells' "
+                              "pins or lengthen the tie rods");
+        // a mass matrix that cannot be inverted, or nearly (massless heads and shells without
+        // inertia whose centres of mass are level with the hinge), leaves a motion without inertia
+        const Eigen::Matrix2d m = grab.mass_matrix(angle);
+        if (!(m.determinant() > 1e-3 * m(0, 0) * m(1, 1)))
+          fail("Lower head mass", "the mechanism has a motion without inertia at " + in_degrees(angle) +
+                                    " (its mass matrix is singular): give the heads mass or the shells inertia");
       }
     if (!(grab.head_distance(closed_angle) > 0))
-      fail("the heads meet before the shells close (head distance " +
-           std::to_string(grab.head_distance(closed_angle)) + " m when closed)");
+      fail("Closed angle", "the heads meet before the shells close (head distance " +
+                             std::to_string(grab.head_distance(closed_angle)) + " m when closed)");
   }
 
   RopeGrab::RopeGrab(const RopeGrabDesign &design, Unchecked)
@@ -186,7 +198,7 @@ namespace abrade::dem
 
   double RopeGrab::vertical_velocity(Part part, const State &s) const
   {
-    return part == Part::upper_head ? s.z_rate + head_distance_slope(s.angle) * s.angle_rate : s.z_rate;
+    return part == Part::upper_head ? s.z_rate + s.head_distance_rate : s.z_rate;
   }
 
   double RopeGrab::angular_velocity(Part part, const State &s) const
@@ -315,7 +327,6 @@ namespace abrade::dem
     // it is a plastic impact, which loses the energy of the shells' approach, 1/2 M_eff angle'^2
     // with M_eff = M_aa - M_za^2 / M_zz (the angle's inertia with the grab free to move up or
     // down).
-    last_stop_reaction = 0;
     const double next = s.angle + dt * u[1];
     if (next > d.closed_angle || next < d.open_angle)
       {
@@ -323,7 +334,6 @@ namespace abrade::dem
         const Eigen::Vector2d free   = u;
         u[1]                         = (target - s.angle) / dt;
         u[0] += m(0, 1) * (free[1] - u[1]) / m(0, 0);
-        last_stop_reaction = (m * (u - free))[1] / dt;
         const double approach = (target - s.angle) * s.angle_rate > 0 ? s.angle_rate : 0.0;
         ledger.stops += 0.5 * (m(1, 1) - m(0, 1) * m(0, 1) / m(0, 0)) * approach * approach;
       }
@@ -331,8 +341,10 @@ namespace abrade::dem
     const double z0 = s.z, angle0 = s.angle;
     s.z_rate        = u[0];
     s.angle_rate    = u[1];
+    const double d0 = head_distance(s.angle);
     s.z += dt * u[0];
     s.angle += dt * u[1];
+    s.head_distance_rate = (head_distance(s.angle) - d0) / dt;
     ledger.loads += particles.dot(Eigen::Vector2d(s.z - z0, s.angle - angle0));
 
     wind(s.closing_paid_out, rope_c, closing_rope_length(s.z, s.angle), t_c, dt, s.closing_drum_speed, closing,

@@ -47,7 +47,17 @@ namespace abrade::dem
 
   void RopeGrabDriver::phase_changed(Simulation &sim, const std::string &phase)
   {
+    const bool was_moving = moving;
     moving = std::find(rig.phases.begin(), rig.phases.end(), phase) != rig.phases.end();
+    if (was_moving && !moving)
+      {
+        // held still: the walls are one drift behind the mechanism's state (they move with the
+        // velocities it set in the next step), so it goes back to their pose and stops there
+        now.z -= sim.dt() * now.z_rate;
+        now.angle -= sim.dt() * now.angle_rate;
+        now.z_rate = now.angle_rate = now.head_distance_rate = 0;
+        now.closing_drum_speed = now.holding_drum_speed = 0;
+      }
     if (moving)
       {
         PhaseRecord r;
@@ -189,11 +199,12 @@ namespace abrade::dem
                        "; a knife mounted on a shell (Knife mount) rides with its shell. The walls need no Motion.");
     p.declare_vector("Hinge", {0, 0, 0},
                      "[m] A point of the shells' hinge axis (along y) at the start: the shells' walls turn about it.");
-    p.declare_number("Upper pin offset", 0.3, 0, unbounded,
+    p.declare_number("Upper pin offset", 0.45, 0, unbounded,
                      "[m] Horizontal distance of the tie rods' pins on the upper head from the grab's axis. Range: >= 0.");
-    p.declare_number("Tie rod length", 0.6, 1e-6, unbounded, "[m] Tie rod (corner post), pin to pin. Range: > 0.");
-    p.declare_numbers("Shell pin", "0.2, 0.35", 2, 2, -unbounded, unbounded,
-                      "[m] The right shell's tie-rod pin." + plane);
+    p.declare_number("Tie rod length", 0.7, 1e-6, unbounded, "[m] Tie rod (corner post), pin to pin. Range: > 0.");
+    p.declare_numbers("Shell pin", "0.42, 0.3", 2, 2, -unbounded, unbounded,
+                      "[m] The right shell's tie-rod pin, outboard of its centre of mass if the grab is to "
+                      "hang open under its weight." + plane);
     p.declare_number("Closed angle", 56.4, 0, 180,
                      "[deg] How far the shells turn from their pose at the start until their lips meet (the "
                      "closing stop). Range: [0, 180].");
@@ -203,12 +214,12 @@ namespace abrade::dem
     p.declare_number("Falls", 4, 1, 100,
                      "[-] Parts of the closing rope reeved between the heads (its mechanical advantage on the "
                      "head distance). Range: [1, 100], whole.");
-    p.declare_number("Lower head mass", 100, 0, unbounded, "[kg] The lower head with its sheaves. Range: >= 0.");
-    p.declare_number("Upper head mass", 100, 0, unbounded,
+    p.declare_number("Lower head mass", 150, 0, unbounded, "[kg] The lower head with its sheaves. Range: >= 0.");
+    p.declare_number("Upper head mass", 50, 0, unbounded,
                      "[kg] The upper head (crosshead) with its sheaves, and half the tie rods. Range: >= 0.");
     p.declare_number("Shell mass", 150, 1e-9, unbounded,
                      "[kg] Each shell with its knife (and half its tie rod). Range: > 0.");
-    p.declare_numbers("Shell centre of mass", "0.3, 0", 2, 2, -unbounded, unbounded,
+    p.declare_numbers("Shell centre of mass", "0.33, 0.05", 2, 2, -unbounded, unbounded,
                       "[m] The right shell's centre of mass, knife included." + plane);
     p.declare_number("Shell inertia", 5, 0, unbounded,
                      "[kg m^2] Each shell's moment of inertia about its centre of mass, about the hinge's "
@@ -281,9 +292,9 @@ namespace abrade::dem
       {
         d.check();
       }
-    catch (const std::invalid_argument &e)
+    catch (const RopeGrabDesignError &e)
       {
-        p.fail("Tie rod length", e.what());
+        p.fail(e.parameter, e.what());
       }
 
     const auto winches = [&](const std::string &speeds, const std::string &pulls) {

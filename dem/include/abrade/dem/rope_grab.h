@@ -53,6 +53,8 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace abrade::dem
 {
@@ -82,9 +84,21 @@ namespace abrade::dem
     /// [m/s^2] How fast a winch's drum changes speed towards the one asked for (0: at once).
     double winch_acceleration = 0;
 
-    /// Throws std::invalid_argument naming what is wrong (a linkage that cannot be assembled at
-    /// the open pose, a non-positive mass, ...).
+    /// Throws RopeGrabDesignError naming what is wrong (a linkage that cannot be assembled
+    /// between the stops or passes its toggle point, a non-positive mass, masses whose matrix
+    /// is singular, ...) and the parameter to change.
     void check() const;
+  };
+
+  /// A design that cannot work: what is wrong, and the parameter (as the Grab mechanism
+  /// subsection names it) to change.
+  struct RopeGrabDesignError : std::invalid_argument
+  {
+    RopeGrabDesignError(const std::string &parameter, const std::string &what)
+      : std::invalid_argument("rope grab: " + what)
+      , parameter(parameter)
+    {}
+    std::string parameter;
   };
 
   /// What a winch does in a phase of the cycle.
@@ -116,6 +130,9 @@ namespace abrade::dem
       double angle_rate = 0; ///< [rad/s]
       double closing_paid_out = 0; ///< [m] lambda_c (same reference as closing_rope_length())
       double holding_paid_out = 0; ///< [m] lambda_h
+      /// [m/s] The head distance's change over the last step, over the step (the upper head's
+      /// walls move with z_rate plus this, so that they follow the chord of d exactly).
+      double head_distance_rate = 0;
       double closing_drum_speed = 0; ///< [m/s] hauling in > 0 (it approaches the winch's speed)
       double holding_drum_speed = 0; ///< [m/s]
     };
@@ -167,8 +184,8 @@ namespace abrade::dem
     /// The generalised load of a force's z component @p force_z and a torque's y component
     /// @p torque_y (about the hinge for the shells) acting on @p part.
     Eigen::Vector2d load(Part part, double force_z, double torque_y, double angle) const;
-    /// Vertical velocity of @p part's reference point (the hinge; the upper head's pins) and
-    /// its angular velocity about +y.
+    /// Vertical velocity of @p part's reference point (the hinge; the upper head's pins, over
+    /// the last step: the chord of d) and its angular velocity about +y.
     double vertical_velocity(Part part, const State &s) const;
     double angular_velocity(Part part, const State &s) const;
 
@@ -176,10 +193,6 @@ namespace abrade::dem
     /// @p closing / @p holding.
     double closing_tension(const State &s, const Winch &closing) const;
     double holding_tension(const State &s, const Winch &holding) const;
-    /// The shells' reaction at a stop in the last step [N m] (0: not at a stop): the torque
-    /// the stop exerts on the mechanism's angle.
-    double stop_reaction() const { return last_stop_reaction; }
-
     /// u' = M^-1 (Q - c) in state @p s: the particles' generalised load @p particles, gravity
     /// @p g, the ropes' tensions with the winches moving at @p closing and @p holding.
     Eigen::Vector2d acceleration(const State &s, const Eigen::Vector2d &particles, double g, const Winch &closing,
@@ -210,7 +223,6 @@ namespace abrade::dem
     RopeGrabDesign d;
     double         shell_radius_squared; // |shell centre|^2, the same in every pose
     Work           ledger;
-    double         last_stop_reaction = 0;
 
     static double tension(double stiffness, double damping, double stretch, double length_rate, double drum_speed,
                           double maximum_pull);
