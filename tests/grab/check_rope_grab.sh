@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The coarse grab closed by its rope mechanism (cases/grab/grab_coarse_rope.prm) end to end: no
-# particle is lost; the shells stay mirror images; lowered on its holding ropes the grab hangs
+# particle is lost; lowered on its holding ropes the grab hangs
 # open; released, it sinks into the pile; the closing winch closes the shells and the closing
 # rope carries less than the grab's weight on average (the rest of the weight stands on the
 # material); hoisted (not flung: it never rises at twice the winch's speed), it holds a plausible

@@ -238,6 +238,7 @@ TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
       const Eigen::Vector2d particles(-300, 40);
       double          e0 = 0, e1 = 0, most_angle = 0, least_angle = 0, lowered_angle = 0;
       RopeGrab::Work  w0, w1;
+      RopeGrab::State first_state, last_state;
       bool            first = true;
       for (const Phase &p : cycle)
         for (int i = 0; i < int(std::lround(p.seconds / dt)); ++i)
@@ -248,7 +249,8 @@ TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
             e1 = synchronised_energy(grab, before, s);
             w1 = work;
             if (first)
-              e0 = e1, w0 = w1, first = false;
+              e0 = e1, w0 = w1, first_state = before, first = false;
+            last_state = before;
             most_angle  = std::max(most_angle, s.angle);
             least_angle = std::min(least_angle, s.angle);
             if (&p == cycle)
@@ -260,6 +262,10 @@ TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
       EXPECT_EQ(least_angle, design.open_angle) << "opened past its stop";
       EXPECT_EQ(lowered_angle, design.open_angle) << "lowered on its holding ropes, it hangs open on its stop";
       EXPECT_GT(std::abs(loads), 100.0);
+      // the constant load's work, Q . (q_end - q_start), over the same steps as the ledger's
+      EXPECT_NEAR(loads,
+                  particles.dot(Eigen::Vector2d(last_state.z - first_state.z, last_state.angle - first_state.angle)),
+                  1e-9 * std::abs(loads));
       EXPECT_GT(stops, 100.0);
       EXPECT_GT(std::abs(winches), 1000.0);
       EXPECT_NEAR(e1 - e0, winches - dissipated - stops + loads, 1e-4 * std::abs(winches))
@@ -420,6 +426,23 @@ TEST(RopeGrab, DrumsRampUpAtTheWinchsAcceleration)
     grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{0, 0}, Winch{-1.0, std::numeric_limits<double>::infinity()});
   EXPECT_NEAR(s.holding_drum_speed, -design.winch_acceleration * t, 1e-9);
   EXPECT_NEAR(s.holding_paid_out - paid, 0.5 * design.winch_acceleration * t * t, 1e-5);
+}
+
+// A drum that follows its rope (pull 0) is at rest when a powered phase begins: it then
+// speeds up at the winch's acceleration.
+TEST(RopeGrab, AFollowingDrumStartsAgainFromRest)
+{
+  const RopeGrabDesign design = coarse_grab();
+  RopeGrab             grab(design);
+  RopeGrab::State      s;
+  s.z = 3;
+  grab.tension_ropes(s, 0, total_mass(design) * g);
+  const double dt = 1e-5, inf = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 1000; ++i) // the closing drum follows, asked to pay out
+    grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{-1.0, 0}, Winch{0, inf});
+  EXPECT_EQ(s.closing_drum_speed, 0);
+  grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{1.0, inf}, Winch{0, inf});
+  EXPECT_NEAR(s.closing_drum_speed, design.winch_acceleration * dt, 1e-15);
 }
 
 TEST(RopeGrab, RefusesALinkageThatCannotWork)

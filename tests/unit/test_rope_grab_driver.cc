@@ -138,7 +138,9 @@ TEST(RopeGrabDriver, AWeightOnTheUpperHeadLoadsItThroughTheLinkage)
       mean += driver->particle_loads(), ++n;
   });
   mean /= n;
-  const double slope = driver->mechanism().head_distance_slope(0);
+  // d' by differences of the linkage's head distance
+  const double h = 1e-6, slope = (driver->mechanism().head_distance(h) - driver->mechanism().head_distance(-h)) / (2 * h);
+  EXPECT_EQ(driver->state().angle, 0) << "hanging open on its stop";
   EXPECT_NEAR(mean[0], -w, 2e-3 * w);
   EXPECT_NEAR(mean[1], -w * slope, 2e-3 * w * std::abs(slope));
 }
@@ -187,8 +189,8 @@ TEST(RopeGrabDriver, ARestingWeightReachesTheMechanismAsAHandComputesIt)
 // The coarse grab's shells (0.4 m radius, open 60 degrees) lowered on the holding ropes onto a
 // floor of heavy balls in a box, then left standing with both ropes slack: it stands on its
 // lips, its hinge 0.4 cos 60 deg = 0.2 m above the balls' surface under the lips (less the
-// contacts' overlap, about 0.2 mm), open on its stop, at rest, the floor carrying its whole
-// weight.
+// contacts' overlaps, under a millimetre), open on its stop, at rest, the floor carrying its
+// whole weight.
 TEST(RopeGrabDriver, AFreeGrabStandsOnItsLipsOnARigidFloor)
 {
   Settings settings = quiet_settings(0, true);
@@ -237,12 +239,14 @@ TEST(RopeGrabDriver, AFreeGrabStandsOnItsLipsOnARigidFloor)
   const auto  &q      = driver->state();
   const double weight = 9.81 * driver->mechanism().mass_matrix(0)(0, 0);
   // the lips (x = +-0.4 sin 60 deg) rest on the column of balls nearest below them, on their
-  // surface there; the contacts' Hertz overlap is about 0.2 mm
+  // surface there; two Hertz contacts in series (lip on ball, ball on floor, about 160 N each)
+  // overlap by about 0.2 mm each: 0.43 mm measured, against the centimetres a wrong lip height
+  // or a grab that splays would give
   const double lip = 0.4 * std::sin(M_PI / 3);
   const double column = lo.x() + r + 2 * r * std::round((lip - lo.x() - r) / (2 * r));
   const double surface = r + std::sqrt(r * r - (lip - column) * (lip - column));
   EXPECT_LT(q.z, surface + 0.2) << "stands on its lips (0.2 m below the hinge) on the balls";
-  EXPECT_GT(q.z, surface + 0.2 - 5e-4) << "sank into the floor";
+  EXPECT_GT(q.z, surface + 0.2 - 1e-3) << "sank into the floor";
   EXPECT_EQ(q.angle, 0) << "open on its stop";
   EXPECT_NEAR(q.z_rate, 0, 1e-3);
   EXPECT_EQ(driver->mechanism().holding_tension(q, Winch{0, 0}), 0);

@@ -61,7 +61,8 @@ namespace abrade::coupling
                  "the grab's mechanism moves this wall (Grab mechanism/" + std::string(key_of(part)) +
                    "): leave its Motion out");
         // a parametric shell's origin is its hinge: the mechanism must turn it about that, on
-        // its own side, and its lips must not pass each other
+        // its own side, and its lips (or its knives' edges) must not pass each other. (A shell
+        // from a file is not checked: its hinge and lip are the user's to place.)
         const bool shell = part == dem::RopeGrab::Part::right_shell || part == dem::RopeGrab::Part::left_shell;
         if (shell && wc->shell)
           {
@@ -75,15 +76,33 @@ namespace abrade::coupling
               f.fail(path, key_of(part),
                      "the shell '" + name + "' opens towards " + (wc->shell->side > 0 ? "+x" : "-x") +
                        ": the right shell is the +x one, the left the -x one");
-            if (!(rig.design.closed_angle < wc->shell->opening))
+            // the lips meet when the shells have turned by their opening from straight down; a
+            // knife p beyond a lip of radius R reaches the middle atan(p / R) earlier
+            double meet = wc->shell->opening;
+            std::string what = "its lip";
+            for (const auto &knife : c.walls)
+              if (knife.mount == name && wc->shell->opening - std::atan2(knife.protrusion, wc->shell->radius) < meet)
+                {
+                  meet = wc->shell->opening - std::atan2(knife.protrusion, wc->shell->radius);
+                  what = "the edge of its knife '" + knife.wall.name + "'";
+                }
+            if (rig.design.closed_angle > meet + 1e-12)
               f.fail(path, "Closed angle",
-                     "the shell '" + name + "' opens " + std::to_string(wc->shell->opening * 180 / M_PI) +
-                       " degrees from straight down: closing further would turn its lip past the middle");
+                     "the shell '" + name + "' would turn " + what + " past the middle beyond " +
+                       std::to_string(meet * 180 / M_PI) + " degrees (its lip opens " +
+                       std::to_string(wc->shell->opening * 180 / M_PI) + " degrees from straight down)");
           }
         for (const auto &knife : c.walls) // knives mounted on a shell ride with it
-          if (knife.mount == name &&
-              std::none_of(rig.walls.begin(), rig.walls.end(), [&](const auto &w) { return w.first == knife.wall.name; }))
-            rig.walls.emplace_back(knife.wall.name, part);
+          if (knife.mount == name)
+            {
+              const auto listed = std::find_if(rig.walls.begin(), rig.walls.end(),
+                                               [&](const auto &w) { return w.first == knife.wall.name; });
+              if (listed == rig.walls.end())
+                rig.walls.emplace_back(knife.wall.name, part);
+              else if (listed->second != part)
+                f.fail(path, key_of(listed->second),
+                       "'" + knife.wall.name + "' is mounted on '" + name + "' (its Knife mount) and rides with it");
+            }
       }
     c.grab_mechanism = rig;
   }
