@@ -41,6 +41,15 @@ namespace
   }
 
   double total_mass(const RopeGrabDesign &d) { return d.lower_head_mass + d.upper_head_mass + 2 * d.shell_mass; }
+
+  /// The grab at rest, open at 3 m, hanging on its holding ropes, the closing rope just taut.
+  RopeGrab::State hanging_open(const RopeGrab &grab)
+  {
+    RopeGrab::State s;
+    s.z = 3;
+    grab.tension_ropes(s, 0, total_mass(grab.design()) * g);
+    return s;
+  }
 } // namespace
 
 // The pin turned by hand: at 36.87 degrees (cos 0.8, sin 0.6) it is at
@@ -216,11 +225,8 @@ TEST(RopeGrab, ACycleInVacuumConservesEnergyWithTheWinchesWork)
       design.holding_rope_damping = damping;
       design.open_angle           = 0; // it starts on its opening stop
       RopeGrab        grab(design);
-      RopeGrab::State s;
-      s.z     = 3;
-      s.angle = 0;
-      const double m = total_mass(design);
-      grab.tension_ropes(s, 0, m * g); // hanging on the holding ropes, the closing rope just taut
+      RopeGrab::State s = hanging_open(grab);
+      const double    m = total_mass(design);
 
       const double inf = std::numeric_limits<double>::infinity();
       const double dt  = 2e-5;
@@ -418,9 +424,7 @@ TEST(RopeGrab, DrumsRampUpAtTheWinchsAcceleration)
 {
   const RopeGrabDesign design = coarse_grab();
   RopeGrab             grab(design);
-  RopeGrab::State      s;
-  s.z = 3;
-  grab.tension_ropes(s, 0, total_mass(design) * g);
+  RopeGrab::State      s = hanging_open(grab);
   const double paid = s.holding_paid_out, dt = 1e-5, t = 0.2;
   for (int i = 0; i < int(std::lround(t / dt)); ++i)
     grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{0, 0}, Winch{-1.0, std::numeric_limits<double>::infinity()});
@@ -434,9 +438,7 @@ TEST(RopeGrab, AFollowingDrumStartsAgainFromRest)
 {
   const RopeGrabDesign design = coarse_grab();
   RopeGrab             grab(design);
-  RopeGrab::State      s;
-  s.z = 3;
-  grab.tension_ropes(s, 0, total_mass(design) * g);
+  RopeGrab::State      s = hanging_open(grab);
   const double dt = 1e-5, inf = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 1000; ++i) // the closing drum follows, asked to pay out
     grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{-1.0, 0}, Winch{0, inf});

@@ -174,12 +174,6 @@ namespace abrade::dem
     return {m_za_rate * w2, 0.5 * m_aa_rate * w2};
   }
 
-  // V = g (m z + m_u d + 2 m_s c_z): its gradient is g times M's first column
-  Eigen::Vector2d RopeGrab::gravity_load(double angle, double g) const
-  {
-    return -g * mass_matrix(angle).col(0);
-  }
-
   Eigen::Vector2d RopeGrab::load(Part part, double force_z, double torque_y, double angle) const
   {
     switch (part)
@@ -295,13 +289,19 @@ namespace abrade::dem
   Eigen::Vector2d RopeGrab::acceleration(const State &s, const Eigen::Vector2d &particles, double g,
                                          const Winch &closing, const Winch &holding) const
   {
+    return acceleration(s, particles, g, closing_tension(s, closing), holding_tension(s, holding),
+                        mass_matrix(s.angle));
+  }
+
+  Eigen::Vector2d RopeGrab::acceleration(const State &s, const Eigen::Vector2d &particles, double g, double t_c,
+                                         double t_h, const Eigen::Matrix2d &m) const
+  {
     const double slope = head_distance_slope(s.angle);
-    const double t_c = closing_tension(s, closing), t_h = holding_tension(s, holding);
     // the ropes' loads: -T grad L, with grad L_c = (-1, (n-1) d') and grad L_h = (-1, -d')
     const Eigen::Vector2d ropes(t_c + t_h, -(d.falls - 1) * slope * t_c + slope * t_h);
     const Eigen::Vector2d u(s.z_rate, s.angle_rate);
-    return mass_matrix(s.angle).partialPivLu().solve(particles + gravity_load(s.angle, g) + ropes -
-                                                     velocity_terms(s.angle, u));
+    // gravity: V = g (m z + m_u d + 2 m_s c_z), whose gradient is g times M's first column
+    return m.partialPivLu().solve(particles - g * m.col(0) + ropes - velocity_terms(s.angle, u));
   }
 
   void RopeGrab::step(State &s, double dt, const Eigen::Vector2d &particles, double g, const Winch &closing,
@@ -319,7 +319,7 @@ namespace abrade::dem
     release(s.holding_paid_out, rope_h, holding, d.holding_rope_stiffness, ledger);
     const double t_c = closing_tension(s, closing), t_h = holding_tension(s, holding);
     const Eigen::Matrix2d m = mass_matrix(s.angle);
-    Eigen::Vector2d u       = Eigen::Vector2d(s.z_rate, s.angle_rate) + dt * acceleration(s, particles, g, closing, holding);
+    Eigen::Vector2d u       = Eigen::Vector2d(s.z_rate, s.angle_rate) + dt * acceleration(s, particles, g, t_c, t_h, m);
 
     // The stops: the step ends at the stop, the vertical momentum M_zz z' + M_za angle' kept
     // (the velocity projected, in M's metric, onto the motions that keep the angle). Resting on

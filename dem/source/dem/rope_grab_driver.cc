@@ -1,10 +1,13 @@
 // A rope grab's mechanism moving DEM walls (rope_grab_driver.h).
 #include <abrade/common/error.h>
+#include <abrade/common/file_extension.h>
+#include <abrade/common/finite_number.h>
 #include <abrade/dem/rope_grab_driver.h>
 #include <abrade/dem/simulation.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace abrade::dem
 {
@@ -126,12 +129,6 @@ namespace abrade::dem
       {"Lower head walls", RopeGrab::Part::lower_head},
       {"Upper head walls", RopeGrab::Part::upper_head}};
 
-    std::string trimmed(const std::string &s)
-    {
-      const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-      return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-    }
-
     std::vector<std::string> split(const std::string &text, char by)
     {
       std::vector<std::string> out;
@@ -139,7 +136,7 @@ namespace abrade::dem
       while (start <= text.size())
         {
           const auto end = std::min(text.find(by, start), text.size());
-          if (const std::string item = trimmed(text.substr(start, end - start)); !item.empty())
+          if (const std::string item = io::trimmed(text.substr(start, end - start)); !item.empty())
             out.push_back(item);
           start = end + 1;
         }
@@ -156,23 +153,14 @@ namespace abrade::dem
           const auto colon = item.find(':');
           if (colon == std::string::npos)
             section.fail(key, "expected 'phase: value', got '" + item + "'");
-          const std::string phase = trimmed(item.substr(0, colon)), value = trimmed(item.substr(colon + 1));
+          const std::string phase = io::trimmed(item.substr(0, colon)), value = io::trimmed(item.substr(colon + 1));
           if (std::find(phases.begin(), phases.end(), phase) == phases.end())
             section.fail(key, "'" + phase + "' is not one of Simulation/Phases");
-          std::size_t used = 0;
-          double      v    = 0;
-          try
-            {
-              v = std::stod(value, &used);
-            }
-          catch (const std::exception &)
-            {
-              used = 0;
-            }
-          if (used == 0 || used != value.size() || !std::isfinite(v) || v < lo || v > hi)
+          const std::optional<double> v = io::finite_number(value);
+          if (!v || *v < lo || *v > hi)
             section.fail(key, "phase '" + phase + "': '" + value + "' is not a number in [" + std::to_string(lo) +
                                 ", " + std::to_string(hi) + "]");
-          if (!out.emplace(phase, v).second)
+          if (!out.emplace(phase, *v).second)
             section.fail(key, "phase '" + phase + "' is listed twice");
         }
       return out;

@@ -179,8 +179,6 @@ namespace abrade::dem
     Eigen::Matrix2d mass_matrix(double angle) const;
     /// The velocity-dependent terms c(angle, u) of Lagrange's equations.
     Eigen::Vector2d velocity_terms(double angle, const Eigen::Vector2d &u) const;
-    /// The generalised load of gravity @p g [m/s^2, > 0, acting along -z].
-    Eigen::Vector2d gravity_load(double angle, double g) const;
     /// The generalised load of a force's z component @p force_z and a torque's y component
     /// @p torque_y (about the hinge for the shells) acting on @p part.
     Eigen::Vector2d load(Part part, double force_z, double torque_y, double angle) const;
@@ -226,6 +224,9 @@ namespace abrade::dem
 
     static double tension(double stiffness, double damping, double stretch, double length_rate, double drum_speed,
                           double maximum_pull);
+    /// acceleration() with the ropes' tensions and the mass matrix already at hand (step()).
+    Eigen::Vector2d acceleration(const State &s, const Eigen::Vector2d &particles, double g, double t_c, double t_h,
+                                 const Eigen::Matrix2d &m) const;
     static void   release(double &paid_out, double length, const Winch &w, double stiffness, Work &ledger);
     static void   wind(double &paid_out, double length_before, double length_after, double t, double dt,
                        double drum_speed, const Winch &w, double stiffness, double damping, Work &ledger);
