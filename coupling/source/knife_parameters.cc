@@ -3,6 +3,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/parameter_section.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -11,16 +12,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 namespace abrade::coupling
 {
   namespace
   {
+    constexpr double huge = std::numeric_limits<double>::max();
+
     dealii::Tensor<1, 3> get_tensor(dealii::ParameterHandler &prm, const std::string &name)
     {
-      const auto v = dealii::Utilities::split_string_list(prm.get(name));
-      return dealii::Tensor<1, 3>({std::stod(v[0]), std::stod(v[1]), std::stod(v[2])});
+      const dem::Vec3 v = vector_entry(prm, name);
+      return dealii::Tensor<1, 3>({v[0], v[1], v[2]});
     }
 
     std::vector<fem::FaceSelector> get_selectors(ParameterFile &file, dealii::ParameterHandler &prm,
@@ -38,6 +42,81 @@ namespace abrade::coupling
     }
 
   } // namespace
+
+  void declare_knife_parameters(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Anything;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Selection;
+    PluginSection section(prm);
+    prm.enter_subsection("Knife");
+    prm.declare_entry("Geometry", "parametric", Selection("parametric|file"),
+                      "parametric: the grab knife below; file: a solid from File (.msh, .step/.stp, "
+                      ".iges/.igs, or a closed .stl).");
+    prm.declare_entry("File", "", Anything(), "Solid file when Geometry = file; relative to the parameter file.");
+    prm.declare_entry("Length", "0.4", Double(1e-6, huge), "[m] Knife length (x). Range: > 0.");
+    prm.declare_entry("Height", "0.5", Double(1e-6, huge), "[m] Knife height (z). Range: > 0.");
+    prm.declare_entry("Thickness", "0.03", Double(1e-6, huge), "[m] Plate thickness (y). Range: > 0.");
+    prm.declare_entry("Bevel height", "0.04", Double(1e-6, huge),
+                      "[m] Height of the bevel that forms the edge; with the thickness it sets the "
+                      "edge angle. Range: (0, Height).");
+    prm.declare_entry("Bevel side", "both", selection_of(bevel_sides),
+                      "both: chisel edge in the middle; plus / minus: bevel on the +y / -y face only.");
+    prm.declare_entry("Tip radius", "0", Double(0, huge), "[m] Rounding of the edge; 0: sharp. Range: [0, Thickness/2).");
+    prm.declare_entry("Lip height", "0", Double(0, huge),
+                      "[m] Height of a ridge on the +y face above the bevel that holds back a "
+                      "protective layer of material; 0: none. Range: >= 0.");
+    prm.declare_entry("Lip width", "0", Double(0, huge), "[m] How far the ridge stands out of the face. Range: >= 0.");
+    prm.declare_entry("Lip offset", "0", Double(0, huge), "[m] Distance of the ridge above the bevel. Range: >= 0.");
+    prm.declare_entry("Mesh size", "0.015", Double(1e-6, huge), "[m] Target tetrahedron size. Range: > 0.");
+    prm.declare_entry("File scale", "1", Double(1e-12, huge),
+                      "[-] Geometry = file: multiplies the file's coordinates. STL and .msh files have no unit "
+                      "(0.001: the file is in millimetres); STEP/IGES files declare theirs, which is converted "
+                      "to metres on import (leave 1; another value multiplies on top, with a warning). A .msh "
+                      "of hexahedra is split into tetrahedra. Range: > 0.");
+    prm.declare_entry("Maximum cells", "3000000", Double(0, huge),
+                      "[-] Refuse a knife that would need more tetrahedra than this (estimated before meshing "
+                      "from its volume and Mesh size: about 8.5 V / h^3), with a Mesh size that fits; 0: no "
+                      "limit. Range: >= 0.");
+    prm.declare_entry("Density", "7800", Double(1e-6, huge), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
+    prm.declare_entry("Solid", "all", Anything(),
+                      "Geometry = file, a CAD file with several solids: 'all' takes them all as one part, a "
+                      "number the solid of that number (the knife job lists them).");
+    section.declare_vector("Rotation axis", {0, 0, 1},
+                   "[-] Geometry = file: the axis of the rotation that brings the part from the file's "
+                   "(assembly) coordinates into the knife's frame (edge along x at the bottom, height along "
+                   "z); through the origin, right-handed. A mounted part is then centred on its shell's lip "
+                   "along x and z by its bounding box; across the lip its y = 0 plane lies on the lip's line.");
+    prm.declare_entry("Rotation angle", "0", Double(-360, 360),
+                      "[deg] Geometry = file: the angle of that rotation. The part's point p becomes "
+                      "R (File scale x p) + Offset: scaled, rotated about the origin, then moved. Range: "
+                      "[-360, 360].");
+    section.declare_vector("Offset", {0, 0, 0}, "[m] Geometry = file: moves the part after its rotation.");
+    prm.declare_entry("Place", "", Anything(),
+                      "Geometry = file: moves the rotated part by its bounding box before Offset, so that a "
+                      "part from a CAD assembly need not be measured first: ','-separated 'centred' (the box's "
+                      "centre to x = y = 0), 'centred in x' (or y, z), 'lowest point at z = V' [m]; e.g. "
+                      "'lowest point at z = 0, centred'. The move is logged. Empty: none.");
+    prm.declare_entry("Clamped faces", "", Anything(),
+                      "Geometry = file: the faces bolted or welded to the shell, which the mesh motion holds "
+                      "and which do not wear; selectors separated by ';': 'group NAME' (a physical group of "
+                      "a .msh, by name or number, or a CAD face by its number), 'box x0, y0, z0, x1, y1, z1' "
+                      "(faces whose centre lies in the box, in metres, in the knife's frame after scale and "
+                      "placement), 'normal nx, ny, nz[, angle]' (faces whose outward normal is within angle "
+                      "degrees, default 10, of the direction), 'cylinder px, py, pz, ax, ay, az, r[, tolerance]' "
+                      "(faces on the cylinder of radius r about the axis through p along a: a bore or a pin, "
+                      "whose CAD face may be split in halves; the facets' centres r from the axis within the "
+                      "tolerance, default 0.15 r, their normals across it). Empty: none (every face wears). "
+                      "The knife job lists the part's faces.");
+    prm.declare_entry("Wearable faces", "", Anything(),
+                      "Geometry = file: the faces that wear (selectors as for Clamped faces); faces that "
+                      "neither list takes are held. Empty: every face that is not clamped wears.");
+    prm.declare_entry("Minimum mesh quality", "0.05", Double(0, 1),
+                      "[-] Geometry = file: a mesh whose smallest scaled Jacobian is below this is optimised "
+                      "once more (Gmsh's optimisers, harder) and, if still below, reported with the place of "
+                      "its worst cell. Range: [0, 1].");
+    prm.leave_subsection();
+  }
 
   KnifeParameters read_knife_parameters(ParameterFile &file)
   {

@@ -41,6 +41,12 @@ namespace abrade::coupling
   std::array<double, 3> PluginSection::vector(const std::string &name) const
   {
     readable(name);
+    const dem::Vec3 v = vector_entry(prm, name);
+    return {v[0], v[1], v[2]};
+  }
+
+  dem::Vec3 vector_entry(dealii::ParameterHandler &prm, const std::string &name)
+  {
     const auto v = dealii::Utilities::split_string_list(prm.get(name));
     return {std::stod(v[0]), std::stod(v[1]), std::stod(v[2])};
   }

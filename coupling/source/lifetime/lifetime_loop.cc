@@ -50,10 +50,6 @@ namespace abrade::coupling::lifetime
       std::replace(k.begin(), k.end(), ' ', '_');
       return k;
     }
-
-    // the quantities every run keeps whatever its limits: the depth (the worn-through life's
-    // interval, the deepest point's bed spread) and the worn mass (the worn volume's spread)
-    const std::string depth_name = "maximum depth", mass_name = "maximum worn mass";
   } // namespace
 
   LifetimeLoop::LifetimeLoop(JobContext &ctx) : ctx(ctx) {}
@@ -106,83 +102,8 @@ namespace abrade::coupling::lifetime
   }
 
   // ---------------------------------------------------------------------------------------------
-  // Set-up: parameters, knife, wear source, outputs, and the resume.
-  void LifetimeLoop::read_settings()
-  {
-    auto &prm = ctx.parameters.handler();
-    prm.enter_subsection("Lifetime");
-    s.tonnes_per_cycle = prm.get_double("Tonnes per cycle");
-    for (const auto &x : dealii::Utilities::split_string_list(prm.get("Seeds")))
-      s.seeds.push_back(std::stoi(x));
-    s.fixed_cycles  = prm.get_integer("Cycles per update");
-    s.fraction      = prm.get_double("Depth increment fraction");
-    s.smoothing     = prm.get_double("Smoothing radius");
-    s.target_tonnes = prm.get_double("Target tonnes");
-    for (const auto &p : dealii::Utilities::split_string_list(prm.get("Profile planes")))
-      s.planes.push_back(std::stod(p));
-    for (const auto &point : dealii::Utilities::split_string_list(prm.get("Recession points"), ';'))
-      {
-        const auto xyz = dealii::Utilities::split_string_list(point);
-        s.recession_points.emplace_back(std::stod(xyz[0]), std::stod(xyz[1]), std::stod(xyz[2]));
-      }
-    s.max_updates     = prm.get_integer("Maximum updates");
-    source_choice     = make_wear_source_choice(prm.get("Wear source"));
-    if (!source_choice) // (the pattern lists the registered ones: a program without its plugins)
-      ctx.parameters.fail({"Lifetime"}, "Wear source", "no wear source of that name is registered in this program");
-    source_choice->parse_parameters(ctx.parameters);
-    s.target_interval = prm.get_double("Target interval");
-    s.max_beds        = prm.get_integer("Maximum beds");
-    s.calibration_file = ctx.parameters.path_beside(prm.get("Calibration"));
-    criteria = make_end_of_life_criteria();
-    for (auto &c : criteria)
-      c->parse_parameters(prm);
-    s.gauge_height        = prm.get_double("Gauge height");
-    s.gauge_stations      = prm.get_integer("Gauge stations");
-    prm.leave_subsection();
-    if (s.target_interval > 0 && s.max_beds < long(s.seeds.size()))
-      ctx.parameters.fail({"Lifetime"}, "Maximum beds",
-                          "fewer than the " + std::to_string(s.seeds.size()) + " Seeds: a target interval adds beds, "
-                          "it does not take them away");
-
-    if (s.seeds.empty())
-      ctx.parameters.fail({"Lifetime"}, "Seeds", "at least one seed is needed");
-    for (std::size_t a = 0; a < s.seeds.size(); ++a)
-      for (std::size_t b = a + 1; b < s.seeds.size(); ++b)
-        if (s.seeds[a] == s.seeds[b])
-          ctx.parameters.fail({"Lifetime"}, "Seeds",
-                              "seed " + std::to_string(s.seeds[a]) +
-                                " is given twice: the same bed twice is no replicate (its interval would be zero)");
-    const bool particles = source_choice->from_particles();
-    if (particles && s.tonnes_per_cycle == 0 && !dem_case.payload_height)
-      ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
-                          "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");
-    if (particles &&
-        std::none_of(dem_case.walls.begin(), dem_case.walls.end(), [](const auto &w) { return w.solid_model; }))
-      ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
-    if (particles)
-      for (const auto &w : dem_case.walls)
-        if (w.solid_model && !dem::law_recording(w.wear, dem_case.wear_field))
-          {
-            const dem::WearLaw *law = dem::wear_law_of_field(dem_case.wear_field);
-            ctx.parameters.fail({"Wall " + w.wall.name, "Wear"}, "Laws",
-                                "the knife's wear laws do not record Output/Wear field = " + dem_case.wear_field +
-                                  ", the field the lifetime loop wears the knife by: add " +
-                                  (law ? law->name() : std::string("its law")));
-          }
-    // a known rate is per tonne: nothing weighs a payload
-    if (!particles && s.tonnes_per_cycle <= 0)
-      ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
-                          "the " + source_choice->name() + " wear rate is per tonne: set Tonnes per cycle > 0");
-    if (std::none_of(criteria.begin(), criteria.end(), [](const auto &c) { return c->active(); }))
-      {
-        std::string keys;
-        for (std::size_t c = 0; c < criteria.size(); ++c)
-          keys += (c == 0 ? "" : c + 1 == criteria.size() ? " or " : ", ") + criteria[c]->parameter();
-        ctx.parameters.fail({"Lifetime"}, criteria[criterion_named(depth_name)]->parameter(),
-                            "no end-of-life criterion: set " + keys + " > 0");
-      }
-  }
-
+  // Set-up: parameters (read_settings(): lifetime_settings.cc), knife, wear source, outputs, and
+  // the resume.
   void LifetimeLoop::set_up()
   {
     init_mpi_once();

@@ -32,6 +32,9 @@ namespace abrade::coupling
     std::vector<fem::FaceSelector> clamped_faces, wearable_faces;
   };
 
+  /// Declares subsection Knife: the parametric knife's shape, or a part from a file with its
+  /// placement and faces, and the mesh.
+  void declare_knife_parameters(dealii::ParameterHandler &prm);
   /// Reads and checks subsection Knife; errors name the file.
   KnifeParameters read_knife_parameters(ParameterFile &file);
 

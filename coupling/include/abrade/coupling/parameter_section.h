@@ -3,6 +3,7 @@
 // declarations become deal.II ParameterHandler entries, their reads come from it, and their
 // refusals are input errors that name the file, the line and the entry.
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/dem/triangle_mesh.h>
 #include <abrade/dem/wear_law.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -48,4 +49,8 @@ namespace abrade::coupling
     ParameterFile            *file = nullptr;
     std::vector<std::string>  path;
   };
+
+  /// Entry @p name of the entered subsection, a vector declared by PluginSection::declare_vector
+  /// (its pattern checked three numbers).
+  dem::Vec3 vector_entry(dealii::ParameterHandler &prm, const std::string &name);
 } // namespace abrade::coupling

@@ -1,7 +1,8 @@
 #pragma once
-// Declaration of every parameter abrade reads, and their conversion into the plain settings
-// structs of the DEM (which knows nothing of deal.II). One subsection per component, one
-// "Wall NAME" subsection per wall.
+// The parameters of a case: the declaration of every subsection, each by its owner (the file of
+// what it configures, listed in parameters.cc), composed here, and their conversion into the
+// plain settings structs of the DEM (which knows nothing of deal.II). One subsection per
+// component, one "Wall NAME" subsection per wall.
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/walls/wall_geometry.h>
 #include <abrade/dem/generation.h>

@@ -149,6 +149,9 @@ namespace abrade::coupling::lifetime
     BedRates rates_at_places(const Rates &rates, long cycles) const;
     /// The criterion of that name (one every run has: the depth, the worn mass).
     std::size_t criterion_named(const std::string &name) const;
+    /// The quantities every run keeps whatever its limits: the depth (the worn-through life's
+    /// interval, the deepest point's bed spread) and the worn mass (the worn volume's spread).
+    static inline const std::string depth_name = "maximum depth", mass_name = "maximum worn mass";
     /// The pilot cycle that sizes the first update (previous_largest).
     void size_first_update();
     /// The wear filter's length from the first cycle (the particle's footprint unless given);

@@ -1,0 +1,13 @@
+#pragma once
+// Subsection Simulation: the time step, the contact law's sub-models, threads and ranks, the
+// domain, what an error does, the operating cycle's phases and the payload height, declared and
+// read into a DemCase.
+#include <abrade/coupling/parameters.h>
+
+namespace abrade::coupling
+{
+  void declare_simulation_parameters(dealii::ParameterHandler &prm);
+  /// Reads and checks subsection Simulation into @p c (its settings, phases, payload height and
+  /// run-size limit); errors name the file, line and entry.
+  void read_simulation_parameters(ParameterFile &f, DemCase &c);
+} // namespace abrade::coupling
