@@ -1,6 +1,6 @@
 // The case around a part, for its preview (case_scene.h).
 #include <abrade/coupling/case_scene.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameters.h>
 
 #include <deal.II/base/parameter_handler.h>

@@ -1,11 +1,11 @@
 // The parameters of a case composed from their owners (parameters.h): the top-level lists and
 // the Job, then each subsection declared and read by the file of what it configures (Knife:
-// knife_parameters.cc; Lifetime: lifetime/lifetime_settings.cc; Output, Simulation, Particles:
+// part_parameters.cc; Lifetime: lifetime/lifetime_settings.cc; Output, Simulation, Particles:
 // their *_parameters.cc; Wall NAME: walls/wall_parameters.cc; Grab mechanism:
 // walls/grab_mechanism.cc), in the order their checks run; and the DEM simulation built from
 // what was read.
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/lifetime/lifetime_settings.h>
 #include <abrade/coupling/output_parameters.h>
 #include <abrade/coupling/parameters.h>
@@ -75,7 +75,7 @@ namespace abrade::coupling
       names += (names.empty() ? "" : ", ") + w;
     prm.set("Walls", names);
 
-    declare_knife_parameters(prm);
+    declare_part_parameters(prm);
     lifetime::declare_lifetime_parameters(prm);
     declare_output_parameters(prm);
     declare_simulation_parameters(prm);

@@ -3,7 +3,7 @@
 # end of life with known wear rates, where moved vertices on a mesh left as it is would fold (the
 # tip's front overtakes the bevel's vertices; fronts meet at the tip under edge-concentrated
 # wear): the knife is meshed anew before such a step and the step taken on the new vertices
-# (fem/knife_model.h); the log must say so, and no update before the plate wears through may be
+# (fem/part_model.h); the log must say so, and no update before the plate wears through may be
 # built as a set.
 #  uniform: 1 um/t on every wearable face, to 12 mm of depth below the design: reached (not
 #           extrapolated) at 12,000 t within 1 %; the depth exact (1e-6) at every update and

@@ -11,7 +11,7 @@
 // of slices a triangle edge thick was off by up to 6 mm, and this test fails on it). The rate 'zedge + 1' (or 'zlow + 1'), as a depth per tonne, gives each vertex the
 // volume (zedge + 1) x tonnes x its area, from which zedge is read back.
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <gtest/gtest.h>
@@ -72,9 +72,9 @@ namespace
           s.boundary_id.push_back(id);
         }
     };
-    zip(edge, plus, fem::KnifeGeometry::wearable_boundary);
-    zip(edge, minus, fem::KnifeGeometry::wearable_boundary);
-    zip(plus, minus, fem::KnifeGeometry::clamped_boundary);
+    zip(edge, plus, fem::wearable_boundary);
+    zip(edge, minus, fem::wearable_boundary);
+    zip(plus, minus, fem::clamped_boundary);
     return s;
   }
 
@@ -84,7 +84,7 @@ namespace
     const double tonnes = 2;
     auto         source = make_analytic_wear_source(expression, tonnes, 0.0, false);
     const auto   wear   = source->cycle(s, 0.0, {1});
-    const auto   area   = fem::vertex_areas(s, fem::KnifeGeometry::wearable_boundary);
+    const auto   area   = fem::vertex_areas(s, fem::wearable_boundary);
     std::vector<std::pair<double, double>> out; // x, rate
     for (std::size_t v = 0; v < area.size(); ++v)
       if (area[v] > 0)
@@ -100,7 +100,7 @@ TEST(AnalyticWearSource, ZedgeIsTheLowestPointWithinALongestEdgeAlongX)
   ASSERT_GT(r.size(), 40u);
   double w = 0; // the longest edge of a wearable triangle
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
-    if (s.boundary_id[t] == fem::KnifeGeometry::wearable_boundary)
+    if (s.boundary_id[t] == fem::wearable_boundary)
       for (int e = 0; e < 3; ++e)
         w = std::max(w, s.vertices[s.triangles[t][e]].distance(s.vertices[s.triangles[t][(e + 1) % 3]]));
   ASSERT_GT(w, 0.04);

@@ -1,8 +1,8 @@
 // The parametric knife (Gmsh, tetrahedra) has its analytic volume, the clamped top face its
 // area, and cells of good quality; the quality measure gives 1 for ideal cells and flags
 // inverted ones; moving the knife with a mesh-motion solve keeps the mesh valid.
-#include <abrade/fem/knife_geometry.h>
-#include <abrade/fem/knife_model.h>
+#include <abrade/fem/parametric_knife.h>
+#include <abrade/fem/part_model.h>
 #include <abrade/fem/mesh_motion.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -22,15 +22,15 @@ using namespace abrade::fem;
 using namespace abrade::fem::testing;
 
 
-TEST(KnifeMesh, ReferenceKnifeVolumeAreaAndQuality)
+TEST(PartMesh, ReferenceKnifeVolumeAreaAndQuality)
 {
-  KnifeGeometry    k; // the reference knife: 0.4 x 0.5 x 0.03, 40 mm chisel bevel
+  ParametricKnife    k; // the reference knife: 0.4 x 0.5 x 0.03, 40 mm chisel bevel
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_knife.msh"));
   EXPECT_NEAR(k.volume(), 0.00576, 1e-15);
   EXPECT_NEAR(mesh_volume(tria), 0.00576, 1e-12);
 
-  EXPECT_NEAR(boundary_area(tria, KnifeGeometry::clamped_boundary), 0.4 * 0.03, 1e-12);
+  EXPECT_NEAR(boundary_area(tria, clamped_boundary), 0.4 * 0.03, 1e-12);
   const MeshQuality q = mesh_quality(tria);
   EXPECT_EQ(q.n_inverted, 0u);
   EXPECT_GT(q.min_scaled_jacobian, 0.1);
@@ -38,11 +38,11 @@ TEST(KnifeMesh, ReferenceKnifeVolumeAreaAndQuality)
               q.min_scaled_jacobian, q.max_aspect_ratio);
 }
 
-TEST(KnifeMesh, ConceptShapes)
+TEST(PartMesh, ConceptShapes)
 {
   // one-sided bevel with a lip: a polygon, so the mesh volume is exact
-  KnifeGeometry k;
-  k.bevel_side = KnifeGeometry::BevelSide::plus;
+  ParametricKnife k;
+  k.bevel_side = ParametricKnife::BevelSide::plus;
   k.lip_height = 0.02, k.lip_width = 0.01, k.lip_offset = 0.03;
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_knife_lip.msh"));
@@ -51,7 +51,7 @@ TEST(KnifeMesh, ConceptShapes)
   EXPECT_EQ(mesh_quality(tria).n_inverted, 0u);
 
   // a rounded edge removes a little material at the tip
-  KnifeGeometry r;
+  ParametricKnife r;
   r.tip_radius = 0.004;
   Triangulation<3> rounded;
   r.mesh(rounded, 0.03, tmp("abrade_knife_round.msh"));
@@ -59,12 +59,12 @@ TEST(KnifeMesh, ConceptShapes)
   EXPECT_GT(mesh_volume(rounded), r.volume() - 0.4 * 0.004 * 0.02);
 }
 
-TEST(KnifeMesh, BadParametersAreClearErrors)
+TEST(PartMesh, BadParametersAreClearErrors)
 {
-  KnifeGeometry k;
+  ParametricKnife k;
   k.bevel = 0.6;
   EXPECT_THROW(k.check(), std::exception);
-  k       = KnifeGeometry();
+  k       = ParametricKnife();
   k.tip_radius = 0.02;
   EXPECT_THROW(k.check(), std::exception);
 }
@@ -105,10 +105,10 @@ TEST(MeshQualityMeasure, IdealAndInvertedCells)
   EXPECT_LT(mesh_quality(tet).min_scaled_jacobian, 0);
 }
 
-TEST(KnifeMesh, WornEdgeCarriedIntoTheInteriorKeepsTheMeshValid)
+TEST(PartMesh, WornEdgeCarriedIntoTheInteriorKeepsTheMeshValid)
 {
   // the edge recedes by 8 mm, fading linearly to nothing 0.1 m above it; the top is clamped
-  KnifeGeometry    k;
+  ParametricKnife    k;
   Triangulation<3> tria;
   k.mesh(tria, 0.02, tmp("abrade_knife_worn.msh"));
   const double v0 = mesh_volume(tria);
@@ -123,7 +123,7 @@ TEST(KnifeMesh, WornEdgeCarriedIntoTheInteriorKeepsTheMeshValid)
   } wear;
   Functions::ZeroFunction<3> zero(3);
   MeshMotion motion(tria, {1, 1.0, 1e-10});
-  motion.solve({{KnifeGeometry::wearable_boundary, &wear}, {KnifeGeometry::clamped_boundary, &zero}});
+  motion.solve({{wearable_boundary, &wear}, {clamped_boundary, &zero}});
   move_vertices(tria, motion.vertex_displacements());
   const MeshQuality q = mesh_quality(tria);
   EXPECT_EQ(q.n_inverted, 0u);
@@ -135,13 +135,13 @@ TEST(KnifeMesh, WornEdgeCarriedIntoTheInteriorKeepsTheMeshValid)
               mesh_volume(tria), q.min_scaled_jacobian, motion.last_iterations());
 }
 
-TEST(KnifeMesh, HundredWearUpdatesWithRemeshing)
+TEST(PartMesh, HundredWearUpdatesWithRemeshing)
 {
   // 100 updates, each receding the knife's lowest 0.1 m by up to 0.8 mm (the edge most); the
   // mesh is moved every time and remeshed when its quality falls below 95 % of the fresh mesh's
   // (strict, to exercise remeshing: with stiffening the quality stays above half of it for all
   // 100 updates): it never inverts, and the knife keeps losing material
-  KnifeGeometry    k;
+  ParametricKnife    k;
   auto             tria = std::make_unique<Triangulation<3>>();
   k.mesh(*tria, 0.02, tmp("abrade_knife_updates.msh"));
   class Wear : public Function<3>
@@ -161,7 +161,7 @@ TEST(KnifeMesh, HundredWearUpdatesWithRemeshing)
   for (int update = 0; update < 100; ++update)
     {
       MeshMotion motion(*tria, {1, 1.0, 1e-10});
-      motion.solve({{KnifeGeometry::wearable_boundary, &wear}, {KnifeGeometry::clamped_boundary, &zero}});
+      motion.solve({{wearable_boundary, &wear}, {clamped_boundary, &zero}});
       move_vertices(*tria, motion.vertex_displacements());
       wear.bottom += 0.0008;
       MeshQuality q = mesh_quality(*tria);
@@ -185,12 +185,12 @@ TEST(KnifeMesh, HundredWearUpdatesWithRemeshing)
   EXPECT_LT(volume, 0.00576 - 0.0003);
 }
 
-TEST(KnifeModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
+TEST(PartModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
 {
-  KnifeModel::Settings settings;
+  PartModel::Settings settings;
   settings.mesh_size      = 0.03;
   settings.work_directory = tmp("abrade_knife_model");
-  KnifeModel knife(KnifeGeometry(), settings);
+  PartModel knife(ParametricKnife(), settings);
   const double v0 = knife.volume();
 
   // 1 mm off the flat -y face (away from its edges)
@@ -228,9 +228,9 @@ TEST(KnifeModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
   EXPECT_DOUBLE_EQ(knife.volume(), v1);
 
   // a threshold above the fresh mesh's quality forces a remesh; the accumulated depth comes along
-  KnifeModel::Settings strict = settings;
+  PartModel::Settings strict = settings;
   strict.remesh_quality       = 10;
-  KnifeModel   remeshing(KnifeGeometry(), strict);
+  PartModel   remeshing(ParametricKnife(), strict);
   const auto   rr = remeshing.apply_wear(side_depth(remeshing.surface(), 0.002));
   EXPECT_TRUE(rr.remeshed);
   EXPECT_EQ(remeshing.n_remeshes(), 1u);
@@ -247,12 +247,12 @@ TEST(KnifeModel, ApplyWearMovesAccumulatesReportsAndRemeshes)
 // (2.85 d on the 40 mm bevel of a 30 mm plate) and the corners where the end faces meet the
 // faces by up to 3 d, but the worn surface lies d below the design everywhere on it, and the
 // largest wear depth is d (to the mesh's round-off), also after a remesh.
-TEST(KnifeModel, WearDepthIsTheDistanceBelowTheDesign)
+TEST(PartModel, WearDepthIsTheDistanceBelowTheDesign)
 {
-  KnifeModel::Settings settings;
+  PartModel::Settings settings;
   settings.mesh_size      = 0.03;
   settings.work_directory = tmp("abrade_knife_gauge");
-  KnifeModel   knife(KnifeGeometry(), settings);
+  PartModel   knife(ParametricKnife(), settings);
   const double d = 0.002;
   for (int update = 0; update < 2; ++update)
     {
@@ -273,9 +273,9 @@ TEST(KnifeModel, WearDepthIsTheDistanceBelowTheDesign)
   EXPECT_NEAR(knife.recession_at({Point<3>(0.2, 0, 0)})[0], 2 * d / sin_half, 1e-6 * d);
 }
 
-TEST(KnifeModel, CheckpointContinuesBitForBit)
+TEST(PartModel, CheckpointContinuesBitForBit)
 {
-  KnifeModel::Settings settings;
+  PartModel::Settings settings;
   settings.mesh_size      = 0.03;
   settings.work_directory = tmp("abrade_knife_checkpoint");
   auto wear = [](const SolidSurface &s) {
@@ -284,10 +284,10 @@ TEST(KnifeModel, CheckpointContinuesBitForBit)
       d[v] = s.vertices[v][2] < 0.1 ? 0.0005 * (1 - s.vertices[v][2] / 0.1) : 0.0;
     return d;
   };
-  KnifeModel a(KnifeGeometry(), settings);
+  PartModel a(ParametricKnife(), settings);
   a.apply_wear(wear(a.surface()));
   a.save(tmp("abrade_knife.ckpt"));
-  KnifeModel b(KnifeGeometry(), settings);
+  PartModel b(ParametricKnife(), settings);
   b.load(tmp("abrade_knife.ckpt"));
   ASSERT_EQ(a.surface().vertices.size(), b.surface().vertices.size());
   for (int update = 0; update < 2; ++update)

@@ -18,7 +18,7 @@
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 
 #include <gtest/gtest.h>
 
@@ -110,7 +110,7 @@ namespace
     square.vertices    = {dealii::Point<3>(0, 0, 0), dealii::Point<3>(1, 0, 0), dealii::Point<3>(1, 1, 0),
                           dealii::Point<3>(0, 1, 0)};
     square.triangles   = {{0, 1, 2}, {0, 2, 3}};
-    square.boundary_id = {fem::KnifeGeometry::wearable_boundary, fem::KnifeGeometry::wearable_boundary};
+    square.boundary_id = {fem::wearable_boundary, fem::wearable_boundary};
     auto     source    = make_analytic_wear_source("1e-6", 10, scatter);
     std::vector<double> lives;
     Coverage c;

@@ -14,7 +14,7 @@
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/surface_filter.h>
 
 #include "fem_test_helpers.h"
@@ -187,7 +187,7 @@ namespace
   fem::SolidSurface knife_surface(double mesh_size)
   {
     dealii::Triangulation<3> tria;
-    fem::KnifeGeometry().mesh(tria, mesh_size, fem::testing::tmp("abrade_filter_knife.msh"));
+    fem::ParametricKnife().mesh(tria, mesh_size, fem::testing::tmp("abrade_filter_knife.msh"));
     return fem::extract_surface(tria);
   }
 } // namespace
@@ -197,13 +197,13 @@ TEST(SurfaceFilter, StaysOnItsFaceAndConservesTheVolume)
   // the default knife: 0.4 x 0.5 m, 30 mm plate; wear only on the +y side (face and bevel),
   // filtered over 27.5 mm (the thesis' pellet radius)
   const fem::SolidSurface s      = knife_surface(0.01);
-  const auto              area   = fem::vertex_areas(s, fem::KnifeGeometry::wearable_boundary);
+  const auto              area   = fem::vertex_areas(s, fem::wearable_boundary);
   const auto              normal = s.vertex_normals();
   std::vector<double>     volume(s.vertices.size(), 0.0);
   for (std::size_t v = 0; v < volume.size(); ++v)
     if (s.vertices[v][1] > 0.001)
       volume[v] = 1e-6 * area[v];
-  const int  wearable = fem::KnifeGeometry::wearable_boundary;
+  const int  wearable = fem::wearable_boundary;
   const auto filtered = fem::filter_on_surface(s, volume, 0.0275, wearable);
   EXPECT_NEAR(std::accumulate(filtered.begin(), filtered.end(), 0.0) /
                 std::accumulate(volume.begin(), volume.end(), 0.0),
@@ -235,7 +235,7 @@ TEST(SurfaceFilter, KeepsAUniformDepthUniformAtCornersAndTheTip)
   // the chisel's tip and the corners with the end faces included (a filter normalised at the
   // sending vertex gave 4.5 % more at the corners), nothing on the bolted face
   const fem::SolidSurface s        = knife_surface(0.01);
-  const int               wearable = fem::KnifeGeometry::wearable_boundary;
+  const int               wearable = fem::wearable_boundary;
   const auto              area     = fem::vertex_areas(s, wearable);
   std::vector<double>     volume(s.vertices.size());
   for (std::size_t v = 0; v < volume.size(); ++v)
@@ -269,7 +269,7 @@ TEST(SurfaceFilter, IsAGaussianOfTheRadiusOnAFlatFace)
   std::vector<double> volume(s.vertices.size(), 0.0);
   volume[centre]       = 1;
   const double r       = 0.02;
-  const auto   spread  = fem::filter_on_surface(s, volume, r, fem::KnifeGeometry::wearable_boundary);
+  const auto   spread  = fem::filter_on_surface(s, volume, r, fem::wearable_boundary);
   double       moment2 = 0;
   for (std::size_t v = 0; v < s.vertices.size(); ++v)
     moment2 += spread[v] * s.vertices[v].distance_square(s.vertices[centre]);

@@ -1,7 +1,7 @@
 // Mesh motion in parallel (run under `mpirun -np 2`): the knife on a parallel::shared
 // triangulation partitioned by METIS gives the same vertex displacements as the serial solve
 // on one process, and each process assembles only its own cells.
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/mesh_motion.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -35,11 +35,11 @@ TEST(MeshMotionMpi, PartitionedSolveMatchesSerial)
 {
   const unsigned n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   const std::string msh = (std::filesystem::temp_directory_path() / "abrade_knife_mpi.msh").string();
-  KnifeGeometry     k;
+  ParametricKnife     k;
   const Wear        wear;
   Functions::ZeroFunction<3> zero(3);
-  const std::map<types::boundary_id, const Function<3> *> bc = {{KnifeGeometry::wearable_boundary, &wear},
-                                                                {KnifeGeometry::clamped_boundary, &zero}};
+  const std::map<types::boundary_id, const Function<3> *> bc = {{wearable_boundary, &wear},
+                                                                {clamped_boundary, &zero}};
 
   parallel::shared::Triangulation<3> shared(MPI_COMM_WORLD, Triangulation<3>::none, false,
                                             parallel::shared::Triangulation<3>::partition_metis);

@@ -5,8 +5,8 @@
 // does not move under wear, several solids are taken together or one by number, and a poor mesh
 // is reported where it is.
 #include <abrade/common/error.h>
-#include <abrade/fem/knife_geometry.h>
-#include <abrade/fem/knife_model.h>
+#include <abrade/fem/parametric_knife.h>
+#include <abrade/fem/part_model.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/part_faces.h>
 #include <abrade/fem/solid_file.h>
@@ -258,22 +258,22 @@ TEST(PartFiles, PlacementMovesTheBoundingBox)
 // the typical thickness is the plate's.
 TEST(PartFiles, ClampedFacesDoNotMove)
 {
-  KnifeGeometry k;
+  ParametricKnife k;
   k.write_step(tmp("abrade_clamped_knife.step"));
   auto tria = std::make_unique<Triangulation<3>>();
   read_solid(tmp("abrade_clamped_knife.step"), 0.03, *tria);
   const FaceAssignment a = assign_faces(*tria, parse_face_selectors("normal 0, 0, 1"), {}, {}, 1, 2);
   EXPECT_NEAR(a.clamped_area, 0.4 * 0.03, 1e-12);
-  KnifeModel::Settings ks;
+  PartModel::Settings ks;
   ks.mesh_size      = 0.03;
   ks.work_directory = tmp("abrade_clamped_work");
-  KnifeModel knife(std::move(tria), ks);
+  PartModel knife(std::move(tria), ks);
   EXPECT_NEAR(knife.thickness(), 0.03, 1e-9);
   const SolidSurface before = knife.surface();
   std::vector<int>   clamped(before.vertices.size(), 0), worn(before.vertices.size(), 0);
   for (std::size_t t = 0; t < before.triangles.size(); ++t)
     for (unsigned v : before.triangles[t])
-      ++(before.boundary_id[t] == KnifeGeometry::clamped_boundary ? clamped : worn)[v];
+      ++(before.boundary_id[t] == clamped_boundary ? clamped : worn)[v];
   ASSERT_FALSE(knife.apply_wear(std::vector<double>(before.vertices.size(), 1e-3)).remeshed);
   const auto &after = knife.triangulation().get_vertices();
   unsigned    held = 0, rim = 0, moved = 0;

@@ -4,7 +4,7 @@
 #include <abrade/common/vtk_input.h>
 
 #include <vtkPolyData.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
@@ -41,7 +41,7 @@ namespace
 
 TEST(SolidSurface, OutwardClosedSurfaceOfTheKnife)
 {
-  KnifeGeometry    k;
+  ParametricKnife    k;
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_surface.msh"));
   const SolidSurface s = extract_surface(tria);
@@ -53,7 +53,7 @@ TEST(SolidSurface, OutwardClosedSurfaceOfTheKnife)
       ++edges[std::minmax(t[e], t[(e + 1) % 3])];
   for (const auto &[e, n] : edges)
     ASSERT_EQ(n, 2);
-  const SolidSurface top = extract_surface(tria, {KnifeGeometry::clamped_boundary});
+  const SolidSurface top = extract_surface(tria, {clamped_boundary});
   EXPECT_NEAR(top.area(), 0.4 * 0.03, 1e-12);
   for (const auto &n : top.vertex_normals())
     EXPECT_NEAR(n[2], 1, 1e-12);
@@ -61,7 +61,7 @@ TEST(SolidSurface, OutwardClosedSurfaceOfTheKnife)
 
 TEST(SolidSurface, StlAndMshFilesRoundTrip)
 {
-  KnifeGeometry    k;
+  ParametricKnife    k;
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_roundtrip.msh"));
   abrade::io::write_stl(tmp("abrade_knife_surface.stl"), extract_surface(tria).as_polydata());
@@ -72,13 +72,13 @@ TEST(SolidSurface, StlAndMshFilesRoundTrip)
   Triangulation<3> from_msh;
   read_solid(tmp("abrade_roundtrip.msh"), 0, from_msh);
   EXPECT_EQ(from_msh.n_active_cells(), tria.n_active_cells());
-  EXPECT_NEAR(boundary_area(from_msh, KnifeGeometry::clamped_boundary), 0.012, 1e-12);
+  EXPECT_NEAR(boundary_area(from_msh, clamped_boundary), 0.012, 1e-12);
 }
 
 TEST(SolidSurface, StepRoundTrip)
 {
-  KnifeGeometry k;
-  k.bevel_side = KnifeGeometry::BevelSide::minus;
+  ParametricKnife k;
+  k.bevel_side = ParametricKnife::BevelSide::minus;
   k.write_step(tmp("abrade_knife.step"));
   Triangulation<3> tria;
   read_solid(tmp("abrade_knife.step"), 0.03, tria);
@@ -97,7 +97,7 @@ TEST(SolidSurface, StepRoundTrip)
 // StepRoundTrip reads a STEP in millimetres.)
 TEST(SolidSurface, PartsInMillimetres)
 {
-  KnifeGeometry    k;
+  ParametricKnife    k;
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_mm_knife.msh"));
   abrade::io::PolyData surface = extract_surface(tria).as_polydata();
@@ -142,7 +142,7 @@ TEST(SolidSurface, PartsInMillimetres)
 // exact), every triangle edge near the requested size; bad input names the file.
 TEST(SolidSurface, CadSurfaceOfTheKnife)
 {
-  KnifeGeometry k;
+  ParametricKnife k;
   k.write_step(tmp("abrade_cad_knife.step"));
   const SolidSurface cad = read_cad_surface(tmp("abrade_cad_knife.step"), 0.03);
   Triangulation<3>   tria;
@@ -211,13 +211,13 @@ TEST(Remesh, WornSurfaceGmshRefusesAtFifteenDegrees)
 
 TEST(SolidSurface, RemeshKeepsTheShapeAndBoundaryIds)
 {
-  KnifeGeometry    k;
+  ParametricKnife    k;
   Triangulation<3> tria, fresh;
   k.mesh(tria, 0.03, tmp("abrade_before_remesh.msh"));
   remesh(tria, 0.015, fresh, tmp("abrade_remesh"));
   EXPECT_GT(fresh.n_active_cells(), tria.n_active_cells());
   EXPECT_NEAR(mesh_volume(fresh), 0.00576, 1e-9);
-  EXPECT_NEAR(boundary_area(fresh, KnifeGeometry::clamped_boundary), 0.012, 1e-9);
+  EXPECT_NEAR(boundary_area(fresh, clamped_boundary), 0.012, 1e-9);
   EXPECT_EQ(mesh_quality(fresh).n_inverted, 0u);
 
   // a field linear over the surface (a wear depth, say) comes across exactly, up to the
@@ -243,15 +243,15 @@ TEST(SolidSurface, IdsFromTheDesignKeepTheClampedFaceExactly)
   GridGenerator::hyper_cube(design_tria, 0, 0.1);
   for (const auto &face : design_tria.active_face_iterators())
     if (face->at_boundary())
-      face->set_boundary_id(face->center()[2] > 0.1 - 1e-9 ? KnifeGeometry::clamped_boundary
-                                                          : KnifeGeometry::wearable_boundary);
+      face->set_boundary_id(face->center()[2] > 0.1 - 1e-9 ? clamped_boundary
+                                                          : wearable_boundary);
   const SolidSurface design = extract_surface(design_tria);
   GridGenerator::subdivided_hyper_rectangle(worn, {12, 12, 16}, Point<3>(0.02, 0.02, 0.02), Point<3>(0.08, 0.08, 0.1));
-  const std::size_t on = set_ids_from_design(worn, design, 1e-5, KnifeGeometry::wearable_boundary);
+  const std::size_t on = set_ids_from_design(worn, design, 1e-5, wearable_boundary);
   EXPECT_EQ(on, 144u);
-  EXPECT_NEAR(boundary_area(worn, KnifeGeometry::clamped_boundary), 0.06 * 0.06, 1e-12);
+  EXPECT_NEAR(boundary_area(worn, clamped_boundary), 0.06 * 0.06, 1e-12);
   for (const auto &face : worn.active_face_iterators())
-    if (face->at_boundary() && face->boundary_id() == KnifeGeometry::clamped_boundary)
+    if (face->at_boundary() && face->boundary_id() == clamped_boundary)
       EXPECT_NEAR(face->center()[2], 0.1, 1e-12);
 }
 
@@ -271,21 +271,21 @@ TEST(SolidSurface, IdsFromTheDesignKeepACurvedClampedFace)
   for (auto *t : {&design_tria, &coarse})
     for (const auto &face : t->active_face_iterators())
       if (face->at_boundary())
-        face->set_boundary_id(std::abs(std::abs(face->center()[0]) - 0.1) < 1e-9 ? KnifeGeometry::wearable_boundary
-                                                                                 : KnifeGeometry::clamped_boundary);
+        face->set_boundary_id(std::abs(std::abs(face->center()[0]) - 0.1) < 1e-9 ? wearable_boundary
+                                                                                 : clamped_boundary);
   const SolidSurface design = extract_surface(design_tria);
   Triangulation<3>   fresh;
   fresh.copy_triangulation(coarse);
   for (const auto &face : fresh.active_face_iterators())
     if (face->at_boundary())
-      face->set_boundary_id(KnifeGeometry::wearable_boundary);
-  set_ids_from_design(fresh, design, 1e-6, KnifeGeometry::wearable_boundary);
+      face->set_boundary_id(wearable_boundary);
+  set_ids_from_design(fresh, design, 1e-6, wearable_boundary);
   unsigned hull = 0;
   for (const auto &face : fresh.active_face_iterators())
     if (face->at_boundary())
       {
         const bool end = std::abs(std::abs(face->center()[0]) - 0.1) < 1e-9;
-        EXPECT_EQ(face->boundary_id(), end ? KnifeGeometry::wearable_boundary : KnifeGeometry::clamped_boundary)
+        EXPECT_EQ(face->boundary_id(), end ? wearable_boundary : clamped_boundary)
           << "face at " << face->center();
         hull += !end;
       }
@@ -294,7 +294,7 @@ TEST(SolidSurface, IdsFromTheDesignKeepACurvedClampedFace)
 
 TEST(SolidSurface, LocalThicknessAndWornThrough)
 {
-  KnifeGeometry    k;
+  ParametricKnife    k;
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_thickness.msh"));
   const SolidSurface  s = extract_surface(tria);
@@ -374,7 +374,7 @@ TEST(SolidSurface, LocalThicknessIsTheFirstWallTheRayMeets)
 // on the bevel-side edge to the intersection of its two offset faces.
 TEST(SolidSurface, InwardOffsetsFollowTheOffsetSurfaceAtEdges)
 {
-  KnifeGeometry    k; // 30 mm plate, 40 mm bevel on both sides
+  ParametricKnife    k; // 30 mm plate, 40 mm bevel on both sides
   Triangulation<3> tria;
   k.mesh(tria, 0.03, tmp("abrade_offsets.msh"));
   const SolidSurface        s = extract_surface(tria);

@@ -9,7 +9,7 @@
 #include "lifetime_in_process.h"
 
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@ namespace
     {
       CycleWear w;
       w.tonnes_per_cycle = 1;
-      const auto          area = abrade::fem::vertex_areas(surface, abrade::fem::KnifeGeometry::wearable_boundary);
+      const auto          area = abrade::fem::vertex_areas(surface, abrade::fem::wearable_boundary);
       std::vector<double> volume(area.size());
       for (std::size_t v = 0; v < area.size(); ++v)
         volume[v] = depth * area[v];

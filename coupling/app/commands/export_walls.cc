@@ -6,7 +6,7 @@
 #include <abrade/common/log.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/dem/mesh_io.h>
 

@@ -12,7 +12,7 @@
 #include <abrade/common/termination.h>
 #include <abrade/common/version.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/report/report.h>

@@ -7,7 +7,7 @@
 #include <abrade/common/error.h>
 #include <abrade/coupling/bed_preparation.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameters.h>
 
 namespace abrade::coupling

@@ -13,7 +13,7 @@
 #include <abrade/common/progress.h>
 #include <abrade/coupling/bed_preparation.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameters.h>
 #include <abrade/coupling/wear_profile.h>
 #include <abrade/coupling/wear_tables.h>

@@ -1,6 +1,6 @@
 // The `knife` job: the knife's solid model on its own.
 //
-// 1. Build the knife: the parametric grab knife (fem/knife_geometry.h) or a solid from a file.
+// 1. Build the knife: the parametric grab knife (fem/parametric_knife.h) or a solid from a file.
 // 2. Check the mesh: scaled Jacobians, aspect ratio, inverted cells (an inverted cell is an
 //    error), the wearable and clamped boundary.
 // 3. Write knife/knife.pvd + .vtu (cell field scaled_jacobian), knife/knife.stl (the surface the
@@ -20,8 +20,8 @@
 #include <abrade/common/vtk_output.h>
 #include <abrade/coupling/case_scene.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/knife_parameters.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/coupling/part_parameters.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
 #include <abrade/fem/solid_surface.h>
@@ -43,7 +43,7 @@ namespace abrade::coupling
     /// The part's boundary faces as triangles, each with the file's face it belongs to
     /// (`face_id`; the parametric knife's boundary id) and what became of it (`role`: 0 wears,
     /// 1 clamped, 2 held): knife/faces.vtp, which the preview draws.
-    io::PolyData part_faces_surface(const dealii::Triangulation<3> &tria, const KnifeMesh &m, bool from_file)
+    io::PolyData part_faces_surface(const dealii::Triangulation<3> &tria, const PartMesh &m, bool from_file)
     {
       io::PolyData out;
       io::Field    id{"face_id", 1, {}}, role{"role", 1, {}};
@@ -54,7 +54,7 @@ namespace abrade::coupling
             {
               const auto   face = cell->face(f);
               const auto   b    = face->boundary_id();
-              double       file_id = b, became = b == fem::KnifeGeometry::wearable_boundary ? 0 : 1;
+              double       file_id = b, became = b == fem::wearable_boundary ? 0 : 1;
               if (from_file && k < m.faces.boundary_faces.size())
                 file_id = m.faces.boundary_faces[k].first, became = double(m.faces.boundary_faces[k].second);
               ++k;
@@ -155,21 +155,21 @@ namespace abrade::coupling
 
   void KnifeJob::run(JobContext &ctx) const
   {
-    const KnifeParameters     kp = read_knife_parameters(ctx.parameters);
-    const fem::KnifeGeometry &k  = kp.geometry;
+    const PartParameters     kp = read_part_parameters(ctx.parameters);
+    const fem::ParametricKnife &k  = kp.geometry;
     const double              density = kp.density;
 
     init_mpi_once();
 
     const std::string dir = ctx.output.subdirectory("knife");
-    KnifeMesh         m;
+    PartMesh         m;
     {
       io::ScopedTimer t(ctx.timers, "mesh knife");
-      m = mesh_knife(kp, ctx.parameters, dir);
+      m = mesh_part(kp, ctx.parameters, dir);
     }
     const dealii::Triangulation<3> &tria = *m.tria;
     std::vector<std::string>        warnings;
-    report_knife_mesh(kp, m, ctx.log, &warnings);
+    report_part_mesh(kp, m, ctx.log, &warnings);
     const fem::MeshQuality q = fem::mesh_quality(tria);
     const double           volume = fem::mesh_volume(tria);
     std::ostringstream     s;

@@ -2,7 +2,7 @@
 // for verification of the loop (tests/lifetime/).
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <deal.II/base/function_parser.h>
@@ -53,7 +53,7 @@ namespace abrade::coupling::lifetime
         double              longest = 0;
         for (std::size_t t = 0; t < surface.triangles.size(); ++t)
           {
-            if (surface.boundary_id[t] != fem::KnifeGeometry::wearable_boundary)
+            if (surface.boundary_id[t] != fem::wearable_boundary)
               continue;
             const auto &tri = surface.triangles[t];
             const auto &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]], &c = surface.vertices[tri[2]];
@@ -124,7 +124,7 @@ namespace abrade::coupling::lifetime
       {
         CycleWear w;
         w.tonnes_per_cycle = tonnes_per_cycle;
-        const auto        area = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
+        const auto        area = fem::vertex_areas(surface, fem::wearable_boundary);
         const EdgeHeights heights(surface, area);
         std::vector<double> volume(surface.vertices.size(), 0.0);
         // the points by station: one parse of the rate per station (zedge a constant of it), or

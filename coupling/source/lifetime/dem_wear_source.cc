@@ -2,7 +2,7 @@
 // mpirun the beds run side by side on groups of the ranks (Lifetime/Ranks per bed).
 #include <abrade/common/timer.h>
 #include <abrade/coupling/bed_preparation.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/dem/ensemble.h>
 #include <abrade/dem/thread_governor.h>

@@ -1,6 +1,6 @@
 // The lifetime loop (lifetime_loop.h): the knife's wear over its working life. This file holds
 // the loop's bookkeeping; the arithmetic of every step is in its own file (end_of_life.cc,
-// life_interval.cc, update_size.cc, fem/surface_filter.cc, fem/knife_model.cc).
+// life_interval.cc, update_size.cc, fem/surface_filter.cc, fem/part_model.cc).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/hash.h>
@@ -78,7 +78,7 @@ namespace abrade::coupling::lifetime
             end = "no wear on the knife (does the cycle touch it?)";
             break;
           }
-        const Step step = move_knife(rates, choose_cycles(rates));
+        const Step step = move_part(rates, choose_cycles(rates));
         previous_largest = rates.largest;
         if (!step.moved)
           {
@@ -109,15 +109,15 @@ namespace abrade::coupling::lifetime
     init_mpi_once();
     dem_case         = read_dem_case(ctx.parameters);
     report_coarse_graining(dem_case, ctx);
-    knife_parameters = read_knife_parameters(ctx.parameters);
+    part_parameters = read_part_parameters(ctx.parameters);
     read_settings();
-    build_knife();
+    build_part();
     source = source_choice->make(
-      {ctx, dem_case, s.seeds, s.tonnes_per_cycle, knife->design_surface(), knife_parameters.mesh_size});
+      {ctx, dem_case, s.seeds, s.tonnes_per_cycle, part_model->design_surface(), part_parameters.mesh_size});
     take_calibration();
 
     ctx.output.subdirectory("beds");
-    knife_output      = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory("knife"), "knife");
+    part_output      = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory("knife"), "knife");
     checkpoints       = std::make_unique<LifetimeCheckpoints>(ctx.output.subdirectory("checkpoint"));
     // (a calibration's numbers too: a resume with another calibration.json behind the same name
     // would mix two coefficients)
@@ -126,7 +126,7 @@ namespace abrade::coupling::lifetime
                                                               io::format_number(calibration.relative_sd, 17) + " " +
                                                               io::format_number(calibration.smoothing_radius, 17)
                                                                                         : std::string()));
-    volume0           = knife->volume();
+    volume0           = part_model->volume();
     const std::size_t n_criteria = criteria.size();
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
     records.assign(n_criteria, {});
@@ -158,44 +158,44 @@ namespace abrade::coupling::lifetime
     for (const auto &row : trajectory_rows)
       trajectory.raw_row(row);
     trajectory.flush();
-    ctx.log.line("Lifetime: knife of " + std::to_string(knife->triangulation().n_active_cells()) + " cells, " +
+    ctx.log.line("Lifetime: knife of " + std::to_string(part_model->triangulation().n_active_cells()) + " cells, " +
                  std::to_string(beds_now) + " fresh bed(s) per update, wear from " +
                  source_choice->description());
   }
 
   // The knife: the parametric one or a user's part (its faces chosen, placed), checked against
   // the criteria that need to know where it is.
-  void LifetimeLoop::build_knife()
+  void LifetimeLoop::build_part()
   {
-    fem::KnifeModel::Settings ks;
-    ks.mesh_size      = knife_parameters.mesh_size;
-    ks.density        = knife_parameters.density;
+    fem::PartModel::Settings ks;
+    ks.mesh_size      = part_parameters.mesh_size;
+    ks.density        = part_parameters.density;
     ks.work_directory = ctx.output.subdirectory("knife/work");
-    if (knife_parameters.from_file)
+    if (part_parameters.from_file)
       {
-        KnifeMesh m = mesh_knife(knife_parameters, ctx.parameters, ks.work_directory);
-        report_knife_mesh(knife_parameters, m, ctx.log, &warnings);
-        knife = std::make_unique<fem::KnifeModel>(std::move(m.tria), ks);
-        if (const std::string w = fit_mounted_knives(dem_case, knife->design_surface()); !w.empty())
+        PartMesh m = mesh_part(part_parameters, ctx.parameters, ks.work_directory);
+        report_part_mesh(part_parameters, m, ctx.log, &warnings);
+        part_model = std::make_unique<fem::PartModel>(std::move(m.tria), ks);
+        if (const std::string w = fit_mounted_knives(dem_case, part_model->design_surface()); !w.empty())
           {
             ctx.log.warning(w);
             warnings.push_back(w);
           }
       }
     else
-      knife = std::make_unique<fem::KnifeModel>(knife_parameters.geometry, ks);
-    frame = profile_frame(knife->design_surface());
+      part_model = std::make_unique<fem::PartModel>(part_parameters.geometry, ks);
+    frame = profile_frame(part_model->design_surface());
     // the gauges' stations on the design: its edge heights and the plate's thickness at the
     // gauge height
     if (s.gauge_height <= 0)
       {
         // a plate thickness above where the design is first whole (a chisel's bevel top, whose
         // worn corner rises as the faces beside it wear): where calipers read the flat plate
-        const double whole = full_thickness_height(knife->design_surface(), frame.x0, frame.x1, frame.z0, frame.z1);
-        s.gauge_height     = whole + knife->thickness();
+        const double whole = full_thickness_height(part_model->design_surface(), frame.x0, frame.x1, frame.z0, frame.z1);
+        s.gauge_height     = whole + part_model->thickness();
       }
-    design_sections = worn_and_design_sections(knife->design_surface(), knife->design_surface(),
-                                               int(s.gauge_stations), frame.z0 + s.gauge_height, knife_parameters.mesh_size)
+    design_sections = worn_and_design_sections(part_model->design_surface(), part_model->design_surface(),
+                                               int(s.gauge_stations), frame.z0 + s.gauge_height, part_parameters.mesh_size)
                         .second;
     design_thickness = *std::max_element(design_sections.thickness.begin(), design_sections.thickness.end());
     // every criterion's limit on the design: one the design makes impossible is refused, one
@@ -217,12 +217,12 @@ namespace abrade::coupling::lifetime
         warnings.push_back(w);
       }
     // a followed point away from the knife would follow the nearest surface point without a word
-    const std::vector<double> off = knife->depth_below_design(s.recession_points);
+    const std::vector<double> off = part_model->depth_below_design(s.recession_points);
     std::vector<double>       points;
     for (const auto &p : s.recession_points)
       points.insert(points.end(), {p[0], p[1], p[2]});
     for (std::size_t k = 0; k < off.size(); ++k)
-      if (std::abs(off[k]) > knife_parameters.mesh_size)
+      if (std::abs(off[k]) > part_parameters.mesh_size)
         ctx.parameters.fail({"Lifetime"}, "Recession points",
                             "point " + std::to_string(k + 1) + " (" + io::format_number(points[3 * k]) + ", " +
                               io::format_number(points[3 * k + 1]) + ", " + io::format_number(points[3 * k + 2]) + ") lies " +
@@ -241,10 +241,10 @@ namespace abrade::coupling::lifetime
       if (const std::string name = e.path().filename().string();
           name.rfind("update_", 0) == 0 && e.path().extension() == ".wear")
         std::filesystem::remove(e.path(), ec);
-    knife_output->adopt({});
-    knife->write(*knife_output, 0);
-    io::write_stl(ctx.output.file("knife/knife_00000.stl"), knife->surface().as_polydata()); // the design
-    knife->save(checkpoints->knife_file(0)); // the state a rejected first update returns to
+    part_output->adopt({});
+    part_model->write(*part_output, 0);
+    io::write_stl(ctx.output.file("knife/knife_00000.stl"), part_model->surface().as_polydata()); // the design
+    part_model->save(checkpoints->knife_file(0)); // the state a rejected first update returns to
   }
 
   bool LifetimeLoop::resume()
@@ -329,12 +329,12 @@ namespace abrade::coupling::lifetime
     trajectory_rows.clear();
     for (long k = 1; k <= done; ++k)
       trajectory_rows.push_back(state.text("trajectory_row_" + std::to_string(k)));
-    knife->load(checkpoints->knife_file(done));
+    part_model->load(checkpoints->knife_file(done));
     gauge_the_knife();
     std::vector<double> output_times;
     for (const auto &p : history)
       output_times.push_back(p.tonnes);
-    knife_output->adopt(output_times);
+    part_output->adopt(output_times);
     for (const auto &path : truncate_profiles(s.planes, done, ctx.output.root() + "/knife"))
       {
         warnings.push_back(path + " is missing: its profiles start at update " + std::to_string(done + 1));
@@ -356,7 +356,7 @@ namespace abrade::coupling::lifetime
     CycleWear wear;
     try
       {
-        wear = source->cycle(knife->surface(), tonnes, beds);
+        wear = source->cycle(part_model->surface(), tonnes, beds);
       }
     catch (const std::domain_error &e) // an analytic rate that is negative or not a number
       {
@@ -390,7 +390,7 @@ namespace abrade::coupling::lifetime
     CycleWear wear;
     try
       {
-        wear = source->cycle(knife->surface(), 0, beds);
+        wear = source->cycle(part_model->surface(), 0, beds);
       }
     catch (const std::domain_error &e)
       {
@@ -398,7 +398,7 @@ namespace abrade::coupling::lifetime
       }
     store_wear(wear, beds);
     resolve_smoothing(wear);
-    previous_largest = depth_rates(knife->surface(), wear, s.smoothing).largest;
+    previous_largest = depth_rates(part_model->surface(), wear, s.smoothing).largest;
     ctx.log.line("pilot cycle on " + std::to_string(beds.size()) + " bed(s) of its own: the first update is sized "
                  "by its largest wear depth rate, " + io::format_number(previous_largest) + " m per cycle");
   }
@@ -418,7 +418,7 @@ namespace abrade::coupling::lifetime
     stored.tonnes_start     = tonnes;
     stored.bed_seeds        = beds;
     stored.wear             = wear;
-    stored.surface          = knife->surface();
+    stored.surface          = part_model->surface();
     stored.wear_coefficient = source->wear_coefficient();
     stored.removes_volume   = source->removes_volume();
     stored.phases           = source->phases();
@@ -509,9 +509,9 @@ namespace abrade::coupling::lifetime
       }
     if (s.smoothing <= 0 && source_choice->from_particles())
       s.smoothing = wear.particle_radius;
-    if (!smoothing_checked && s.smoothing > 0 && s.smoothing < 0.5 * knife_parameters.mesh_size)
+    if (!smoothing_checked && s.smoothing > 0 && s.smoothing < 0.5 * part_parameters.mesh_size)
       ctx.log.warning("Lifetime/Smoothing radius (" + io::format_number(s.smoothing) + " m) is below half the "
-                      "Knife/Mesh size (" + io::format_number(knife_parameters.mesh_size) + " m): wear narrower "
+                      "Knife/Mesh size (" + io::format_number(part_parameters.mesh_size) + " m): wear narrower "
                       "than a cell is carried by single vertices, which can fold the worn surface where it "
                       "concentrates (an edge, a tip)");
     if (!smoothing_checked && calibration.smoothing_radius > 0 &&
@@ -531,7 +531,7 @@ namespace abrade::coupling::lifetime
   {
     io::ScopedTimer t(ctx.timers, "filter");
     tonnes_per_cycle_now = wear.tonnes_per_cycle;
-    return depth_rates(knife->surface(), wear, s.smoothing);
+    return depth_rates(part_model->surface(), wear, s.smoothing);
   }
 
   // 3. How many cycles this update stands for: sized from the previous update's largest rate,
@@ -539,7 +539,7 @@ namespace abrade::coupling::lifetime
   //    life was biased long by about c^2 / beds, +9 to +23 % at the DEM's bed spreads).
   long LifetimeLoop::choose_cycles(const Rates &rates) const
   {
-    long n = cycles_for_update(s.fixed_cycles, s.fraction, knife_parameters.mesh_size, previous_largest, rates.largest);
+    long n = cycles_for_update(s.fixed_cycles, s.fraction, part_parameters.mesh_size, previous_largest, rates.largest);
     if (s.target_tonnes > 0 && tonnes_per_cycle_now > 0) // the last update ends at the target
       n = std::max(1L, std::min(n, long(std::ceil((s.target_tonnes - tonnes) / tonnes_per_cycle_now))));
     return n;
@@ -551,12 +551,12 @@ namespace abrade::coupling::lifetime
   //    too, the knife stays at the checkpoint and the run ends there. Under MPI every rank moves
   //    its own copy of the knife: the ranks agree on the outcome (a failure on one is a failure
   //    on all), so that their knives stay the same.
-  LifetimeLoop::Step LifetimeLoop::move_knife(const Rates &rates, long n)
+  LifetimeLoop::Step LifetimeLoop::move_part(const Rates &rates, long n)
   {
     Step st;
-    st.volume_before = knife->volume();
+    st.volume_before = part_model->volume();
     st.beds          = rates_at_places(rates, n);
-    const fem::SolidSurface before = knife->surface();
+    const fem::SolidSurface before = part_model->surface();
     st.before                      = before;
     const dem::Parallel     ranks  = dem::Parallel::world();
     auto depth = [&](long cycles) {
@@ -573,11 +573,11 @@ namespace abrade::coupling::lifetime
           {
             io::ScopedTimer t(ctx.timers, "fem update");
             if (attempt > 0)
-              knife->load(checkpoints->knife_file(update - 1));
+              part_model->load(checkpoints->knife_file(update - 1));
             // the moved vertices are exact where they do not fold, and a smaller step often
             // does not: the surface is built anew as a set only from the third attempt on
             // a source of volumes (the DEM's): the knife loses exactly the volume worn
-            st.result = knife->apply_wear(depth(n), attempt >= 2 || n == 1,
+            st.result = part_model->apply_wear(depth(n), attempt >= 2 || n == 1,
                                           source->removes_volume() ? n * rates.wear_volume : 0.0);
           }
         catch (const std::exception &e)
@@ -591,8 +591,8 @@ namespace abrade::coupling::lifetime
         if (ranks.size() > 1)
           {
             const bool   moved    = error.empty();
-            const double volume   = moved ? knife->volume() : -1;
-            const double vertices = moved ? double(knife->surface().vertices.size()) : -1;
+            const double volume   = moved ? part_model->volume() : -1;
+            const double vertices = moved ? double(part_model->surface().vertices.size()) : -1;
             const bool   differ   = ranks.max(volume) != ranks.min(volume) || ranks.max(vertices) != ranks.min(vertices);
             if (moved && differ)
               error = "the MPI ranks' knives differ after the update (a remesh went another way on one)";
@@ -622,7 +622,7 @@ namespace abrade::coupling::lifetime
           error = "the knife could not be moved on another MPI rank";
         if (attempt == 3 || n == 1)
           {
-            knife->load(checkpoints->knife_file(update - 1)); // the rejected step leaves no trace
+            part_model->load(checkpoints->knife_file(update - 1)); // the rejected step leaves no trace
             st.error = "the worn surface could not be remeshed at update " + std::to_string(update) +
                        (halvings ? ", also with " + std::to_string(n) + " cycles after " + std::to_string(halvings) +
                                      " halving(s)"
@@ -712,7 +712,7 @@ namespace abrade::coupling::lifetime
 
   PartNow LifetimeLoop::part_now() const
   {
-    return {*knife,
+    return {*part_model,
             s.recession_points,
             sections,
             design_at_sections,
@@ -721,12 +721,12 @@ namespace abrade::coupling::lifetime
             s.gauge_height,
             frame.z0 + s.gauge_height,
             volume0,
-            knife_parameters.density};
+            part_parameters.density};
   }
 
   PartNow LifetimeLoop::design_now() const
   {
-    return {*knife,
+    return {*part_model,
             s.recession_points,
             design_sections,
             design_sections,
@@ -734,8 +734,8 @@ namespace abrade::coupling::lifetime
             design_thickness,
             s.gauge_height,
             frame.z0 + s.gauge_height,
-            knife->volume(),
-            knife_parameters.density};
+            part_model->volume(),
+            part_parameters.density};
   }
 
   std::size_t LifetimeLoop::criterion_named(const std::string &name) const
@@ -755,12 +755,12 @@ namespace abrade::coupling::lifetime
     BedRates b;
     b.cycles       = n;
     b.rates        = &rates;
-    b.depth_before = knife->wear_depth();
+    b.depth_before = part_model->wear_depth();
     for (const auto &seed : rates.seed)
-      b.followed.push_back(knife->at_followed_points(seed, s.recession_points));
+      b.followed.push_back(part_model->at_followed_points(seed, s.recession_points));
     if (rates.seed.size() > 1) // (one bed: no scatter to keep)
       for (const auto &seed : rates.seed)
-        b.design_points.push_back(knife->at_followed_points(seed, knife->design_surface().vertices));
+        b.design_points.push_back(part_model->at_followed_points(seed, part_model->design_surface().vertices));
     // where the gauges read the knife now (its sections after the last update)
     const std::size_t stations = sections.x.size();
     const double      z        = frame.z0 + s.gauge_height;
@@ -770,11 +770,11 @@ namespace abrade::coupling::lifetime
       {
         edge[i]  = std::isfinite(sections.height[i]);
         faces[i] = std::isfinite(sections.y_low[i]) && std::isfinite(sections.y_high[i]);
-        at.vertices.push_back(edge[i] ? sections.lowest[i] : knife->surface().vertices.front());
+        at.vertices.push_back(edge[i] ? sections.lowest[i] : part_model->surface().vertices.front());
         at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_low[i], z) : at.vertices.back());
         at.vertices.push_back(faces[i] ? dealii::Point<3>(sections.x[i], sections.y_high[i], z) : at.vertices.back());
       }
-    const fem::SurfaceTransfer transfer(knife->surface(), at);
+    const fem::SurfaceTransfer transfer(part_model->surface(), at);
     for (const auto &seed : rates.seed)
       {
         const auto there = transfer(seed);
@@ -790,9 +790,9 @@ namespace abrade::coupling::lifetime
 
   void LifetimeLoop::gauge_the_knife()
   {
-    std::tie(sections, design_at_sections) = worn_and_design_sections(knife->surface(), knife->design_surface(),
+    std::tie(sections, design_at_sections) = worn_and_design_sections(part_model->surface(), part_model->design_surface(),
                                                                       int(s.gauge_stations), frame.z0 + s.gauge_height,
-                                                                      knife_parameters.mesh_size);
+                                                                      part_parameters.mesh_size);
   }
 
   LifeInterval LifetimeLoop::current_interval(const EndOfLife &e) const
@@ -835,9 +835,9 @@ namespace abrade::coupling::lifetime
     tonnes += n * wear.tonnes_per_cycle;
     wear_total += n * rates.wear_volume;
 
-    const fem::SolidSurface &surface = knife->surface();
-    const auto               depth   = knife->wear_depth();
-    const auto               area    = fem::vertex_areas(surface, fem::KnifeGeometry::wearable_boundary);
+    const fem::SolidSurface &surface = part_model->surface();
+    const auto               depth   = part_model->wear_depth();
+    const auto               area    = fem::vertex_areas(surface, fem::wearable_boundary);
     std::size_t              at      = 0;
     double                   area_sum = 0, depth_area = 0;
     for (std::size_t v = 0; v < depth.size(); ++v)
@@ -847,11 +847,11 @@ namespace abrade::coupling::lifetime
         area_sum += area[v], depth_area += area[v] * depth[v];
       }
     deepest = {surface.vertices[at][0], surface.vertices[at][1], surface.vertices[at][2]};
-    const auto  &travel    = knife->vertex_displacement();
+    const auto  &travel    = part_model->vertex_displacement();
     const double dmax      = depth[at];
-    const auto   recession = knife->recession_at(s.recession_points);
-    const double worn      = volume0 - knife->volume();
-    const double swept     = st.volume_before - knife->volume();
+    const auto   recession = part_model->recession_at(s.recession_points);
+    const double worn      = volume0 - part_model->volume();
+    const double swept     = st.volume_before - part_model->volume();
     gauge_the_knife();
     const PartNow   part = part_now(); // (the knife as the criteria read it after this update)
     const EdgeGauge &g   = part.gauge;
@@ -870,7 +870,7 @@ namespace abrade::coupling::lifetime
       {"mean_depth", area_sum > 0 ? depth_area / area_sum : 0.0},
       {"max_vertex_displacement", *std::max_element(travel.begin(), travel.end())},
       {"worn_volume", worn},
-      {"worn_mass", worn * knife_parameters.density},
+      {"worn_mass", worn * part_parameters.density},
       {field_columns.volume, n * rates.wear_volume},
       {field_columns.swept_over, swept / (n * rates.wear_volume)},
       {"min_scaled_jacobian", st.result.quality.min_scaled_jacobian},
@@ -889,7 +889,7 @@ namespace abrade::coupling::lifetime
     const auto &phases = source->phases();
     for (std::size_t k = 0; k < wear.phase_volume.size(); ++k) // (a count that differs: CsvWriter says which)
       row.push_back({field_columns.volume + "_" + (k < phases.size() ? phases[k] : std::to_string(k)), n * wear.phase_volume[k]});
-    const auto point_depth = knife->wear_depth_below(s.recession_points);
+    const auto point_depth = part_model->wear_depth_below(s.recession_points);
     for (std::size_t p = 0; p < recession.size(); ++p)
       {
         const std::string number = p == 0 ? std::string() : "_" + std::to_string(p + 1);
@@ -899,8 +899,8 @@ namespace abrade::coupling::lifetime
     trajectory_rows.push_back(trajectory.named_row(row));
     trajectory.flush();
 
-    write_profiles(surface, knife->design_surface(), frame, s.planes, update, ctx.output.root() + "/knife");
-    knife->write(*knife_output, tonnes);
+    write_profiles(surface, part_model->design_surface(), frame, s.planes, update, ctx.output.root() + "/knife");
+    part_model->write(*part_output, tonnes);
     char stl[64];
     std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
     io::write_stl(ctx.output.file(stl), surface.as_polydata());
@@ -911,7 +911,7 @@ namespace abrade::coupling::lifetime
   void LifetimeLoop::log_update(const Rates &rates, const Step &st, double dmax, double swept)
   {
     const long  n      = st.cycles;
-    const auto &travel = knife->vertex_displacement();
+    const auto &travel = part_model->vertex_displacement();
     std::ostringstream line;
     line << "update " << update << ": " << n << " cycles (" << tonnes << " t), wear depth " << dmax
          << " m (largest vertex displacement " << *std::max_element(travel.begin(), travel.end())
@@ -947,7 +947,7 @@ namespace abrade::coupling::lifetime
   //    kill never leaves half of one (lifetime_checkpoints.h).
   void LifetimeLoop::checkpoint()
   {
-    knife->save(checkpoints->knife_file_aside(update));
+    part_model->save(checkpoints->knife_file_aside(update));
     StateFile state;
     state.set("format", state_format);
     state.set("parameter_hash", hash);
@@ -1092,24 +1092,24 @@ namespace abrade::coupling::lifetime
   /// What the run did: cycles, tonnes, the wear, the remeshes, where its wear came from.
   void LifetimeLoop::write_totals(io::Json &r) const
   {
-    const auto  &depth = knife->wear_depth();
-    const auto  &travel = knife->vertex_displacement();
+    const auto  &depth = part_model->wear_depth();
+    const auto  &travel = part_model->vertex_displacement();
     r["end"]           = end;
     r["cycles"]        = cycles;
     r["tonnes"]        = tonnes;
     r["max_depth"]     = depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
     r["max_vertex_displacement"] = travel.empty() ? 0.0 : *std::max_element(travel.begin(), travel.end());
-    r["worn_volume"]   = volume0 - knife->volume();
-    r["worn_mass"]     = (volume0 - knife->volume()) * knife_parameters.density;
+    r["worn_volume"]   = volume0 - part_model->volume();
+    r["worn_mass"]     = (volume0 - part_model->volume()) * part_parameters.density;
     r[field_columns.volume]    = wear_total; // (named after the Wear field: archard_volume)
-    r[field_columns.worn_over] = wear_total > 0 ? (volume0 - knife->volume()) / wear_total : 0.0;
-    r["remeshes"]      = static_cast<long>(knife->n_remeshes());
+    r[field_columns.worn_over] = wear_total > 0 ? (volume0 - part_model->volume()) / wear_total : 0.0;
+    r["remeshes"]      = static_cast<long>(part_model->n_remeshes());
     r["dem_warnings"]  = dem_warnings_total; // overlaps, lost particles, time step (this run; per update: trajectory.csv)
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it
     r["remeshes_inside_worn_surface"] = surfaces_kept;
     r["updates_off_volume"]           = updates_off_volume;
     r["smoothing_radius"] = s.smoothing;
-    r["part"]             = knife_parameters.from_file ? "part" : "knife"; // (what the report calls it)
+    r["part"]             = part_parameters.from_file ? "part" : "knife"; // (what the report calls it)
     if (particle_radius > 0) // (the size W and the footprint hold for: docs/coarse-graining.md)
       r["particle_radius"] = particle_radius;
     r["coarse_graining_factor"] = dem_case.coarse_graining;

@@ -1,6 +1,6 @@
 // One cycle's wear volumes per seed turned into wear depth rates per vertex (wear_rates.h).
 #include <abrade/coupling/lifetime/wear_rates.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <algorithm>
@@ -10,7 +10,7 @@ namespace abrade::coupling::lifetime
 {
   Rates depth_rates(const fem::SolidSurface &surface, const CycleWear &wear, double smoothing_radius)
   {
-    const int  wearable = fem::KnifeGeometry::wearable_boundary;
+    const int  wearable = fem::wearable_boundary;
     const auto area     = fem::vertex_areas(surface, wearable);
     Rates      r;
     r.mean.assign(surface.vertices.size(), 0.0);

@@ -8,7 +8,7 @@
 // `abrade-mesher` executable built beside `abrade`: the parent waits for it with a time limit
 // and reads the .msh file it wrote. A crash, a hang or a signal to the parent then costs the
 // child, never the run: a crash or a time-out becomes an InputError naming the file, which the
-// caller can answer by trying another way (KnifeModel's remesh does).
+// caller can answer by trying another way (PartModel's remesh does).
 //
 //   MeshingJob job{"part.stl", "part.msh", 0.02};
 //   std::vector<std::string> notes = run_meshing_job(job);   // throws InputError

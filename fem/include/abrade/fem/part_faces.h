@@ -26,6 +26,7 @@
 // selector that takes no face is an error (a box in millimetres for a part in metres, say).
 // Boxes and normals are evaluated per boundary face (a triangle of the mesh), after the part is
 // scaled and placed: in the coordinates the knife job writes knife.stl in.
+#include <abrade/fem/part_boundary.h>
 #include <abrade/fem/solid_surface.h>
 
 #include <deal.II/grid/tria.h>

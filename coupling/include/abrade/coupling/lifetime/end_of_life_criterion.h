@@ -26,7 +26,7 @@
 #include <abrade/coupling/lifetime/edge_gauge.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
-#include <abrade/fem/knife_model.h>
+#include <abrade/fem/part_model.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -40,7 +40,7 @@ namespace abrade::coupling::lifetime
   /// The part as the loop measured it after an update (or the design, at the start).
   struct PartNow
   {
-    const fem::KnifeModel               &part;
+    const fem::PartModel               &part;
     const std::vector<dealii::Point<3>> &followed_points;    ///< Lifetime/Recession points
     const EdgeSections                  &sections;           ///< the gauges' sections of the part
     const EdgeSections                  &design_at_sections; ///< the design's at the same stations

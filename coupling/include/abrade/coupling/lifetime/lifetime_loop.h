@@ -12,8 +12,8 @@
 //                                divided by the vertex areas: wear depth per cycle, per seed and
 //                                their mean
 //     choose_cycles()            how many cycles this update stands for (update_size.h)
-//     move_knife()               the mean depth moves the knife's surface (offset surface), the
-//                                mesh follows, is checked and remeshed (fem/knife_model.h); a
+//     move_part()               the mean depth moves the knife's surface (offset surface), the
+//                                mesh follows, is checked and remeshed (fem/part_model.h); a
 //                                step that cannot be remeshed is rejected: back to the checkpoint
 //     record()                   wear depth below the design (the definition `abrade compare`
 //                                uses), volumes, followed points: trajectory.csv, knife series
@@ -28,7 +28,7 @@
 // and all of them count in the interval; Lifetime/Target interval adds beds to the updates
 // until the life's interval is as narrow as asked.
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/lifetime/edge_gauge.h>
 #include <abrade/coupling/lifetime/wear_field_columns.h>
 #include <abrade/coupling/lifetime/end_of_life.h>
@@ -41,7 +41,7 @@
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/coupling/lifetime_checkpoints.h>
 #include <abrade/common/csv_writer.h>
-#include <abrade/fem/knife_model.h>
+#include <abrade/fem/part_model.h>
 #include <abrade/fem/solid_output.h>
 
 #include <memory>
@@ -83,7 +83,7 @@ namespace abrade::coupling::lifetime
     {
       bool                         moved = false;
       long                         cycles = 0;
-      fem::KnifeModel::UpdateResult result;
+      fem::PartModel::UpdateResult result;
       double                       volume_before = 0;
       std::string                  error;
       fem::SolidSurface            before; ///< the surface the rates were found on
@@ -99,7 +99,7 @@ namespace abrade::coupling::lifetime
     CycleWear run_cycles();
     Rates     filter(const CycleWear &wear);
     long      choose_cycles(const Rates &rates) const;
-    Step      move_knife(const Rates &rates, long cycles);
+    Step      move_part(const Rates &rates, long cycles);
     void      record(const CycleWear &wear, const Rates &rates, const Step &step);
     void      log_update(const Rates &rates, const Step &step, double deepest_depth, double swept);
     void      checkpoint();
@@ -126,7 +126,7 @@ namespace abrade::coupling::lifetime
     void      conclude(const FinalLife &f);
 
     void read_settings();
-    void build_knife();
+    void build_part();
     bool resume();
     void start_afresh();
     /// This update's record of every criterion's quantity (its value after the update, the
@@ -145,7 +145,7 @@ namespace abrade::coupling::lifetime
     /// The part as the criteria read it: the knife as it is now, or its design.
     PartNow part_now() const;
     PartNow design_now() const;
-    /// The beds' rates where the criteria read the knife, before it moves (move_knife()).
+    /// The beds' rates where the criteria read the knife, before it moves (move_part()).
     BedRates rates_at_places(const Rates &rates, long cycles) const;
     /// The criterion of that name (one every run has: the depth, the worn mass).
     std::size_t criterion_named(const std::string &name) const;
@@ -161,14 +161,14 @@ namespace abrade::coupling::lifetime
     JobContext                           &ctx;
     Settings                              s;
     DemCase                               dem_case;
-    KnifeParameters                       knife_parameters;
-    std::unique_ptr<fem::KnifeModel>      knife;
+    PartParameters                       part_parameters;
+    std::unique_ptr<fem::PartModel>      part_model;
     ProfileFrame                          frame; ///< where the profiles are cut
     EdgeSections                          design_sections; ///< the design's, for the gauges (edge_gauge.h)
     EdgeSections                          sections;        ///< the worn knife's, after the last update
     EdgeSections                          design_at_sections; ///< the design's at the same stations
     double                                design_thickness = 0; ///< the design's largest at the gauge height
-    std::unique_ptr<fem::SolidOutput>     knife_output;
+    std::unique_ptr<fem::SolidOutput>     part_output;
     std::unique_ptr<WearSourceChoice>     source_choice; ///< Lifetime/Wear source
     std::unique_ptr<WearSource>           source;
     std::unique_ptr<LifetimeCheckpoints>  checkpoints;

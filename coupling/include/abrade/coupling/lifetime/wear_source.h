@@ -54,7 +54,7 @@ namespace abrade::coupling::lifetime
     virtual double wear_coefficient() const { return 0; }
     /// Whether the wear is a volume of material removed (Archard's law measures one): the
     /// loop then has the moved knife lose exactly that volume in every update
-    /// (KnifeModel::apply_wear). A known depth rate (verification) is not.
+    /// (PartModel::apply_wear). A known depth rate (verification) is not.
     virtual bool removes_volume() const { return true; }
     /// What the wear comes from, in the loop's messages.
     virtual std::string name() const { return "DEM"; }

@@ -7,7 +7,10 @@
 // the reference knife) or on one (the other face stays flat to the edge). Optional shape features
 // from the thesis' concepts: a tip radius at the edge, and a lip (ridge) on the +y face above
 // the bevel that holds back a protective layer of material. A changed edge angle is a changed
-// B / T. Boundary ids: 1 = wearable surface, 2 = clamped top face (bolted to the shell).
+// B / T. Boundary ids (part_boundary.h): the wearable surface, and the clamped top face (bolted
+// to the shell).
+#include <abrade/fem/part_boundary.h>
+
 #include <deal.II/grid/tria.h>
 
 #include <string>
@@ -16,7 +19,7 @@
 
 namespace abrade::fem
 {
-  struct KnifeGeometry
+  struct ParametricKnife
   {
     double length    = 0.4;   ///< along x [m]
     double height    = 0.5;   ///< along z [m]
@@ -32,12 +35,6 @@ namespace abrade::fem
     double lip_height = 0;    ///< ridge on the +y face [m], 0: none
     double lip_width  = 0;    ///< how far the ridge stands out of the face [m]
     double lip_offset = 0;    ///< ridge's distance above the bevel [m]
-
-    enum
-    {
-      wearable_boundary = 1,
-      clamped_boundary  = 2
-    };
 
     /// The cross-section (y, z) as a closed polygon, counter-clockwise, the edge at the bottom
     /// (z = 0); without the tip rounding.

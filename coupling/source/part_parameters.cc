@@ -1,8 +1,8 @@
-// Subsection Knife: the parametric knife or a user's part (knife_parameters.h), meshed, its faces
+// Subsection Knife: the parametric knife or a user's part (part_parameters.h), meshed, its faces
 // chosen, and placed as the DEM's walls.
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
-#include <abrade/coupling/knife_parameters.h>
+#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameter_section.h>
 
 #include <deal.II/base/mpi.h>
@@ -43,7 +43,7 @@ namespace abrade::coupling
 
   } // namespace
 
-  void declare_knife_parameters(dealii::ParameterHandler &prm)
+  void declare_part_parameters(dealii::ParameterHandler &prm)
   {
     using dealii::Patterns::Anything;
     using dealii::Patterns::Double;
@@ -118,10 +118,10 @@ namespace abrade::coupling
     prm.leave_subsection();
   }
 
-  KnifeParameters read_knife_parameters(ParameterFile &file)
+  PartParameters read_part_parameters(ParameterFile &file)
   {
     auto           &prm = file.handler();
-    KnifeParameters kp;
+    PartParameters kp;
     auto           &k = kp.geometry;
     prm.enter_subsection("Knife");
     k.length     = prm.get_double("Length");
@@ -205,9 +205,9 @@ namespace abrade::coupling
     return kp;
   }
 
-  KnifeMesh mesh_knife(const KnifeParameters &kp, ParameterFile &file, const std::string &directory)
+  PartMesh mesh_part(const PartParameters &kp, ParameterFile &file, const std::string &directory)
   {
-    KnifeMesh m;
+    PartMesh m;
     m.tria = std::make_unique<dealii::Triangulation<3>>();
     if (!kp.from_file)
       {
@@ -221,7 +221,7 @@ namespace abrade::coupling
     try
       {
         m.faces = fem::assign_faces(*m.tria, kp.clamped_faces, kp.wearable_faces, m.report.face_names,
-                                    fem::KnifeGeometry::wearable_boundary, fem::KnifeGeometry::clamped_boundary);
+                                    fem::wearable_boundary, fem::clamped_boundary);
       }
     catch (const std::invalid_argument &e)
       {
@@ -240,7 +240,7 @@ namespace abrade::coupling
     return m;
   }
 
-  void report_knife_mesh(const KnifeParameters &kp, const KnifeMesh &m, io::Log &log, std::vector<std::string> *warnings)
+  void report_part_mesh(const PartParameters &kp, const PartMesh &m, io::Log &log, std::vector<std::string> *warnings)
   {
     if (!kp.from_file)
       return;
@@ -311,9 +311,9 @@ namespace abrade::coupling
     if (std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
       return;
     init_mpi_once();
-    const KnifeParameters   kp = read_knife_parameters(file);
-    const KnifeMesh         m  = mesh_knife(kp, file, directory);
-    report_knife_mesh(kp, m, log);
+    const PartParameters   kp = read_part_parameters(file);
+    const PartMesh         m  = mesh_part(kp, file, directory);
+    report_part_mesh(kp, m, log);
     const fem::SolidSurface surface = fem::extract_surface(*m.tria);
     if (kp.from_file)
       if (const std::string w = fit_mounted_knives(c, surface); !w.empty())

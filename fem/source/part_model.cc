@@ -1,10 +1,10 @@
 // The knife as the lifetime loop sees it: its surface receding by a wear depth per vertex, the
-// mesh moved, checked and remeshed, checkpoints (knife_model.h).
+// mesh moved, checked and remeshed, checkpoints (part_model.h).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/hash.h>
 #include <abrade/common/temporary_directory.h>
-#include <abrade/fem/knife_model.h>
+#include <abrade/fem/part_model.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/mesh_motion.h>
 #include <abrade/fem/surface_filter.h>
@@ -25,7 +25,7 @@ namespace abrade::fem
 {
   using namespace dealii;
 
-  KnifeModel::KnifeModel(const KnifeGeometry &geometry, const Settings &s)
+  PartModel::PartModel(const ParametricKnife &geometry, const Settings &s)
     : settings(s), tria(std::make_unique<Triangulation<3>>())
   {
     if (settings.work_directory.empty())
@@ -37,7 +37,7 @@ namespace abrade::fem
     start();
   }
 
-  KnifeModel::KnifeModel(std::unique_ptr<Triangulation<3>> mesh, const Settings &s)
+  PartModel::PartModel(std::unique_ptr<Triangulation<3>> mesh, const Settings &s)
     : settings(s), tria(std::move(mesh))
   {
     if (settings.work_directory.empty())
@@ -46,7 +46,7 @@ namespace abrade::fem
     start();
   }
 
-  void KnifeModel::start()
+  void PartModel::start()
   {
     current_surface   = extract_surface(*tria);
     design            = current_surface;
@@ -64,7 +64,7 @@ namespace abrade::fem
     quality_threshold = settings.remesh_quality * mesh_quality(*tria).min_scaled_jacobian;
   }
 
-  double KnifeModel::volume() const { return mesh_volume(*tria); }
+  double PartModel::volume() const { return mesh_volume(*tria); }
 
   namespace
   {
@@ -125,8 +125,8 @@ namespace abrade::fem
                                       const std::vector<double> &depth)
     {
       std::vector<double> carried = transfer(depth);
-      const auto          a_from = vertex_areas(from, KnifeGeometry::wearable_boundary);
-      const auto          a_to   = vertex_areas(to, KnifeGeometry::wearable_boundary);
+      const auto          a_from = vertex_areas(from, wearable_boundary);
+      const auto          a_to   = vertex_areas(to, wearable_boundary);
       double              given = 0, now = 0;
       for (std::size_t v = 0; v < depth.size(); ++v)
         given += a_from[v] * depth[v];
@@ -139,7 +139,7 @@ namespace abrade::fem
     }
   } // namespace
 
-  KnifeModel::UpdateResult KnifeModel::apply_wear(const std::vector<double> &depth, bool may_rebuild, double volume)
+  PartModel::UpdateResult PartModel::apply_wear(const std::vector<double> &depth, bool may_rebuild, double volume)
   {
     if (depth.size() != current_surface.vertices.size())
       throw std::logic_error("apply_wear: one depth per surface vertex expected");
@@ -149,14 +149,14 @@ namespace abrade::fem
     if (!r.worn_through.empty())
       {
         r.quality = mesh_quality(*tria);
-        r.volume  = KnifeModel::volume();
+        r.volume  = PartModel::volume();
         return r; // end of life: reported, not carried into the mesh
       }
     move_surface(depth, may_rebuild, r, volume);
     return r;
   }
 
-  void KnifeModel::move_surface(const std::vector<double> &given_depth, bool may_rebuild, UpdateResult &r, double volume,
+  void PartModel::move_surface(const std::vector<double> &given_depth, bool may_rebuild, UpdateResult &r, double volume,
                                 bool may_mesh_first)
   {
     std::vector<double> depth = given_depth;
@@ -168,7 +168,7 @@ namespace abrade::fem
     std::vector<int>  wearing_triangles(current_surface.vertices.size(), 0);
     for (std::size_t t = 0; t < current_surface.triangles.size(); ++t)
       {
-        held[t] = current_surface.boundary_id[t] != KnifeGeometry::wearable_boundary;
+        held[t] = current_surface.boundary_id[t] != wearable_boundary;
         for (unsigned v : current_surface.triangles[t])
           wearing_triangles[v] += held[t] ? 0 : 1;
       }
@@ -268,7 +268,7 @@ namespace abrade::fem
             // would not help; it is meshed anew before the next update's step instead (its
             // change of the volume then taken off that step), unless its cells turned inside out
             current_surface = extract_surface(*tria);
-            r.volume        = KnifeModel::volume();
+            r.volume        = PartModel::volume();
             return;
           }
         if (volume > 0 && may_mesh_first && !fresh)
@@ -308,10 +308,10 @@ namespace abrade::fem
       }
     else
       current_surface = extract_surface(*tria);
-    r.volume = KnifeModel::volume();
+    r.volume = PartModel::volume();
   }
 
-  bool KnifeModel::remesh_then_move(const SolidSurface &from, const std::vector<double> &depth, bool may_rebuild,
+  bool PartModel::remesh_then_move(const SolidSurface &from, const std::vector<double> &depth, bool may_rebuild,
                                     UpdateResult &r, double volume, const std::string &why, bool new_vertices)
   {
     UpdateResult                   first;
@@ -344,14 +344,14 @@ namespace abrade::fem
     return true;
   }
 
-  SurfaceTransfer KnifeModel::remesh_current(UpdateResult &r)
+  SurfaceTransfer PartModel::remesh_current(UpdateResult &r)
   {
     const SolidSurface old_surface = extract_surface(*tria);
     const double       old_volume  = volume();
     auto               fresh       = std::make_unique<Triangulation<3>>();
     if (const std::string failed = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory); !failed.empty())
       r.surface_kept = failed + "; the knife was meshed again inside its worn surface's own triangles";
-    set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, KnifeGeometry::wearable_boundary);
+    set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, wearable_boundary);
     tria = std::move(fresh);
     ++remeshes;
     r.remeshed      = true;
@@ -379,13 +379,13 @@ namespace abrade::fem
     return transfer;
   }
 
-  double KnifeModel::erosion_spacing() const
+  double PartModel::erosion_spacing() const
   {
     return settings.erosion_spacing > 0 ? settings.erosion_spacing
                                         : std::min(settings.mesh_size / 6, plate_thickness / 15);
   }
 
-  void KnifeModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r, double volume)
+  void PartModel::rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r, double volume)
   {
     const io::PolyData start = before.surface.as_polydata();
     auto               build = [&](double scale) {
@@ -437,7 +437,7 @@ namespace abrade::fem
       {
         throw RunError(std::string("the worn knife could not be meshed: ") + e.what());
       }
-    set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, KnifeGeometry::wearable_boundary);
+    set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, wearable_boundary);
     r.quality = mesh_quality(*fresh);
     if (r.quality.n_inverted > 0)
       throw RunError("the remeshed knife has inverted cells");
@@ -460,10 +460,10 @@ namespace abrade::fem
           displacement[3 * v + c] += step[c];
       }
     since_remesh.assign(current_surface.vertices.size(), 0.0);
-    r.volume = KnifeModel::volume();
+    r.volume = PartModel::volume();
   }
 
-  std::vector<double> KnifeModel::wear_depth() const
+  std::vector<double> PartModel::wear_depth() const
   {
     std::vector<double> points;
     points.reserve(3 * current_surface.vertices.size());
@@ -472,7 +472,7 @@ namespace abrade::fem
     return geometry::wear_depth(*design_distance, points);
   }
 
-  std::vector<double> KnifeModel::depth_below_design(const std::vector<Point<3>> &points) const
+  std::vector<double> PartModel::depth_below_design(const std::vector<Point<3>> &points) const
   {
     std::vector<double> flat;
     for (const auto &p : points)
@@ -480,7 +480,7 @@ namespace abrade::fem
     return geometry::wear_depth(*design_distance, flat);
   }
 
-  std::vector<double> KnifeModel::wear_depth_below(const std::vector<Point<3>> &points) const
+  std::vector<double> PartModel::wear_depth_below(const std::vector<Point<3>> &points) const
   {
     std::vector<double> worn, feet;
     for (const auto &p : current_surface.vertices)
@@ -494,7 +494,7 @@ namespace abrade::fem
     return transfer_surface_field(laid, depth, at);
   }
 
-  std::vector<double> KnifeModel::at_followed_points(const std::vector<double> &field,
+  std::vector<double> PartModel::at_followed_points(const std::vector<double> &field,
                                                      const std::vector<Point<3>> &points) const
   {
     if (field.size() != current_surface.vertices.size())
@@ -536,7 +536,7 @@ namespace abrade::fem
     }
   } // namespace
 
-  void KnifeModel::save(const std::string &path) const
+  void PartModel::save(const std::string &path) const
   {
     std::vector<double>   vertices;
     std::vector<unsigned> cells, faces;
@@ -566,7 +566,7 @@ namespace abrade::fem
       throw RunError("cannot write " + path);
   }
 
-  void KnifeModel::load(const std::string &path)
+  void PartModel::load(const std::string &path)
   {
     std::ifstream file(path, std::ios::binary);
     if (!file)
@@ -642,7 +642,7 @@ namespace abrade::fem
     remeshes          = static_cast<unsigned>(state.at(1));
   }
 
-  void KnifeModel::write(SolidOutput &output, double time) const
+  void PartModel::write(SolidOutput &output, double time) const
   {
     std::vector<double> depth(tria->n_vertices(), 0.0), travel(tria->n_vertices(), 0.0),
       moved(3 * tria->n_vertices(), 0.0);

@@ -1,10 +1,11 @@
 #pragma once
-// The knife as the lifetime loop sees it: a tetrahedral solid whose wearable surface recedes by
-// a wear depth per surface vertex at every update.
+// The part as the lifetime loop sees it (the parametric knife, or a part from a file): a
+// tetrahedral solid whose wearable surface recedes by a wear depth per surface vertex at every
+// update.
 //
-//   KnifeModel knife(geometry, settings);
-//   const SolidSurface &s = knife.surface();          // the DEM's wall mesh
-//   auto r = knife.apply_wear(depth_per_vertex);       // move, check, remesh if needed
+//   PartModel part(geometry, settings);
+//   const SolidSurface &s = part.surface();           // the DEM's wall mesh
+//   auto r = part.apply_wear(depth_per_vertex);        // move, check, remesh if needed
 //   if (!r.worn_through.empty()) ... end of life
 //
 // apply_wear moves each wearable surface vertex inward along its normal by its depth (the
@@ -27,7 +28,7 @@
 // (only where the knife is at least half its plate thickness thick: near a sharp edge the local
 // thickness vanishes and the receding edge is the mesh motion's and the remeshing's business).
 #include <abrade/common/surface_distance.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
 #include <abrade/fem/solid_surface.h>
@@ -40,7 +41,7 @@
 
 namespace abrade::fem
 {
-  class KnifeModel
+  class PartModel
   {
   public:
     struct Settings
@@ -61,10 +62,10 @@ namespace abrade::fem
     };
 
     /// The parametric knife, meshed with Gmsh.
-    KnifeModel(const KnifeGeometry &geometry, const Settings &settings);
+    PartModel(const ParametricKnife &geometry, const Settings &settings);
     /// A part already meshed (a user's part, fem/solid_file.h): its boundary faces with id
-    /// KnifeGeometry::wearable_boundary wear, all others are held (clamped).
-    KnifeModel(std::unique_ptr<dealii::Triangulation<3>> mesh, const Settings &settings);
+    /// wearable_boundary wear, all others are held (clamped).
+    PartModel(std::unique_ptr<dealii::Triangulation<3>> mesh, const Settings &settings);
 
     struct UpdateResult
     {

@@ -1,9 +1,9 @@
 // Parametric grab knives meshed with the Gmsh API (OpenCASCADE kernel) into tetrahedra
-// (knife_geometry.h).
+// (parametric_knife.h).
 #include "gmsh_session.h"
 #include <abrade/common/error.h>
 #include <abrade/common/termination.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 
 #include "quiet_stdout.h"
 
@@ -18,7 +18,7 @@
 
 namespace abrade::fem
 {
-  std::vector<std::pair<double, double>> KnifeGeometry::profile() const
+  std::vector<std::pair<double, double>> ParametricKnife::profile() const
   {
     const double h = thickness / 2;
     // the edge point: middle for a chisel, on the flat face for a one-sided bevel
@@ -42,7 +42,7 @@ namespace abrade::fem
     return p;
   }
 
-  double KnifeGeometry::volume() const
+  double ParametricKnife::volume() const
   {
     const auto p = profile();
     double     a = 0;
@@ -54,7 +54,7 @@ namespace abrade::fem
     return 0.5 * std::abs(a) * length;
   }
 
-  void KnifeGeometry::check() const
+  void ParametricKnife::check() const
   {
     auto need = [](bool ok, const std::string &what) {
       if (!ok)
@@ -68,7 +68,7 @@ namespace abrade::fem
          "a lip needs a width, and must end below the top of the knife");
   }
 
-  void KnifeGeometry::mesh(dealii::Triangulation<3> &tria, double h, const std::string &msh_file) const
+  void ParametricKnife::mesh(dealii::Triangulation<3> &tria, double h, const std::string &msh_file) const
   {
     check();
     if (!(h > 0))
@@ -120,7 +120,7 @@ namespace abrade::fem
       }
   }
 
-  void KnifeGeometry::build_and_mesh(const std::vector<std::pair<double, double>> &p, double h,
+  void ParametricKnife::build_and_mesh(const std::vector<std::pair<double, double>> &p, double h,
                                      const std::string &msh_file) const
   {
     start_gmsh();
@@ -130,7 +130,7 @@ namespace abrade::fem
     mesh_built(volume_tag, h, msh_file);
   }
 
-  void KnifeGeometry::write_step(const std::string &step_file) const
+  void ParametricKnife::write_step(const std::string &step_file) const
   {
     check();
     start_gmsh();
@@ -155,7 +155,7 @@ namespace abrade::fem
     gmsh::finalize();
   }
 
-  int KnifeGeometry::build(const std::vector<std::pair<double, double>> &p, double h) const
+  int ParametricKnife::build(const std::vector<std::pair<double, double>> &p, double h) const
   {
     gmsh::model::add("knife");
     namespace occ = gmsh::model::occ;
@@ -203,7 +203,7 @@ namespace abrade::fem
     return volume_tag;
   }
 
-  void KnifeGeometry::mesh_built(int volume_tag, double h, const std::string &msh_file) const
+  void ParametricKnife::mesh_built(int volume_tag, double h, const std::string &msh_file) const
   {
     // physical groups: the volume, the clamped top face (z = height), the wearable rest
     std::vector<int> wearable, clamped;

@@ -1,11 +1,12 @@
 #pragma once
-// The knife's solid model as the parameter file describes it (subsection Knife), shared by the
-// knife and lifetime jobs.
+// The part that wears as the parameter file describes it (subsection Knife: the parametric knife,
+// or a part from a file with its placement and faces), its mesh, and its surface placed as walls;
+// shared by the knife and lifetime jobs.
 #include <abrade/common/log.h>
 #include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/parameters.h>
-#include <abrade/fem/knife_geometry.h>
+#include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/part_faces.h>
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_surface.h>
@@ -17,13 +18,13 @@
 namespace abrade::coupling
 {
   /// Knife/Bevel side.
-  inline const Choices<fem::KnifeGeometry::BevelSide> bevel_sides = {{"both", fem::KnifeGeometry::BevelSide::both},
-                                                                     {"plus", fem::KnifeGeometry::BevelSide::plus},
-                                                                     {"minus", fem::KnifeGeometry::BevelSide::minus}};
+  inline const Choices<fem::ParametricKnife::BevelSide> bevel_sides = {{"both", fem::ParametricKnife::BevelSide::both},
+                                                                     {"plus", fem::ParametricKnife::BevelSide::plus},
+                                                                     {"minus", fem::ParametricKnife::BevelSide::minus}};
 
-  struct KnifeParameters
+  struct PartParameters
   {
-    fem::KnifeGeometry geometry;
+    fem::ParametricKnife geometry;
     double             mesh_size = 0.015;
     double             density   = 7800;
     bool               from_file = false;
@@ -34,12 +35,12 @@ namespace abrade::coupling
 
   /// Declares subsection Knife: the parametric knife's shape, or a part from a file with its
   /// placement and faces, and the mesh.
-  void declare_knife_parameters(dealii::ParameterHandler &prm);
+  void declare_part_parameters(dealii::ParameterHandler &prm);
   /// Reads and checks subsection Knife; errors name the file.
-  KnifeParameters read_knife_parameters(ParameterFile &file);
+  PartParameters read_part_parameters(ParameterFile &file);
 
   /// The knife's volume mesh as subsection Knife describes it, with what was found on the way.
-  struct KnifeMesh
+  struct PartMesh
   {
     std::unique_ptr<dealii::Triangulation<3>> tria;
     fem::SolidFileReport                      report;     ///< a part from a file: notes, warnings
@@ -49,12 +50,12 @@ namespace abrade::coupling
 
   /// Meshes the parametric knife (its Gmsh file written into @p directory) or reads the part
   /// from its file and chooses its wearable and clamped faces (boundary ids
-  /// KnifeGeometry::wearable_boundary and clamped_boundary). Errors name the parameter.
-  KnifeMesh mesh_knife(const KnifeParameters &kp, ParameterFile &file, const std::string &directory);
+  /// wearable_boundary and clamped_boundary). Errors name the parameter.
+  PartMesh mesh_part(const PartParameters &kp, ParameterFile &file, const std::string &directory);
 
-  /// Writes what mesh_knife found out about a part from a file (its solids, its faces, which
+  /// Writes what mesh_part found out about a part from a file (its solids, its faces, which
   /// wear, a poor mesh) to @p log, and its warnings also into @p warnings.
-  void report_knife_mesh(const KnifeParameters &kp, const KnifeMesh &m, io::Log &log,
+  void report_part_mesh(const PartParameters &kp, const PartMesh &m, io::Log &log,
                          std::vector<std::string> *warnings = nullptr);
 
   /// @p surface as a wall mesh, every vertex p moved to @p linear p + @p offset.
