@@ -26,6 +26,10 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 abrade=${ABRADE:-$root/build/abrade} # (ABRADE: another build, e.g. a copy taken before rebuilding)
+# ABRADE_BASELINE: a second build (a copy taken before a change) run on one rank with each thread
+# count in every round, between LIGGGHTS and abrade, reported as code "baseline": a change's
+# speed against the code before it, interleaved on the same machine state.
+baseline=${ABRADE_BASELINE:-}
 edge=0 threads="1 2" ranks="2" out="" repeat=3 busy=0
 while (($#)); do
   case $1 in
@@ -65,21 +69,21 @@ liggghts_run() { # ranks, directory
   awk -v r="$1" '/^Loop time of/ { n++; if (n > 1) { s += $9; t += $4; a = $12 } } END { print "liggghts", r, 1, a, s, t }' \
     "$2/log.liggghts" >> "$out/runs.txt"
 }
-abrade_run() { # ranks, threads (N or Nfixed), directory
-  local launch=() n=${2%fixed} adapt=true
+abrade_run() { # ranks, threads (N or Nfixed), directory[, binary, code name]
+  local launch=() n=${2%fixed} adapt=true bin=${4:-$abrade} code=${5:-abrade}
   [[ $2 == *fixed ]] && adapt=false
   (($1 > 1)) && launch=("${mpi[@]}" -np "$1" -x OMP_NUM_THREADS="$n")
-  OMP_NUM_THREADS=$n "${launch[@]}" "$abrade" run "$case" --quiet --output "$3" --set "Simulation/Threads=$n" \
+  OMP_NUM_THREADS=$n "${launch[@]}" "$bin" run "$case" --quiet --output "$3" --set "Simulation/Threads=$n" \
     --set "Simulation/Adapt threads=$adapt" \
     --set "$knife_set" --set "Output/Snapshot interval=0" --set "Output/Write particles=false" \
     --set "Particles/Settling/Bed file=$out/bed.bed" >/dev/null
-  python3 - "$3/summary.json" "$1" "$2" >> "$out/runs.txt" <<'PY'
+  python3 - "$3/summary.json" "$1" "$2" "$code" >> "$out/runs.txt" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1])); r = s["results"]
 ph = [r["phases"][p] for p in ("penetration", "travel")]
 steps = sum(p["steps"] for p in ph)
 seconds = sum(p["steps"] * r["particles"] / p["particle_steps_per_second"] for p in ph)
-print("abrade", sys.argv[2], sys.argv[3], r["particles"], steps, f"{seconds:.4f}")
+print(sys.argv[4], sys.argv[2], sys.argv[3], r["particles"], steps, f"{seconds:.4f}")
 PY
 }
 "$abrade" run "$case" --quiet --output "$out/bed" --set Job=bed --set "$knife_set" \
@@ -93,6 +97,7 @@ done
 for ((rep = 1; rep <= repeat; ++rep)); do
   liggghts_run 1 "$out/liggghts-1-$rep"
   for n in $ranks; do (( n > 1 )) && liggghts_run "$n" "$out/liggghts-$n-$rep"; done
+  [[ -n $baseline ]] && for t in $threads; do abrade_run 1 "$t" "$out/baseline-1x$t-$rep" "$baseline" baseline; done
   for t in $threads; do abrade_run 1 "$t" "$out/abrade-1x$t-$rep"; done
   for n in $ranks; do (( n > 1 )) && abrade_run "$n" 1 "$out/abrade-${n}x1-$rep"; done
 done
@@ -121,7 +126,7 @@ for c in configs:
 PY
 )
 printf '%s\n' "${rows[@]}" > "$out/results.csv"
-cmd="bench/knife_bed.sh --knife-edge $edge --threads \"$threads\" --ranks \"$ranks\" --repeat $repeat --busy $busy"
+cmd="${baseline:+ABRADE_BASELINE=$baseline }bench/knife_bed.sh --knife-edge $edge --threads \"$threads\" --ranks \"$ranks\" --repeat $repeat --busy $busy"
 {
   echo "Knife-bed throughput, knife phases (penetration + travel), knife mesh of $triangles triangles"
   echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%Y-%m-%d)$( ((busy)) && echo ", $busy busy process(es) spinning beside every run")"

@@ -7,6 +7,7 @@
 #include <abrade/dem/wall_driver.h>
 #include <abrade/dem/wall_motion_model.h>
 #include "simulation_impl.h"
+#include "wall_contacts.h"
 
 #include <omp.h>
 
@@ -140,19 +141,6 @@ namespace abrade::dem
       }
     }
 
-    inline bool triangles_share_vertex(const std::array<int, 3> &a, const std::array<int, 3> &b)
-    {
-      for (int p : a)
-        for (int q : b)
-          if (p == q)
-            return true;
-      return false;
-    }
-
-    inline bool triangle_has(const std::array<int, 3> &t, int v)
-    {
-      return t[0] == v || t[1] == v || t[2] == v;
-    }
     // The thread count OpenMP offers when the program starts (OMP_NUM_THREADS, or the cores),
     // taken before anything else can lower it: deal.II's MPI set-up for the FEM limits the
     // threads of the process to one.
@@ -411,20 +399,156 @@ namespace abrade::dem
   // Forces
   // ---------------------------------------------------------------------------------------------
 
+  namespace
+  {
+    /// Every particle: the pair forces of the shares other than the first (in their buffers:
+    /// force, torque, rolling; n_local apart) added in share order, then gravity. Called by
+    /// every thread of a parallel region (its loops are shared out among them).
+    template <bool rotation>
+    void add_pair_buffers_and_gravity(ParticleStore &P, const std::vector<std::vector<double>> &buffers,
+                                      int n_shares, std::size_t n, std::size_t nl, const Vec3 &g)
+    {
+      double *__restrict FX = P.fx.data(), *__restrict FY = P.fy.data(), *__restrict FZ = P.fz.data();
+      double *__restrict TX = P.tx.data(), *__restrict TY = P.ty.data(), *__restrict TZ = P.tz.data();
+      double *__restrict ROLL = P.rolling.data();
+      const double *__restrict MASS = P.mass.data();
+      for (int b = 1; b < n_shares; ++b)
+        {
+          const double *__restrict buf = buffers[b].data();
+#pragma omp for simd schedule(static) nowait
+          for (std::size_t i = 0; i < n; ++i)
+            {
+              FX[i] += buf[i], FY[i] += buf[nl + i], FZ[i] += buf[2 * nl + i];
+              if (rotation)
+                TX[i] += buf[3 * nl + i], TY[i] += buf[4 * nl + i], TZ[i] += buf[5 * nl + i],
+                  ROLL[i] += buf[6 * nl + i];
+            }
+        }
+      const double gx = g[0], gy = g[1], gz = g[2];
+#pragma omp for simd schedule(static)
+      for (std::size_t i = 0; i < n; ++i)
+        FX[i] += MASS[i] * gx, FY[i] += MASS[i] * gy, FZ[i] += MASS[i] * gz;
+    }
+
+    /// What a particle's wall contacts add up to in a step: force, torque, rolling torque.
+    struct ParticleSums
+    {
+      double fx, fy, fz, tx = 0, ty = 0, tz = 0, rolling = 0;
+    };
+
+    /// One particle-wall contact: particle @p i touching @p wall at hit @p h (accepted), with
+    /// its tangential history @p history (@p began: new). Its force and torque are added to
+    /// @p sums, the reaction (-F at the contact point, its torque about the wall's centre) to
+    /// the wall's load @p L, and the contact is recorded in @p r. Returns the overlap over the
+    /// radius.
+    template <bool rotation, class Law>
+    [[gnu::always_inline]] inline double wall_contact(const ParticleStore &P, std::size_t i,
+                                                      const wall_contacts::Hit &h, const Wall &wall,
+                                                      const PairCoefficients &c, double dt, double *history,
+                                                      bool began, ParticleSums &sums, double *L,
+                                                      WallContactRecord &r)
+    {
+      const double ri      = P.radius[i];
+      const double q[3]    = {P.x[i], P.y[i], P.z[i]};
+      const double d       = std::sqrt(h.d2);
+      const double nv[3]   = {(q[0] - h.p[0]) / d, (q[1] - h.p[1]) / d, (q[2] - h.p[2]) / d};
+      const double overlap = ri - d;
+      const Vec3   vw      = wall.velocity_at(Vec3(h.p[0], h.p[1], h.p[2]));
+      double       vrel[3] = {P.vx[i] - vw[0], P.vy[i] - vw[1], P.vz[i] - vw[2]};
+      if (rotation)
+        {
+          // w x (-r n)
+          vrel[0] -= ri * (P.wy[i] * nv[2] - P.wz[i] * nv[1]);
+          vrel[1] -= ri * (P.wz[i] * nv[0] - P.wx[i] * nv[2]);
+          vrel[2] -= ri * (P.wx[i] * nv[1] - P.wy[i] * nv[0]);
+        }
+      ContactState cs;
+      cs.nx = nv[0], cs.ny = nv[1], cs.nz = nv[2], cs.overlap = overlap;
+      cs.r_eff = ri, cs.m_eff = P.mass[i];
+      cs.vx = vrel[0], cs.vy = vrel[1], cs.vz = vrel[2];
+      if constexpr (Law::needs_rotation)
+        {
+          const Vec3 &ww = wall.angular_velocity;
+          cs.wx = P.wx[i] - ww[0], cs.wy = P.wy[i] - ww[1], cs.wz = P.wz[i] - ww[2];
+          cs.rolling_inertia = rolling_inertia_of_sphere(P.mass[i], ri);
+        }
+      if constexpr (Law::needs_area)
+        cs.area = M_PI * (ri * ri - d * d);
+      const ContactResponse f    = Law::evaluate(cs, c, dt, history);
+      const double          ft[3] = {f.ftx, f.fty, f.ftz};
+      const double F[3] = {f.normal * nv[0] + f.ftx, f.normal * nv[1] + f.fty, f.normal * nv[2] + f.ftz};
+      sums.fx += F[0], sums.fy += F[1], sums.fz += F[2];
+      if (rotation)
+        {
+          sums.tx -= ri * (nv[1] * ft[2] - nv[2] * ft[1]);
+          sums.ty -= ri * (nv[2] * ft[0] - nv[0] * ft[2]);
+          sums.tz -= ri * (nv[0] * ft[1] - nv[1] * ft[0]);
+          if constexpr (Law::constant_torque)
+            sums.rolling += f.rolling_limit * ri;
+          else
+            sums.tx += f.mx, sums.ty += f.my, sums.tz += f.mz;
+        }
+      const Vec3 arm = Vec3(h.p[0], h.p[1], h.p[2]) - wall.current_centre();
+      L[0] -= F[0], L[1] -= F[1], L[2] -= F[2];
+      L[3] -= arm[1] * F[2] - arm[2] * F[1];
+      L[4] -= arm[2] * F[0] - arm[0] * F[2];
+      L[5] -= arm[0] * F[1] - arm[1] * F[0];
+      if constexpr (!Law::constant_torque) // a rolling torque on the particle acts back
+        if (rotation)
+          L[3] -= f.mx, L[4] -= f.my, L[5] -= f.mz;
+
+      r.wall = h.wall, r.triangle = h.tri, r.feature = h.feature;
+      r.particle = static_cast<int>(i), r.particle_id = P.id[i];
+      const double vt[3] = {f.vtx, f.vty, f.vtz};
+      for (int dd = 0; dd < 3; ++dd)
+        {
+          r.point[dd] = h.p[dd], r.normal[dd] = nv[dd];
+          r.tangential_force[dd] = ft[dd], r.tangential_velocity[dd] = vt[dd];
+        }
+      r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
+      r.centre_velocity[0] = P.vx[i] - vw[0], r.centre_velocity[1] = P.vy[i] - vw[1],
+      r.centre_velocity[2] = P.vz[i] - vw[2];
+      r.began = began;
+      return overlap / ri;
+    }
+
+    /// The walls' loads summed over the shares (@p loads: 6 per wall, force and torque, per
+    /// share) and the ranks into each wall's force and torque, and every rank's worst overlap
+    /// ratio (@p own_worst: this rank's) in one sum over the ranks: the largest, @p worst_all,
+    /// and its rank, @p worst_rank, are known everywhere.
+    void sum_wall_loads(std::vector<std::vector<double>> &loads, const Parallel &parallel, std::vector<Wall> &walls,
+                        double own_worst, int &worst_rank, double &worst_all)
+    {
+      const std::size_t    nw    = walls.size();
+      std::vector<double> &total = loads[0];
+      total.resize(6 * nw + parallel.size());
+      for (std::size_t b = 1; b < loads.size(); ++b)
+        for (std::size_t k = 0; k < 6 * nw; ++k)
+          total[k] += loads[b][k];
+      std::fill(total.begin() + 6 * nw, total.end(), 0.0);
+      total[6 * nw + parallel.rank()] = own_worst;
+      parallel.sum(total);
+      for (std::size_t w = 0; w < nw; ++w)
+        {
+          walls[w].force  = Vec3(total[6 * w], total[6 * w + 1], total[6 * w + 2]);
+          walls[w].torque = Vec3(total[6 * w + 3], total[6 * w + 4], total[6 * w + 5]);
+        }
+      worst_rank = static_cast<int>(std::max_element(total.begin() + 6 * nw, total.end()) - total.begin() - 6 * nw);
+      worst_all  = total[6 * nw + worst_rank];
+      total.resize(6 * nw);
+    }
+  } // namespace
+
   template <bool rotation, class Law>
   void Simulation::wall_forces_with()
   {
     Impl             &m  = *impl;
     constexpr int     H  = Law::history;
-    const std::size_t n  = store.size();
-    const std::size_t nl = store.n_local(); // the per-thread buffers hold owned and ghosts
-    const std::size_t nm = mats.size();
-    const std::size_t nw = walls.size();
-    const double      dt = time_step;
-    ParticleStore    &P  = store;
-    const Vec3        g  = config.gravity;
     constexpr int     K  = Impl::K;
-    constexpr int     max_hits = 64;
+    ParticleStore    &P  = store;
+    const wall_contacts::Histories<K, H> histories{m.hist_wall.data(), m.hist_tri.data(), m.hist_used.data(),
+                                                   m.hist_shear.data()};
+    const std::size_t nm = mats.size();
 
     double worst = 0;
     long   worst_i = -1;
@@ -434,39 +558,11 @@ namespace abrade::dem
       const int team = omp_get_num_threads();
       double    my_worst = 0;
       long      my_i     = -1;
+      wall_contacts::Hit hits[wall_contacts::max_hits];
+      int                accepted[wall_contacts::max_hits];
 
-      struct Hit
-      {
-        int     wall, tri;
-        Feature feature;
-        double  p[3], d2;
-      };
-      Hit hits[max_hits];
-      int accepted[max_hits];
-
-      // every particle: the per-thread pair forces summed, gravity added
-      {
-        double *__restrict FX = P.fx.data(), *__restrict FY = P.fy.data(), *__restrict FZ = P.fz.data();
-        double *__restrict TX = P.tx.data(), *__restrict TY = P.ty.data(), *__restrict TZ = P.tz.data();
-        double *__restrict ROLL = P.rolling.data();
-        const double *__restrict MASS = P.mass.data();
-        for (int b = 1; b < m.n_threads; ++b)
-          {
-            const double *__restrict buf = m.buffers[b].data();
-#pragma omp for simd schedule(static) nowait
-            for (std::size_t i = 0; i < n; ++i)
-              {
-                FX[i] += buf[i], FY[i] += buf[nl + i], FZ[i] += buf[2 * nl + i];
-                if (rotation)
-                  TX[i] += buf[3 * nl + i], TY[i] += buf[4 * nl + i], TZ[i] += buf[5 * nl + i],
-                    ROLL[i] += buf[6 * nl + i];
-              }
-          }
-        const double gx = g[0], gy = g[1], gz = g[2];
-#pragma omp for simd schedule(static)
-        for (std::size_t i = 0; i < n; ++i)
-          FX[i] += MASS[i] * gx, FY[i] += MASS[i] * gy, FZ[i] += MASS[i] * gz;
-      }
+      add_pair_buffers_and_gravity<rotation>(P, m.buffers, m.n_threads, store.size(), store.n_local(),
+                                             config.gravity);
 
       // the particles with wall candidates: particle-wall contacts, in m.n_threads shares
       // (each with its own loads and contact list), whatever the team
@@ -480,211 +576,36 @@ namespace abrade::dem
           const auto [w_begin, w_end] = share(n_wall, range, m.n_threads);
           for (std::size_t w_i = w_begin; w_i < w_end; ++w_i)
             {
-              const std::size_t i  = m.wall_particles[w_i];
-              double            fx = P.fx[i], fy = P.fy[i], fz = P.fz[i];
-              double            tx = 0, ty = 0, tz = 0, rolling = 0;
+              const std::size_t i    = m.wall_particles[w_i];
+              const double      ri   = P.radius[i];
+              const double      q[3] = {P.x[i], P.y[i], P.z[i]};
+              ParticleSums      sums{P.fx[i], P.fy[i], P.fz[i]};
               if (rotation)
-                tx = P.tx[i], ty = P.ty[i], tz = P.tz[i], rolling = P.rolling[i];
+                sums.tx = P.tx[i], sums.ty = P.ty[i], sums.tz = P.tz[i], sums.rolling = P.rolling[i];
 
-              const double q[3] = {P.x[i], P.y[i], P.z[i]};
-              const double ri   = P.radius[i];
-              int          n_hits = 0;
-              for (std::size_t k = m.wall_offsets[i]; k < m.wall_offsets[i + 1]; ++k)
+              const int n_hits = wall_contacts::find_hits(q, ri, walls, m.candidate_wall.data(),
+                                                          m.candidate_triangle.data(), m.wall_offsets[i],
+                                                          m.wall_offsets[i + 1], hits);
+              histories.start(i);
+              const int n_acc = n_hits > 0 ? wall_contacts::accept_contacts(hits, n_hits, walls, ri, accepted) : 0;
+              for (int a = 0; a < n_acc; ++a)
                 {
-                  const Wall   &w   = walls[m.candidate_wall[k]];
-                  const auto   &tri = w.mesh.triangles[m.candidate_triangle[k]];
-                  const double *V   = w.current.data();
-                  const auto    cp  = closest_point_on_triangle(q, V + 3 * tri[0], V + 3 * tri[1], V + 3 * tri[2]);
-                  const double  dx = q[0] - cp.p[0], dy = q[1] - cp.p[1], dz = q[2] - cp.p[2];
-                  const double  d2 = dx * dx + dy * dy + dz * dz;
-                  if (d2 < ri * ri && d2 > 0)
-                    {
-                      int slot = n_hits < max_hits ? n_hits++ : -1;
-                      if (slot < 0) // full (never seen in practice): replace the farthest hit
-                        {
-                          slot = 0;
-                          for (int q = 1; q < max_hits; ++q)
-                            if (hits[q].d2 > hits[slot].d2)
-                              slot = q;
-                          if (hits[slot].d2 <= d2)
-                            continue;
-                        }
-                      Hit &h = hits[slot];
-                      h.wall = m.candidate_wall[k], h.tri = m.candidate_triangle[k], h.feature = cp.feature;
-                      h.p[0] = cp.p[0], h.p[1] = cp.p[1], h.p[2] = cp.p[2], h.d2 = d2;
-                    }
+                  const wall_contacts::Hit &h    = hits[accepted[a]];
+                  const Wall               &wall = walls[h.wall];
+                  bool                      began = false;
+                  double                    scratch[H] = {}; // (the history of a contact not kept)
+                  double                   *history    = histories.claim(i, h, wall, began);
+                  const double ratio = wall_contact<rotation, Law>(
+                    P, i, h, wall, coefficients[P.material[i] * nm + wall.material], time_step,
+                    history ? history : scratch, began, sums, &loads[6 * h.wall], log.emplace_back());
+                  if (ratio > my_worst)
+                    my_worst = ratio, my_i = i;
                 }
-              for (int s = 0; s < K; ++s)
-                m.hist_used[K * i + s] = 0;
-              if (n_hits > 0)
-                {
-                  // One contact per touching region of a wall. The closest point on a triangle
-                  // is a real contact only if it is a local minimum of the distance over the whole
-                  // surface: a point on an edge (vertex) is dropped when a triangle that shares that
-                  // edge (vertex) is at least as close, and a point already accepted from a
-                  // neighbouring triangle (an edge or vertex seen from both sides) is not counted
-                  // again. Round-off ties (a centre above a shared edge) are broken consistently.
-                  auto rank = [](Feature f) { return f == face ? 0 : f <= edge20 ? 1 : 2; };
-                  std::sort(hits, hits + n_hits, [&](const Hit &a, const Hit &b) {
-                    if (a.wall != b.wall) return a.wall < b.wall;
-                    if (a.d2 != b.d2) return a.d2 < b.d2;
-                    if (rank(a.feature) != rank(b.feature)) return rank(a.feature) < rank(b.feature);
-                    return a.tri < b.tri;
-                  });
-                  int n_acc = 0;
-                  for (int h = 0; h < n_hits; ++h)
-                    {
-                      const auto   &tris = walls[hits[h].wall].mesh.triangles;
-                      const auto   &t    = tris[hits[h].tri];
-                      const Feature f    = hits[h].feature;
-                      bool          keep = true;
-                      // the same point (within 1e-6 R) as an accepted contact of this wall
-                      for (int a = 0; a < n_acc && keep; ++a)
-                        {
-                          const Hit   &acc = hits[accepted[a]];
-                          const double dx = acc.p[0] - hits[h].p[0], dy = acc.p[1] - hits[h].p[1],
-                                       dz = acc.p[2] - hits[h].p[2];
-                          keep = acc.wall != hits[h].wall || dx * dx + dy * dy + dz * dz >= 1e-12 * ri * ri;
-                        }
-                      // an edge (vertex) point with a triangle sharing that edge (vertex) at least as
-                      // close; ties go to faces, then to the hit sorted first
-                      if (keep && f != face)
-                        for (int o = 0; o < n_hits && keep; ++o)
-                          {
-                            if (o == h || hits[o].wall != hits[h].wall || !(hits[o].d2 <= hits[h].d2 * (1 + 1e-9)))
-                              continue;
-                            if (hits[o].feature != face && o > h)
-                              continue;
-                            const auto &to = tris[hits[o].tri];
-                            if (f <= edge20)
-                              keep = !(triangle_has(to, t[f - 1]) && triangle_has(to, t[f % 3]));
-                            else
-                              keep = !triangle_has(to, t[f - vertex0]);
-                          }
-                      if (keep)
-                        accepted[n_acc++] = h;
-                    }
+              histories.finish(i);
 
-                  for (int a = 0; a < n_acc; ++a)
-                    {
-                      const Hit  &h    = hits[accepted[a]];
-                      Wall       &wall = walls[h.wall];
-                      const double d   = std::sqrt(h.d2);
-                      const double nv[3] = {(q[0] - h.p[0]) / d, (q[1] - h.p[1]) / d, (q[2] - h.p[2]) / d};
-                      const double overlap = ri - d;
-                      const Vec3   vw = wall.velocity_at(Vec3(h.p[0], h.p[1], h.p[2]));
-                      double vrel[3] = {P.vx[i] - vw[0], P.vy[i] - vw[1], P.vz[i] - vw[2]};
-                      if (rotation)
-                        {
-                          // w x (-r n)
-                          vrel[0] -= ri * (P.wy[i] * nv[2] - P.wz[i] * nv[1]);
-                          vrel[1] -= ri * (P.wz[i] * nv[0] - P.wx[i] * nv[2]);
-                          vrel[2] -= ri * (P.wx[i] * nv[1] - P.wy[i] * nv[0]);
-                        }
-                      // contact history: same wall and the same triangle, else an adjacent one
-                      // (two passes: in a concave fold a new contact on the next face must not
-                      // take the history of the contact on this one)
-                      int slot = -1, free_slot = -1;
-                      for (int pass = 0; pass < 2 && slot < 0; ++pass)
-                        for (int s = 0; s < K; ++s)
-                          {
-                            const int ws = m.hist_wall[K * i + s];
-                            if (ws < 0)
-                              {
-                                if (free_slot < 0) free_slot = s;
-                                continue;
-                              }
-                            if (ws == h.wall && !m.hist_used[K * i + s] &&
-                                (pass == 0 ? m.hist_tri[K * i + s] == h.tri
-                                           : triangles_share_vertex(wall.mesh.triangles[m.hist_tri[K * i + s]],
-                                                                    wall.mesh.triangles[h.tri])))
-                              {
-                                slot = s;
-                                break;
-                              }
-                          }
-                      double  scratch[H] = {};
-                      double *history    = scratch;
-                      // an impact: a history begins (with every slot taken, none is kept and
-                      // the contact is not counted as one, rather than as one every step)
-                      const bool began   = slot < 0 && free_slot >= 0;
-                      if (began)
-                        {
-                          slot = free_slot;
-                          m.hist_wall[K * i + slot] = h.wall;
-                          for (int dd = 0; dd < H; ++dd)
-                            m.hist_shear[H * (K * i + slot) + dd] = 0;
-                        }
-                      if (slot >= 0)
-                        {
-                          m.hist_tri[K * i + slot]  = h.tri;
-                          m.hist_used[K * i + slot] = 1;
-                          history = &m.hist_shear[H * (K * i + slot)];
-                        }
-                      const PairCoefficients &c = coefficients[P.material[i] * nm + wall.material];
-                      ContactState            cs;
-                      cs.nx = nv[0], cs.ny = nv[1], cs.nz = nv[2], cs.overlap = overlap;
-                      cs.r_eff = ri, cs.m_eff = P.mass[i];
-                      cs.vx = vrel[0], cs.vy = vrel[1], cs.vz = vrel[2];
-                      if constexpr (Law::needs_rotation)
-                        {
-                          const Vec3 &ww = wall.angular_velocity;
-                          cs.wx = P.wx[i] - ww[0], cs.wy = P.wy[i] - ww[1], cs.wz = P.wz[i] - ww[2];
-                          cs.rolling_inertia = rolling_inertia_of_sphere(P.mass[i], ri);
-                        }
-                      if constexpr (Law::needs_area)
-                        cs.area = M_PI * (ri * ri - d * d);
-                      const ContactResponse f = Law::evaluate(cs, c, dt, history);
-                      const double ft[3] = {f.ftx, f.fty, f.ftz};
-                      const double F[3] = {f.normal * nv[0] + f.ftx, f.normal * nv[1] + f.fty,
-                                           f.normal * nv[2] + f.ftz};
-                      fx += F[0], fy += F[1], fz += F[2];
-                      if (rotation)
-                        {
-                          tx -= ri * (nv[1] * ft[2] - nv[2] * ft[1]);
-                          ty -= ri * (nv[2] * ft[0] - nv[0] * ft[2]);
-                          tz -= ri * (nv[0] * ft[1] - nv[1] * ft[0]);
-                          if constexpr (Law::constant_torque)
-                            rolling += f.rolling_limit * ri;
-                          else
-                            tx += f.mx, ty += f.my, tz += f.mz;
-                        }
-                      // load on the wall: -F at the contact point, torque about the wall centre
-                      const Vec3 arm = Vec3(h.p[0], h.p[1], h.p[2]) - wall.current_centre();
-                      double    *L   = &loads[6 * h.wall];
-                      L[0] -= F[0], L[1] -= F[1], L[2] -= F[2];
-                      L[3] -= arm[1] * F[2] - arm[2] * F[1];
-                      L[4] -= arm[2] * F[0] - arm[0] * F[2];
-                      L[5] -= arm[0] * F[1] - arm[1] * F[0];
-                      if constexpr (!Law::constant_torque) // a rolling torque on the particle acts back
-                        if (rotation)
-                          L[3] -= f.mx, L[4] -= f.my, L[5] -= f.mz;
-
-                      WallContactRecord &r = log.emplace_back(); // filled in place
-                      r.wall = h.wall, r.triangle = h.tri, r.feature = h.feature;
-                      r.particle = static_cast<int>(i), r.particle_id = P.id[i];
-                      const double vt[3] = {f.vtx, f.vty, f.vtz};
-                      for (int dd = 0; dd < 3; ++dd)
-                        {
-                          r.point[dd] = h.p[dd], r.normal[dd] = nv[dd];
-                          r.tangential_force[dd] = ft[dd], r.tangential_velocity[dd] = vt[dd];
-                        }
-                      r.normal_force = f.normal, r.normal_velocity = f.vn, r.overlap = overlap;
-                      r.centre_velocity[0] = P.vx[i] - vw[0], r.centre_velocity[1] = P.vy[i] - vw[1],
-                      r.centre_velocity[2] = P.vz[i] - vw[2];
-                      r.began = began;
-                      if (overlap / ri > my_worst)
-                        my_worst = overlap / ri, my_i = i;
-                    }
-                }
-              // forget the histories of wall contacts that ended
-              for (int s = 0; s < K; ++s)
-                if (!m.hist_used[K * i + s])
-                  m.hist_wall[K * i + s] = -1;
-
-              P.fx[i] = fx, P.fy[i] = fy, P.fz[i] = fz;
+              P.fx[i] = sums.fx, P.fy[i] = sums.fy, P.fz[i] = sums.fz;
               if (rotation)
-                P.tx[i] = tx, P.ty[i] = ty, P.tz[i] = tz, P.rolling[i] = rolling;
+                P.tx[i] = sums.tx, P.ty[i] = sums.ty, P.tz[i] = sums.tz, P.rolling[i] = sums.rolling;
             }
         }
 #pragma omp critical
@@ -697,24 +618,7 @@ namespace abrade::dem
         m.worst_overlap_i     = worst_i;
         m.worst_overlap_j     = -1;
       }
-    // One sum over the ranks for the walls' loads (from all shares) and every rank's worst
-    // overlap (in its own slot, so the largest and its rank are known everywhere).
-    std::vector<double> &total = m.wall_loads[0];
-    total.resize(6 * nw + m.parallel.size());
-    for (std::size_t b = 1; b < m.wall_loads.size(); ++b)
-      for (std::size_t k = 0; k < 6 * nw; ++k)
-        total[k] += m.wall_loads[b][k];
-    std::fill(total.begin() + 6 * nw, total.end(), 0.0);
-    total[6 * nw + m.parallel.rank()] = m.worst_overlap_ratio;
-    m.parallel.sum(total);
-    for (std::size_t w = 0; w < nw; ++w)
-      {
-        walls[w].force  = Vec3(total[6 * w], total[6 * w + 1], total[6 * w + 2]);
-        walls[w].torque = Vec3(total[6 * w + 3], total[6 * w + 4], total[6 * w + 5]);
-      }
-    m.worst_overlap_rank = static_cast<int>(std::max_element(total.begin() + 6 * nw, total.end()) - total.begin() - 6 * nw);
-    m.worst_overlap_all  = total[6 * nw + m.worst_overlap_rank];
-    total.resize(6 * nw);
+    sum_wall_loads(m.wall_loads, m.parallel, walls, m.worst_overlap_ratio, m.worst_overlap_rank, m.worst_overlap_all);
   }
 
   void Simulation::wall_forces()

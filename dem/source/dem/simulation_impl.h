@@ -101,6 +101,28 @@ namespace abrade::dem
     std::vector<std::size_t> sort_by_cell(const ParticleStore &P, std::size_t first, std::size_t count,
                                           const std::vector<char> *keep, std::vector<int> &start) const;
 
+    // the steps of Simulation::build_neighbour_lists() (neighbour_lists.cc)
+    /// The cell grid (cell, lo, nx, ny, nz) over the particles of @p P inside the domain
+    /// @p domain_min .. @p domain_max (@p keep: 0 for the others, lost), under MPI with a margin
+    /// of one interaction range for the ghosts. Returns the largest radius over all ranks;
+    /// @p cutoff: the interaction range, twice that plus @p skin.
+    double make_grid(const ParticleStore &P, const Vec3 &domain_min, const Vec3 &domain_max, double skin,
+                     std::vector<char> &keep, double &cutoff);
+    /// The half neighbour list (offsets, neighbours, row_of) of the owned particles of @p P,
+    /// sorted by cell, against the owned ones and the ghosts: the pairs within their radii
+    /// plus @p skin. Each share lists a block of rows into its own buffer, then copied in place.
+    void list_pairs(const ParticleStore &P, double skin);
+    /// Each listed pair's tangential history: zero, or the one carried across the rebuild when
+    /// the pair had one (@p order: the row each owned particle had before the cell sort).
+    void pick_up_pair_histories(const ParticleStore &P, const std::vector<std::size_t> &order);
+    /// The pair loop's shares (thread_begin): equal shares of pairs plus a constant per particle.
+    void balance_pair_shares(std::size_t n);
+    /// The wall candidates (wall_offsets, candidate_wall, candidate_triangle): the triangles of
+    /// @p walls within each owned particle's radius plus @p skin (@p r_max: the largest radius,
+    /// which bounds the cells searched), and the particles that have any (wall_particles); the
+    /// others' wall histories are freed.
+    void find_wall_candidates(const ParticleStore &P, const std::vector<Wall> &walls, double r_max, double skin);
+
     // ghost layer: owned particles sent to each rank, the values received from each rank per
     // update, and where each received ghost record went after the cell sort
     static constexpr int             ghost_state = 9; // x y z vx vy vz wx wy wz
