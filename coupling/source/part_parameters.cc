@@ -121,8 +121,8 @@ namespace abrade::coupling
   PartParameters read_part_parameters(ParameterFile &file)
   {
     auto           &prm = file.handler();
-    PartParameters kp;
-    auto           &k = kp.geometry;
+    PartParameters  part;
+    auto           &k = part.geometry;
     prm.enter_subsection("Knife");
     k.length     = prm.get_double("Length");
     k.height     = prm.get_double("Height");
@@ -133,14 +133,14 @@ namespace abrade::coupling
     k.lip_height = prm.get_double("Lip height");
     k.lip_width  = prm.get_double("Lip width");
     k.lip_offset = prm.get_double("Lip offset");
-    kp.mesh_size = prm.get_double("Mesh size");
-    kp.density   = prm.get_double("Density");
-    kp.from_file = prm.get("Geometry") == "file";
-    kp.file      = prm.get("File");
-    auto &fs     = kp.file_settings;
+    part.mesh_size = prm.get_double("Mesh size");
+    part.density   = prm.get_double("Density");
+    part.from_file = prm.get("Geometry") == "file";
+    part.file      = prm.get("File");
+    auto &fs     = part.file_settings;
     fs.scale          = prm.get_double("File scale");
     fs.max_cells      = prm.get_double("Maximum cells");
-    fs.max_volume     = 1e6 / kp.density; // 1,000 t: no knife, liner or tooth weighs that
+    fs.max_volume     = 1e6 / part.density; // 1,000 t: no knife, liner or tooth weighs that
     fs.solid          = dealii::Utilities::trim(prm.get("Solid"));
     fs.min_quality    = prm.get_double("Minimum mesh quality");
     fs.rotation_axis  = get_tensor(prm, "Rotation axis");
@@ -155,16 +155,16 @@ namespace abrade::coupling
         prm.leave_subsection();
         file.fail({"Knife"}, "Place", e.what());
       }
-    kp.clamped_faces  = get_selectors(file, prm, "Clamped faces");
-    kp.wearable_faces = get_selectors(file, prm, "Wearable faces");
+    part.clamped_faces  = get_selectors(file, prm, "Clamped faces");
+    part.wearable_faces = get_selectors(file, prm, "Wearable faces");
     prm.leave_subsection();
-    if (kp.from_file && fs.rotation_angle != 0 && !(fs.rotation_axis.norm() > 0))
+    if (part.from_file && fs.rotation_angle != 0 && !(fs.rotation_axis.norm() > 0))
       file.fail({"Knife"}, "Rotation axis", "must not be zero");
-    if (kp.from_file)
-      kp.file = file.path_beside(kp.file);
-    if (kp.from_file && kp.file.empty())
+    if (part.from_file)
+      part.file = file.path_beside(part.file);
+    if (part.from_file && part.file.empty())
       file.fail({"Knife"}, "File", "Geometry = file needs a solid file");
-    if (!kp.from_file)
+    if (!part.from_file)
       {
         try
           {
@@ -177,19 +177,19 @@ namespace abrade::coupling
             throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
           }
         // the meshing budget, before Gmsh is asked (the plate's volume is an upper bound)
-        const double cells = fem::estimated_cells(k.length * k.height * k.thickness, kp.mesh_size);
-        if (kp.file_settings.max_cells > 0 && cells > kp.file_settings.max_cells)
+        const double cells = fem::estimated_cells(k.length * k.height * k.thickness, part.mesh_size);
+        if (part.file_settings.max_cells > 0 && cells > part.file_settings.max_cells)
           {
             char text[300];
             std::snprintf(text, sizeof text,
                           "%.3g m needs about %.3g tetrahedra for this knife, more than Maximum cells = %.3g; a "
                           "Mesh size of %.3g m needs about half the limit",
-                          kp.mesh_size, cells, kp.file_settings.max_cells,
-                          kp.mesh_size * std::cbrt(cells / (0.5 * kp.file_settings.max_cells)));
+                          part.mesh_size, cells, part.file_settings.max_cells,
+                          part.mesh_size * std::cbrt(cells / (0.5 * part.file_settings.max_cells)));
             file.fail({"Knife"}, "Mesh size", text);
           }
-        if (!kp.clamped_faces.empty() || !kp.wearable_faces.empty())
-          file.fail({"Knife"}, kp.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
+        if (!part.clamped_faces.empty() || !part.wearable_faces.empty())
+          file.fail({"Knife"}, part.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
                     "the parametric knife's clamped face is its top (bolted to the shell); face selectors are for "
                     "Geometry = file");
         // the parametric knife is built in the knife's frame: nothing to place
@@ -200,27 +200,27 @@ namespace abrade::coupling
         if (!fs.place.text.empty())
           file.fail({"Knife"}, "Place", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
       }
-    else if (!fem::is_cad_file(kp.file) && fs.solid != "all" && !fs.solid.empty())
-      file.fail({"Knife"}, "Solid", "only a CAD file (STEP/IGES) can hold several solids; " + kp.file + " is read whole");
-    return kp;
+    else if (!fem::is_cad_file(part.file) && fs.solid != "all" && !fs.solid.empty())
+      file.fail({"Knife"}, "Solid", "only a CAD file (STEP/IGES) can hold several solids; " + part.file + " is read whole");
+    return part;
   }
 
-  PartMesh mesh_part(const PartParameters &kp, ParameterFile &file, const std::string &directory)
+  PartMesh mesh_part(const PartParameters &part, ParameterFile &file, const std::string &directory)
   {
     PartMesh m;
     m.tria = std::make_unique<dealii::Triangulation<3>>();
-    if (!kp.from_file)
+    if (!part.from_file)
       {
-        kp.geometry.mesh(*m.tria, kp.mesh_size, directory + "/knife.msh");
+        part.geometry.mesh(*m.tria, part.mesh_size, directory + "/knife.msh");
         return m;
       }
-    fem::SolidFileSettings settings = kp.file_settings;
+    fem::SolidFileSettings settings = part.file_settings;
     settings.work_directory         = directory; // the run's own (nothing written outside it)
-    m.report     = fem::read_solid(kp.file, kp.mesh_size, *m.tria, settings);
+    m.report     = fem::read_solid(part.file, part.mesh_size, *m.tria, settings);
     m.file_faces = fem::part_faces(*m.tria, m.report.face_names);
     try
       {
-        m.faces = fem::assign_faces(*m.tria, kp.clamped_faces, kp.wearable_faces, m.report.face_names,
+        m.faces = fem::assign_faces(*m.tria, part.clamped_faces, part.wearable_faces, m.report.face_names,
                                     fem::wearable_boundary, fem::clamped_boundary);
       }
     catch (const std::invalid_argument &e)
@@ -240,16 +240,16 @@ namespace abrade::coupling
     return m;
   }
 
-  void report_part_mesh(const PartParameters &kp, const PartMesh &m, io::Log &log, std::vector<std::string> *warnings)
+  void report_part_mesh(const PartParameters &part, const PartMesh &m, io::Log &log, std::vector<std::string> *warnings)
   {
-    if (!kp.from_file)
+    if (!part.from_file)
       return;
     for (const auto &n : m.report.notes)
-      log.line("Knife: " + kp.file + ": " + n);
+      log.line("Knife: " + part.file + ": " + n);
     std::ostringstream faces;
     faces << "Knife: " << m.file_faces.size() << " faces in the file; wearable " << m.faces.wearable_area
           << " m^2, clamped " << m.faces.clamped_area << " m^2"
-          << (kp.clamped_faces.empty() && kp.wearable_faces.empty() ? " (no Clamped faces given: every face wears)" : "");
+          << (part.clamped_faces.empty() && part.wearable_faces.empty() ? " (no Clamped faces given: every face wears)" : "");
     log.line(faces.str());
     for (const auto &t : m.faces.taken) // which faces each selector took (summary.json: selectors)
       {
@@ -261,9 +261,9 @@ namespace abrade::coupling
       }
     for (const auto &w : m.report.warnings)
       {
-        log.warning("Knife: " + kp.file + ": " + w);
+        log.warning("Knife: " + part.file + ": " + w);
         if (warnings)
-          warnings->push_back(kp.file + ": " + w);
+          warnings->push_back(part.file + ": " + w);
       }
   }
 
@@ -311,11 +311,11 @@ namespace abrade::coupling
     if (std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
       return;
     init_mpi_once();
-    const PartParameters   kp = read_part_parameters(file);
-    const PartMesh         m  = mesh_part(kp, file, directory);
-    report_part_mesh(kp, m, log);
+    const PartParameters   part = read_part_parameters(file);
+    const PartMesh         m  = mesh_part(part, file, directory);
+    report_part_mesh(part, m, log);
     const fem::SolidSurface surface = fem::extract_surface(*m.tria);
-    if (kp.from_file)
+    if (part.from_file)
       if (const std::string w = fit_mounted_knives(c, surface); !w.empty())
         log.warning(w);
     for (auto &wc : c.walls)

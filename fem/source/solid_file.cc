@@ -843,7 +843,7 @@ namespace abrade::fem
           hexahedra = hexahedra || !cell->reference_cell().is_simplex();
         if (hexahedra)
           {
-            // the knife model (mesh motion, remeshing, checkpoints) works on tetrahedra: each
+            // the part model (mesh motion, remeshing, checkpoints) works on tetrahedra: each
             // hexahedron becomes tetrahedra (deal.II), boundary ids kept
             Triangulation<3> tets;
             GridGenerator::convert_hypercube_to_simplex_mesh(tria, tets);

@@ -11,7 +11,7 @@
 // of slices a triangle edge thick was off by up to 6 mm, and this test fails on it). The rate 'zedge + 1' (or 'zlow + 1'), as a depth per tonne, gives each vertex the
 // volume (zedge + 1) x tonnes x its area, from which zedge is read back.
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/parametric_knife.h>
+#include <abrade/fem/part_boundary.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <gtest/gtest.h>

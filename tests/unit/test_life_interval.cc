@@ -18,7 +18,7 @@
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/parametric_knife.h>
+#include <abrade/fem/part_boundary.h>
 
 #include <gtest/gtest.h>
 

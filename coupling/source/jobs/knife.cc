@@ -155,9 +155,9 @@ namespace abrade::coupling
 
   void KnifeJob::run(JobContext &ctx) const
   {
-    const PartParameters     kp = read_part_parameters(ctx.parameters);
-    const fem::ParametricKnife &k  = kp.geometry;
-    const double              density = kp.density;
+    const PartParameters       part    = read_part_parameters(ctx.parameters);
+    const fem::ParametricKnife &k       = part.geometry;
+    const double                density = part.density;
 
     init_mpi_once();
 
@@ -165,11 +165,11 @@ namespace abrade::coupling
     PartMesh         m;
     {
       io::ScopedTimer t(ctx.timers, "mesh knife");
-      m = mesh_part(kp, ctx.parameters, dir);
+      m = mesh_part(part, ctx.parameters, dir);
     }
     const dealii::Triangulation<3> &tria = *m.tria;
     std::vector<std::string>        warnings;
-    report_part_mesh(kp, m, ctx.log, &warnings);
+    report_part_mesh(part, m, ctx.log, &warnings);
     const fem::MeshQuality q = fem::mesh_quality(tria);
     const double           volume = fem::mesh_volume(tria);
     std::ostringstream     s;
@@ -185,7 +185,7 @@ namespace abrade::coupling
     const fem::SolidSurface surface = fem::extract_surface(tria);
     io::write_stl(dir + "/knife.stl", surface.as_polydata());
     io::write_vtp(dir + "/knife_surface.vtp", surface.as_polydata()); // boundary_id: 1 wears, 2 clamped
-    const io::PolyData faces = part_faces_surface(tria, m, kp.from_file);
+    const io::PolyData faces = part_faces_surface(tria, m, part.from_file);
     io::write_vtp(dir + "/faces.vtp", faces); // the preview's (face_id, role)
 
     io::Json &r                  = ctx.results["knife"];
@@ -199,7 +199,7 @@ namespace abrade::coupling
     const dealii::BoundingBox<3> box = dealii::GridTools::compute_bounding_box(tria);
     r["bounding_box"] = std::vector<double>{box.lower_bound(0), box.lower_bound(1), box.lower_bound(2),
                                             box.upper_bound(0), box.upper_bound(1), box.upper_bound(2)};
-    if (!kp.from_file)
+    if (!part.from_file)
       {
         r["analytic_volume"] = k.volume();
         k.write_step(dir + "/knife.step"); // the design as CAD, in millimetres

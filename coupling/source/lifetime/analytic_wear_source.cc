@@ -2,7 +2,7 @@
 // for verification of the loop (tests/lifetime/).
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/fem/parametric_knife.h>
+#include <abrade/fem/part_boundary.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <deal.II/base/function_parser.h>

@@ -1,6 +1,6 @@
 // One cycle's wear volumes per seed turned into wear depth rates per vertex (wear_rates.h).
 #include <abrade/coupling/lifetime/wear_rates.h>
-#include <abrade/fem/parametric_knife.h>
+#include <abrade/fem/part_boundary.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <algorithm>

@@ -39,7 +39,7 @@ namespace abrade::coupling
   /// Reads and checks subsection Knife; errors name the file.
   PartParameters read_part_parameters(ParameterFile &file);
 
-  /// The knife's volume mesh as subsection Knife describes it, with what was found on the way.
+  /// The part's volume mesh as subsection Knife describes it, with what was found on the way.
   struct PartMesh
   {
     std::unique_ptr<dealii::Triangulation<3>> tria;
@@ -51,17 +51,17 @@ namespace abrade::coupling
   /// Meshes the parametric knife (its Gmsh file written into @p directory) or reads the part
   /// from its file and chooses its wearable and clamped faces (boundary ids
   /// wearable_boundary and clamped_boundary). Errors name the parameter.
-  PartMesh mesh_part(const PartParameters &kp, ParameterFile &file, const std::string &directory);
+  PartMesh mesh_part(const PartParameters &part, ParameterFile &file, const std::string &directory);
 
   /// Writes what mesh_part found out about a part from a file (its solids, its faces, which
   /// wear, a poor mesh) to @p log, and its warnings also into @p warnings.
-  void report_part_mesh(const PartParameters &kp, const PartMesh &m, io::Log &log,
+  void report_part_mesh(const PartParameters &part, const PartMesh &m, io::Log &log,
                          std::vector<std::string> *warnings = nullptr);
 
   /// @p surface as a wall mesh, every vertex p moved to @p linear p + @p offset.
   dem::TriangleMesh wall_mesh(const fem::SolidSurface &surface, const Eigen::Matrix3d &linear,
                               const dem::Vec3 &offset);
-  /// The knife's surface placed as wall @p wc's geometry (its rotation, then its offset).
+  /// The part's surface placed as wall @p wc's geometry (its rotation, then its offset).
   dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc);
 
   /// A part from a file mounted on a shell: centred along the lip by its bounding box, its
@@ -71,7 +71,7 @@ namespace abrade::coupling
   /// does not straddle y = 0 (empty otherwise).
   std::string fit_mounted_knives(DemCase &c, const fem::SolidSurface &design);
 
-  /// Meshes the knife of subsection Knife (into @p directory) and gives every wall with
+  /// Meshes the part of subsection Knife (into @p directory) and gives every wall with
   /// Geometry = solid model its surface, placed.
   void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory, io::Log &log);
 

@@ -12,7 +12,7 @@
 //                                divided by the vertex areas: wear depth per cycle, per seed and
 //                                their mean
 //     choose_cycles()            how many cycles this update stands for (update_size.h)
-//     move_part()               the mean depth moves the knife's surface (offset surface), the
+//     move_part()                the mean depth moves the part's surface (offset surface), the
 //                                mesh follows, is checked and remeshed (fem/part_model.h); a
 //                                step that cannot be remeshed is rejected: back to the checkpoint
 //     record()                   wear depth below the design (the definition `abrade compare`
@@ -161,8 +161,8 @@ namespace abrade::coupling::lifetime
     JobContext                           &ctx;
     Settings                              s;
     DemCase                               dem_case;
-    PartParameters                       part_parameters;
-    std::unique_ptr<fem::PartModel>      part_model;
+    PartParameters                        part_parameters;
+    std::unique_ptr<fem::PartModel>       part_model;
     ProfileFrame                          frame; ///< where the profiles are cut
     EdgeSections                          design_sections; ///< the design's, for the gauges (edge_gauge.h)
     EdgeSections                          sections;        ///< the worn knife's, after the last update
