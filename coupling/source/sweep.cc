@@ -375,6 +375,7 @@ namespace abrade::coupling
         sets.push_back("Simulation/Threads=1");
         sets.push_back("Output/Write particles=false");
         sets.push_back("Output/Snapshot interval=0");
+        sets.push_back("Job=dem"); // a cycle, whatever the file's own job (a lifetime case's, say)
         return ChildRun{r.dir, run_command(abrade, o.parameter_file, r.dir, sets)};
       }
 

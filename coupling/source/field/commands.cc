@@ -477,8 +477,8 @@ namespace abrade::field
       for (std::size_t i = 0; i < by_r.size(); ++i)
         by_r[i] = i;
       std::sort(by_r.begin(), by_r.end(), [&](auto a, auto b) { return series[a].smoothing_radius < series[b].smoothing_radius; });
-      std::ofstream table(out->file("footprint_candidates.csv"));
-      table << "run,smoothing_radius,wear_coefficient,rss\n";
+      std::ofstream candidates(out->file("footprint_candidates.csv"));
+      candidates << "run,smoothing_radius,wear_coefficient,rss\n";
       double w_min = f.w, w_max = f.w, r_min = f.r, r_max = f.r;
       for (const auto &p : outline_points)
         r_min = std::min(r_min, p[0]), r_max = std::max(r_max, p[0]), w_min = std::min(w_min, p[1]),
@@ -487,11 +487,11 @@ namespace abrade::field
         {
           const double r = series[i].smoothing_radius, w = results[i].archard_coefficient > 0
                                                               ? results[i].archard_coefficient : results[i].scale;
-          table << runs[i] << ',' << io::format_number(r, 8) << ',' << io::format_number(w, 8) << ','
+          candidates << runs[i] << ',' << io::format_number(r, 8) << ',' << io::format_number(w, 8) << ','
                 << io::format_number(results[i].rms_residual * results[i].rms_residual * double(ms.size()), 8) << '\n';
           w_min = std::min(w_min, w), w_max = std::max(w_max, w), r_min = std::min(r_min, r), r_max = std::max(r_max, r);
         }
-      table.close();
+      candidates.close();
       std::ofstream gp(out->file("footprint.gp"));
       gp << "set terminal pngcairo size 800,600\nset output 'footprint.png'\nset datafile separator ','\nset grid\n"
             "set key left top\nset logscale x\nset format y '%.2g'\n"

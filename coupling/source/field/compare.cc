@@ -301,221 +301,288 @@ namespace abrade::field
     return s;
   }
 
-  CompareResult compare(const CompareSettings &s)
+  namespace
   {
-    CompareResult r;
-    Geometry      predicted = read_geometry(s.predicted, r.warnings);
-    if (predicted.point_cloud)
-      throw InputError(s.predicted, "the predicted geometry must be a surface (STL or VTU from a run)");
-    Geometry scan = read_geometry(s.scan, r.warnings);
-    Geometry reference;
-    r.has_reference = !s.reference.empty();
-    if (r.has_reference)
-      {
-        reference = read_geometry(s.reference, r.warnings);
-        if (reference.point_cloud)
-          throw InputError(s.reference, "the design must be a surface");
-      }
-    r.scan_scale = check_units(scan, predicted, s.scan_units, r.warnings);
+    /// `abrade compare`: a scan registered to the prediction (or the design), its deviations,
+    /// with a design the measured depths and worn volumes, and the files that say so.
+    class Comparison
+    {
+    public:
+      explicit Comparison(const CompareSettings &s) : s(s) {}
 
-    // register on the design where there is one (the unworn parts are the same in both), else
-    // on the prediction
-    const Geometry &frame = r.has_reference ? reference : predicted;
-    r.registration        = register_scan(scan, frame, s.registration);
-    const std::vector<double> scan_points = coordinates(scan);
-    // the fit's quality on the region it was made on, and the rest apart: worn points belong to
-    // the rest, and an overlap is judged on the region alone
-    double fit_rms = r.registration.rms;
-    if (s.registration.region)
+      CompareResult run()
       {
-        const std::vector<double> to_frame = signed_distances(scan_points, surface_distance(frame));
-        double                    in = 0, out = 0;
-        for (std::size_t i = 0; i < to_frame.size(); ++i)
-          if (s.registration.region->contains(scan_points.data() + 3 * i))
-            in += to_frame[i] * to_frame[i], ++r.registration.points_region;
-          else
-            out += to_frame[i] * to_frame[i], ++r.registration.points_rest;
-        r.registration.rms_region = r.registration.points_region ? std::sqrt(in / r.registration.points_region) : 0;
-        r.registration.rms_rest   = r.registration.points_rest ? std::sqrt(out / r.registration.points_rest) : 0;
-        fit_rms                   = r.registration.rms_region;
-      }
-    if (fit_rms > 0.05 * frame.size())
-      throw InputError(s.scan, "does not overlap the model: after registration its points lie " + std::to_string(fit_rms) +
-                                 " m (RMS" + (s.registration.region ? ", in the registration region" : "") +
-                                 ") from the model's surface, " + std::to_string(100 * fit_rms / frame.size()) +
-                                 " % of its size");
-
-    const std::vector<double> deviation   = signed_distances(scan_points, surface_distance(predicted));
-    r.to_predicted                      = statistics(deviation);
-    r.to_predicted.hausdorff            = std::max(r.to_predicted.max_abs, model_to_scan(predicted, scan));
-    std::vector<double> measured, predicted_depth, feet;
-    if (r.has_reference)
-      {
-        // the measured depth: the one definition of wear depth, the lifetime loop's too; and the
-        // design point each scan point lies below (where calibrate looks the prediction up)
-        measured = geometry::wear_depth(surface_distance(reference), scan_points, &feet);
-        std::vector<double> to_design;
-        for (std::size_t i = 0; i < measured.size(); ++i)
+        read_inputs();
+        register_the_scan();
+        deviation          = signed_distances(scan_points, surface_distance(predicted));
+        r.to_predicted     = statistics(deviation);
+        r.to_predicted.hausdorff = std::max(r.to_predicted.max_abs, model_to_scan(predicted, scan));
+        if (r.has_reference)
           {
-            to_design.push_back(-measured[i]);                     // signed distance to the design
-            predicted_depth.push_back(measured[i] + deviation[i]); // the prediction's depth below this point
+            measure_depths();
+            r.to_reference.hausdorff = std::max(r.to_reference.max_abs, model_to_scan(reference, scan));
+            measure_worn_volumes();
           }
-        r.to_reference           = statistics(to_design);
-        // evident wear: the 95th percentile of |depth| beyond 0.2 mm and beyond four times the
-        // scanner's noise, estimated from the depth differences of neighbouring scan points
-        // (1.4826 x their median / sqrt 2: smooth wear hardly differs between neighbours, noise does)
-        vtkNew<vtkKdTreePointLocator> neighbours;
-        neighbours->SetDataSet(scan.data);
-        neighbours->BuildLocator();
-        std::vector<double> differences;
-        vtkNew<vtkIdList>   pair;
-        for (vtkIdType i = 0; i < vtkIdType(measured.size()); i += std::max<vtkIdType>(1, vtkIdType(measured.size()) / 5000))
-          {
-            neighbours->FindClosestNPoints(2, scan_points.data() + 3 * i, pair);
-            for (vtkIdType k = 0; k < pair->GetNumberOfIds(); ++k)
-              if (pair->GetId(k) != i)
-                differences.push_back(std::abs(measured[i] - measured[pair->GetId(k)]));
-          }
-        double noise = 0;
-        if (!differences.empty())
-          {
-            std::nth_element(differences.begin(), differences.begin() + differences.size() / 2, differences.end());
-            noise = 1.4826 * differences[differences.size() / 2] / std::sqrt(2.0);
-          }
-        if (s.registration.enabled && !s.registration.region && r.to_reference.p95 > std::max(2e-4, 4 * noise))
-          r.warnings.push_back(
-            "registered on the whole scan, its worn part included (95 % of |depth| up to " +
-            std::to_string(1e3 * r.to_reference.p95) +
-            " mm): the worn surface pulls the fit toward the design and the measured depths come out too small; give "
-            "--register-on a box (model coordinates) around surfaces that do not wear (the back, the bolt holes)");
-        r.to_reference.hausdorff = std::max(r.to_reference.max_abs, model_to_scan(reference, scan));
-        if (scan.closed && predicted.closed && reference.closed)
-          {
-            r.measured_volume  = reference.volume() - scan.volume();
-            r.predicted_volume = reference.volume() - predicted.volume();
-            r.volume_method    = "enclosed volumes (design minus worn)";
-          }
-        else if (!scan.point_cloud)
-          {
-            // an open scan: the volume between the design and the scan (the prediction) within
-            // the scan's footprint, over space (worn_volume.h)
-            const geometry::SurfaceDistance design = surface_distance(reference);
-            orient_like_design(scan, design);
-            const geometry::SurfaceDistance scanned = surface_distance(scan);
-            double sb[6], db[6];
-            scan.data->GetBounds(sb);
-            reference.data->GetBounds(db);
-            // the box: the design's, within a tenth of the scan's size around the scan, and a few
-            // cells beyond both (a scan that bulges out of the design counts negative: cut off at
-            // the design's faces, noise would add up to a positive volume)
-            std::array<double, 6> box;
-            const double          pad  = 0.1 * scan.size();
-            const double          cell = scan.size() / 400;
-            for (int k = 0; k < 3; ++k)
-              box[k]     = std::max(db[2 * k], sb[2 * k] - pad) - 10 * cell,
-              box[k + 3] = std::min(db[2 * k + 1], sb[2 * k + 1] + pad) + 10 * cell;
-            const WornVolume m    = worn_volume(design, scanned, scanned, box, cell);
-            const WornVolume p    = worn_volume(design, surface_distance(predicted), scanned, box, cell);
-            r.measured_volume     = m.volume;
-            r.predicted_volume    = p.volume;
-            char method[200];
-            std::snprintf(method, sizeof method,
-                          "the volume inside the design and outside the scan (the prediction) within the scan's "
-                          "footprint, on a grid of %.3g mm (signed: noise adds nothing on average)",
-                          1e3 * cell);
-            r.volume_method = method;
-          }
-        else
-          {
-            r.volume_method = "none (a point cloud has no area)";
-            r.warnings.push_back(s.scan + ": a point cloud: worn volumes are not computed");
-          }
+        write_outputs();
+        return r;
       }
 
-    // outputs
-    io::OutputDirectory out(s.output);
-    out.claim();
-    add_array(scan.data, "deviation", deviation);
-    if (r.has_reference)
-      add_array(scan.data, "measured_depth", measured), add_array(scan.data, "predicted_depth", predicted_depth);
-    if (scan.point_cloud)
-      {
-        vtkNew<vtkCellArray> verts; // so that ParaView draws the points
-        for (vtkIdType i = 0; i < scan.data->GetNumberOfPoints(); ++i)
-          verts->InsertNextCell(1, &i);
-        scan.data->SetVerts(verts);
-      }
-    vtkNew<vtkXMLPolyDataWriter> w;
-    w->SetFileName(out.file("deviation.vtp").c_str());
-    w->SetInputData(scan.data);
-    w->Write();
-    if (r.has_reference)
-      {
-        if (s.tonnes < 0)
-          r.warnings.push_back("measured_depths.csv has no tonnage (pass --tonnes T to use it for calibration)");
-        std::ostringstream m;
-        m.precision(10);
-        // the locations are the design points the scan points lie below: material points of the
-        // fresh knife, as `abrade calibrate` reads them
-        // (and worn_x, worn_y, worn_z: the scan point itself, registered)
-        m << "x,y,z,tonnes,depth,worn_x,worn_y,worn_z\n";
-        std::set<std::array<double, 3>> written; // a point scanned twice (merged scans) is one measurement
-        for (vtkIdType i = 0; i < vtkIdType(measured.size()); ++i)
-          {
-            const double *p = feet.data() + 3 * i, *q = scan_points.data() + 3 * i;
-            if (!written.insert({q[0], q[1], q[2]}).second)
-              continue;
-            m << p[0] << ',' << p[1] << ',' << p[2] << ',';
-            if (s.tonnes >= 0)
-              m << s.tonnes;
-            m << ',' << measured[i] << ',' << q[0] << ',' << q[1] << ',' << q[2] << '\n';
-          }
-        io::write_file_atomically(out.file("measured_depths.csv"), m.str());
-      }
-    std::vector<double> emphasis = measured;
-    if (emphasis.empty())
-      for (double d : deviation)
-        emphasis.push_back(std::abs(d));
-    write_profiles(s, predicted, scan, r.has_reference ? &reference : nullptr, emphasis, out);
+    private:
+      /// The prediction, the scan and the design read; the scan's units checked.
+      void read_inputs();
+      /// The scan registered on the design where there is one (the unworn parts are the same in
+      /// both), else on the prediction; the fit's quality on its region and the rest apart; a
+      /// scan that does not overlap the model refused.
+      void register_the_scan();
+      /// The measured depth below the design (the one definition of wear depth, the lifetime
+      /// loop's too), the design point each scan point lies below (where calibrate looks the
+      /// prediction up) and the prediction's depth there; a warning when a registration on the
+      /// whole scan was pulled by evident wear.
+      void measure_depths();
+      /// The scanner's noise: from the depth differences of neighbouring scan points (1.4826 x
+      /// their median / sqrt 2: smooth wear hardly differs between neighbours, noise does).
+      double scanner_noise() const;
+      /// The worn volumes, measured and predicted, and how they were found.
+      void measure_worn_volumes();
+      /// deviation.vtp, measured_depths.csv, the profiles and comparison.json.
+      void write_outputs();
+      /// measured_depths.csv: the design points the scan points lie below, their depths.
+      void write_measured_depths(const io::OutputDirectory &out);
+      void write_json(const io::OutputDirectory &out) const;
 
-    io::Json json;
-    json["predicted"] = s.predicted;
-    json["scan"]      = s.scan;
-    if (r.has_reference)
-      json["design"] = s.reference;
-    json["scan_scale_applied"] = r.scan_scale;
-    auto &reg                   = json["registration"];
-    std::vector<double> matrix(r.registration.matrix.begin(), r.registration.matrix.end());
-    reg["matrix_row_major"] = matrix;
-    reg["rms_distance"]     = r.registration.rms;
-    reg["points_used"]      = long(r.registration.points_used);
-    if (s.registration.region)
-      {
-        reg["rms_distance_in_region"]      = r.registration.rms_region;
-        reg["points_in_region"]            = long(r.registration.points_region);
-        reg["rms_distance_outside_region"] = r.registration.rms_rest;
-        reg["points_outside_region"]       = long(r.registration.points_rest);
-      }
-    reg["on"] = !s.registration.enabled
-                  ? std::string("none (--no-registration: the scan is in the model's frame)")
-                  : std::string(r.has_reference ? "design" : "prediction") +
-                      (s.registration.region ? " (within the region given)" : " (all of it)");
-    auto put = [](io::Json &j, const DeviationStatistics &d) {
-      j["points"] = long(d.n), j["rms"] = d.rms, j["mean"] = d.mean, j["max_abs"] = d.max_abs, j["p95_abs"] = d.p95,
-      j["hausdorff"] = d.hausdorff;
+      const CompareSettings &s;
+      CompareResult          r;
+      Geometry               predicted, scan, reference;
+      std::vector<double>    scan_points, deviation, measured, predicted_depth, feet;
     };
-    put(json["scan_to_prediction"], r.to_predicted);
-    if (r.has_reference)
-      {
-        put(json["scan_to_design"], r.to_reference);
-        json["worn_volume"]["measured"]  = r.measured_volume;
-        json["worn_volume"]["predicted"] = r.predicted_volume;
-        json["worn_volume"]["method"]    = r.volume_method;
-      }
-    json["warnings"] = std::vector<double>{};
-    for (const auto &w : r.warnings)
-      json["warnings"].push_back(w);
-    json.write(out.file("comparison.json"));
-    return r;
-  }
+
+    void Comparison::read_inputs()
+    {
+      predicted = read_geometry(s.predicted, r.warnings);
+      if (predicted.point_cloud)
+        throw InputError(s.predicted, "the predicted geometry must be a surface (STL or VTU from a run)");
+      scan = read_geometry(s.scan, r.warnings);
+      r.has_reference = !s.reference.empty();
+      if (r.has_reference)
+        {
+          reference = read_geometry(s.reference, r.warnings);
+          if (reference.point_cloud)
+            throw InputError(s.reference, "the design must be a surface");
+        }
+      r.scan_scale = check_units(scan, predicted, s.scan_units, r.warnings);
+    }
+
+    void Comparison::register_the_scan()
+    {
+      const Geometry &frame = r.has_reference ? reference : predicted;
+      r.registration        = register_scan(scan, frame, s.registration);
+      scan_points = coordinates(scan);
+      // the fit's quality on the region it was made on, and the rest apart: worn points belong to
+      // the rest, and an overlap is judged on the region alone
+      double fit_rms = r.registration.rms;
+      if (s.registration.region)
+        {
+          const std::vector<double> to_frame = signed_distances(scan_points, surface_distance(frame));
+          double                    in = 0, out = 0;
+          for (std::size_t i = 0; i < to_frame.size(); ++i)
+            if (s.registration.region->contains(scan_points.data() + 3 * i))
+              in += to_frame[i] * to_frame[i], ++r.registration.points_region;
+            else
+              out += to_frame[i] * to_frame[i], ++r.registration.points_rest;
+          r.registration.rms_region = r.registration.points_region ? std::sqrt(in / r.registration.points_region) : 0;
+          r.registration.rms_rest   = r.registration.points_rest ? std::sqrt(out / r.registration.points_rest) : 0;
+          fit_rms                   = r.registration.rms_region;
+        }
+      if (fit_rms > 0.05 * frame.size())
+        throw InputError(s.scan, "does not overlap the model: after registration its points lie " + std::to_string(fit_rms) +
+                                   " m (RMS" + (s.registration.region ? ", in the registration region" : "") +
+                                   ") from the model's surface, " + std::to_string(100 * fit_rms / frame.size()) +
+                                   " % of its size");
+    }
+
+    void Comparison::measure_depths()
+    {
+      measured = geometry::wear_depth(surface_distance(reference), scan_points, &feet);
+      std::vector<double> to_design;
+      for (std::size_t i = 0; i < measured.size(); ++i)
+        {
+          to_design.push_back(-measured[i]);                     // signed distance to the design
+          predicted_depth.push_back(measured[i] + deviation[i]); // the prediction's depth below this point
+        }
+      r.to_reference = statistics(to_design);
+      // evident wear: the 95th percentile of |depth| beyond 0.2 mm and beyond four times the
+      // scanner's noise
+      const double noise = scanner_noise();
+      if (s.registration.enabled && !s.registration.region && r.to_reference.p95 > std::max(2e-4, 4 * noise))
+        r.warnings.push_back(
+          "registered on the whole scan, its worn part included (95 % of |depth| up to " +
+          std::to_string(1e3 * r.to_reference.p95) +
+          " mm): the worn surface pulls the fit toward the design and the measured depths come out too small; give "
+          "--register-on a box (model coordinates) around surfaces that do not wear (the back, the bolt holes)");
+    }
+
+    double Comparison::scanner_noise() const
+    {
+      vtkNew<vtkKdTreePointLocator> neighbours;
+      neighbours->SetDataSet(scan.data);
+      neighbours->BuildLocator();
+      std::vector<double> differences;
+      vtkNew<vtkIdList>   pair;
+      for (vtkIdType i = 0; i < vtkIdType(measured.size()); i += std::max<vtkIdType>(1, vtkIdType(measured.size()) / 5000))
+        {
+          neighbours->FindClosestNPoints(2, scan_points.data() + 3 * i, pair);
+          for (vtkIdType k = 0; k < pair->GetNumberOfIds(); ++k)
+            if (pair->GetId(k) != i)
+              differences.push_back(std::abs(measured[i] - measured[pair->GetId(k)]));
+        }
+      double noise = 0;
+      if (!differences.empty())
+        {
+          std::nth_element(differences.begin(), differences.begin() + differences.size() / 2, differences.end());
+          noise = 1.4826 * differences[differences.size() / 2] / std::sqrt(2.0);
+        }
+      return noise;
+    }
+
+    void Comparison::measure_worn_volumes()
+    {
+      if (scan.closed && predicted.closed && reference.closed)
+        {
+          r.measured_volume  = reference.volume() - scan.volume();
+          r.predicted_volume = reference.volume() - predicted.volume();
+          r.volume_method    = "enclosed volumes (design minus worn)";
+        }
+      else if (!scan.point_cloud)
+        {
+          // an open scan: the volume between the design and the scan (the prediction) within
+          // the scan's footprint, over space (worn_volume.h)
+          const geometry::SurfaceDistance design = surface_distance(reference);
+          orient_like_design(scan, design);
+          const geometry::SurfaceDistance scanned = surface_distance(scan);
+          double sb[6], db[6];
+          scan.data->GetBounds(sb);
+          reference.data->GetBounds(db);
+          // the box: the design's, within a tenth of the scan's size around the scan, and a few
+          // cells beyond both (a scan that bulges out of the design counts negative: cut off at
+          // the design's faces, noise would add up to a positive volume)
+          std::array<double, 6> box;
+          const double          pad  = 0.1 * scan.size();
+          const double          cell = scan.size() / 400;
+          for (int k = 0; k < 3; ++k)
+            box[k]     = std::max(db[2 * k], sb[2 * k] - pad) - 10 * cell,
+            box[k + 3] = std::min(db[2 * k + 1], sb[2 * k + 1] + pad) + 10 * cell;
+          const WornVolume m    = worn_volume(design, scanned, scanned, box, cell);
+          const WornVolume p    = worn_volume(design, surface_distance(predicted), scanned, box, cell);
+          r.measured_volume     = m.volume;
+          r.predicted_volume    = p.volume;
+          char method[200];
+          std::snprintf(method, sizeof method,
+                        "the volume inside the design and outside the scan (the prediction) within the scan's "
+                        "footprint, on a grid of %.3g mm (signed: noise adds nothing on average)",
+                        1e3 * cell);
+          r.volume_method = method;
+        }
+      else
+        {
+          r.volume_method = "none (a point cloud has no area)";
+          r.warnings.push_back(s.scan + ": a point cloud: worn volumes are not computed");
+        }
+    }
+
+    void Comparison::write_outputs()
+    {
+      io::OutputDirectory out(s.output);
+      out.claim();
+      add_array(scan.data, "deviation", deviation);
+      if (r.has_reference)
+        add_array(scan.data, "measured_depth", measured), add_array(scan.data, "predicted_depth", predicted_depth);
+      if (scan.point_cloud)
+        {
+          vtkNew<vtkCellArray> verts; // so that ParaView draws the points
+          for (vtkIdType i = 0; i < scan.data->GetNumberOfPoints(); ++i)
+            verts->InsertNextCell(1, &i);
+          scan.data->SetVerts(verts);
+        }
+      vtkNew<vtkXMLPolyDataWriter> w;
+      w->SetFileName(out.file("deviation.vtp").c_str());
+      w->SetInputData(scan.data);
+      w->Write();
+      if (r.has_reference)
+        write_measured_depths(out);
+      std::vector<double> emphasis = measured;
+      if (emphasis.empty())
+        for (double d : deviation)
+          emphasis.push_back(std::abs(d));
+      write_profiles(s, predicted, scan, r.has_reference ? &reference : nullptr, emphasis, out);
+      write_json(out);
+    }
+
+    void Comparison::write_measured_depths(const io::OutputDirectory &out)
+    {
+      if (s.tonnes < 0)
+        r.warnings.push_back("measured_depths.csv has no tonnage (pass --tonnes T to use it for calibration)");
+      std::ostringstream m;
+      m.precision(10);
+      // the locations are the design points the scan points lie below: material points of the
+      // fresh knife, as `abrade calibrate` reads them
+      // (and worn_x, worn_y, worn_z: the scan point itself, registered)
+      m << "x,y,z,tonnes,depth,worn_x,worn_y,worn_z\n";
+      std::set<std::array<double, 3>> written; // a point scanned twice (merged scans) is one measurement
+      for (vtkIdType i = 0; i < vtkIdType(measured.size()); ++i)
+        {
+          const double *p = feet.data() + 3 * i, *q = scan_points.data() + 3 * i;
+          if (!written.insert({q[0], q[1], q[2]}).second)
+            continue;
+          m << p[0] << ',' << p[1] << ',' << p[2] << ',';
+          if (s.tonnes >= 0)
+            m << s.tonnes;
+          m << ',' << measured[i] << ',' << q[0] << ',' << q[1] << ',' << q[2] << '\n';
+        }
+      io::write_file_atomically(out.file("measured_depths.csv"), m.str());
+    }
+
+    void Comparison::write_json(const io::OutputDirectory &out) const
+    {
+      io::Json json;
+      json["predicted"] = s.predicted;
+      json["scan"]      = s.scan;
+      if (r.has_reference)
+        json["design"] = s.reference;
+      json["scan_scale_applied"] = r.scan_scale;
+      auto &reg                   = json["registration"];
+      std::vector<double> matrix(r.registration.matrix.begin(), r.registration.matrix.end());
+      reg["matrix_row_major"] = matrix;
+      reg["rms_distance"]     = r.registration.rms;
+      reg["points_used"]      = long(r.registration.points_used);
+      if (s.registration.region)
+        {
+          reg["rms_distance_in_region"]      = r.registration.rms_region;
+          reg["points_in_region"]            = long(r.registration.points_region);
+          reg["rms_distance_outside_region"] = r.registration.rms_rest;
+          reg["points_outside_region"]       = long(r.registration.points_rest);
+        }
+      reg["on"] = !s.registration.enabled
+                    ? std::string("none (--no-registration: the scan is in the model's frame)")
+                    : std::string(r.has_reference ? "design" : "prediction") +
+                        (s.registration.region ? " (within the region given)" : " (all of it)");
+      auto put = [](io::Json &j, const DeviationStatistics &d) {
+        j["points"] = long(d.n), j["rms"] = d.rms, j["mean"] = d.mean, j["max_abs"] = d.max_abs, j["p95_abs"] = d.p95,
+        j["hausdorff"] = d.hausdorff;
+      };
+      put(json["scan_to_prediction"], r.to_predicted);
+      if (r.has_reference)
+        {
+          put(json["scan_to_design"], r.to_reference);
+          json["worn_volume"]["measured"]  = r.measured_volume;
+          json["worn_volume"]["predicted"] = r.predicted_volume;
+          json["worn_volume"]["method"]    = r.volume_method;
+        }
+      json["warnings"] = std::vector<double>{};
+      for (const auto &w : r.warnings)
+        json["warnings"].push_back(w);
+      json.write(out.file("comparison.json"));
+    }
+  } // namespace
+
+  CompareResult compare(const CompareSettings &s) { return Comparison(s).run(); }
 } // namespace abrade::field
