@@ -126,7 +126,7 @@ namespace abrade::coupling
                         "reported per phase (docs/physics.md).";
       for (const auto &law : dem::registered_wear_laws())
         doc += " " + law->name() + ": " + law->documentation();
-      prm.declare_entry("Laws", name == "knife" ? "archard" : "",
+      prm.declare_entry("Laws", wall_defaults(name).wear_laws,
                         dealii::Patterns::List(dealii::Patterns::Selection(dem::wear_law_names("|"))), doc);
       for (const auto &law : dem::registered_wear_laws())
         {
@@ -142,7 +142,7 @@ namespace abrade::coupling
     {
       prm.enter_subsection("Layer probe");
       PluginSection section(prm);
-      section.declare_bool("Enabled", name == "knife",
+      section.declare_bool("Enabled", wall_defaults(name).probe,
                            "Record the particles in direct contact with this wall (the thesis' "
                            "geometry bin, which moves with the wall): their number and mean velocity "
                            "along Axis, in walls/NAME_layer.csv.");
@@ -170,7 +170,7 @@ namespace abrade::coupling
       section.declare_vector("Centre", {0, 0, 0},
                              "[m] Rotation centre (a hinge point) in the geometry's coordinates before "
                              "Offset; it moves with the wall. Torques are reported about it.");
-      section.declare_text("Velocities", name == "knife" ? "penetration: 0, 0, -1.5; travel: 1.5, 0, 0" : "",
+      section.declare_text("Velocities", wall_defaults(name).velocities,
                            "[m/s] Translational velocity per phase: 'phase: vx, vy, vz; phase: vx, vy, "
                            "vz'. Phases not listed: at rest.");
       section.declare_text("Angular velocities", "",
@@ -416,7 +416,7 @@ namespace abrade::coupling
     prm.enter_subsection("Wall " + name);
     declare_geometry(prm, choices);
     declare_material(prm, 7e10, 0.3, 7800, false);
-    declare_interaction(prm, 0.6, name == "knife" ? 0.4 : 0.5, "particle-wall");
+    declare_interaction(prm, 0.6, wall_defaults(name).friction, "particle-wall");
     declare_wear(prm, name);
     declare_layer_probe(prm, name);
     declare_motion(prm, name, choices);
@@ -477,10 +477,14 @@ namespace abrade::coupling
       }
   }
 
-  WallChoices default_wall_choices(const std::string &name)
+  WallDefaults wall_defaults(const std::string &name)
   {
-    return {"box", name == "knife" ? "prescribed" : "fixed"};
+    if (name == "knife") // the default case's knife
+      return {{"box", "prescribed"}, "archard", true, "penetration: 0, 0, -1.5; travel: 1.5, 0, 0", 0.4};
+    return {{"box", "fixed"}, "", false, "", 0.5};
   }
+
+  WallChoices default_wall_choices(const std::string &name) { return wall_defaults(name).choices; }
 
   std::optional<PluginEntry> plugin_entry(const std::vector<std::string> &path, const std::string &key)
   {

@@ -36,6 +36,22 @@ namespace abrade::coupling
   /// Places every mounted part on its shell's lip and gives it the shell's motion.
   void mount_knives(ParameterFile &f, DemCase &c);
 
+  /// The defaults of a wall's entries that depend on its name. They are the default case's
+  /// (Walls = container, knife): a wall named "knife" is that case's knife, worn by Archard's
+  /// law, probed, pushed down and along at 1.5 m/s with friction 0.4 against the particles;
+  /// any other is a fixed box with friction 0.5, no wear and no probe. (Files of earlier
+  /// versions rely on a wall named knife getting these; every other default is the same for
+  /// all walls.)
+  struct WallDefaults
+  {
+    WallChoices choices;      ///< Geometry, Motion/Type
+    std::string wear_laws;    ///< Wear/Laws
+    bool        probe;        ///< Layer probe/Enabled
+    std::string velocities;   ///< Motion/Velocities
+    double      friction;     ///< Interaction/Friction
+  };
+  WallDefaults wall_defaults(const std::string &name);
+
   /// A wall's Geometry and Motion/Type where the file does not set them.
   WallChoices default_wall_choices(const std::string &name);
 
