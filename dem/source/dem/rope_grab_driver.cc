@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/file_extension.h>
 #include <abrade/common/finite_number.h>
+#include <abrade/common/list_items.h>
 #include <abrade/dem/rope_grab_driver.h>
 #include <abrade/dem/simulation.h>
 
@@ -129,26 +130,12 @@ namespace abrade::dem
       {"Lower head walls", RopeGrab::Part::lower_head},
       {"Upper head walls", RopeGrab::Part::upper_head}};
 
-    std::vector<std::string> split(const std::string &text, char by)
-    {
-      std::vector<std::string> out;
-      std::size_t              start = 0;
-      while (start <= text.size())
-        {
-          const auto end = std::min(text.find(by, start), text.size());
-          if (const std::string item = io::trimmed(text.substr(start, end - start)); !item.empty())
-            out.push_back(item);
-          start = end + 1;
-        }
-      return out;
-    }
-
     /// 'phase: value, phase: value' with the phases among @p phases and the values in [lo, hi].
     std::map<std::string, double> phase_values(const ParameterSection &section, const std::string &key,
                                                const std::vector<std::string> &phases, double lo, double hi)
     {
       std::map<std::string, double> out;
-      for (const std::string &item : split(section.text(key), ','))
+      for (const std::string &item : io::list_items(section.text(key), ','))
         {
           const auto colon = item.find(':');
           if (colon == std::string::npos)
@@ -241,7 +228,7 @@ namespace abrade::dem
     RopeGrabRig rig;
     rig.phases = phases;
     for (const auto &[key, part] : part_entries)
-      for (const std::string &name : split(p.text(key), ','))
+      for (const std::string &name : io::list_items(p.text(key), ','))
         {
           for (const auto &[other, _] : rig.walls)
             if (other == name)

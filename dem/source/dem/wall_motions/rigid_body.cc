@@ -1,6 +1,7 @@
 // Motion/Type = rigid body: the degrees of freedom listed as free move under gravity and the
 // particles' forces, the others follow the wall's velocity table; walls of one Body move as one
 // (wall_motion_model.h, Wall::accelerate()).
+#include <abrade/common/list_items.h>
 #include <abrade/dem/wall_motion_model.h>
 
 #include <algorithm>
@@ -51,16 +52,8 @@ namespace abrade::dem
         m.body = p.text("Body");
         if (m.body.empty() && !(m.mass > 0))
           p.fail("Mass", "a rigid-body wall needs a positive mass (or a Body whose other walls have one)");
-        std::string list = p.text("Free in phases");
-        for (std::size_t start = 0; start <= list.size();)
+        for (const std::string &phase : io::list_items(p.text("Free in phases"), ','))
           {
-            const std::size_t comma = std::min(list.find(',', start), list.size());
-            std::string       phase = list.substr(start, comma - start);
-            phase.erase(0, phase.find_first_not_of(" \t"));
-            phase.erase(phase.find_last_not_of(" \t") + 1);
-            start = comma + 1;
-            if (phase.empty())
-              continue;
             if (std::find(c.phases.begin(), c.phases.end(), phase) == c.phases.end())
               p.fail("Free in phases", "'" + phase + "' is not a phase of Simulation/Phases");
             m.free_phases.insert(phase);
