@@ -84,10 +84,8 @@ namespace abrade::coupling
             throw InputError(file + ":" + std::to_string(n), "a line of " + std::to_string(line.size()) +
                                                                " characters, more than " +
                                                                std::to_string(max_line_length));
-          std::string t = line.substr(0, line.find('#'));
-          std::replace(t.begin(), t.end(), '\t', ' '); // (deal.II reads a tab as a blank)
-          t = dealii::Utilities::trim(t);
-          if (t.rfind("include ", 0) == 0 || t.rfind("INCLUDE ", 0) == 0)
+          const std::string t = as_read(line.substr(0, line.find('#')));
+          if (starts_with_keyword(t, "include"))
             {
               std::filesystem::path included(dealii::Utilities::trim(t.substr(8)));
               if (included.is_relative())
@@ -319,16 +317,10 @@ namespace abrade::coupling
                                          [](const Override &o) { return o.path.empty() && o.key == "Walls"; });
     if (!listed_here)
       return;
-    std::set<std::string> sections;
-    std::istringstream    in(text);
-    for (std::string line; std::getline(in, line);)
-      {
-        std::string t = line.substr(0, line.find('#'));
-        std::replace(t.begin(), t.end(), '\t', ' '); // (deal.II reads a tab as a blank)
-        t = dealii::Utilities::trim(t);
-        if (t.rfind("subsection ", 0) == 0 || t.rfind("SUBSECTION ", 0) == 0)
-          sections.insert(dealii::Utilities::trim(t.substr(11)));
-      }
+    std::set<std::string> sections; // the file's top-level subsections (an empty one's end line is in it)
+    for (const auto &line : entries_by_line(lines_of(text)))
+      if (!line.path.empty())
+        sections.insert(line.path[0]);
     for (const auto &o : overrides)
       if (!o.path.empty())
         sections.insert(o.path[0]);

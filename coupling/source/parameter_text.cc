@@ -13,18 +13,19 @@ namespace abrade::coupling
 {
   using dealii::Utilities::trim;
 
-  namespace
+  std::string as_read(std::string line)
   {
-    /// Whether @p line starts with keyword @p word in one of deal.II's spellings ("set",
-    /// "SET"), followed by a blank.
-    bool starts_with(const std::string &line, const std::string &word)
-    {
-      std::string upper = word;
-      for (auto &c : upper)
-        c = char(std::toupper(static_cast<unsigned char>(c)));
-      return line.rfind(word + " ", 0) == 0 || line.rfind(upper + " ", 0) == 0;
-    }
-  } // namespace
+    std::replace(line.begin(), line.end(), '\t', ' '); // (deal.II reads a tab as a blank)
+    return trim(line);
+  }
+
+  bool starts_with_keyword(const std::string &line, const std::string &word)
+  {
+    std::string upper = word;
+    for (auto &c : upper)
+      c = char(std::toupper(static_cast<unsigned char>(c)));
+    return line.rfind(word + " ", 0) == 0 || line.rfind(upper + " ", 0) == 0;
+  }
 
   std::vector<std::string> lines_of(const std::string &text)
   {
@@ -45,9 +46,7 @@ namespace abrade::coupling
         std::size_t last = n;
         for (;; ++last)
           {
-            std::string t = lines[last];
-            std::replace(t.begin(), t.end(), '\t', ' '); // (deal.II reads a tab as a blank)
-            t               = trim(t);
+            std::string t    = as_read(lines[last]);
             const bool  more = !t.empty() && t.back() == '\\' && last + 1 < lines.size();
             if (more)
               t.pop_back();
@@ -58,11 +57,11 @@ namespace abrade::coupling
         const std::string l = trim(joined.substr(0, joined.find('#')));
         for (std::size_t k = n; k <= last; ++k)
           entries[k].path = path, entries[k].last = last;
-        if (starts_with(l, "subsection"))
+        if (starts_with_keyword(l, "subsection"))
           path.push_back(trim(l.substr(11)));
         else if ((l == "end" || l == "END") && !path.empty())
           path.pop_back();
-        else if (const auto eq = l.find('='); starts_with(l, "set") && eq != std::string::npos)
+        else if (const auto eq = l.find('='); starts_with_keyword(l, "set") && eq != std::string::npos)
           {
             entries[n].key   = trim(l.substr(4, eq - 4));
             entries[n].value = trim(l.substr(eq + 1));

@@ -14,6 +14,14 @@ namespace abrade::coupling
   /// The lines of @p text.
   std::vector<std::string> lines_of(const std::string &text);
 
+  /// @p line as deal.II reads it: a tab is a blank, and leading and trailing blanks go (its
+  /// comment stays: deal.II joins continued lines first).
+  std::string as_read(std::string line);
+
+  /// Whether @p line (as_read) starts with keyword @p word in one of deal.II's spellings
+  /// ("set", "SET"), followed by a blank.
+  bool starts_with_keyword(const std::string &line, const std::string &word);
+
   /// What a line of a parameter file is. A line ending in '\' and the ones it continues into are
   /// one (deal.II trims each line and joins it with the next): the first holds what they say,
   /// and `last` is the last of them.
