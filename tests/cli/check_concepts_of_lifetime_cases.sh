@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# abrade concepts on two lifetime cases (cases/lifetime/small.prm and a blunter bevel, with a
+# abrade concepts (and abrade sweep) on two lifetime cases (cases/lifetime/small.prm and a blunter bevel, with a
 # payload height): each concept's cycle is a DEM cycle whatever the file's Job (before, the
 # cycles ran lifetime jobs and the study failed on a missing walls/knife_wear.csv), and the table
 # has both concepts with the knife's wear. Without a payload height the study is refused before
@@ -28,4 +28,10 @@ for name, r in rows.items():
     assert float(r["wear_total"]) > 0, (name, r["wear_total"])
     assert float(r["payload"]) > 0, (name, r["payload"])
 PY
-echo "concepts of lifetime cases: DEM cycles, both concepts worn; no payload height refused"
+# abrade sweep on the same lifetime case: its runs are DEM cycles too (before, they ran lifetime
+# jobs and the study failed on a missing walls/knife_wear.csv)
+"$abrade" sweep "$out/base.prm" --vary "Wall knife/Interaction/Friction=0.3,0.4" --seeds 1 --jobs 2 --quiet \
+  --output "$out/sweep" > /dev/null
+grep -q "job 'dem'" "$out"/sweep/runs/*/log.txt
+[[ $(grep -c . "$out/sweep/study.csv") -ge 3 ]] # (a header and a row per value)
+echo "concepts and sweep of lifetime cases: DEM cycles, both concepts worn; no payload height refused"

@@ -13,7 +13,8 @@ rm -rf "$out"
 c="$src/cases/grab/concepts"
 "$abrade" concepts "$c/baseline.prm" "$c/flow_redirect.prm" "$c/ridge.prm" "$c/blunt_edge.prm" \
   --seeds 1,2 --jobs 2 --quiet --output "$out"
-! grep -l "left the domain" "$out"/runs/*.log
+# (a test, not a bare '! grep': set -e does not stop on a command negated with '!')
+if grep -l "left the domain" "$out"/runs/*/log.txt; then echo "particles left the domain in these runs"; exit 1; fi
 python3 - "$out" <<'PY'
 import csv, sys, os
 out = sys.argv[1]

@@ -6,7 +6,8 @@ set -euo pipefail
 abrade=$1 prm=$2 out=$3
 rm -rf "$out"
 "$abrade" run "$prm" --output "$out" --quiet > /dev/null
-! grep -q "left the domain" "$out/log.txt"
+# (a test, not a bare '! grep': set -e does not stop on a command negated with '!')
+if grep "left the domain" "$out/log.txt"; then echo "particles left the domain"; exit 1; fi
 python3 - "$out/summary.json" <<'PY'
 import json, sys
 phases = json.load(open(sys.argv[1]))["results"]["phases"]
