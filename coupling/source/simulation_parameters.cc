@@ -174,14 +174,11 @@ namespace abrade::coupling
             f.fail({"Simulation"}, "Payload height", "'" + h + "' is not a number");
           }
       }
+    c.max_particle_steps = prm.get_double("Maximum particle-steps");
     prm.leave_subsection();
     if (!(s.domain_min.array() < s.domain_max.array()).all())
       f.fail({"Simulation"}, "Domain max", "must exceed Domain min in x, y and z");
     if (c.phases.empty())
       f.fail({"Simulation"}, "Phases", "at least one phase is needed");
-
-    prm.enter_subsection("Simulation");
-    c.max_particle_steps = prm.get_double("Maximum particle-steps");
-    prm.leave_subsection();
   }
 } // namespace abrade::coupling
