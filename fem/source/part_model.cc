@@ -68,6 +68,18 @@ namespace abrade::fem
 
   namespace
   {
+    /// mesh_quality and SurfaceTransfer, their time added to @p timers.
+    MeshQuality timed_quality(io::Timers &timers, const Triangulation<3> &tria)
+    {
+      io::ScopedTimer t(timers, "quality");
+      return mesh_quality(tria);
+    }
+    SurfaceTransfer timed_transfer(io::Timers &timers, const SolidSurface &from, const SolidSurface &to)
+    {
+      io::ScopedTimer t(timers, "surface transfer");
+      return SurfaceTransfer(from, to);
+    }
+
     /// The triangles of @p s that the vertex @p offsets turn over (their normal against the one
     /// they had) or squash to nothing: where fronts meet or a face shrinks away, which moved
     /// vertices cannot follow.
@@ -148,7 +160,7 @@ namespace abrade::fem
     r.worn_through = worn_through(current_surface, depth, 1.0, 0.5 * plate_thickness);
     if (!r.worn_through.empty())
       {
-        r.quality = mesh_quality(*tria);
+        r.quality = timed_quality(timers, *tria);
         r.volume  = PartModel::volume();
         return r; // end of life: reported, not carried into the mesh
       }
@@ -237,6 +249,7 @@ namespace abrade::fem
       prescribed[current_surface.tria_vertex[v]] = moves[v];
     {
       // (its DoF handler holds on to the triangulation: gone before the step may be undone)
+      io::ScopedTimer t(timers, "mesh motion");
       MeshMotion motion(*tria, {1, settings.stiffening, 1e-10});
       motion.solve(prescribed, {});
       move_vertices(*tria, motion.vertex_displacements());
@@ -252,7 +265,7 @@ namespace abrade::fem
         moved_most = std::max(moved_most, since_remesh[v]);
       }
 
-    r.quality = mesh_quality(*tria);
+    r.quality = timed_quality(timers, *tria);
     if (r.quality.n_inverted > 0 || r.quality.min_scaled_jacobian < quality_threshold ||
         moved_most > 0.5 * settings.mesh_size)
       {
@@ -349,14 +362,17 @@ namespace abrade::fem
     const SolidSurface old_surface = extract_surface(*tria);
     const double       old_volume  = volume();
     auto               fresh       = std::make_unique<Triangulation<3>>();
-    if (const std::string failed = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory); !failed.empty())
-      r.surface_kept = failed + "; the knife was meshed again inside its worn surface's own triangles";
+    {
+      io::ScopedTimer t(timers, "remesh");
+      if (const std::string failed = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory); !failed.empty())
+        r.surface_kept = failed + "; the knife was meshed again inside its worn surface's own triangles";
+    }
     set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, wearable_boundary);
     tria = std::move(fresh);
     ++remeshes;
     r.remeshed      = true;
     current_surface = extract_surface(*tria);
-    SurfaceTransfer transfer(old_surface, current_surface);
+    SurfaceTransfer transfer = timed_transfer(timers, old_surface, current_surface);
     // the new surface's vertices lie on the old surface but went to Gmsh through a binary STL,
     // in single precision (up to 1.5e-8 m at 0.4 m): each is put back on the old surface, at its
     // closest point there in double precision
@@ -369,7 +385,7 @@ namespace abrade::fem
           current_surface.vertices[v]          = transfer.feet()[v];
         }
     move_vertices(*tria, onto);
-    r.quality = mesh_quality(*tria);
+    r.quality = timed_quality(timers, *tria);
     r.remesh_volume_change += volume() - old_volume;
     accumulated  = transfer(accumulated);
     displacement = transferred_vectors(transfer, displacement);
@@ -392,6 +408,7 @@ namespace abrade::fem
       std::vector<double> depth = before.depth;
       for (double &d : depth)
         d *= scale;
+      io::ScopedTimer t(timers, "surface as a set");
       return eroded_surface(start, depth, erosion_spacing(), settings.mesh_size / 3);
     };
     ErodedSurface eroded = build(1);
@@ -428,6 +445,7 @@ namespace abrade::fem
       {
         // its own triangles lie on the front exactly; Gmsh's remeshing of them would cut its
         // sharp edges (0.7 mm on the 30 mm chisel after 10 mm of wear)
+        io::ScopedTimer   t(timers, "remesh");
         const std::string failed = mesh_closed_surface(eroded.surface, settings.mesh_size, *fresh,
                                                        settings.work_directory, before.surface, true);
         if (!failed.empty())
@@ -438,7 +456,7 @@ namespace abrade::fem
         throw RunError(std::string("the worn knife could not be meshed: ") + e.what());
       }
     set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, wearable_boundary);
-    r.quality = mesh_quality(*fresh);
+    r.quality = timed_quality(timers, *fresh);
     if (r.quality.n_inverted > 0)
       throw RunError("the remeshed knife has inverted cells");
     tria = std::move(fresh);
@@ -449,7 +467,7 @@ namespace abrade::fem
     current_surface   = extract_surface(*tria);
     // followed points: each new vertex continues the point of the surface before the update
     // closest to it (its fields there), moved on by the step between them
-    const SurfaceTransfer transfer(before.surface, current_surface);
+    const SurfaceTransfer transfer = timed_transfer(timers, before.surface, current_surface);
     accumulated = transfer(before.accumulated);
     displacement = transferred_vectors(transfer, before.displacement);
     for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
@@ -644,6 +662,7 @@ namespace abrade::fem
 
   void PartModel::write(SolidOutput &output, double time) const
   {
+    io::ScopedTimer t(timers, "output");
     std::vector<double> depth(tria->n_vertices(), 0.0), travel(tria->n_vertices(), 0.0),
       moved(3 * tria->n_vertices(), 0.0);
     const std::vector<double> gauge = wear_depth();

@@ -72,6 +72,11 @@ namespace abrade::fem
         data_out.add_data_vector(vectors.back(), f.name, dealii::DataOut<3>::type_cell_data);
       }
     data_out.build_patches();
+    // zlib's fastest level: its best took 8 % of a 60k-cell part's lifetime run for files
+    // about 1.2 times smaller
+    dealii::DataOutBase::VtkFlags flags;
+    flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     char tag[32];
     std::snprintf(tag, sizeof tag, "%05zu", records.size());
     const std::string file = base + "_" + tag + ".vtu";
@@ -97,27 +102,22 @@ namespace abrade::fem
 
   double mesh_volume(const dealii::Triangulation<3> &tria)
   {
-    double volume = 0;
+    // one FEValues per kind of cell, built once (one built per cell cost more than the mesh
+    // motion's solve on a 60k-cell part); each quadrature is exact for the volume of a cell
+    // of its linear (tetrahedron) or trilinear (hexahedron) mapping
+    static const dealii::MappingQ<3>    hex_mapping(1);
+    static const dealii::FE_Q<3>        hex_fe(1);
+    static const dealii::FE_SimplexP<3> tet_fe(1);
+    static const dealii::MappingFE<3>   tet_mapping(tet_fe);
+    dealii::FEValues<3> hex(hex_mapping, hex_fe, dealii::QGauss<3>(2), dealii::update_JxW_values);
+    dealii::FEValues<3> tet(tet_mapping, tet_fe, dealii::QGaussSimplex<3>(2), dealii::update_JxW_values);
+    double              volume = 0;
     for (const auto &cell : tria.active_cell_iterators())
       {
-        if (cell->reference_cell().is_hyper_cube())
-          {
-            static const dealii::MappingQ<3> mapping(1);
-            static const dealii::FE_Q<3>     fe(1);
-            dealii::FEValues<3> fv(mapping, fe, dealii::QGauss<3>(2), dealii::update_JxW_values);
-            fv.reinit(cell);
-            for (unsigned q = 0; q < fv.n_quadrature_points; ++q)
-              volume += fv.JxW(q);
-          }
-        else
-          {
-            static const dealii::FE_SimplexP<3> fe(1);
-            static const dealii::MappingFE<3>   mapping(fe);
-            dealii::FEValues<3> fv(mapping, fe, dealii::QGaussSimplex<3>(2), dealii::update_JxW_values);
-            fv.reinit(cell);
-            for (unsigned q = 0; q < fv.n_quadrature_points; ++q)
-              volume += fv.JxW(q);
-          }
+        dealii::FEValues<3> &fv = cell->reference_cell().is_hyper_cube() ? hex : tet;
+        fv.reinit(cell);
+        for (unsigned q = 0; q < fv.n_quadrature_points; ++q)
+          volume += fv.JxW(q);
       }
     return volume;
   }

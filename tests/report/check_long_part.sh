@@ -10,6 +10,19 @@ set -euo pipefail
 abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 "$abrade" run "$src/tests/report/long_part.prm" --quiet --output "$out/run" > "$out/run.log" 2>&1 || { cat "$out/run.log"; exit 1; }
+# the pictures draw the part's boundary, not every face of every tetrahedron (deal.II writes
+# each cell with its own vertices): the design's panel has as many triangles as the STL
+# surface the run wrote beside it (8 times as many before the report merged the vertices)
+python3 - "$out/run" <<'PY'
+import struct, sys
+run = sys.argv[1]
+with open(run + "/knife/knife_00000.stl", "rb") as f:
+    stl = struct.unpack("<I", f.read(84)[80:84])[0]
+with open(run + "/report/knife_wear_0.dat") as f:
+    drawn = f.read().count("\n\n\n")  # a triangle: a 2 x 2 pm3d patch and a blank line
+print(f"triangles drawn {drawn}, the STL surface's {stl}")
+sys.exit(0 if drawn == stl else 1)
+PY
 # the design and the last update, each from two sides: four panels
 python3 "$src/tests/report/panel_fill.py" "$out/run/report/knife_wear.png" 4 --min 0.5
 # the cross-sections: closed outlines with the design's; the one through the deepest point meets

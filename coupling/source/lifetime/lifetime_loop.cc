@@ -111,7 +111,10 @@ namespace abrade::coupling::lifetime
     report_coarse_graining(dem_case, ctx);
     part_parameters = read_part_parameters(ctx.parameters);
     read_settings();
-    build_part();
+    {
+      io::ScopedTimer t(ctx.timers, "part: first mesh");
+      build_part();
+    }
     source = source_choice->make(
       {ctx, dem_case, s.seeds, s.tonnes_per_cycle, part_model->design_surface(), part_parameters.mesh_size});
     take_calibration();
@@ -1013,6 +1016,9 @@ namespace abrade::coupling::lifetime
   // summary.json, the figures and the log.
   void LifetimeLoop::finish()
   {
+    // the part's share of the run, by kind of work, in summary.json's timings
+    for (const auto &[name, seconds] : part_model->timings().all())
+      ctx.timers.add("part: " + name, seconds);
     const FinalLife f = final_life();
     write_results(f);
     if (history.size() > 1) // nothing to plot before the first update

@@ -9,10 +9,14 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkIdList.h>
+#include <vtkMergePoints.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include <algorithm>
@@ -84,6 +88,36 @@ namespace abrade::report
       return {{f, mean}, hi - lo};
     }
 
+    /// @p grid with its coincident points merged (the first one's point data kept). A solid's
+    /// cells as deal.II writes them each have their own copies of their vertices: unmerged,
+    /// every face of every cell is on the surface (8 times the boundary's triangles on a
+    /// tetrahedral part, and the pictures' time and memory with them). (vtkAppendFilter's
+    /// MergePoints passes a single unstructured grid through as it is.)
+    vtkSmartPointer<vtkUnstructuredGrid> with_shared_points(vtkUnstructuredGrid *grid)
+    {
+      auto points = vtkSmartPointer<vtkPoints>::New();
+      auto merge  = vtkSmartPointer<vtkMergePoints>::New();
+      merge->InitPointInsertion(points, grid->GetBounds());
+      auto merged = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      merged->GetPointData()->CopyAllocate(grid->GetPointData(), grid->GetNumberOfPoints());
+      std::vector<vtkIdType> id(grid->GetNumberOfPoints());
+      for (vtkIdType k = 0; k < grid->GetNumberOfPoints(); ++k)
+        if (merge->InsertUniquePoint(grid->GetPoint(k), id[k]))
+          merged->GetPointData()->CopyData(grid->GetPointData(), k, id[k]);
+      merged->SetPoints(points);
+      merged->Allocate(grid->GetNumberOfCells());
+      auto cell_points = vtkSmartPointer<vtkIdList>::New();
+      for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+        {
+          grid->GetCellPoints(c, cell_points);
+          for (vtkIdType k = 0; k < cell_points->GetNumberOfIds(); ++k)
+            cell_points->SetId(k, id[cell_points->GetId(k)]);
+          merged->InsertNextCell(grid->GetCellType(c), cell_points);
+        }
+      merged->GetCellData()->ShallowCopy(grid->GetCellData());
+      return merged;
+    }
+
     /// @p file's surface as triangles (nullptr when it cannot be read).
     vtkSmartPointer<vtkPolyData> triangles_of_file(const std::string &file)
     {
@@ -94,7 +128,10 @@ namespace abrade::report
       reader->SetFileName(file.c_str());
       reader->Update();
       auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-      surface->SetInputConnection(reader->GetOutputPort());
+      if (auto *solid = vtkUnstructuredGrid::SafeDownCast(reader->GetOutput()))
+        surface->SetInputData(with_shared_points(solid));
+      else
+        surface->SetInputConnection(reader->GetOutputPort());
       auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
       triangles->SetInputConnection(surface->GetOutputPort());
       triangles->Update();

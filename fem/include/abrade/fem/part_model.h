@@ -28,6 +28,7 @@
 // (only where the knife is at least half its plate thickness thick: near a sharp edge the local
 // thickness vanishes and the receding edge is the mesh motion's and the remeshing's business).
 #include <abrade/common/surface_distance.h>
+#include <abrade/common/timer.h>
 #include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/solid_output.h>
@@ -161,6 +162,10 @@ namespace abrade::fem
     /// [m] The grid spacing of the construction that cannot fold.
     double erosion_spacing() const;
 
+    /// Seconds spent so far in each part of the model's work ("mesh motion", "remesh",
+    /// "quality", "surface transfer", "surface as a set", "output"), for the run's profile.
+    const io::Timers &timings() const { return timers; }
+
   private:
     /// The state an update starts from.
     struct Before
@@ -208,5 +213,6 @@ namespace abrade::fem
     double                                    quality_threshold = 0;
     double                                    plate_thickness   = 0;
     unsigned                                  remeshes          = 0;
+    mutable io::Timers                        timers;
   };
 } // namespace abrade::fem
