@@ -2,6 +2,7 @@
 // side, waiting, and collecting what each wrote (child_runs.h).
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
+#include <abrade/common/file_extension.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/termination.h>
 #include <abrade/coupling/child_runs.h>
@@ -24,6 +25,28 @@ namespace abrade::coupling
     for (const auto &s : sets)
       c += " --set " + shell_quote(s);
     return c + " > " + shell_quote(dir + ".log") + " 2>&1";
+  }
+
+  std::vector<std::string> study_cycle_sets(int seed, const std::string &bed)
+  {
+    return {"Particles/Generation/Seed=" + std::to_string(seed),
+            "Particles/Settling/Bed file=" + bed,
+            "Simulation/Threads=1",
+            "Output/Write particles=false",
+            "Output/Snapshot interval=0",
+            "Job=dem"};
+  }
+
+  void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option)
+  {
+    for (const std::string &set : sets)
+      {
+        const std::string key = io::trimmed(set.substr(0, set.find('=')));
+        for (const std::string &owned : study_cycle_sets(0, ""))
+          if (key == owned.substr(0, owned.find('=')))
+            throw InputError("command line", option + " " + key + ": the study sets this entry on each of its cycles "
+                                                               "itself (the seeds come from --seeds; each run is a cycle, Job = dem)");
+      }
   }
 
   void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what)

@@ -165,6 +165,7 @@ namespace abrade::coupling
         throw InputError("command line", "concepts needs at least two parameter files (the first is the baseline)");
       if (o.output.empty())
         throw InputError("command line", "concepts needs --output DIR");
+      refuse_study_owned_sets(o.sets, "--set");
       for (const auto &f : o.files)
         {
           io::require_input_file(f);
@@ -195,12 +196,8 @@ namespace abrade::coupling
     {
       auto child = [&](std::size_t k, int seed) {
         std::vector<std::string> sets = o.sets;
-        sets.push_back("Particles/Generation/Seed=" + std::to_string(seed));
-        sets.push_back("Particles/Settling/Bed file=" + root + "/beds/bed-seed" + std::to_string(seed) + ".bed");
-        sets.push_back("Simulation/Threads=1");
-        sets.push_back("Output/Write particles=false");
-        sets.push_back("Output/Snapshot interval=0");
-        sets.push_back("Job=dem"); // a cycle, whatever the file's own job (a lifetime case's, say)
+        for (std::string &set : study_cycle_sets(seed, root + "/beds/bed-seed" + std::to_string(seed) + ".bed"))
+          sets.push_back(std::move(set));
         const std::string dir = root + "/runs/" + labels[k] + "-seed" + std::to_string(seed);
         return ChildRun{dir, run_command(abrade, std::filesystem::absolute(o.files[k]).string(), dir, sets)};
       };

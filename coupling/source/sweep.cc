@@ -20,6 +20,7 @@
 //    final wear-coloured wall surface of every run.
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/json.h>
+#include <abrade/common/list_items.h>
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
 #include <abrade/common/output_directory.h>
@@ -193,16 +194,8 @@ namespace abrade::coupling
     if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
       throw InputError("--vary '" + text + "'", "expected \"Section/Key=v1,v2,...\"");
     SweepOptions::Vary vary;
-    vary.key = text.substr(0, eq);
-    std::stringstream ss(text.substr(eq + 1));
-    std::string       v;
-    while (std::getline(ss, v, ','))
-      {
-        v.erase(0, v.find_first_not_of(' '));
-        v.erase(v.find_last_not_of(' ') + 1);
-        if (!v.empty())
-          vary.values.push_back(v);
-      }
+    vary.key    = io::trimmed(text.substr(0, eq));
+    vary.values = io::list_items(text.substr(eq + 1), ',');
     if (vary.values.empty())
       throw InputError("--vary '" + text + "'", "no values given");
     o.varies.push_back(vary);
@@ -279,6 +272,9 @@ namespace abrade::coupling
           for (std::size_t b = 0; b < a; ++b)
             if (o.varies[a].key == o.varies[b].key)
               throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice");
+        refuse_study_owned_sets(o.sets, "--set");
+        for (const auto &v : o.varies)
+          refuse_study_owned_sets({v.key + "="}, "--vary");
         return o;
       }
 
@@ -370,12 +366,8 @@ namespace abrade::coupling
         std::vector<std::string> sets = o.sets;
         for (std::size_t i = 0; i < o.varies.size(); ++i)
           sets.push_back(o.varies[i].key + "=" + combos[r.combo][i]);
-        sets.push_back("Particles/Generation/Seed=" + std::to_string(r.seed));
-        sets.push_back("Particles/Settling/Bed file=" + r.bed);
-        sets.push_back("Simulation/Threads=1");
-        sets.push_back("Output/Write particles=false");
-        sets.push_back("Output/Snapshot interval=0");
-        sets.push_back("Job=dem"); // a cycle, whatever the file's own job (a lifetime case's, say)
+        for (std::string &set : study_cycle_sets(r.seed, r.bed))
+          sets.push_back(std::move(set));
         return ChildRun{r.dir, run_command(abrade, o.parameter_file, r.dir, sets)};
       }
 

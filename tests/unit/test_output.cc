@@ -2,6 +2,7 @@
 #include <abrade/common/csv_writer.h>
 #include <abrade/common/hash.h>
 #include <abrade/common/json.h>
+#include <abrade/common/list_items.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/vtk_output.h>
@@ -92,6 +93,17 @@ TEST(Vtk, PolyDataAndPvdSeries)
   EXPECT_NE(pvd.find("timestep=\"0.5\" group=\"\" part=\"0\" file=\"b.vtp\""), std::string::npos);
   EXPECT_NE(pvd.find("</VTKFile>"), std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+TEST(ListItems, SplitTrimmedWithoutEmpties)
+{
+  using V = std::vector<std::string>;
+  EXPECT_EQ(io::list_items("opening, closing", ','), (V{"opening", "closing"}));
+  EXPECT_EQ(io::list_items(" a ,\tb\t,, c,", ','), (V{"a", "b", "c"})); // tabs too, empty items left out
+  EXPECT_EQ(io::list_items("", ','), V{});
+  EXPECT_EQ(io::list_items(" , ,", ','), V{});
+  EXPECT_EQ(io::list_items("one", ','), V{"one"});
+  EXPECT_EQ(io::list_items("x=1; y = 2", ';'), (V{"x=1", "y = 2"})); // (only the ends trimmed)
 }
 
 TEST(Hash, StableFnv1a)

@@ -21,6 +21,14 @@ namespace abrade::coupling
   std::string run_command(const std::string &abrade, const std::string &file, const std::string &dir,
                           const std::vector<std::string> &sets);
 
+  /// The entries a study sets on each of its cycles, whatever the file says: seed @p seed from
+  /// the settled bed @p bed, one thread, no particle or snapshot output, Job = dem (a cycle,
+  /// whatever the file's own job: a lifetime case's, say).
+  std::vector<std::string> study_cycle_sets(int seed, const std::string &bed);
+  /// InputError (exit 2) when one of @p sets ("Section/Key=value", given with @p option) names
+  /// an entry that study_cycle_sets() sets: it would be overridden without a word.
+  void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option);
+
   /// Runs @p runs, @p jobs at a time (0: one per core), with a progress line named @p what;
   /// throws RunError naming a failed run's log.
   void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what);
