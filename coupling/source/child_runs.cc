@@ -2,10 +2,11 @@
 // side, waiting, and collecting what each wrote (child_runs.h).
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
-#include <abrade/common/file_extension.h>
+#include <abrade/common/list_items.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/termination.h>
 #include <abrade/coupling/child_runs.h>
+#include <abrade/coupling/study_lives.h>
 
 #include <algorithm>
 #include <atomic>
@@ -37,15 +38,33 @@ namespace abrade::coupling
             "Job=dem"};
   }
 
-  void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option)
+  namespace
   {
+    /// The entry a --set names, spelt as the parameter file reads it ("Particles / Generation
+    /// /Seed" is Particles/Generation/Seed: each part trimmed, empty ones left out).
+    std::string entry_path(const std::string &set)
+    {
+      std::string path;
+      for (const std::string &part : io::list_items(set.substr(0, set.find('=')), '/'))
+        path += (path.empty() ? "" : "/") + part;
+      return path;
+    }
+  } // namespace
+
+  void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option, bool lives)
+  {
+    std::vector<std::string> owned = study_cycle_sets(0, "");
+    if (lives)
+      for (const std::string &set : lifetime_run_sets({}, 1, {1}))
+        owned.push_back(set);
     for (const std::string &set : sets)
       {
-        const std::string key = io::trimmed(set.substr(0, set.find('=')));
-        for (const std::string &owned : study_cycle_sets(0, ""))
-          if (key == owned.substr(0, owned.find('=')))
-            throw InputError("command line", option + " " + key + ": the study sets this entry on each of its cycles "
-                                                               "itself (the seeds come from --seeds; each run is a cycle, Job = dem)");
+        const std::string key = entry_path(set);
+        for (const std::string &o : owned)
+          if (key == entry_path(o))
+            throw InputError("command line", option + " " + key + ": the study sets this entry on each of its " +
+                                               (lives ? "lifetime runs" : "cycles") +
+                                               " itself (the seeds come from --seeds, the updates from --lifetime-updates)");
       }
   }
 

@@ -165,7 +165,7 @@ namespace abrade::coupling
         throw InputError("command line", "concepts needs at least two parameter files (the first is the baseline)");
       if (o.output.empty())
         throw InputError("command line", "concepts needs --output DIR");
-      refuse_study_owned_sets(o.sets, "--set");
+      refuse_study_owned_sets(o.sets, "--set", o.lifetime_updates > 0);
       for (const auto &f : o.files)
         {
           io::require_input_file(f);

@@ -272,9 +272,9 @@ namespace abrade::coupling
           for (std::size_t b = 0; b < a; ++b)
             if (o.varies[a].key == o.varies[b].key)
               throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice");
-        refuse_study_owned_sets(o.sets, "--set");
+        refuse_study_owned_sets(o.sets, "--set", o.lifetime_updates > 0);
         for (const auto &v : o.varies)
-          refuse_study_owned_sets({v.key + "="}, "--vary");
+          refuse_study_owned_sets({v.key + "="}, "--vary", o.lifetime_updates > 0);
         return o;
       }
 

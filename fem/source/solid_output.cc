@@ -114,6 +114,9 @@ namespace abrade::fem
     double              volume = 0;
     for (const auto &cell : tria.active_cell_iterators())
       {
+        if (!cell->reference_cell().is_hyper_cube() && !cell->reference_cell().is_simplex())
+          throw std::logic_error("mesh_volume: hexahedra and tetrahedra only (cell " +
+                                 std::to_string(cell->active_cell_index()) + " is a wedge or a pyramid)");
         dealii::FEValues<3> &fv = cell->reference_cell().is_hyper_cube() ? hex : tet;
         fv.reinit(cell);
         for (unsigned q = 0; q < fv.n_quadrature_points; ++q)

@@ -92,7 +92,9 @@ namespace abrade::report
     /// cells as deal.II writes them each have their own copies of their vertices: unmerged,
     /// every face of every cell is on the surface (8 times the boundary's triangles on a
     /// tetrahedral part, and the pictures' time and memory with them). (vtkAppendFilter's
-    /// MergePoints passes a single unstructured grid through as it is.)
+    /// MergePoints passes a single unstructured grid through as it is.) A field that differs
+    /// between a point's copies (deal.II writes cell fields as point data) keeps the first
+    /// cell's value: only continuous fields (the wear depth) are drawn from solids.
     vtkSmartPointer<vtkUnstructuredGrid> with_shared_points(vtkUnstructuredGrid *grid)
     {
       auto points = vtkSmartPointer<vtkPoints>::New();

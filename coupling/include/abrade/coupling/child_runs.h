@@ -26,8 +26,9 @@ namespace abrade::coupling
   /// whatever the file's own job: a lifetime case's, say).
   std::vector<std::string> study_cycle_sets(int seed, const std::string &bed);
   /// InputError (exit 2) when one of @p sets ("Section/Key=value", given with @p option) names
-  /// an entry that study_cycle_sets() sets: it would be overridden without a word.
-  void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option);
+  /// an entry that study_cycle_sets() sets, or with @p lives (the study's lifetime runs)
+  /// lifetime_run_sets() (study_lives.h): it would be overridden without a word.
+  void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option, bool lives);
 
   /// Runs @p runs, @p jobs at a time (0: one per core), with a progress line named @p what;
   /// throws RunError naming a failed run's log.
