@@ -60,6 +60,17 @@ namespace abrade::coupling::lifetime
   void LifetimeLoop::run()
   {
     set_up();
+    // the part's share of the run, by kind of work, in summary.json's timings: added as run()
+    // is left, so that a failed or interrupted run has them too
+    struct PartTimings
+    {
+      const LifetimeLoop &loop;
+      ~PartTimings()
+      {
+        for (const auto &[name, seconds] : loop.part_model->timings().all())
+          loop.ctx.timers.add("part: " + name, seconds);
+      }
+    } part_timings{*this};
     io::ProgressLine progress("lifetime", double(s.max_updates));
     const bool finished = update > 0 && stop_here(); // a resumed run that had ended
     if (!finished && update == 0 && s.fixed_cycles <= 0)
@@ -1016,9 +1027,6 @@ namespace abrade::coupling::lifetime
   // summary.json, the figures and the log.
   void LifetimeLoop::finish()
   {
-    // the part's share of the run, by kind of work, in summary.json's timings
-    for (const auto &[name, seconds] : part_model->timings().all())
-      ctx.timers.add("part: " + name, seconds);
     const FinalLife f = final_life();
     write_results(f);
     if (history.size() > 1) // nothing to plot before the first update
