@@ -274,7 +274,7 @@ namespace abrade::coupling
               throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice");
         refuse_study_owned_sets(o.sets, "--set", o.lifetime_updates > 0);
         for (const auto &v : o.varies)
-          refuse_study_owned_sets({v.key + "="}, "--vary", o.lifetime_updates > 0);
+          refuse_study_owned_sets({v.key}, "--vary", o.lifetime_updates > 0);
         return o;
       }
 

@@ -61,7 +61,7 @@ namespace abrade::coupling::lifetime
   {
     set_up();
     // the part's share of the run, by kind of work, in summary.json's timings: added as run()
-    // is left, so that a failed or interrupted run has them too
+    // is left, so that a failed run has them too (an interrupted one exits without its timings)
     struct PartTimings
     {
       const LifetimeLoop &loop;
@@ -864,8 +864,9 @@ namespace abrade::coupling::lifetime
     const auto  &travel    = part_model->vertex_displacement();
     const double dmax      = depth[at];
     const auto   recession = part_model->recession_at(s.recession_points);
-    const double worn      = volume0 - part_model->volume();
-    const double swept     = st.volume_before - part_model->volume();
+    const double volume    = part_model->volume(); // (an integral over the whole mesh)
+    const double worn      = volume0 - volume;
+    const double swept     = st.volume_before - volume;
     gauge_the_knife();
     const PartNow   part = part_now(); // (the knife as the criteria read it after this update)
     const EdgeGauge &g   = part.gauge;
@@ -1113,10 +1114,11 @@ namespace abrade::coupling::lifetime
     r["tonnes"]        = tonnes;
     r["max_depth"]     = depth.empty() ? 0.0 : *std::max_element(depth.begin(), depth.end());
     r["max_vertex_displacement"] = travel.empty() ? 0.0 : *std::max_element(travel.begin(), travel.end());
-    r["worn_volume"]   = volume0 - part_model->volume();
-    r["worn_mass"]     = (volume0 - part_model->volume()) * part_parameters.density;
+    const double worn  = volume0 - part_model->volume();
+    r["worn_volume"]   = worn;
+    r["worn_mass"]     = worn * part_parameters.density;
     r[field_columns.volume]    = wear_total; // (named after the Wear field: archard_volume)
-    r[field_columns.worn_over] = wear_total > 0 ? (volume0 - part_model->volume()) / wear_total : 0.0;
+    r[field_columns.worn_over] = wear_total > 0 ? worn / wear_total : 0.0;
     r["remeshes"]      = static_cast<long>(part_model->n_remeshes());
     r["dem_warnings"]  = dem_warnings_total; // overlaps, lost particles, time step (this run; per update: trajectory.csv)
     // remeshes where Gmsh could not remesh the surface and the volume was filled inside it

@@ -25,7 +25,8 @@ namespace abrade::coupling
   /// the settled bed @p bed, one thread, no particle or snapshot output, Job = dem (a cycle,
   /// whatever the file's own job: a lifetime case's, say).
   std::vector<std::string> study_cycle_sets(int seed, const std::string &bed);
-  /// InputError (exit 2) when one of @p sets ("Section/Key=value", given with @p option) names
+  /// InputError (exit 2) when one of @p sets ("Section/Key=value" or a key alone, given with
+  /// @p option) names
   /// an entry that study_cycle_sets() sets, or with @p lives (the study's lifetime runs)
   /// lifetime_run_sets() (study_lives.h): it would be overridden without a word.
   void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option, bool lives);
