@@ -4,6 +4,7 @@
 #include <abrade/common/vtk_input.h>
 #include <abrade/fem/eroded_surface.h>
 #include <abrade/fem/surface_repair.h>
+#include <abrade/fem/triangle_folds.h>
 #include <abrade/fem/worn_front.h>
 
 #include <vtkCellArray.h>
@@ -35,6 +36,8 @@ namespace abrade::fem
 {
   namespace
   {
+    using folds::dot;
+    using folds::normal_of;
     /// The signed volume of the tetrahedron (origin, a, b, c): a triangle's share of the volume
     /// its surface encloses (divergence theorem).
     double volume_share(const double *a, const double *b, const double *c)
@@ -42,6 +45,8 @@ namespace abrade::fem
       return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
               a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
     }
+
+
 
     /// Signed volume enclosed by the triangles: > 0 when outward.
     double enclosed_volume(const io::PolyData &s)
@@ -54,16 +59,14 @@ namespace abrade::fem
 
     /// The triangles of @p s that face against the surface they approximate, @p reference (their
     /// normal opposed to the one of the reference triangle closest to their centre: turned over
-    /// by a collapse), and the edges of @p s not shared by exactly two triangles.
+    /// by a collapse), and the edges of @p s not shared by exactly two triangles. (A turned
+    /// triangle of any size is one: Gmsh finds a sliver of 6e-8 m^2 turned along a chisel's
+    /// edge intersecting its neighbour.)
     std::size_t turned_triangles(const io::PolyData &s, vtkPolyData *reference, std::vector<std::size_t> *turned = nullptr)
     {
       vtkNew<vtkStaticCellLocator> locator;
       locator->SetDataSet(reference);
       locator->BuildLocator();
-      auto normal = [](const double *a, const double *b, const double *c) {
-        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        return std::array<double, 3>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-      };
       std::size_t       bad = 0;
       vtkNew<vtkIdList> ids;
       for (std::size_t k = 0; k < s.triangles.size(); ++k)
@@ -84,8 +87,7 @@ namespace abrade::fem
           double p[3][3];
           for (int q = 0; q < 3; ++q)
             reference->GetPoint(ids->GetId(q), p[q]);
-          const auto m = normal(a, b, c), n = normal(p[0], p[1], p[2]);
-          if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < 0)
+          if (dot(normal_of(a, b, c), normal_of(p[0], p[1], p[2])) < 0)
             {
               ++bad;
               if (turned)
@@ -104,6 +106,25 @@ namespace abrade::fem
       return bad;
     }
 
+
+
+
+
+    /// The unit normal of each triangle of @p p (zero for a triangle of no area).
+    std::vector<std::array<double, 3>> unit_normals(vtkPolyData *p)
+    {
+      const io::PolyData                 s = io::triangles_of(p);
+      std::vector<std::array<double, 3>> n(s.triangles.size());
+      for (std::size_t k = 0; k < n.size(); ++k)
+        {
+          const auto &t      = s.triangles[k];
+          n[k]               = normal_of(&s.points[3 * t[0]], &s.points[3 * t[1]], &s.points[3 * t[2]]);
+          const double length = std::sqrt(dot(n[k], n[k]));
+          for (double &x : n[k])
+            x = length > 0 ? x / length : 0;
+        }
+      return n;
+    }
   } // namespace
 
   ErodedSurface eroded_surface(const io::PolyData &surface, const std::vector<double> &depth, double h,
@@ -127,6 +148,7 @@ namespace abrade::fem
         n[c] = static_cast<long>(std::ceil((hi[c] + 3 * h - lo[c]) / h)) + 1;
       }
     const long          n_nodes = n[0] * n[1] * n[2];
+    const double        extent  = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}); // [m] about the part's size
     std::vector<float> g(n_nodes);
     auto node = [&](long i, long j, long k) { return i + n[0] * (j + n[1] * k); };
 
@@ -266,7 +288,57 @@ namespace abrade::fem
         }
       points->Modified();
     };
-    project(clean->GetOutput()->GetPoints());
+    // Beside a sharp convex edge (a chisel's worn tip) the projection can put the corners of a
+    // triangle onto the edge's two faces in the wrong order: the triangle turns over and lies
+    // on a face against the triangles there (Gmsh: overlapping facets; seen on a 4 m blade from
+    // 3 mm of wear on). Marching cubes' own triangles are never turned, and on a face the
+    // projection turns a triangle by next to nothing: the triangles it turned by more than 10
+    // degrees are judged against the worn solid's outward direction at their centre (-grad g by
+    // central differences over a quarter spacing: beside an edge they see both faces, so the
+    // direction lies between the faces' normals), and a turned one's corners go back to where
+    // marching cubes put them; again for the neighbours that this turns.
+    vtkPoints        *points = clean->GetOutput()->GetPoints();
+    vtkNew<vtkPoints> marched;
+    marched->DeepCopy(points);
+    const std::vector<std::array<double, 3>> marched_normals = unit_normals(clean->GetOutput());
+    // (flying edges orients the triangles towards larger g: inward)
+    const double facing = enclosed_volume(io::triangles_of(clean->GetOutput())) > 0 ? 1 : -1;
+    auto         g_at   = [&](const double *x) {
+      double foot[3];
+      return std::min(-distance.signed_distance(x), worn.distance(x, foot));
+    };
+    project(points);
+    for (int round = 0; round < 8; ++round)
+      {
+        const io::PolyData                       now     = io::triangles_of(clean->GetOutput());
+        const std::vector<std::array<double, 3>> normals = unit_normals(clean->GetOutput());
+        std::vector<char>                        turned(now.triangles.size(), 0);
+#pragma omp parallel for schedule(dynamic, 1024)
+        for (std::size_t k = 0; k < turned.size(); ++k)
+          {
+            const auto &n = normals[k], &m = marched_normals[k];
+            if (n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > 0.985) // cos 10 degrees
+              continue;
+            double centre[3] = {0, 0, 0}, outward = 0;
+            for (const long v : now.triangles[k])
+              for (int c = 0; c < 3; ++c)
+                centre[c] += now.points[3 * v + c] / 3;
+            for (int c = 0; c < 3; ++c)
+              {
+                double plus[3] = {centre[0], centre[1], centre[2]}, minus[3] = {centre[0], centre[1], centre[2]};
+                plus[c] += h / 4, minus[c] -= h / 4;
+                outward += n[c] * (g_at(minus) - g_at(plus));
+              }
+            turned[k] = facing * outward < 0;
+          }
+        if (std::find(turned.begin(), turned.end(), 1) == turned.end())
+          break;
+        for (std::size_t k = 0; k < turned.size(); ++k)
+          if (turned[k])
+            for (const long v : now.triangles[k])
+              points->SetPoint(v, marched->GetPoint(v));
+        points->Modified();
+      }
     // vertices projected onto one point (beside a sharp edge) are one vertex, and the triangles
     // they squash are dropped: no zero-area or repeated facets for the decimation and Gmsh
     vtkNew<vtkPolyData> projected;
@@ -314,13 +386,53 @@ namespace abrade::fem
         project(triangles->GetOutput()->GetPoints());
         io::PolyData             decimated = io::triangles_of(triangles->GetOutput());
         std::vector<std::size_t> turned;
-        // the projection can turn a small triangle beside a sharp edge: its corners stay
-        // where the quadrics put them
-        if (turned_triangles(decimated, front, &turned) > 0)
-          for (const std::size_t t : turned)
-            for (const long v : decimated.triangles[t])
-              std::copy_n(&placed.points[3 * v], 3, &decimated.points[3 * v]);
-        if (turned_triangles(decimated, front) == 0)
+        // The projection can turn a small triangle beside a sharp edge, or put it through
+        // another one across the edge: its corners go back where the quadrics put them. One turned there already is most often a cap along the
+        // edge (its third corner within round-off of its longest edge, its normal round-off):
+        // it is flipped with its neighbour. Caps that are not turned are flipped too, before
+        // the part's STL reader sees them: it welds corners within 1e-6 of the part's size,
+        // which turns a cap lower than that onto its neighbour (a fold), and Gmsh drops
+        // triangles below 1e-8 of it high (a crack); caps below 1e-5 of the part's size or
+        // 1e-4 of their length are flipped.
+        for (int round = 0; round < 12; ++round)
+          {
+            turned.clear();
+            turned_triangles(decimated, front, &turned);
+            for (const std::size_t t : folds::crossing_triangles(decimated, 2 * edge_length))
+              if (std::find(turned.begin(), turned.end(), t) == turned.end())
+                turned.push_back(t);
+            if (turned.empty())
+              {
+                if (folds::flip_with_a_neighbour(decimated, folds::caps(decimated, 1e-4, 1e-5 * extent)) == 0)
+                  break;
+                continue; // (the flips are checked)
+              }
+            std::vector<std::size_t> placed_turned;
+            for (const std::size_t t : turned)
+              {
+                bool moved = false;
+                for (const long v : decimated.triangles[t])
+                  if (!std::equal(&placed.points[3 * v], &placed.points[3 * v + 3], &decimated.points[3 * v]))
+                    std::copy_n(&placed.points[3 * v], 3, &decimated.points[3 * v]), moved = true;
+                if (!moved)
+                  placed_turned.push_back(t);
+              }
+            if (folds::flip_with_a_neighbour(decimated, placed_turned) == 0 && placed_turned.size() == turned.size())
+              break; // (nothing changed)
+          }
+        // and what the part's STL reader will check: no fold once its corners are welded
+        // within 1e-6 of the part's size
+        auto unfolded = [&] {
+          try
+            {
+              return repair_overlapping_facets(decimated, 1e-6 * extent).folds == 0;
+            }
+          catch (const std::runtime_error &)
+            {
+              return false;
+            }
+        };
+        if (turned_triangles(decimated, front) == 0 && folds::crossing_triangles(decimated, 2 * edge_length).empty() && unfolded())
           {
             out = std::move(decimated);
             break;

@@ -25,7 +25,11 @@
 // reproduced exactly; edges and corners are cut by at most about h / 2 (marching cubes does not
 // keep sharp features). Quadric decimation (VTK, volume-preserving) then takes the triangles to
 // about the target edge length and pulls edges back towards sharp; the largest piece is kept
-// (pieces cut off by the wear are reported by volume).
+// (pieces cut off by the wear are reported by volume). Beside a sharp edge narrower than the
+// grid the projections and the decimation can turn a triangle over: its corners go back where
+// marching cubes or the quadrics put them, or it is flipped with a neighbour; a decimation with
+// a fold left (also once the STL reader welds corners within 1e-6 of the part's size) is done
+// again finer.
 #include <abrade/common/vtk_output.h>
 
 #include <vector>
