@@ -27,10 +27,13 @@ namespace abrade::fem::folds
     return u > inside && v > inside && u + v < 1 - inside && t > inside && t < 1 - inside;
   }
 
-  std::vector<std::size_t> crossing_triangles(const io::PolyData &s, double cell)
+  std::vector<std::size_t> crossing_triangles(const io::PolyData &s)
   {
+    if (s.triangles.empty())
+      return {};
     auto point = [&](long v) { return &s.points[3 * v]; };
     std::vector<std::array<double, 6>> box(s.triangles.size());
+    std::vector<double>                size(s.triangles.size());
     for (std::size_t k = 0; k < s.triangles.size(); ++k)
       {
         auto &b = box[k];
@@ -39,7 +42,13 @@ namespace abrade::fem::folds
         for (const long v : s.triangles[k])
           for (int c = 0; c < 3; ++c)
             b[c] = std::min(b[c], point(v)[c]), b[c + 3] = std::max(b[c + 3], point(v)[c]);
+        size[k] = std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
       }
+    // cells of twice the median triangle's box: a few triangles each, whatever their size
+    std::nth_element(size.begin(), size.begin() + size.size() / 2, size.end());
+    const double cell = 2 * size[size.size() / 2];
+    if (!(cell > 0))
+      return {};
     std::unordered_map<long long, std::vector<std::size_t>> grid;
     auto key = [](long i, long j, long k) { return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL); };
     auto cells_of = [&](std::size_t t, auto &&visit) {
@@ -55,14 +64,17 @@ namespace abrade::fem::folds
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::size_t i = 0; i < s.triangles.size(); ++i)
       {
-        const auto &ti = s.triangles[i];
-        std::vector<std::size_t> seen;
+        const auto              &ti = s.triangles[i];
+        std::vector<std::size_t> candidates;
         cells_of(i, [&](long long c) {
           for (const std::size_t j : grid.at(c))
-            {
-              if (j <= i || std::find(seen.begin(), seen.end(), j) != seen.end())
-                continue;
-              seen.push_back(j);
+            if (j > i)
+              candidates.push_back(j);
+        });
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        for (const std::size_t j : candidates)
+          {
               const auto &tj = s.triangles[j];
               int         shared = 0;
               for (const long v : ti)
@@ -73,17 +85,22 @@ namespace abrade::fem::folds
               // (neighbours across an edge, and triangles facing the same way: a thin fan of
               // slivers that overlap each other by round-off, which Gmsh fills, is not a crossing
               // of the part's two sides)
-              if (shared >= 2 || apart ||
-                  dot(normal_of(point(ti[0]), point(ti[1]), point(ti[2])), normal_of(point(tj[0]), point(tj[1]), point(tj[2]))) >= 0)
+              const auto ni = normal_of(point(ti[0]), point(ti[1]), point(ti[2]));
+              const auto nj = normal_of(point(tj[0]), point(tj[1]), point(tj[2]));
+              if (shared >= 2 || apart || dot(ni, nj) >= 0)
                 continue;
               bool cross = false;
               for (int e = 0; e < 3 && !cross; ++e)
                 cross = segment_crosses(point(ti[e]), point(ti[(e + 1) % 3]), point(tj[0]), point(tj[1]), point(tj[2])) ||
                         segment_crosses(point(tj[e]), point(tj[(e + 1) % 3]), point(ti[0]), point(ti[1]), point(ti[2]));
               if (cross)
-                crossing[i] = crossing[j] = 1; // (a race writes the same value)
+                {
+#pragma omp atomic write
+                  crossing[i] = 1;
+#pragma omp atomic write
+                  crossing[j] = 1;
+                }
             }
-        });
       }
     std::vector<std::size_t> list;
     for (std::size_t k = 0; k < crossing.size(); ++k)

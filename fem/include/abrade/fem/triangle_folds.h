@@ -36,8 +36,8 @@ namespace abrade::fem::folds
   /// neighbour across an edge (an edge of one through the other): where one side of a thin
   /// feature passes through the other. Triangles facing the same way are not counted: a thin
   /// fan of slivers overlapping each other by round-off, which Gmsh fills. Candidates from a
-  /// hash grid of the triangles' boxes, of cells of @p cell [m].
-  std::vector<std::size_t> crossing_triangles(const io::PolyData &s, double cell);
+  /// hash grid of the triangles' boxes, its cells twice the median box.
+  std::vector<std::size_t> crossing_triangles(const io::PolyData &s);
 
   /// The caps of @p s: triangles whose third corner lies within @p ratio of their longest edge's
   /// length, or within @p height [m], from that edge.
