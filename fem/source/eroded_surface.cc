@@ -103,14 +103,9 @@ namespace abrade::fem
       return bad;
     }
 
-
-
-
-
-    /// The unit normal of each triangle of @p p (zero for a triangle of no area).
-    std::vector<std::array<double, 3>> unit_normals(vtkPolyData *p)
+    /// The unit normal of each triangle of @p s (zero for a triangle of no area).
+    std::vector<std::array<double, 3>> unit_normals(const io::PolyData &s)
     {
-      const io::PolyData                 s = io::triangles_of(p);
       std::vector<std::array<double, 3>> n(s.triangles.size());
       for (std::size_t k = 0; k < n.size(); ++k)
         {
@@ -297,9 +292,10 @@ namespace abrade::fem
     vtkPoints        *points = clean->GetOutput()->GetPoints();
     vtkNew<vtkPoints> marched;
     marched->DeepCopy(points);
-    const std::vector<std::array<double, 3>> marched_normals = unit_normals(clean->GetOutput());
+    const io::PolyData                       marched_front   = io::triangles_of(clean->GetOutput());
+    const std::vector<std::array<double, 3>> marched_normals = unit_normals(marched_front);
     // (flying edges orients the triangles towards larger g: inward)
-    const double facing = enclosed_volume(io::triangles_of(clean->GetOutput())) > 0 ? 1 : -1;
+    const double facing = enclosed_volume(marched_front) > 0 ? 1 : -1;
     auto         g_at   = [&](const double *x) {
       double foot[3];
       return std::min(-distance.signed_distance(x), worn.distance(x, foot));
@@ -308,7 +304,7 @@ namespace abrade::fem
     for (int round = 0; round < 8; ++round)
       {
         const io::PolyData                       now     = io::triangles_of(clean->GetOutput());
-        const std::vector<std::array<double, 3>> normals = unit_normals(clean->GetOutput());
+        const std::vector<std::array<double, 3>> normals = unit_normals(now);
         std::vector<char>                        turned(now.triangles.size(), 0);
 #pragma omp parallel for schedule(dynamic, 1024)
         for (std::size_t k = 0; k < turned.size(); ++k)
@@ -395,7 +391,8 @@ namespace abrade::fem
         // are not turned are flipped too: those below 1e-5 of the part's size or 1e-4 of their
         // length. (Not otherwise: HXT's fill of the 30 mm chisel's surface worn 3 mm stalled
         // past the 120 s limit, in the run, once its caps were flipped.)
-        // what the part's STL reader will check (solid_file.cc): no fold once its corners,
+        //
+        // What the part's STL reader will check (solid_file.cc): no fold once its corners,
         // in single precision as the STL has them, are welded within 1e-6 of its box's largest side
         auto unfolded = [&] {
           io::PolyData as_stl = decimated;
@@ -417,6 +414,7 @@ namespace abrade::fem
               return false;
             }
         };
+        bool accepted = false; // (clean when the loop left it)
         for (int round = 0; round < 12; ++round)
           {
             turned.clear();
@@ -426,7 +424,8 @@ namespace abrade::fem
                 turned.push_back(t);
             if (turned.empty())
               {
-                if (unfolded() || folds::flip_with_a_neighbour(decimated, folds::caps(decimated, 1e-4, 1e-5 * extent)) == 0)
+                if ((accepted = unfolded()) ||
+                    folds::flip_with_a_neighbour(decimated, folds::caps(decimated, 1e-4, 1e-5 * extent)) == 0)
                   break;
                 continue; // (the flips are checked)
               }
@@ -443,8 +442,8 @@ namespace abrade::fem
             if (folds::flip_with_a_neighbour(decimated, placed_turned) == 0 && placed_turned.size() == turned.size())
               break; // (nothing changed)
           }
-        if (turned_triangles(decimated, front, locator.Get()) == 0 && folds::crossing_triangles(decimated).empty() &&
-            unfolded())
+        if (accepted || (turned_triangles(decimated, front, locator.Get()) == 0 &&
+                         folds::crossing_triangles(decimated).empty() && unfolded()))
           {
             out = std::move(decimated);
             break;
