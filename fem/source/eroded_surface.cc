@@ -405,6 +405,10 @@ namespace abrade::fem
               lo[k % 3] = std::min(lo[k % 3], as_stl.points[k]), hi[k % 3] = std::max(hi[k % 3], as_stl.points[k]);
             }
           const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+          // nor a triangle it would drop as a sliver (its height below 1e-8 of that size: a
+          // crack), here with ten times the margin
+          if (!folds::caps(as_stl, 0, 1e-7 * size).empty())
+            return false;
           try
             {
               return repair_overlapping_facets(as_stl, 1e-6 * size).folds == 0;
