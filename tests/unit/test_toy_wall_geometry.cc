@@ -101,6 +101,24 @@ TEST(ToyWallGeometry, MakesAWallTheWallPlaces)
     EXPECT_LT((mesh.vertices[k] - (Vec3(-own[k].y(), own[k].x(), own[k].z()) + Vec3(1, 2, 3))).norm(), 1e-12) << k;
 }
 
+// a built-in geometry refuses a size its mesh cannot have, naming the entry (a shell of no
+// width or radius was meshed into triangles of no area)
+TEST(ToyWallGeometry, AShellOfNoSizeIsRefused)
+{
+  for (const char *entry : {"Shell radius", "Shell width"})
+    try
+      {
+        ParameterFile params("", {"Wall container/Geometry=clamshell shell", std::string("Wall container/") + entry + "=0"});
+        read_dem_case(params);
+        ADD_FAILURE() << entry << " = 0 was accepted";
+      }
+    catch (const abrade::InputError &e)
+      {
+        EXPECT_NE(std::string(e.what()).find(std::string(entry) + ": a shell needs a positive size"), std::string::npos)
+          << e.what();
+      }
+}
+
 // a wall has its own geometry's entries only: in the run's record, and set on another wall's
 TEST(ToyWallGeometry, AWallHasItsOwnGeometrysEntriesOnly)
 {

@@ -20,8 +20,8 @@ namespace abrade::coupling
         constexpr double huge = std::numeric_limits<double>::max();
         prm.declare_number("Shell radius", 0.6, 0, huge,
                            "[m] Clamshell shell: radius of its bottom about the hinge (the hinge is the "
-                           "shell's origin, its axis along Y; Offset places it).");
-        prm.declare_number("Shell width", 1, 0, huge, "[m] Clamshell shell: width along the hinge (Y).");
+                           "shell's origin, its axis along Y; Offset places it). Range: > 0.");
+        prm.declare_number("Shell width", 1, 0, huge, "[m] Clamshell shell: width along the hinge (Y). Range: > 0.");
         prm.declare_number("Shell sector", 90, 1, 180,
                            "[deg] Clamshell shell: angle its bottom spans, from the lip. Range: [1, 180].");
         prm.declare_number("Shell opening", 0, 0, 180,
@@ -34,6 +34,9 @@ namespace abrade::coupling
       WallShape make(const dem::ParameterSection &prm, const WallGeometryContext &context) const override
       {
         const double r = prm.number("Shell radius"), h = context.maximum_edge_length;
+        for (const char *size : {"Shell radius", "Shell width"})
+          if (!(prm.number(size) > 0))
+            prm.fail(size, "a shell needs a positive size (it was 0)");
         WallShape    shape;
         const auto  &sh = shape.shell = ShellShape{r, prm.number("Shell opening") * M_PI / 180,
                                                    prm.text("Shell side") == "+x" ? 1 : -1};
