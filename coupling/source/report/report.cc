@@ -208,21 +208,12 @@ namespace abrade::report
 
     // ---------------------------------------------------------------------------------------
 
-    std::string lifetime_page(const std::string &dir, const Tree &summary)
+    /// The life in one sentence (@p r: summary.json's results.lifetime): the tonnes and their
+    /// interval (its components), the criterion and where it ended the life, and how the end
+    /// was found; or that none was reached.
+    std::string lifetime_headline(const Tree &r, const std::string &part)
     {
-      const Tree        none;
-      const auto        results = summary.get_child_optional("results.lifetime");
-      const Tree       &r       = results ? *results : none;
-      // a part from a file is a part, the parametric knife a knife (summary.json lifetime.part)
-      const std::string part    = text_at(r, "part") == "part" ? "part" : "knife";
-      HtmlPage          page(part == "part" ? "Part lifetime prediction" : "Knife lifetime prediction");
-      const std::string status  = text_at(summary, "status");
-      if (!status.empty() && status != "completed")
-        page.headline("<span id=\"headline-status\"><b>This run did not complete</b></span>: " + escape_html(status) +
-                      ". What it wrote before it stopped is shown below; resume it with abrade run ... --resume.");
-
-      const auto predicted = r.get_optional<double>("predicted_tonnes_to_end_of_life");
-      const std::string criterion = text_at(r, "end_of_life_criterion");
+      const auto         predicted = r.get_optional<double>("predicted_tonnes_to_end_of_life");
       std::ostringstream headline;
       if (predicted)
         {
@@ -254,7 +245,7 @@ namespace abrade::report
                          << number(100 * r.get<double>("interval.relative_sd", 0), 2) << " % (standard deviations)";
               headline << ")";
             }
-          headline << ", by " << escape_html(criterion);
+          headline << ", by " << escape_html(text_at(r, "end_of_life_criterion"));
           if (r.get_child_optional("end_of_life_where") && r.get_child("end_of_life_where").size() == 3)
             {
               const auto where = numbers_at<3>(r, "end_of_life_where");
@@ -266,50 +257,43 @@ namespace abrade::report
             method[0] = char(std::toupper(static_cast<unsigned char>(method[0])));
           headline << ". " << escape_html(method) << ".";
         }
-      else if (results)
+      else
         headline << "<span id=\"headline-tonnes\" data-value=\"none\"><b>No end of life reached</b></span> after "
                  << tonnes(r.get<double>("tonnes", 0)) << " (" << escape_html(text_at(r, "end")) << ")";
-      if (results)
-        page.headline(headline.str());
-      char cycles[40];
-      std::snprintf(cycles, sizeof cycles, "%.0f", r.get<double>("cycles", 0));
-      page.paragraph("Run ended: " + escape_html(text_at(r, "end")) + "; " + tonnes(r.get<double>("tonnes", 0)) +
-                     " handled in " + cycles + " cycles; largest wear depth " +
-                     number(1000 * r.get<double>("max_depth", 0), 4) + " mm; worn mass " +
-                     number(r.get<double>("worn_mass", 0), 4) + " kg; " +
-                     std::to_string(r.get<int>("seeds", 1)) + " bed(s).");
+      return headline.str();
+    }
 
-      page.heading("Trajectory");
-      page.png(dir + "/trajectory.png",
-               "Wear against handled material: the largest depth with the spread of the beds, the followed point's "
-               "recession and the worn volume.",
-               "trajectory");
-
-      page.heading("The worn " + part);
+    /// The worn part at the design, the middle and the last update, and its worst region.
+    void worn_part_pictures(HtmlPage &page, const std::string &dir, const Tree &r, const std::string &part)
+    {
       const auto files = fs::exists(dir + "/knife/knife.pvd") ? pvd_files(dir + "/knife/knife.pvd")
                                                               : std::vector<std::pair<double, std::string>>();
-      if (!files.empty())
-        {
-          std::vector<SurfacePicture> stages;
-          stages.push_back({files.front().second, "wear_depth", "design"});
-          if (files.size() > 2)
-            stages.push_back({files[files.size() / 2].second, "wear_depth", "after " + tonnes(files[files.size() / 2].first)});
-          stages.push_back({files.back().second, "wear_depth", "after " + tonnes(files.back().first)});
-          RenderOptions laid; // (a long part face on: surface_views.h)
-          laid.face_on_elongation = 3;
-          bool face_on            = false;
-          if (!render_surfaces(dir + "/report", "knife_wear.png", stages, laid, &face_on))
-            page.paragraph("(the " + part + "'s pictures could not be drawn: gnuplot, or its VTU files, are missing)");
-          page.png(dir + "/report/knife_wear.png",
-                   "The " + part + " coloured by wear depth (mm below the design surface) at the design, the middle "
-                   "update and the last update of the run, " +
-                     std::string(face_on ? "laid face on (its longest extent across the picture), each from its two "
-                                           "sides, one above the other"
-                                         : "seen from two opposite sides (top row: from +x, -y; bottom row: from -x, +y)") +
-                     "; one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
-                   "knife");
-          worst_region_picture(page, dir, r, part, files.back().second, "after " + tonnes(files.back().first));
-        }
+      if (files.empty())
+        return;
+      std::vector<SurfacePicture> stages;
+      stages.push_back({files.front().second, "wear_depth", "design"});
+      if (files.size() > 2)
+        stages.push_back({files[files.size() / 2].second, "wear_depth", "after " + tonnes(files[files.size() / 2].first)});
+      stages.push_back({files.back().second, "wear_depth", "after " + tonnes(files.back().first)});
+      RenderOptions laid; // (a long part face on: surface_views.h)
+      laid.face_on_elongation = 3;
+      bool face_on            = false;
+      if (!render_surfaces(dir + "/report", "knife_wear.png", stages, laid, &face_on))
+        page.paragraph("(the " + part + "'s pictures could not be drawn: gnuplot, or its VTU files, are missing)");
+      page.png(dir + "/report/knife_wear.png",
+               "The " + part + " coloured by wear depth (mm below the design surface) at the design, the middle "
+               "update and the last update of the run, " +
+                 std::string(face_on ? "laid face on (its longest extent across the picture), each from its two "
+                                       "sides, one above the other"
+                                     : "seen from two opposite sides (top row: from +x, -y; bottom row: from -x, +y)") +
+                 "; one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
+               "knife");
+      worst_region_picture(page, dir, r, part, files.back().second, "after " + tonnes(files.back().first));
+    }
+
+    /// The cross-section through where the life ended, then the profiles along the part.
+    void cross_sections(HtmlPage &page, const std::string &dir, const std::string &part)
+    {
       std::vector<fs::path> profiles;
       if (fs::is_directory(dir + "/knife"))
         for (const auto &entry : fs::directory_iterator(dir + "/knife"))
@@ -327,40 +311,75 @@ namespace abrade::report
                                " of its length: the design's outline (black) and the worn outlines of the updates, "
                                "zoomed to where they differ; y and z in mm.",
                  "profile");
+    }
 
-      page.heading("Updates");
+    /// trajectory.csv's main columns, an update per row, in the units a reader expects.
+    void updates_table(HtmlPage &page, const std::string &dir)
+    {
       const io::CsvTable csv = read_table(dir + "/trajectory.csv");
-      if (!csv.rows.empty())
+      if (csv.rows.empty())
+        return;
+      const std::vector<std::pair<std::string, std::string>> shown = {
+        {"update", "update"}, {"tonnes", "handled"}, {"max_depth", "largest depth [mm]"},
+        {"point_recession", "recession [mm]"}, {"worn_mass", "worn mass [kg]"},
+        {"min_scaled_jacobian", "worst cell quality"}, {"remeshed", "remeshed"}, {"dem_warnings", "DEM warnings"}};
+      std::vector<std::string>              header;
+      std::vector<std::vector<std::string>> rows;
+      const int  tonnes_column = csv.find("tonnes");
+      const auto [unit, size]  = tonnes_unit(tonnes_column >= 0 ? std::atof(csv.rows.back()[tonnes_column].c_str()) : 0);
+      for (const auto &[c, title] : shown)
+        if (csv.find(c) >= 0)
+          header.push_back(c == "tonnes" ? title + " [" + unit + "]" : title);
+      for (const auto &line : csv.rows)
         {
-          const std::vector<std::pair<std::string, std::string>> shown = {
-            {"update", "update"}, {"tonnes", "handled"}, {"max_depth", "largest depth [mm]"},
-            {"point_recession", "recession [mm]"}, {"worn_mass", "worn mass [kg]"},
-            {"min_scaled_jacobian", "worst cell quality"}, {"remeshed", "remeshed"}, {"dem_warnings", "DEM warnings"}};
-          std::vector<std::string>              header;
-          std::vector<std::vector<std::string>> rows;
-          const int  tonnes_column = csv.find("tonnes");
-          const auto [unit, size]  = tonnes_unit(tonnes_column >= 0 ? std::atof(csv.rows.back()[tonnes_column].c_str()) : 0);
+          std::vector<std::string> row;
           for (const auto &[c, title] : shown)
-            if (csv.find(c) >= 0)
-              header.push_back(c == "tonnes" ? title + " [" + unit + "]" : title);
-          for (const auto &line : csv.rows)
             {
-              std::vector<std::string> row;
-              for (const auto &[c, title] : shown)
-                {
-                  const int i = csv.find(c);
-                  if (i < 0)
-                    continue;
-                  const double v = std::atof(line[i].c_str());
-                  row.push_back(c == "tonnes" ? number(v / size, 4)
-                                : (c == "max_depth" || c == "point_recession") ? number(1000 * v, 4)
-                                                                                : number(v, 4));
-                }
-              rows.push_back(row);
+              const int i = csv.find(c);
+              if (i < 0)
+                continue;
+              const double v = std::atof(line[i].c_str());
+              row.push_back(c == "tonnes" ? number(v / size, 4)
+                            : (c == "max_depth" || c == "point_recession") ? number(1000 * v, 4)
+                                                                            : number(v, 4));
             }
-          page.table(header, rows);
+          rows.push_back(row);
         }
+      page.table(header, rows);
+    }
 
+    std::string lifetime_page(const std::string &dir, const Tree &summary)
+    {
+      const Tree        none;
+      const auto        results = summary.get_child_optional("results.lifetime");
+      const Tree       &r       = results ? *results : none;
+      // a part from a file is a part, the parametric knife a knife (summary.json lifetime.part)
+      const std::string part    = text_at(r, "part") == "part" ? "part" : "knife";
+      HtmlPage          page(part == "part" ? "Part lifetime prediction" : "Knife lifetime prediction");
+      const std::string status  = text_at(summary, "status");
+      if (!status.empty() && status != "completed")
+        page.headline("<span id=\"headline-status\"><b>This run did not complete</b></span>: " + escape_html(status) +
+                      ". What it wrote before it stopped is shown below; resume it with abrade run ... --resume.");
+      if (results)
+        page.headline(lifetime_headline(r, part));
+      char cycles[40];
+      std::snprintf(cycles, sizeof cycles, "%.0f", r.get<double>("cycles", 0));
+      page.paragraph("Run ended: " + escape_html(text_at(r, "end")) + "; " + tonnes(r.get<double>("tonnes", 0)) +
+                     " handled in " + cycles + " cycles; largest wear depth " +
+                     number(1000 * r.get<double>("max_depth", 0), 4) + " mm; worn mass " +
+                     number(r.get<double>("worn_mass", 0), 4) + " kg; " +
+                     std::to_string(r.get<int>("seeds", 1)) + " bed(s).");
+
+      page.heading("Trajectory");
+      page.png(dir + "/trajectory.png",
+               "Wear against handled material: the largest depth with the spread of the beds, the followed point's "
+               "recession and the worn volume.",
+               "trajectory");
+      page.heading("The worn " + part);
+      worn_part_pictures(page, dir, r, part);
+      cross_sections(page, dir, part);
+      page.heading("Updates");
+      updates_table(page, dir);
       page.heading("Warnings");
       std::vector<std::string> warnings;
       collect_warnings(summary, warnings);
