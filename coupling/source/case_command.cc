@@ -32,7 +32,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -145,9 +147,32 @@ namespace abrade::coupling
       double                volume = 0, area = 0;
       /// [m] the surface point furthest along x (the leading edge as it is dragged along +x; of
       /// those within a millimetre, the lowest, then the nearest y = 0) and the lowest point (of
-      /// those within a millimetre, the furthest along x)
+      /// those within a millimetre, the furthest along x, then the nearest y = 0)
       dealii::Point<3> leading, lowest;
     };
+
+    using P = dealii::Point<3>;
+
+    /// The point of @p points with the largest first key; of those within a millimetre of it,
+    /// the one with the largest second key, and so on; of those left, the first in the order
+    /// of their coordinates. Neither the points' order nor their round-off decides (a
+    /// comparison of one point after another with a millimetre's tolerance did: along a
+    /// straight bottom edge the lowest point changed from run to run).
+    P extreme(const std::vector<P> &points, const std::vector<std::function<double(const P &)>> &keys)
+    {
+      std::vector<P> left = points;
+      for (const auto &key : keys)
+        {
+          double best = -std::numeric_limits<double>::infinity();
+          for (const P &p : left)
+            best = std::max(best, key(p));
+          left.erase(std::remove_if(left.begin(), left.end(), [&](const P &p) { return key(p) < best - 1e-3; }),
+                     left.end());
+        }
+      return *std::min_element(left.begin(), left.end(), [](const P &a, const P &b) {
+        return std::lexicographical_compare(a.begin_raw(), a.end_raw(), b.begin_raw(), b.end_raw());
+      });
+    }
 
     PartShape measure_part(const std::string &path, double file_scale)
     {
@@ -170,18 +195,10 @@ namespace abrade::coupling
           shape.volume                    = fem::mesh_volume(tria);
           const fem::SolidSurface surface = fem::extract_surface(tria);
           shape.area                      = surface.area();
-          auto before = [](double a, double b) { return a > b + 1e-3; }; // (a millimetre decides)
-          shape.leading = shape.lowest = surface.vertices.front();
-          for (const auto &p : surface.vertices)
-            {
-              const auto &l = shape.leading;
-              if (before(p[0], l[0]) || (!before(l[0], p[0]) && (before(l[2], p[2]) ||
-                                                                  (!before(p[2], l[2]) && std::abs(p[1]) < std::abs(l[1])))))
-                shape.leading = p;
-              const auto &w = shape.lowest;
-              if (before(w[2], p[2]) || (!before(p[2], w[2]) && p[0] > w[0]))
-                shape.lowest = p;
-            }
+          shape.leading = extreme(surface.vertices, {[](const P &p) { return p[0]; }, [](const P &p) { return -p[2]; },
+                                                     [](const P &p) { return -std::abs(p[1]); }});
+          shape.lowest  = extreme(surface.vertices, {[](const P &p) { return -p[2]; }, [](const P &p) { return p[0]; },
+                                                     [](const P &p) { return -std::abs(p[1]); }});
         }
       return shape;
     }
@@ -190,15 +207,198 @@ namespace abrade::coupling
     {
       return io::format_number(x, 5) + ", " + io::format_number(y, 5) + ", " + io::format_number(z, 5);
     }
+
+    /// The material of --material (refused with the list of them).
+    const Material &material_named(const std::string &name)
+    {
+      const auto m = std::find_if(std::begin(materials), std::end(materials), [&](const Material &x) { return name == x.name; });
+      if (m == std::end(materials))
+        throw InputError("command line", "--material: iron-ore-pellets, gravel, coal or soil, got '" + name + "'");
+      return *m;
+    }
+
+    /// The drag and the bed around a part: the knife-bed's, scaled to the part.
+    struct Drag
+    {
+      Drag(const PartShape &part, const Options &o, const Material &m)
+      {
+        const double lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
+        thickness = part.area > 0 ? 2 * part.volume / part.area : 0.1 * lz;
+        // the drag: down half the part's height, along x twice its length
+        depth               = o.depth > 0 ? o.depth : 0.5 * lz;
+        travel              = o.travel > 0 ? o.travel : std::max(2 * lx, 1.0);
+        const double below  = std::max(0.25 * lz, 0.1);
+        bed                 = depth + below; // the settled bed's height
+        const double margin = std::max(0.25 * std::max(lx, ly), 0.15);
+        length = lx + travel + 2 * margin, width = ly + 2 * margin;
+        x_min = -0.5 * length, y_min = -0.5 * width;
+        // the particles: coarse-grained to about the count asked; poured from below the part
+        const double settled_solid = m.solid_fraction * length * width * bed; // [m^3]
+        const double r_sim = std::cbrt(settled_solid / (double(o.particles) * 4.0 / 3.0 * M_PI));
+        factor             = std::max(1.0, std::ceil(10 * r_sim / m.radius) / 10); // (one decimal)
+        r                  = factor * m.radius;                                   // simulated radius
+        pour               = bed * m.solid_fraction / pour_fraction;               // the region's height
+        region_low = 2 * r, region_high = region_low + pour;
+        start_z        = region_high + 2 * r; // the part's lowest point
+        top            = start_z + lz + std::max(0.1, 4 * r);
+        settle         = std::sqrt(2 * pour / 9.81) + 0.3;
+        surface        = bed + 2 * r + 0.05; // the approach ends above the bed, at speed
+        approach_speed = std::max(4.0, o.speed);
+        start_x        = x_min + margin + 0.5 * lx;
+        bulk           = m.solid_fraction * m.density;        // [kg/m^3]
+        tonnes         = 1e-3 * bulk * ly * depth * travel; // the swept volume's
+        limit          = std::max(0.002, 0.5 * thickness);
+      }
+      static constexpr double pour_fraction = 0.3;
+      double thickness, depth, travel, bed, length, width, x_min, y_min, factor, r, pour, region_low, region_high,
+        start_z, top, settle, surface, approach_speed, start_x, bulk, tonnes, limit;
+    };
+
+    /// The part by a relative name when it lies beside the case file or below it (the two move
+    /// together); else by its absolute name.
+    std::string part_path_from(const Options &o)
+    {
+      std::string part_path = std::filesystem::absolute(o.part).lexically_normal().string();
+      const auto  dir       = std::filesystem::absolute(std::filesystem::path(o.output)).parent_path();
+      const auto  rel       = std::filesystem::absolute(o.part).lexically_normal().lexically_relative(dir);
+      if (!rel.empty() && rel.begin()->string() != "..")
+        part_path = rel.string();
+      return part_path;
+    }
+
+    /// The lifetime case's parameter file, commented for the user who will finish it.
+    std::string case_text(const std::vector<std::string> &args, const Options &o, const PartShape &part,
+                          const Drag &d, const Material &m)
+    {
+      const double    lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
+      const std::string part_path = part_path_from(o);
+      std::ostringstream f;
+      auto n = [](double x, int digits = 4) { return io::format_number(x, digits); };
+      f << "# A lifetime case around " << o.part << ", written by abrade case:\n#   abrade case";
+      for (const auto &a : args)
+        f << ' ' << (a.find(' ') != std::string::npos ? "\"" + a + "\"" : a);
+      f << "\n#\n# The part (placed: its lowest point at z = 0, the bounding box centred): " << n(lx) << " x " << n(ly)
+        << " x " << n(lz) << " m, " << n(part.volume) << " m^3, surface " << n(part.area)
+        << " m^2, plate thickness about 2 V / A = " << n(1000 * d.thickness, 3) << " mm.\n"
+        << "# It is dragged as the knife-bed drags its knife: down into the bed by " << n(d.depth, 3)
+        << " m, then along +x by " << n(d.travel, 3) << " m, at " << n(o.speed, 3) << " m/s.\n"
+        << "# What it cannot know, set before a life is booked: which faces are clamped (Knife/Clamped\n"
+        << "# faces), the end of life (Lifetime/Maximum depth, ...), W (calibrate it: abrade calibrate), the\n"
+        << "# tonnes per cycle if a payload is measured. See it first:\n"
+        << "#   abrade preview " << o.output << " --output preview\n# then run it:\n#   abrade run " << o.output
+        << "\nset Job   = lifetime\nset Walls = container, part\n\n"
+        << "subsection Output\n  set Directory         = output-" << std::filesystem::path(o.part).stem().string()
+        << "\n  set Snapshot interval = 0\n  set Write particles   = false\nend\n\n"
+        << "subsection Simulation\n"
+        << "  # the container and " << n(0.05, 2) << " m around it\n"
+        << "  set Domain min = " << vec(d.x_min - 0.05, d.y_min - 0.05, -0.05) << "\n"
+        << "  set Domain max = " << vec(-d.x_min + 0.05, -d.y_min + 0.05, d.top + 0.05) << "\n"
+        << "  # from its start above the poured particles quickly down to " << n(d.surface, 3) << " m (approach), then\n"
+        << "  # " << n(d.depth, 3) << " m into the bed (its surface at about " << n(d.bed, 3) << " m; penetration), then along x (travel)\n"
+        << "  set Phases     = approach: " << n((d.start_z - d.surface) / d.approach_speed, 5)
+        << ", penetration: " << n((d.surface - (d.bed - d.depth)) / o.speed, 5) << ", travel: " << n(d.travel / o.speed, 5) << "\n"
+        << "  set Characteristic velocity = " << n(o.speed, 3) << "\n"
+        << "  # (the knife-bed's: the pour's impacts of coarse-grained particles reach 30 % of a radius; such\n"
+        << "  # overlaps are counted per update in trajectory.csv and warned about, not fatal)\n"
+        << "  set Maximum overlap fraction = 0.3\n  set On error = continue\n"
+        << "  set Threads    = 0\nend\n\n"
+        << "subsection Particles\n"
+        << "  # " << m.source << "\n"
+        << "  subsection Material\n    set Density         = " << n(m.density) << "\n"
+        << "    set Shear modulus   = 1e8\n    set Poisson's ratio = 0.25\n"
+        << "    # rotation-locked spheres stand in for the grains' interlocking (the thesis' choice)\n"
+        << "    set Rotation        = false\n  end\n"
+        << "  subsection Interaction\n    set Restitution = " << n(m.restitution, 3) << "\n    set Friction    = "
+        << n(m.friction, 3) << "\n  end\n"
+        << "  subsection Generation\n"
+        << "    # poured from below the part's start at a solid fraction of 0.3; the bed settles to about "
+        << n(d.bed, 3) << " m\n"
+        << "    set Region min       = " << vec(d.x_min + 2 * d.r, d.y_min + 2 * d.r, d.region_low) << "\n"
+        << "    set Region max       = " << vec(-d.x_min - 2 * d.r, -d.y_min - 2 * d.r, d.region_high) << "\n"
+        << "    set Radius           = " << n(m.radius, 4) << "\n"
+        << "    set Solid fraction   = " << n(d.pour_fraction, 2) << "\n"
+        << "    set Initial velocity = 0, 0, -0.5\n  end\n"
+        << "  subsection Coarse graining\n"
+        << "    # the real " << n(1000 * m.radius, 3) << " mm radius times " << n(d.factor, 3)
+        << ": about " << o.particles << " particles in the bed (docs/coarse-graining.md: W holds for the\n"
+        << "    # size it was fitted at)\n    set Factor = " << n(d.factor, 3) << "\n  end\n"
+        << "  subsection Settling\n    # a fall through the pour region's height and 0.3 s\n"
+        << "    set Kinetic energy threshold = 0\n    set Maximum time             = " << n(d.settle, 3) << "\n  end\nend\n\n"
+        << "subsection Wall container\n  set Geometry = box\n"
+        << "  set Box min  = " << vec(d.x_min, d.y_min, 0) << "\n  set Box max  = " << vec(-d.x_min, -d.y_min, d.top) << "\n"
+        << "  subsection Interaction\n    set Restitution = " << n(m.restitution, 3) << "\n    set Friction    = "
+        << n(m.friction, 3) << "\n  end\nend\n\n"
+        << "subsection Wall part\n  # the part (subsection Knife) placed at its start, above the bed\n"
+        << "  set Geometry = solid model\n  set Offset   = " << vec(d.start_x, 0, d.start_z) << "\n"
+        << "  subsection Interaction\n    set Restitution = " << n(m.restitution, 3) << "\n    set Friction    = "
+        << n(m.wall_friction, 3) << "\n  end\n"
+        << "  subsection Wear\n    set Laws = archard\n    subsection Archard\n"
+        << "      # the knife-bed's W for steel in iron-ore pellets: calibrate it (abrade calibrate)\n"
+        << "      set Coefficient = 2e-14\n    end\n  end\n"
+        << "  subsection Motion\n    set Type       = prescribed\n"
+        << "    set Velocities = approach: 0, 0, " << n(-d.approach_speed, 3) << "; penetration: 0, 0, " << n(-o.speed, 3)
+        << "; travel: " << n(o.speed, 3) << ", 0, 0\n"
+        << "  end\nend\n\n"
+        << "subsection Knife\n  set Geometry  = file\n  set File      = " << part_path << "\n";
+      if (o.file_scale != 1)
+        f << "  set File scale = " << n(o.file_scale, 6) << "\n";
+      f << "  set Place     = lowest point at z = 0, centred\n"
+        << "  # about the plate thickness, at most a tenth of the part (the knife-bed's: 20 mm for 30 mm)\n"
+        << "  set Mesh size = " << n(std::clamp(d.thickness, 0.002, 0.1 * std::max({lx, ly, lz})), 2) << "\n"
+        << "  # the faces bolted or welded on (none: every face wears); abrade preview shows them\n"
+        << "  set Clamped faces  = " << o.clamped << "\n  set Wearable faces = " << o.wearable << "\nend\n\n"
+        << "subsection Lifetime\n"
+        << "  # the swept volume (the part's width x its depth in the bed x the travel, " << n(ly, 3) << " x "
+        << n(d.depth, 3) << " x " << n(d.travel, 3) << " m)\n  # x the bulk density (" << n(d.bulk, 4)
+        << " kg/m^3): no payload measured; a measured one replaces it\n"
+        << "  set Tonnes per cycle = " << n(d.tonnes, 4) << "\n"
+        << "  set Seeds            = ";
+      for (long b = 1; b <= o.beds; ++b)
+        f << (b > 1 ? ", " : "") << b;
+      f << "\n  # the end of life: half the plate thickness worn, a first guess: set the part's wear limit\n"
+        << "  set Maximum depth    = " << n(d.limit, 3) << "\n"
+        << "  set Maximum updates  = " << o.updates << "\n"
+        << "  # the recession the trajectory follows (point_recession, point_recession_2): the part's leading\n"
+        << "  # point (the furthest along x) and its lowest, in the part's frame after Knife/Place\n"
+        << "  set Recession points = " << vec(part.leading[0], part.leading[1], part.leading[2]);
+      if (part.leading.distance(part.lowest) > 0.01)
+        f << "; " << vec(part.lowest[0], part.lowest[1], part.lowest[2]);
+      f << "\n  # cross-sections at a quarter, the middle and three quarters of the part's length (x)\n"
+        << "  set Profile planes   = 0.25, 0.5, 0.75\nend\n";
+      return f.str();
+    }
+
+    /// @p text as @p path, written whole or not at all, then read back as a run reads it: its
+    /// bed checked (fill, memory, run size) before anything runs (a refused file is removed).
+    void write_and_check(const std::string &path, const std::string &text)
+    {
+      {
+        const std::string tmp = path + ".writing";
+        std::ofstream     file(tmp);
+        file << text;
+        file.close();
+        if (!file)
+          throw InputError(path, "could not be written");
+        std::filesystem::rename(tmp, path);
+      }
+      try
+        {
+          ParameterFile check(path, {});
+          read_dem_case(check);
+        }
+      catch (...)
+        {
+          std::error_code ec;
+          std::filesystem::remove(path, ec);
+          throw;
+        }
+    }
   } // namespace
 
   int run_case_command(const std::vector<std::string> &args)
   {
-    const Options o = parse(args);
-    const auto    m = std::find_if(std::begin(materials), std::end(materials),
-                                   [&](const Material &x) { return o.material == x.name; });
-    if (m == std::end(materials))
-      throw InputError("command line", "--material: iron-ore-pellets, gravel, coal or soil, got '" + o.material + "'");
+    const Options   o = parse(args);
+    const Material &m = material_named(o.material);
     // (the selectors as a run would take them: an error now, not after the bed)
     try
       {
@@ -209,173 +409,18 @@ namespace abrade::coupling
         throw InputError("command line", std::string("--clamped / --wearable: ") + e.what());
       }
 
-    // 1. the part
     std::error_code ec;
     if (!std::filesystem::is_regular_file(o.part, ec))
       throw InputError(o.part, "no such file");
     std::cout << "abrade case: reading " << o.part << " (meshed twice, coarsely)" << std::endl;
     const PartShape part = measure_part(o.part, o.file_scale);
-    const double    lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
-    const double    thickness = part.area > 0 ? 2 * part.volume / part.area : 0.1 * lz;
-
-    // 2. the drag
-    const double depth   = o.depth > 0 ? o.depth : 0.5 * lz;
-    const double travel  = o.travel > 0 ? o.travel : std::max(2 * lx, 1.0);
-    const double below   = std::max(0.25 * lz, 0.1);
-    const double bed     = depth + below;          // the settled bed's height
-    const double margin  = std::max(0.25 * std::max(lx, ly), 0.15);
-    const double length  = lx + travel + 2 * margin, width = ly + 2 * margin;
-    const double x_min   = -0.5 * length, y_min = -0.5 * width;
-
-    // 3. the particles: coarse-grained to about the count asked; poured from below the part
-    const double settled_solid = m->solid_fraction * length * width * bed; // [m^3]
-    const double r_sim  = std::cbrt(settled_solid / (double(o.particles) * 4.0 / 3.0 * M_PI));
-    const double factor = std::max(1.0, std::ceil(10 * r_sim / m->radius) / 10); // (one decimal)
-    const double r      = factor * m->radius;                                // simulated radius
-    const double pour_fraction = 0.3;
-    const double pour   = bed * m->solid_fraction / pour_fraction; // the region's height
-    const double region_low = 2 * r, region_high = region_low + pour;
-    const double start_z = region_high + 2 * r;                      // the part's lowest point
-    const double top     = start_z + lz + std::max(0.1, 4 * r);
-    const double settle  = std::sqrt(2 * pour / 9.81) + 0.3;
-    const double surface = bed + 2 * r + 0.05; // the approach ends above the bed, at speed
-    const double approach_speed = std::max(4.0, o.speed);
-    const double start_x = x_min + margin + 0.5 * lx;
-    const double bulk    = m->solid_fraction * m->density;             // [kg/m^3]
-    const double tonnes  = 1e-3 * bulk * ly * depth * travel;           // the swept volume's
-    const double limit   = std::max(0.002, 0.5 * thickness);
-
-    // 4. the file
-    std::filesystem::path out(o.output);
-    // (the part by a relative name when it lies beside the file or below it: the two move
-    // together; else by its absolute name)
-    std::string part_path = std::filesystem::absolute(o.part).lexically_normal().string();
-    {
-      const auto dir = std::filesystem::absolute(out).parent_path();
-      const auto rel = std::filesystem::absolute(o.part).lexically_normal().lexically_relative(dir);
-      if (!rel.empty() && rel.begin()->string() != "..")
-        part_path = rel.string();
-    }
-    std::ostringstream f;
-    auto n = [](double x, int digits = 4) { return io::format_number(x, digits); };
-    f << "# A lifetime case around " << o.part << ", written by abrade case:\n#   abrade case";
-    for (const auto &a : args)
-      f << ' ' << (a.find(' ') != std::string::npos ? "\"" + a + "\"" : a);
-    f << "\n#\n# The part (placed: its lowest point at z = 0, the bounding box centred): " << n(lx) << " x " << n(ly)
-      << " x " << n(lz) << " m, " << n(part.volume) << " m^3, surface " << n(part.area)
-      << " m^2, plate thickness about 2 V / A = " << n(1000 * thickness, 3) << " mm.\n"
-      << "# It is dragged as the knife-bed drags its knife: down into the bed by " << n(depth, 3)
-      << " m, then along +x by " << n(travel, 3) << " m, at " << n(o.speed, 3) << " m/s.\n"
-      << "# What it cannot know, set before a life is booked: which faces are clamped (Knife/Clamped\n"
-      << "# faces), the end of life (Lifetime/Maximum depth, ...), W (calibrate it: abrade calibrate), the\n"
-      << "# tonnes per cycle if a payload is measured. See it first:\n"
-      << "#   abrade preview " << o.output << " --output preview\n# then run it:\n#   abrade run " << o.output
-      << "\nset Job   = lifetime\nset Walls = container, part\n\n"
-      << "subsection Output\n  set Directory         = output-" << std::filesystem::path(o.part).stem().string()
-      << "\n  set Snapshot interval = 0\n  set Write particles   = false\nend\n\n"
-      << "subsection Simulation\n"
-      << "  # the container and " << n(0.05, 2) << " m around it\n"
-      << "  set Domain min = " << vec(x_min - 0.05, y_min - 0.05, -0.05) << "\n"
-      << "  set Domain max = " << vec(-x_min + 0.05, -y_min + 0.05, top + 0.05) << "\n"
-      << "  # from its start above the poured particles quickly down to " << n(surface, 3) << " m (approach), then\n"
-      << "  # " << n(depth, 3) << " m into the bed (its surface at about " << n(bed, 3) << " m; penetration), then along x (travel)\n"
-      << "  set Phases     = approach: " << n((start_z - surface) / approach_speed, 5)
-      << ", penetration: " << n((surface - (bed - depth)) / o.speed, 5) << ", travel: " << n(travel / o.speed, 5) << "\n"
-      << "  set Characteristic velocity = " << n(o.speed, 3) << "\n"
-      << "  # (the knife-bed's: the pour's impacts of coarse-grained particles reach 30 % of a radius; such\n"
-      << "  # overlaps are counted per update in trajectory.csv and warned about, not fatal)\n"
-      << "  set Maximum overlap fraction = 0.3\n  set On error = continue\n"
-      << "  set Threads    = 0\nend\n\n"
-      << "subsection Particles\n"
-      << "  # " << m->source << "\n"
-      << "  subsection Material\n    set Density         = " << n(m->density) << "\n"
-      << "    set Shear modulus   = 1e8\n    set Poisson's ratio = 0.25\n"
-      << "    # rotation-locked spheres stand in for the grains' interlocking (the thesis' choice)\n"
-      << "    set Rotation        = false\n  end\n"
-      << "  subsection Interaction\n    set Restitution = " << n(m->restitution, 3) << "\n    set Friction    = "
-      << n(m->friction, 3) << "\n  end\n"
-      << "  subsection Generation\n"
-      << "    # poured from below the part's start at a solid fraction of 0.3; the bed settles to about "
-      << n(bed, 3) << " m\n"
-      << "    set Region min       = " << vec(x_min + 2 * r, y_min + 2 * r, region_low) << "\n"
-      << "    set Region max       = " << vec(-x_min - 2 * r, -y_min - 2 * r, region_high) << "\n"
-      << "    set Radius           = " << n(m->radius, 4) << "\n"
-      << "    set Solid fraction   = " << n(pour_fraction, 2) << "\n"
-      << "    set Initial velocity = 0, 0, -0.5\n  end\n"
-      << "  subsection Coarse graining\n"
-      << "    # the real " << n(1000 * m->radius, 3) << " mm radius times " << n(factor, 3)
-      << ": about " << o.particles << " particles in the bed (docs/coarse-graining.md: W holds for the\n"
-      << "    # size it was fitted at)\n    set Factor = " << n(factor, 3) << "\n  end\n"
-      << "  subsection Settling\n    # a fall through the pour region's height and 0.3 s\n"
-      << "    set Kinetic energy threshold = 0\n    set Maximum time             = " << n(settle, 3) << "\n  end\nend\n\n"
-      << "subsection Wall container\n  set Geometry = box\n"
-      << "  set Box min  = " << vec(x_min, y_min, 0) << "\n  set Box max  = " << vec(-x_min, -y_min, top) << "\n"
-      << "  subsection Interaction\n    set Restitution = " << n(m->restitution, 3) << "\n    set Friction    = "
-      << n(m->friction, 3) << "\n  end\nend\n\n"
-      << "subsection Wall part\n  # the part (subsection Knife) placed at its start, above the bed\n"
-      << "  set Geometry = solid model\n  set Offset   = " << vec(start_x, 0, start_z) << "\n"
-      << "  subsection Interaction\n    set Restitution = " << n(m->restitution, 3) << "\n    set Friction    = "
-      << n(m->wall_friction, 3) << "\n  end\n"
-      << "  subsection Wear\n    set Laws = archard\n    subsection Archard\n"
-      << "      # the knife-bed's W for steel in iron-ore pellets: calibrate it (abrade calibrate)\n"
-      << "      set Coefficient = 2e-14\n    end\n  end\n"
-      << "  subsection Motion\n    set Type       = prescribed\n"
-      << "    set Velocities = approach: 0, 0, " << n(-approach_speed, 3) << "; penetration: 0, 0, " << n(-o.speed, 3)
-      << "; travel: " << n(o.speed, 3) << ", 0, 0\n"
-      << "  end\nend\n\n"
-      << "subsection Knife\n  set Geometry  = file\n  set File      = " << part_path << "\n";
-    if (o.file_scale != 1)
-      f << "  set File scale = " << n(o.file_scale, 6) << "\n";
-    f << "  set Place     = lowest point at z = 0, centred\n"
-      << "  # about the plate thickness, at most a tenth of the part (the knife-bed's: 20 mm for 30 mm)\n"
-      << "  set Mesh size = " << n(std::clamp(thickness, 0.002, 0.1 * std::max({lx, ly, lz})), 2) << "\n"
-      << "  # the faces bolted or welded on (none: every face wears); abrade preview shows them\n"
-      << "  set Clamped faces  = " << o.clamped << "\n  set Wearable faces = " << o.wearable << "\nend\n\n"
-      << "subsection Lifetime\n"
-      << "  # the swept volume (the part's width x its depth in the bed x the travel, " << n(ly, 3) << " x "
-      << n(depth, 3) << " x " << n(travel, 3) << " m)\n  # x the bulk density (" << n(bulk, 4)
-      << " kg/m^3): no payload measured; a measured one replaces it\n"
-      << "  set Tonnes per cycle = " << n(tonnes, 4) << "\n"
-      << "  set Seeds            = ";
-    for (long b = 1; b <= o.beds; ++b)
-      f << (b > 1 ? ", " : "") << b;
-    f << "\n  # the end of life: half the plate thickness worn, a first guess: set the part's wear limit\n"
-      << "  set Maximum depth    = " << n(limit, 3) << "\n"
-      << "  set Maximum updates  = " << o.updates << "\n"
-      << "  # the recession the trajectory follows (point_recession, point_recession_2): the part's leading\n"
-      << "  # point (the furthest along x) and its lowest, in the part's frame after Knife/Place\n"
-      << "  set Recession points = " << vec(part.leading[0], part.leading[1], part.leading[2]);
-    if (part.leading.distance(part.lowest) > 0.01)
-      f << "; " << vec(part.lowest[0], part.lowest[1], part.lowest[2]);
-    f << "\n  # cross-sections at a quarter, the middle and three quarters of the part's length (x)\n"
-      << "  set Profile planes   = 0.25, 0.5, 0.75\nend\n";
-
-    // written whole or not at all, then read back as a run reads it: its bed checked (fill,
-    // memory, run size) before anything runs
-    {
-      const std::string tmp = o.output + ".writing";
-      std::ofstream     file(tmp);
-      file << f.str();
-      file.close();
-      if (!file)
-        throw InputError(o.output, "could not be written");
-      std::filesystem::rename(tmp, o.output);
-    }
-    try
-      {
-        ParameterFile check(o.output, {});
-        read_dem_case(check);
-      }
-    catch (...)
-      {
-        std::filesystem::remove(o.output, ec);
-        throw;
-      }
+    const Drag      drag(part, o, m);
+    write_and_check(o.output, case_text(args, o, part, drag, m));
     std::printf("abrade case: %s written: the part %.3g x %.3g x %.3g m dragged %.3g m through a %.3g x %.3g x %.3g m "
                 "bed of %s (%.1f mm particles coarse-grained %.3gx, about %ld), %.4g t a cycle (the swept volume; "
                 "no payload measured)\n  next: abrade preview %s --output preview\n",
-                o.output.c_str(), lx, ly, lz, travel, length, width, bed, m->name, 1000 * m->radius, factor,
-                o.particles, tonnes, o.output.c_str());
+                o.output.c_str(), part.extent[0], part.extent[1], part.extent[2], drag.travel, drag.length, drag.width,
+                drag.bed, m.name, 1000 * m.radius, drag.factor, o.particles, drag.tonnes, o.output.c_str());
     return 0;
   }
 } // namespace abrade::coupling
