@@ -17,6 +17,7 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <sys/personality.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -85,11 +86,159 @@ namespace abrade::fem
         tail += (tail.empty() ? "" : " | ") + lines[k].substr(0, 200);
       return tail;
     }
+
+    /// The caller's time limit, else ABRADE_MESHER_TIME_LIMIT's, else 1800 s.
+    double time_limit_of(const MeshingJob &job)
+    {
+      double time_limit = job.time_limit;
+      if (const char *e = std::getenv("ABRADE_MESHER_TIME_LIMIT"); time_limit <= 0 && e && std::atof(e) > 0)
+        time_limit = std::atof(e);
+      return time_limit > 0 ? time_limit : 1800;
+    }
+
+    /// The files beside the job's output: the child's notes, its error (an input error it
+    /// found) and its log (what Gmsh said).
+    struct ChildFiles
+    {
+      explicit ChildFiles(const MeshingJob &job)
+        : notes(job.output + ".notes"), error(job.output + ".error"), log(job.output + ".log")
+      {}
+      std::string notes, error, log;
+    };
+
+    /// @p mesher started on @p job in a process group of its own, its output into @p log_file;
+    /// its process id.
+    pid_t start_mesher(const std::string &mesher, const MeshingJob &job, const std::string &log_file)
+    {
+      // everything the child needs, made before fork (after it only async-signal-safe calls)
+      const auto &s = job.settings;
+      std::vector<std::string> args = {mesher,
+                                       job.input,
+                                       job.output,
+                                       number(job.mesh_size),
+                                       job.again ? "1" : "0",
+                                       job.keep_triangles ? "1" : "0",
+                                       number(s.scale),
+                                       number(s.max_extent),
+                                       number(s.min_extent),
+                                       number(s.max_volume),
+                                       number(s.max_cells),
+                                       s.solid.empty() ? "-" : s.solid,
+                                       job.kind,
+                                       number(s.classify_angle)};
+      std::vector<char *> argv;
+      for (auto &a : args)
+        argv.push_back(a.data());
+      argv.push_back(nullptr);
+      // the child is no MPI rank: without the launcher's variables an MPI library it loads does
+      // not try to join the parent's job
+      std::vector<std::string> env;
+      for (char **e = environ; *e; ++e)
+        {
+          const std::string v = *e;
+          if (v.rfind("OMPI_", 0) != 0 && v.rfind("PMIX_", 0) != 0 && v.rfind("PMI_", 0) != 0)
+            env.push_back(v);
+        }
+      std::vector<char *> envp;
+      for (auto &v : env)
+        envp.push_back(v.data());
+      envp.push_back(nullptr);
+      const int log = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+      if (log < 0)
+        throw RunError("cannot write " + log_file);
+
+      // while it waits, SIGTERM and Ctrl-C end the run (and with it the child) at once, also
+      // where OpenCASCADE's checks of a CAD file, just before, set handlers of their own
+      io::install_termination_handlers();
+      const pid_t parent = ::getpid();
+      const pid_t pid    = ::fork();
+      if (pid < 0)
+        {
+          ::close(log);
+          throw RunError(std::string("cannot start the mesher: ") + std::strerror(errno));
+        }
+      if (pid == 0)
+        {
+          ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the run, whatever ends it
+          if (::getppid() != parent)
+            ::_exit(127);
+          ::setpgid(0, 0); // a group of its own, which a time-out ends whole
+          for (const int signal : {SIGINT, SIGTERM, SIGHUP}) // not the run's handlers (summary.json)
+            ::signal(signal, SIG_DFL);
+          ::dup2(log, 1);
+          ::dup2(log, 2);
+          const int null = ::open("/dev/null", O_RDONLY);
+          if (null >= 0)
+            ::dup2(null, 0);
+          for (int fd = 3; fd < 1024; ++fd) // nothing of the run's (its output pipes) stays open
+            ::close(fd);
+          // the same mesh from the same surface, run after run: Gmsh's HXT mesher orders by
+          // memory addresses (one thread, one STL: another mesh in every run, the same one with
+          // the addresses fixed), so the child's are not randomised (where the kernel refuses,
+          // it meshes as before)
+          ::personality(ADDR_NO_RANDOMIZE);
+          ::execve(argv[0], argv.data(), envp.data());
+          ::_exit(127);
+        }
+      ::close(log);
+      ::setpgid(pid, pid); // (also here: no race with the child's own call)
+      return pid;
+    }
+
+    /// The child's exit status, once it has ended; past @p time_limit seconds its group is
+    /// killed and the job refused.
+    int wait_for(pid_t pid, double time_limit, const MeshingJob &job)
+    {
+      int        status  = 0;
+      const auto started = std::chrono::steady_clock::now();
+      for (auto pause = std::chrono::milliseconds(1);; pause = std::min(2 * pause, std::chrono::milliseconds(50)))
+        {
+          const pid_t done = ::waitpid(pid, &status, WNOHANG);
+          if (done == pid)
+            return status;
+          if (done < 0 && errno != EINTR)
+            throw RunError(std::string("lost the mesher process: ") + std::strerror(errno));
+          if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > time_limit)
+            {
+              ::kill(-pid, SIGKILL);
+              ::kill(pid, SIGKILL);
+              while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+                ;
+              std::filesystem::remove(job.output);
+              throw InputError(job.input, "Gmsh did not finish meshing it within " + io::format_number(time_limit) +
+                                            " s (stopped; ABRADE_MESHER_TIME_LIMIT sets the limit)");
+            }
+          std::this_thread::sleep_for(pause);
+        }
+    }
+
+    /// What the child's exit @p status and files say: its notes (meshed), the input error it
+    /// wrote, or how it crashed with the last lines of its log.
+    std::vector<std::string> outcome(int status, const MeshingJob &job, const ChildFiles &files)
+    {
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(job.output))
+        {
+          std::filesystem::remove(files.log);
+          auto notes = lines_of(read_text(files.notes));
+          std::filesystem::remove(files.notes);
+          return notes;
+        }
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 2 && std::filesystem::exists(files.error))
+        {
+          const std::string what = read_text(files.error);
+          std::filesystem::remove(files.error);
+          std::filesystem::remove(files.log);
+          throw InputError("", what); // it names the file itself
+        }
+      const std::string tail = log_tail(files.log);
+      const std::string how  = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"
+                                                   : "failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
+      throw InputError(job.input, "Gmsh " + how + " meshing it" + (tail.empty() ? "" : ": " + tail));
+    }
   } // namespace
 
   std::vector<std::string> run_meshing_job(const MeshingJob &job)
   {
-    double time_limit = job.time_limit; // the caller's, else the environment's, else 1800 s
     const std::string mesher = mesher_executable();
     if (mesher.empty())
       {
@@ -97,122 +246,12 @@ namespace abrade::fem
         notes.push_back("meshed in this process (abrade-mesher not found: set ABRADE_MESHER)");
         return notes;
       }
-    if (const char *e = std::getenv("ABRADE_MESHER_TIME_LIMIT"); time_limit <= 0 && e && std::atof(e) > 0)
-      time_limit = std::atof(e);
-    if (time_limit <= 0)
-      time_limit = 1800;
-    const std::string notes_file = job.output + ".notes", error_file = job.output + ".error",
-                      log_file = job.output + ".log";
-    for (const auto &f : {job.output, notes_file, error_file})
+    const double     time_limit = time_limit_of(job);
+    const ChildFiles files(job);
+    for (const auto &f : {job.output, files.notes, files.error})
       std::filesystem::remove(f);
-
-    // everything the child needs, made before fork (after it only async-signal-safe calls)
-    const auto &s = job.settings;
-    std::vector<std::string> args = {mesher,
-                                     job.input,
-                                     job.output,
-                                     number(job.mesh_size),
-                                     job.again ? "1" : "0",
-                                     job.keep_triangles ? "1" : "0",
-                                     number(s.scale),
-                                     number(s.max_extent),
-                                     number(s.min_extent),
-                                     number(s.max_volume),
-                                     number(s.max_cells),
-                                     s.solid.empty() ? "-" : s.solid,
-                                     job.kind,
-                                     number(s.classify_angle)};
-    std::vector<char *> argv;
-    for (auto &a : args)
-      argv.push_back(a.data());
-    argv.push_back(nullptr);
-    // the child is no MPI rank: without the launcher's variables an MPI library it loads does
-    // not try to join the parent's job
-    std::vector<std::string> env;
-    for (char **e = environ; *e; ++e)
-      {
-        const std::string v = *e;
-        if (v.rfind("OMPI_", 0) != 0 && v.rfind("PMIX_", 0) != 0 && v.rfind("PMI_", 0) != 0)
-          env.push_back(v);
-      }
-    std::vector<char *> envp;
-    for (auto &v : env)
-      envp.push_back(v.data());
-    envp.push_back(nullptr);
-    const int log = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (log < 0)
-      throw RunError("cannot write " + log_file);
-
-    // while it waits, SIGTERM and Ctrl-C end the run (and with it the child) at once, also
-    // where OpenCASCADE's checks of a CAD file, just before, set handlers of their own
-    io::install_termination_handlers();
-    const pid_t parent = ::getpid();
-    const pid_t pid    = ::fork();
-    if (pid < 0)
-      {
-        ::close(log);
-        throw RunError(std::string("cannot start the mesher: ") + std::strerror(errno));
-      }
-    if (pid == 0)
-      {
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the run, whatever ends it
-        if (::getppid() != parent)
-          ::_exit(127);
-        ::setpgid(0, 0); // a group of its own, which a time-out ends whole
-        for (const int signal : {SIGINT, SIGTERM, SIGHUP}) // not the run's handlers (summary.json)
-          ::signal(signal, SIG_DFL);
-        ::dup2(log, 1);
-        ::dup2(log, 2);
-        const int null = ::open("/dev/null", O_RDONLY);
-        if (null >= 0)
-          ::dup2(null, 0);
-        for (int fd = 3; fd < 1024; ++fd) // nothing of the run's (its output pipes) stays open
-          ::close(fd);
-        ::execve(argv[0], argv.data(), envp.data());
-        ::_exit(127);
-      }
-    ::close(log);
-    ::setpgid(pid, pid); // (also here: no race with the child's own call)
-
-    int        status  = 0;
-    const auto started = std::chrono::steady_clock::now();
-    for (auto pause = std::chrono::milliseconds(1);; pause = std::min(2 * pause, std::chrono::milliseconds(50)))
-      {
-        const pid_t done = ::waitpid(pid, &status, WNOHANG);
-        if (done == pid)
-          break;
-        if (done < 0 && errno != EINTR)
-          throw RunError(std::string("lost the mesher process: ") + std::strerror(errno));
-        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > time_limit)
-          {
-            ::kill(-pid, SIGKILL);
-            ::kill(pid, SIGKILL);
-            while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
-              ;
-            std::filesystem::remove(job.output);
-            throw InputError(job.input, "Gmsh did not finish meshing it within " + io::format_number(time_limit) +
-                                          " s (stopped; ABRADE_MESHER_TIME_LIMIT sets the limit)");
-          }
-        std::this_thread::sleep_for(pause);
-      }
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(job.output))
-      {
-        std::filesystem::remove(log_file);
-        auto notes = lines_of(read_text(notes_file));
-        std::filesystem::remove(notes_file);
-        return notes;
-      }
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 2 && std::filesystem::exists(error_file))
-      {
-        const std::string what = read_text(error_file);
-        std::filesystem::remove(error_file);
-        std::filesystem::remove(log_file);
-        throw InputError("", what); // it names the file itself
-      }
-    const std::string tail = log_tail(log_file);
-    const std::string how  = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"
-                                                 : "failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
-    throw InputError(job.input, "Gmsh " + how + " meshing it" + (tail.empty() ? "" : ": " + tail));
+    const pid_t pid = start_mesher(mesher, job, files.log);
+    return outcome(wait_for(pid, time_limit, job), job, files);
   }
 
   int meshing_job_main(int argc, char **argv)

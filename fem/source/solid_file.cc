@@ -197,14 +197,14 @@ namespace abrade::fem
       // where the Delaunay mesher's do (a 30 mm plate at 20 mm: scaled Jacobian 3.5e-5 -> 0.2),
       // then Gmsh's optimisers on every cell below 0.5 (Debian's Gmsh has no Netgen optimiser)
       gmsh::option::setNumber("Mesh.Algorithm3D", again || fill ? 10 : 1);
+      // HXT on one thread: with more its mesh depends on the threads' timing (the child's
+      // addresses are fixed for the rest: meshing_job.cc), and its threads spin on a busy
+      // machine (two threads under a load of 6 on two cores ran into the 120 s limit); on two
+      // idle cores a fill took 3.5 s instead of 3.3 s
+      gmsh::option::setNumber("General.NumThreads", 1);
+      gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
       if (fill && !again)
-        {
-          gmsh::option::setNumber("Mesh.Optimize", 0);
-          // one thread: 3.5 s instead of 3.3 s on two idle cores, and no spinning threads on
-          // a busy machine (two threads under a load of 6 on two cores ran into the 120 s limit)
-          gmsh::option::setNumber("General.NumThreads", 1);
-          gmsh::option::setNumber("Mesh.MaxNumThreads3D", 1);
-        }
+        gmsh::option::setNumber("Mesh.Optimize", 0);
       gmsh::model::mesh::generate(3);
       if (again)
         {
