@@ -798,6 +798,209 @@ namespace abrade::fem
     }
   } // namespace
 
+  namespace
+  {
+    /// A user's .msh file: Gmsh reads it in the mesher process and writes it again as .msh
+    /// 2.2 (its face names in the notes), deal.II reads that; hexahedra split into
+    /// tetrahedra, scaled, its extent and volume checked.
+    void read_user_msh(const std::string &path, const SolidFileSettings &settings, Triangulation<3> &tria,
+                       SolidFileReport &report)
+    {
+      const std::string clean = (std::filesystem::path(work_directory(settings)) /
+                                 ("abrade-msh-" + std::to_string(::getpid()) + "-" +
+                                  std::filesystem::path(path).filename().string()))
+                                  .string();
+      // Gmsh reads the user's file in the mesher process (meshing_job.h): a file that makes
+      // its reader crash or loop costs the child
+      MeshingJob job{path, clean, 0, false, false, settings, settings.mesher_time_limit};
+      job.kind = "msh";
+      for (const auto &note : run_meshing_job(job))
+        if (note.rfind(face_name_prefix, 0) == 0)
+          {
+            std::istringstream words(note.substr(face_name_prefix.size()));
+            unsigned           id = 0;
+            std::string        name;
+            words >> id;
+            std::getline(words >> std::ws, name);
+            report.face_names[types::boundary_id(id)] = name;
+          }
+      try
+        {
+          read_msh_file(clean, tria);
+        }
+      catch (const InputError &e)
+        {
+          std::filesystem::remove(clean);
+          const std::string what = e.what(); // named after the clean copy: name the user's file
+          throw InputError(path, what.substr(what.find(": ") + 2));
+        }
+      std::filesystem::remove(clean);
+      check_one_solid(path, tria);
+      bool hexahedra = false;
+      for (const auto &cell : tria.active_cell_iterators())
+        hexahedra = hexahedra || !cell->reference_cell().is_simplex();
+      if (hexahedra)
+        {
+          // the part model (mesh motion, remeshing, checkpoints) works on tetrahedra: each
+          // hexahedron becomes tetrahedra (deal.II), boundary ids kept
+          Triangulation<3> tets;
+          GridGenerator::convert_hypercube_to_simplex_mesh(tria, tets);
+          tria.clear();
+          tria.copy_triangulation(tets);
+          report.notes.push_back("hexahedra split into " + std::to_string(tria.n_active_cells()) + " tetrahedra");
+        }
+      if (settings.scale != 1)
+        GridTools::scale(settings.scale, tria);
+      const BoundingBox<3> b = GridTools::compute_bounding_box(tria);
+      check_extent(path, {b.lower_bound(0), b.lower_bound(1), b.lower_bound(2), b.upper_bound(0), b.upper_bound(1),
+                          b.upper_bound(2)},
+                   1.0, settings, false);
+      check_volume(path, mesh_volume(tria), 0, settings);
+    }
+
+    /// A CAD file or a closed STL surface meshed by Gmsh (in the mesher process) to @p h; a
+    /// mesh below the quality asked is meshed again (HXT and Gmsh's optimisers) and the better
+    /// one kept.
+    void mesh_cad_or_stl(const std::string &path, double h, bool cad, const SolidFileSettings &settings,
+                         Triangulation<3> &tria, SolidFileReport &report)
+    {
+      if (!(h > 0))
+        throw InputError(path, "meshing a CAD or STL solid needs a positive mesh size");
+      // a name of this process's own: MPI ranks and the parallel runs of a study mesh at once
+      static int        meshed = 0;
+      const std::string msh    = (std::filesystem::path(work_directory(settings)) /
+                               (std::filesystem::path(path).stem().string() + "-abrade-volume-" +
+                                std::to_string(::getpid()) + "-" + std::to_string(meshed++) + ".msh"))
+                                .string();
+      // the file's own length unit: h in it (STL), or the model scaled to metres first (CAD)
+      // Gmsh in its own process (meshing_job.h): a crash or a hang there is an InputError here
+      auto mesh = [&](bool again, Triangulation<3> &into) {
+        MeshingJob job{path, msh, h, again, false, settings, settings.mesher_time_limit};
+        for (const auto &note : run_meshing_job(job))
+          if (note.rfind(warning_prefix, 0) == 0)
+            report.warnings.push_back(note.substr(warning_prefix.size()));
+          else if (note.rfind(solids_prefix, 0) == 0)
+            report.n_solids = unsigned(std::stoul(note.substr(solids_prefix.size())));
+          else
+            report.notes.push_back(note);
+        read_msh_file(msh, into);
+        std::filesystem::remove(msh);
+        if (!cad && settings.scale != 1)
+          GridTools::scale(settings.scale, into);
+      };
+      mesh(false, tria);
+      const double first = mesh_quality(tria).min_scaled_jacobian;
+      if (first < settings.min_quality)
+        {
+          const auto       notes = report.notes; // the same notes again from the second pass
+          Triangulation<3> again;
+          try
+            {
+              mesh(true, again);
+            }
+          catch (const InputError &)
+            {
+              again.clear(); // the first mesh stays
+            }
+          report.notes       = notes;
+          const double other = again.n_active_cells() ? mesh_quality(again).min_scaled_jacobian : 0.0;
+          if (other > first)
+            {
+              tria.clear();
+              tria.copy_triangulation(again);
+            }
+          report.notes.push_back("minimum scaled Jacobian " + format_number(first) + ", " + format_number(other) +
+                                 " meshed again (Gmsh's HXT mesher and optimisers)" +
+                                 (other > first ? "" : " (not taken)"));
+        }
+    }
+
+    /// The part into place: rotated about the origin, its bounding box centred and its lowest
+    /// point at a height as Knife/Place says, then moved by Offset.
+    void place_part(const std::string &path, const SolidFileSettings &settings, Triangulation<3> &tria,
+                    SolidFileReport &report)
+    {
+      const Tensor<2, 3> r = [&] {
+        try
+          {
+            return rotation_matrix(settings.rotation_axis, settings.rotation_angle);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw InputError(path, e.what());
+          }
+      }();
+      if (settings.rotation_angle != 0)
+        GridTools::transform([&](const Point<3> &p) { return Point<3>(r * p); }, tria);
+      // Knife/Place: the rotated part's bounding box centred, its lowest point at a height
+      Tensor<1, 3> move = settings.offset;
+      {
+        const auto &pl = settings.place;
+        if (pl.lowest || pl.centred[0] || pl.centred[1] || pl.centred[2])
+          {
+            const BoundingBox<3> box = GridTools::compute_bounding_box(tria);
+            for (unsigned d = 0; d < 3; ++d)
+              if (pl.centred[d])
+                move[d] -= 0.5 * (box.lower_bound(d) + box.upper_bound(d));
+            if (pl.lowest)
+              move[2] += pl.lowest_z - box.lower_bound(2);
+            report.notes.push_back("Knife/Place '" + pl.text + "' moved the part by " + format_number(move[0] - settings.offset[0]) +
+                                   ", " + format_number(move[1] - settings.offset[1]) + ", " +
+                                   format_number(move[2] - settings.offset[2]) + " m (before Offset)");
+          }
+      }
+      if (move.norm() > 0)
+        GridTools::transform([&](const Point<3> &p) { return Point<3>(p + move); }, tria);
+    }
+
+    /// Inverted cells refused; a poor cell warned about, with the file's faces there and
+    /// whether one of them is a sliver a smaller mesh size cannot help.
+    void judge_quality(const std::string &path, double h, const std::string &ext, const SolidFileSettings &settings,
+                       const Triangulation<3> &tria, SolidFileReport &report)
+    {
+      report.quality = mesh_quality(tria);
+      if (report.quality.n_inverted > 0)
+        throw InputError(path, "the mesh has " + std::to_string(report.quality.n_inverted) +
+                                 " inverted cells (one near " + [&] {
+                                   std::ostringstream s;
+                                   s << cell_centre(tria, report.quality.worst_cell) << " m)";
+                                   return s.str();
+                                 }());
+      if (report.quality.min_scaled_jacobian < settings.min_quality)
+        {
+          std::ostringstream s;
+          s << "poor mesh: minimum scaled Jacobian " << format_number(report.quality.min_scaled_jacobian)
+            << " (below " << settings.min_quality << ") in cell " << report.quality.worst_cell << " near ("
+            << cell_centre(tria, report.quality.worst_cell) << ") m";
+          // the file's faces there, and whether one holds only a few elements (a sliver: a
+          // smaller mesh size does not help it, the CAD face must be cleaned or merged)
+          const auto  faces = faces_at_cell(tria, report.quality.worst_cell);
+          std::string slivers;
+          if (!faces.empty())
+            {
+              s << ", on the file's face(s) ";
+              bool first = true;
+              for (const auto &[id, area] : faces)
+                {
+                  s << (first ? "" : ", ") << id << " (" << format_number(area, 3) << " m^2)";
+                  first = false;
+                  if (h > 0 && area < 2 * h * h) // (a face of a few elements at most)
+                    slivers += (slivers.empty() ? "" : ", ") + std::to_string(id);
+                }
+            }
+          s << "; "
+            << (ext == ".msh" ? "improve the mesh in Gmsh (Mesh > Optimize 3D), or give the CAD file"
+                : !slivers.empty()
+                  ? "face(s) " + slivers + " hold only a few elements (below 2 Knife/Mesh size^2): a smaller mesh "
+                      "size only moves the poor cell; remove or merge them in the CAD tool (a face that continues "
+                      "its neighbour, a short edge where two solids were fused), or select them with the others "
+                      "(group " + slivers.substr(0, slivers.find(',')) + ") if the warning can stand"
+                  : "a smaller Knife/Mesh size there, or a cleaned CAD face there (slivers, short edges), helps");
+          report.warnings.push_back(s.str());
+        }
+    }
+  } // namespace
+
   SolidFileReport read_solid(const std::string &path, double h, Triangulation<3> &tria, const SolidFileSettings &settings)
   {
     if (!(settings.scale > 0))
@@ -807,186 +1010,13 @@ namespace abrade::fem
     SolidFileReport   report;
     const bool        cad = is_cad_file(path);
     if (ext == ".msh")
-      {
-        const std::string clean = (std::filesystem::path(work_directory(settings)) /
-                                   ("abrade-msh-" + std::to_string(::getpid()) + "-" +
-                                    std::filesystem::path(path).filename().string()))
-                                    .string();
-        // Gmsh reads the user's file in the mesher process (meshing_job.h): a file that makes
-        // its reader crash or loop costs the child
-        MeshingJob job{path, clean, 0, false, false, settings, settings.mesher_time_limit};
-        job.kind = "msh";
-        for (const auto &note : run_meshing_job(job))
-          if (note.rfind(face_name_prefix, 0) == 0)
-            {
-              std::istringstream words(note.substr(face_name_prefix.size()));
-              unsigned           id = 0;
-              std::string        name;
-              words >> id;
-              std::getline(words >> std::ws, name);
-              report.face_names[types::boundary_id(id)] = name;
-            }
-        try
-          {
-            read_msh_file(clean, tria);
-          }
-        catch (const InputError &e)
-          {
-            std::filesystem::remove(clean);
-            const std::string what = e.what(); // named after the clean copy: name the user's file
-            throw InputError(path, what.substr(what.find(": ") + 2));
-          }
-        std::filesystem::remove(clean);
-        check_one_solid(path, tria);
-        bool hexahedra = false;
-        for (const auto &cell : tria.active_cell_iterators())
-          hexahedra = hexahedra || !cell->reference_cell().is_simplex();
-        if (hexahedra)
-          {
-            // the part model (mesh motion, remeshing, checkpoints) works on tetrahedra: each
-            // hexahedron becomes tetrahedra (deal.II), boundary ids kept
-            Triangulation<3> tets;
-            GridGenerator::convert_hypercube_to_simplex_mesh(tria, tets);
-            tria.clear();
-            tria.copy_triangulation(tets);
-            report.notes.push_back("hexahedra split into " + std::to_string(tria.n_active_cells()) + " tetrahedra");
-          }
-        if (settings.scale != 1)
-          GridTools::scale(settings.scale, tria);
-        const BoundingBox<3> b = GridTools::compute_bounding_box(tria);
-        check_extent(path, {b.lower_bound(0), b.lower_bound(1), b.lower_bound(2), b.upper_bound(0), b.upper_bound(1),
-                            b.upper_bound(2)},
-                     1.0, settings, false);
-        check_volume(path, mesh_volume(tria), 0, settings);
-      }
+      read_user_msh(path, settings, tria, report);
     else if (cad || ext == ".stl")
-      {
-        if (!(h > 0))
-          throw InputError(path, "meshing a CAD or STL solid needs a positive mesh size");
-        // a name of this process's own: MPI ranks and the parallel runs of a study mesh at once
-        static int        meshed = 0;
-        const std::string msh    = (std::filesystem::path(work_directory(settings)) /
-                                 (std::filesystem::path(path).stem().string() + "-abrade-volume-" +
-                                  std::to_string(::getpid()) + "-" + std::to_string(meshed++) + ".msh"))
-                                  .string();
-        // the file's own length unit: h in it (STL), or the model scaled to metres first (CAD)
-        // Gmsh in its own process (meshing_job.h): a crash or a hang there is an InputError here
-        auto mesh = [&](bool again, Triangulation<3> &into) {
-          MeshingJob job{path, msh, h, again, false, settings, settings.mesher_time_limit};
-          for (const auto &note : run_meshing_job(job))
-            if (note.rfind(warning_prefix, 0) == 0)
-              report.warnings.push_back(note.substr(warning_prefix.size()));
-            else if (note.rfind(solids_prefix, 0) == 0)
-              report.n_solids = unsigned(std::stoul(note.substr(solids_prefix.size())));
-            else
-              report.notes.push_back(note);
-          read_msh_file(msh, into);
-          std::filesystem::remove(msh);
-          if (!cad && settings.scale != 1)
-            GridTools::scale(settings.scale, into);
-        };
-        mesh(false, tria);
-        const double first = mesh_quality(tria).min_scaled_jacobian;
-        if (first < settings.min_quality)
-          {
-            const auto       notes = report.notes; // the same notes again from the second pass
-            Triangulation<3> again;
-            try
-              {
-                mesh(true, again);
-              }
-            catch (const InputError &)
-              {
-                again.clear(); // the first mesh stays
-              }
-            report.notes       = notes;
-            const double other = again.n_active_cells() ? mesh_quality(again).min_scaled_jacobian : 0.0;
-            if (other > first)
-              {
-                tria.clear();
-                tria.copy_triangulation(again);
-              }
-            report.notes.push_back("minimum scaled Jacobian " + format_number(first) + ", " + format_number(other) +
-                                   " meshed again (Gmsh's HXT mesher and optimisers)" +
-                                   (other > first ? "" : " (not taken)"));
-          }
-      }
+      mesh_cad_or_stl(path, h, cad, settings, tria, report);
     else
       throw InputError(path, "unknown solid format '" + ext + "' (use .msh, .step/.stp, .iges/.igs or a closed .stl)");
-
-    // into place: rotated about the origin, then moved
-    const Tensor<2, 3> r = [&] {
-      try
-        {
-          return rotation_matrix(settings.rotation_axis, settings.rotation_angle);
-        }
-      catch (const std::invalid_argument &e)
-        {
-          throw InputError(path, e.what());
-        }
-    }();
-    if (settings.rotation_angle != 0)
-      GridTools::transform([&](const Point<3> &p) { return Point<3>(r * p); }, tria);
-    // Knife/Place: the rotated part's bounding box centred, its lowest point at a height
-    Tensor<1, 3> move = settings.offset;
-    {
-      const auto &pl = settings.place;
-      if (pl.lowest || pl.centred[0] || pl.centred[1] || pl.centred[2])
-        {
-          const BoundingBox<3> box = GridTools::compute_bounding_box(tria);
-          for (unsigned d = 0; d < 3; ++d)
-            if (pl.centred[d])
-              move[d] -= 0.5 * (box.lower_bound(d) + box.upper_bound(d));
-          if (pl.lowest)
-            move[2] += pl.lowest_z - box.lower_bound(2);
-          report.notes.push_back("Knife/Place '" + pl.text + "' moved the part by " + format_number(move[0] - settings.offset[0]) +
-                                 ", " + format_number(move[1] - settings.offset[1]) + ", " +
-                                 format_number(move[2] - settings.offset[2]) + " m (before Offset)");
-        }
-    }
-    if (move.norm() > 0)
-      GridTools::transform([&](const Point<3> &p) { return Point<3>(p + move); }, tria);
-
-    report.quality = mesh_quality(tria);
-    if (report.quality.n_inverted > 0)
-      throw InputError(path, "the mesh has " + std::to_string(report.quality.n_inverted) +
-                               " inverted cells (one near " + [&] {
-                                 std::ostringstream s;
-                                 s << cell_centre(tria, report.quality.worst_cell) << " m)";
-                                 return s.str();
-                               }());
-    if (report.quality.min_scaled_jacobian < settings.min_quality)
-      {
-        std::ostringstream s;
-        s << "poor mesh: minimum scaled Jacobian " << format_number(report.quality.min_scaled_jacobian)
-          << " (below " << settings.min_quality << ") in cell " << report.quality.worst_cell << " near ("
-          << cell_centre(tria, report.quality.worst_cell) << ") m";
-        // the file's faces there, and whether one holds only a few elements (a sliver: a
-        // smaller mesh size does not help it, the CAD face must be cleaned or merged)
-        const auto  faces = faces_at_cell(tria, report.quality.worst_cell);
-        std::string slivers;
-        if (!faces.empty())
-          {
-            s << ", on the file's face(s) ";
-            bool first = true;
-            for (const auto &[id, area] : faces)
-              {
-                s << (first ? "" : ", ") << id << " (" << format_number(area, 3) << " m^2)";
-                first = false;
-                if (h > 0 && area < 2 * h * h) // (a face of a few elements at most)
-                  slivers += (slivers.empty() ? "" : ", ") + std::to_string(id);
-              }
-          }
-        s << "; "
-          << (ext == ".msh" ? "improve the mesh in Gmsh (Mesh > Optimize 3D), or give the CAD file"
-              : !slivers.empty()
-                ? "face(s) " + slivers + " hold only a few elements (below 2 Knife/Mesh size^2): a smaller mesh "
-                    "size only moves the poor cell; remove or merge them in the CAD tool (a face that continues "
-                    "its neighbour, a short edge where two solids were fused), or select them with the others "
-                    "(group " + slivers.substr(0, slivers.find(',')) + ") if the warning can stand"
-                : "a smaller Knife/Mesh size there, or a cleaned CAD face there (slivers, short edges), helps");
-        report.warnings.push_back(s.str());
-      }
+    place_part(path, settings, tria, report);
+    judge_quality(path, h, ext, settings, tria, report);
     return report;
   }
 
