@@ -154,10 +154,12 @@ namespace abrade::coupling
     using P = dealii::Point<3>;
 
     /// The point of @p points with the largest first key; of those within a millimetre of it,
-    /// the one with the largest second key, and so on; of those left, the first in the order
-    /// of their coordinates. Neither the points' order nor their round-off decides (a
+    /// the one with the largest second key, and so on; of those left, one on the +y side, then
+    /// the first in the order of their coordinates. The points' order does not decide (a
     /// comparison of one point after another with a millimetre's tolerance did: along a
-    /// straight bottom edge the lowest point changed from run to run).
+    /// straight bottom edge the lowest point changed with the mesh's vertex order), nor does
+    /// round-off between mirror images; a point at a millimetre band's edge can still go
+    /// either way by round-off.
     P extreme(const std::vector<P> &points, const std::vector<std::function<double(const P &)>> &keys)
     {
       std::vector<P> left = points;
@@ -170,6 +172,8 @@ namespace abrade::coupling
                      left.end());
         }
       return *std::min_element(left.begin(), left.end(), [](const P &a, const P &b) {
+        if ((a[1] >= 0) != (b[1] >= 0))
+          return a[1] >= 0;
         return std::lexicographical_compare(a.begin_raw(), a.end_raw(), b.begin_raw(), b.end_raw());
       });
     }

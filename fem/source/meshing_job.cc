@@ -174,9 +174,16 @@ namespace abrade::fem
             ::close(fd);
           // the same mesh from the same surface, run after run: Gmsh's HXT mesher orders by
           // memory addresses (one thread, one STL: another mesh in every run, the same one with
-          // the addresses fixed), so the child's are not randomised (where the kernel refuses,
-          // it meshes as before)
-          ::personality(ADDR_NO_RANDOMIZE);
+          // the addresses fixed), so the child's are not randomised. Where that is refused (a
+          // container's seccomp profile: Docker's allows only a few personas) it meshes as
+          // before and says so in its log
+          const int persona = ::personality(0xffffffff);
+          if (persona == -1 || ::personality(static_cast<unsigned long>(persona) | ADDR_NO_RANDOMIZE) == -1)
+            {
+              const char refused[] = "abrade-mesher: fixed addresses refused (personality): the mesh may differ "
+                                     "from run to run\n";
+              [[maybe_unused]] const auto written = ::write(2, refused, sizeof refused - 1);
+            }
           ::execve(argv[0], argv.data(), envp.data());
           ::_exit(127);
         }

@@ -122,7 +122,8 @@ namespace abrade::fem::folds
                                           (p[e][1] - p[(e + 1) % 3][1]) * (p[e][1] - p[(e + 1) % 3][1]) +
                                           (p[e][2] - p[(e + 1) % 3][2]) * (p[e][2] - p[(e + 1) % 3][2]));
         const auto n = normal_of(p[0], p[1], p[2]);
-        if (std::sqrt(dot(n, n)) < std::max(ratio * longest2, height * std::sqrt(longest2))) // 2 area / longest
+        if (longest2 == 0 || // (its corners one point)
+            std::sqrt(dot(n, n)) < std::max(ratio * longest2, height * std::sqrt(longest2))) // 2 area / longest
           list.push_back(k);
       }
     return list;

@@ -21,6 +21,10 @@
 #include <gmsh.h>
 #include <gtest/gtest.h>
 
+#include <sys/personality.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -193,6 +197,20 @@ TEST(PartFiles, BoreByCylinder)
 // another remesh volume).
 TEST(PartFiles, TheSameJobMeshesTheSameEveryTime)
 {
+  // (a container whose seccomp profile refuses the fixed addresses: the mesher says so in its
+  // log and may mesh otherwise each time; skipped there)
+  if (const pid_t probe = ::fork(); probe == 0)
+    {
+      const int persona = ::personality(0xffffffff);
+      ::_exit(persona == -1 || ::personality(static_cast<unsigned long>(persona) | ADDR_NO_RANDOMIZE) == -1 ? 1 : 0);
+    }
+  else
+    {
+      int status = 0;
+      ::waitpid(probe, &status, 0);
+      if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        GTEST_SKIP() << "personality(ADDR_NO_RANDOMIZE) is refused here";
+    }
   MeshingJob job;
   job.input          = std::string(ABRADE_TESTS_DIR) + "/../cases/bolted_edge/edge.step";
   job.mesh_size      = 0.03;
