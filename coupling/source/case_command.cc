@@ -155,11 +155,10 @@ namespace abrade::coupling
 
     /// The point of @p points with the largest first key; of those within a millimetre of it,
     /// the one with the largest second key, and so on; of those left, one on the +y side, then
-    /// the first in the order of their coordinates. The points' order does not decide (a
-    /// comparison of one point after another with a millimetre's tolerance did: along a
-    /// straight bottom edge the lowest point changed with the mesh's vertex order), nor does
-    /// round-off between mirror images; a point at a millimetre band's edge can still go
-    /// either way by round-off.
+    /// the first in the order of their coordinates. The points' order does not decide (along
+    /// a straight bottom edge every vertex is as low as the next: comparing one point after
+    /// another would take whichever the mesh lists first), nor does round-off between mirror
+    /// images; a point at a millimetre band's edge can still go either way by round-off.
     P extreme(const std::vector<P> &points, const std::vector<std::function<double(const P &)>> &keys)
     {
       std::vector<P> left = points;

@@ -175,8 +175,8 @@ namespace abrade::fem
           // the same mesh from the same surface, run after run: Gmsh's HXT mesher orders by
           // memory addresses (one thread, one STL: another mesh in every run, the same one with
           // the addresses fixed), so the child's are not randomised. Where that is refused (a
-          // container's seccomp profile: Docker's allows only a few personas) it meshes as
-          // before and says so in its log
+          // container's seccomp profile: Docker's allows only a few personas) it meshes with
+          // randomised addresses and says so in its log
           const int persona = ::personality(0xffffffff);
           if (persona == -1 || ::personality(static_cast<unsigned long>(persona) | ADDR_NO_RANDOMIZE) == -1)
             {
