@@ -86,90 +86,117 @@ namespace abrade::dem
     return crossings % 2 == 1;
   }
 
-  long fill_region(Simulation &sim, const FillRegion &f)
+  namespace
   {
-    const double r_big  = f.sizes.largest();
-    const Vec3   extent = f.box_max - f.box_min;
-    if (!(r_big > 0) || !(extent.array() > 2 * r_big).all())
-      throw InputError("particle generation", "the fill box must be larger than a particle diameter in every direction");
-
-    // positions that would put a particle against (or inside) a wall are rejected
-    std::vector<std::pair<Vec3, Vec3>> boxes;
-    std::vector<char>                  closed;
-    for (const auto &m : f.avoid)
+    /// Whether a particle at a point is clear of the walls to avoid: outside a closed one, and
+    /// farther than 1.05 radii from every triangle of those whose box (grown by a diameter of
+    /// the largest particle) holds the point.
+    class WallClearance
+    {
+    public:
+      WallClearance(const std::vector<TriangleMesh> &avoid, double r_big)
+        : avoid(avoid)
       {
-        Vec3 lo, hi;
-        m.bounding_box(lo, hi);
-        closed.push_back(m.is_closed());
-        boxes.emplace_back(lo - Vec3::Constant(2 * r_big), hi + Vec3::Constant(2 * r_big));
+        for (const auto &m : avoid)
+          {
+            Vec3 lo, hi;
+            m.bounding_box(lo, hi);
+            closed.push_back(m.is_closed());
+            boxes.emplace_back(lo - Vec3::Constant(2 * r_big), hi + Vec3::Constant(2 * r_big));
+          }
       }
-    auto clear_of_walls = [&](const Vec3 &p, double r) {
-      for (std::size_t k = 0; k < f.avoid.size(); ++k)
-        {
-          if (!(p.array() >= boxes[k].first.array()).all() || !(p.array() <= boxes[k].second.array()).all())
-            continue;
-          const auto &m = f.avoid[k];
-          if (closed[k] && inside_mesh(m, p))
+
+      bool clear(const Vec3 &p, double r) const
+      {
+        for (std::size_t k = 0; k < avoid.size(); ++k)
+          {
+            if (!(p.array() >= boxes[k].first.array()).all() || !(p.array() <= boxes[k].second.array()).all())
+              continue;
+            const auto &m = avoid[k];
+            if (closed[k] && inside_mesh(m, p))
+              return false;
+            for (const auto &t : m.triangles)
+              {
+                const auto cp = closest_point_on_triangle(p.data(), m.vertices[t[0]].data(),
+                                                          m.vertices[t[1]].data(), m.vertices[t[2]].data());
+                if ((p - Vec3(cp.p[0], cp.p[1], cp.p[2])).norm() < 1.05 * r)
+                  return false;
+              }
+          }
+        return true;
+      }
+
+    private:
+      const std::vector<TriangleMesh>   &avoid;
+      std::vector<std::pair<Vec3, Vec3>> boxes;
+      std::vector<char>                  closed;
+    };
+
+    /// The particles placed so far in the fill box, on a grid of cells of the largest
+    /// diameter, and whether another fits: inside the box (whole), the region mesh, out of the
+    /// excluded boxes, clear of the particles placed and of the walls.
+    class PlacedParticles
+    {
+    public:
+      PlacedParticles(const FillRegion &f, double r_big, long wanted, const WallClearance &walls)
+        : f(f), extent(f.box_max - f.box_min), walls(walls)
+      {
+        const double cell = 2 * r_big;
+        n[0] = std::max(1L, long(extent[0] / cell)), n[1] = std::max(1L, long(extent[1] / cell)),
+        n[2] = std::max(1L, long(extent[2] / cell));
+        if (double(n[0]) * n[1] * n[2] > 5e7)
+          throw InputError("particle generation", "the fill box is too large for the particle size (more than 5e7 cells)");
+        grid.resize(n[0] * n[1] * n[2]);
+        placed.reserve(wanted);
+        radii.reserve(wanted);
+      }
+
+      bool fits(const Vec3 &p, double r) const
+      {
+        for (int d = 0; d < 3; ++d)
+          if (!(p[d] >= f.box_min[d] + r && p[d] <= f.box_max[d] - r))
             return false;
-          for (const auto &t : m.triangles)
-            {
-              const auto cp = closest_point_on_triangle(p.data(), m.vertices[t[0]].data(),
-                                                        m.vertices[t[1]].data(), m.vertices[t[2]].data());
-              if ((p - Vec3(cp.p[0], cp.p[1], cp.p[2])).norm() < 1.05 * r)
-                return false;
-            }
-        }
-      return true;
-    };
-
-    double region_volume = f.inside ? std::abs(f.inside->volume()) : extent.prod();
-    for (const auto &[lo, hi] : f.exclude) // (the solid fraction is of the region left)
-      region_volume -= (hi.cwiseMin(f.box_max) - lo.cwiseMax(f.box_min)).cwiseMax(0.0).prod();
-    const long   wanted = f.count > 0 ? f.count : std::lround(f.solid_fraction * region_volume / f.sizes.mean_volume());
-
-    // Random sequential addition: each particle at a uniformly random position that overlaps
-    // no particle placed before it (a cell grid finds the neighbours), like LIGGGHTS' insert/pack.
-    const double cell = 2 * r_big;
-    const long   nx = std::max(1L, long(extent[0] / cell)), ny = std::max(1L, long(extent[1] / cell)),
-               nz = std::max(1L, long(extent[2] / cell));
-    if (double(nx) * ny * nz > 5e7)
-      throw InputError("particle generation", "the fill box is too large for the particle size (more than 5e7 cells)");
-    std::vector<std::vector<int>> grid(nx * ny * nz);
-    auto cell_of = [&](const Vec3 &p, int d, long n) {
-      return std::clamp(long((p[d] - f.box_min[d]) / extent[d] * n), 0L, n - 1);
-    };
-    std::vector<Vec3>   placed;
-    std::vector<double> radii;
-    placed.reserve(wanted);
-    radii.reserve(wanted);
-    std::mt19937_64 rng(f.seed);
-    // a particle of radius r at p: inside the box (whole), the region mesh, clear of the
-    // particles placed and of the walls
-    auto fits = [&](const Vec3 &p, double r) {
-      for (int d = 0; d < 3; ++d)
-        if (!(p[d] >= f.box_min[d] + r && p[d] <= f.box_max[d] - r))
+        if (f.inside && !inside_mesh(*f.inside, p))
           return false;
-      if (f.inside && !inside_mesh(*f.inside, p))
-        return false;
-      for (const auto &[lo, hi] : f.exclude)
-        if ((p.array() > lo.array() - r).all() && (p.array() < hi.array() + r).all())
-          return false;
-      const long ci = cell_of(p, 0, nx), cj = cell_of(p, 1, ny), ck = cell_of(p, 2, nz);
-      for (long c = std::max(0L, ck - 1); c <= std::min(nz - 1, ck + 1); ++c)
-        for (long b = std::max(0L, cj - 1); b <= std::min(ny - 1, cj + 1); ++b)
-          for (long a = std::max(0L, ci - 1); a <= std::min(nx - 1, ci + 1); ++a)
-            for (int q : grid[(c * ny + b) * nx + a])
-              if ((placed[q] - p).squaredNorm() < (r + radii[q]) * (r + radii[q]))
-                return false;
-      return clear_of_walls(p, r);
+        for (const auto &[lo, hi] : f.exclude)
+          if ((p.array() > lo.array() - r).all() && (p.array() < hi.array() + r).all())
+            return false;
+        const long ci = cell_of(p, 0), cj = cell_of(p, 1), ck = cell_of(p, 2);
+        for (long c = std::max(0L, ck - 1); c <= std::min(n[2] - 1, ck + 1); ++c)
+          for (long b = std::max(0L, cj - 1); b <= std::min(n[1] - 1, cj + 1); ++b)
+            for (long a = std::max(0L, ci - 1); a <= std::min(n[0] - 1, ci + 1); ++a)
+              for (int q : grid[(c * n[1] + b) * n[0] + a])
+                if ((placed[q] - p).squaredNorm() < (r + radii[q]) * (r + radii[q]))
+                  return false;
+        return walls.clear(p, r);
+      }
+
+      void add(const Vec3 &p, double r)
+      {
+        grid[(cell_of(p, 2) * n[1] + cell_of(p, 1)) * n[0] + cell_of(p, 0)].push_back(int(placed.size()));
+        placed.push_back(p);
+        radii.push_back(r);
+      }
+
+      const FillRegion   &f;
+      const Vec3          extent;
+      long                n[3];
+      std::vector<Vec3>   placed;
+      std::vector<double> radii;
+      std::size_t         cells() const { return grid.size(); }
+
+    private:
+      const WallClearance          &walls;
+      std::vector<std::vector<int>> grid;
+      long cell_of(const Vec3 &p, int d) const { return std::clamp(long((p[d] - f.box_min[d]) / extent[d] * n[d]), 0L, n[d] - 1); }
     };
 
-    // Near saturation random positions almost never fit (the free volume is a few per cent of
-    // the box): in the knife-bed's fill box random draws stall at 11,193 pellets of 27.5 mm.
-    // Then the placement sweeps the box instead: the grid cells in a random order, in each a
-    // 4 x 4 x 4 set of points with a random offset each, every point that fits taken. Passes
-    // repeat with new offsets until one places nothing (12,417 in that box, a solid fraction of
-    // 0.35). Both stages draw from the seed: the same bed every time.
+    /// Near saturation random positions almost never fit (the free volume is a few per cent of
+    /// the box): in the knife-bed's fill box random draws stall at 11,193 pellets of 27.5 mm.
+    /// Then the placement sweeps the box instead: the grid cells in a random order, in each a
+    /// 4 x 4 x 4 set of points with a random offset each, every point that fits taken. Passes
+    /// repeat with new offsets until one places nothing (12,417 in that box, a solid fraction of
+    /// 0.35). Both stages draw from the seed: the same bed every time.
     struct Sweep
     {
       bool              on = false;
@@ -177,38 +204,68 @@ namespace abrade::dem
       std::size_t       next_cell = 0;
       int               next_point = 64;
       long              placed_this_pass = 0;
-    } sweep;
-    auto next_sweep_point = [&](Vec3 &p) { // false: a whole pass placed nothing
-      for (;;)
-        {
-          if (sweep.next_point == 64)
-            {
-              sweep.next_point = 0;
-              if (sweep.next_cell == sweep.cells.size())
-                {
-                  if (sweep.on && sweep.placed_this_pass == 0)
-                    return false;
-                  sweep.on = true, sweep.placed_this_pass = 0, sweep.next_cell = 0;
-                  sweep.cells.resize(grid.size());
-                  for (std::size_t c = 0; c < grid.size(); ++c)
-                    sweep.cells[c] = long(c);
-                  for (std::size_t c = grid.size(); c > 1; --c) // Fisher-Yates with our own draws
-                    std::swap(sweep.cells[c - 1], sweep.cells[std::size_t(uniform01(rng) * double(c))]);
-                }
-              ++sweep.next_cell;
-            }
-          const long c = sweep.cells[sweep.next_cell - 1];
-          const int  k = sweep.next_point++;
-          const long idx[3] = {c % nx, (c / nx) % ny, c / (nx * ny)};
-          const int  sub[3] = {k % 4, (k / 4) % 4, k / 16};
-          const long n[3]   = {nx, ny, nz};
-          for (int d = 0; d < 3; ++d)
-            p[d] = f.box_min[d] + extent[d] * (double(idx[d]) + (sub[d] + uniform01(rng)) / 4) / double(n[d]);
-          return true;
-        }
+
+      /// The next point to try; false: a whole pass placed nothing.
+      bool next(const PlacedParticles &bed, std::mt19937_64 &rng, Vec3 &p)
+      {
+        for (;;)
+          {
+            if (next_point == 64)
+              {
+                next_point = 0;
+                if (next_cell == cells.size())
+                  {
+                    if (on && placed_this_pass == 0)
+                      return false;
+                    on = true, placed_this_pass = 0, next_cell = 0;
+                    cells.resize(bed.cells());
+                    for (std::size_t c = 0; c < bed.cells(); ++c)
+                      cells[c] = long(c);
+                    for (std::size_t c = bed.cells(); c > 1; --c) // Fisher-Yates with our own draws
+                      std::swap(cells[c - 1], cells[std::size_t(uniform01(rng) * double(c))]);
+                  }
+                ++next_cell;
+              }
+            const long  c = cells[next_cell - 1];
+            const int   k = next_point++;
+            const auto &n = bed.n;
+            const long  idx[3] = {c % n[0], (c / n[0]) % n[1], c / (n[0] * n[1])};
+            const int   sub[3] = {k % 4, (k / 4) % 4, k / 16};
+            for (int d = 0; d < 3; ++d)
+              p[d] = bed.f.box_min[d] + bed.extent[d] * (double(idx[d]) + (sub[d] + uniform01(rng)) / 4) / double(n[d]);
+            return true;
+          }
+      }
     };
 
-    constexpr int max_attempts = 20000;
+    /// The particles wanted: Count, or Solid fraction of the region (its mesh's volume, else
+    /// the box, less the excluded boxes) in particles of the mean volume.
+    long wanted_particles(const FillRegion &f)
+    {
+      const Vec3 extent        = f.box_max - f.box_min;
+      double     region_volume = f.inside ? std::abs(f.inside->volume()) : extent.prod();
+      for (const auto &[lo, hi] : f.exclude) // (the solid fraction is of the region left)
+        region_volume -= (hi.cwiseMin(f.box_max) - lo.cwiseMax(f.box_min)).cwiseMax(0.0).prod();
+      return f.count > 0 ? f.count : std::lround(f.solid_fraction * region_volume / f.sizes.mean_volume());
+    }
+  } // namespace
+
+  long fill_region(Simulation &sim, const FillRegion &f)
+  {
+    const double r_big  = f.sizes.largest();
+    const Vec3   extent = f.box_max - f.box_min;
+    if (!(r_big > 0) || !(extent.array() > 2 * r_big).all())
+      throw InputError("particle generation", "the fill box must be larger than a particle diameter in every direction");
+
+    // Random sequential addition: each particle at a uniformly random position that overlaps
+    // no particle placed before it (a cell grid finds the neighbours), like LIGGGHTS'
+    // insert/pack; near saturation a sweep of the box (Sweep)
+    const WallClearance walls(f.avoid, r_big);
+    const long          wanted = wanted_particles(f);
+    PlacedParticles     bed(f, r_big, wanted, walls);
+    std::mt19937_64     rng(f.seed);
+    Sweep               sweep;
+    constexpr int       max_attempts = 20000;
     for (long k = 0; k < wanted; ++k)
       {
         const double r  = f.sizes.sample(rng);
@@ -218,10 +275,10 @@ namespace abrade::dem
           {
             for (int d = 0; d < 3; ++d)
               p[d] = f.box_min[d] + r + (extent[d] - 2 * r) * uniform01(rng);
-            ok = fits(p, r);
+            ok = bed.fits(p, r);
           }
-        while (!ok && next_sweep_point(p))
-          ok = fits(p, r);
+        while (!ok && sweep.next(bed, rng, p))
+          ok = bed.fits(p, r);
         if (!ok)
           throw InputError("particle generation",
                            "bed seed " + std::to_string(f.seed) + ": could place only " + std::to_string(k) + " of " +
@@ -230,9 +287,7 @@ namespace abrade::dem
                              "saturates near a solid fraction of 0.35); reduce Count or Solid fraction, or "
                              "enlarge the region");
         sweep.placed_this_pass += sweep.on;
-        grid[(cell_of(p, 2, nz) * ny + cell_of(p, 1, ny)) * nx + cell_of(p, 0, nx)].push_back(int(placed.size()));
-        placed.push_back(p);
-        radii.push_back(r);
+        bed.add(p, r);
       }
 
     auto        &P       = sim.particles();
@@ -240,9 +295,10 @@ namespace abrade::dem
     for (auto id : P.id)
       next_id = std::max(next_id, id + 1);
     const double density = sim.materials().at(f.material).density;
-    for (std::size_t k = 0; k < placed.size(); ++k)
+    for (std::size_t k = 0; k < bed.placed.size(); ++k)
       {
-        const std::size_t i = P.add(next_id++, placed[k][0], placed[k][1], placed[k][2], radii[k], density, f.material);
+        const std::size_t i = P.add(next_id++, bed.placed[k][0], bed.placed[k][1], bed.placed[k][2], bed.radii[k],
+                                    density, f.material);
         P.vx[i] = f.velocity[0], P.vy[i] = f.velocity[1], P.vz[i] = f.velocity[2];
       }
     return wanted;
