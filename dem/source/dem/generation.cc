@@ -148,7 +148,7 @@ namespace abrade::dem
           throw InputError("particle generation", "the fill box is too large for the particle size (more than 5e7 cells)");
         grid.resize(n[0] * n[1] * n[2]);
         placed.reserve(wanted);
-        radii.reserve(wanted);
+        placed_radii.reserve(wanted);
       }
 
       bool fits(const Vec3 &p, double r) const
@@ -166,7 +166,7 @@ namespace abrade::dem
           for (long b = std::max(0L, cj - 1); b <= std::min(n[1] - 1, cj + 1); ++b)
             for (long a = std::max(0L, ci - 1); a <= std::min(n[0] - 1, ci + 1); ++a)
               for (int q : grid[(c * n[1] + b) * n[0] + a])
-                if ((placed[q] - p).squaredNorm() < (r + radii[q]) * (r + radii[q]))
+                if ((placed[q] - p).squaredNorm() < (r + placed_radii[q]) * (r + placed_radii[q]))
                   return false;
         return walls.clear(p, r);
       }
@@ -175,17 +175,31 @@ namespace abrade::dem
       {
         grid[(cell_of(p, 2) * n[1] + cell_of(p, 1)) * n[0] + cell_of(p, 0)].push_back(int(placed.size()));
         placed.push_back(p);
-        radii.push_back(r);
+        placed_radii.push_back(r);
       }
 
-      const FillRegion   &f;
-      const Vec3          extent;
-      long                n[3];
-      std::vector<Vec3>   placed;
-      std::vector<double> radii;
-      std::size_t         cells() const { return grid.size(); }
+      const std::vector<Vec3>   &positions() const { return placed; }
+      const std::vector<double> &radii() const { return placed_radii; }
+      std::size_t                cells() const { return grid.size(); }
+
+      /// Point @p k of the 4 x 4 x 4 set in grid cell @p c, at a random offset in its
+      /// sub-cell (the sweep's).
+      Vec3 sweep_point(long c, int k, std::mt19937_64 &rng) const
+      {
+        const long idx[3] = {c % n[0], (c / n[0]) % n[1], c / (n[0] * n[1])};
+        const int  sub[3] = {k % 4, (k / 4) % 4, k / 16};
+        Vec3       p;
+        for (int d = 0; d < 3; ++d)
+          p[d] = f.box_min[d] + extent[d] * (double(idx[d]) + (sub[d] + uniform01(rng)) / 4) / double(n[d]);
+        return p;
+      }
 
     private:
+      const FillRegion             &f;
+      const Vec3                    extent;
+      long                          n[3];
+      std::vector<Vec3>             placed;
+      std::vector<double>           placed_radii;
       const WallClearance          &walls;
       std::vector<std::vector<int>> grid;
       long cell_of(const Vec3 &p, int d) const { return std::clamp(long((p[d] - f.box_min[d]) / extent[d] * n[d]), 0L, n[d] - 1); }
@@ -226,13 +240,7 @@ namespace abrade::dem
                   }
                 ++next_cell;
               }
-            const long  c = cells[next_cell - 1];
-            const int   k = next_point++;
-            const auto &n = bed.n;
-            const long  idx[3] = {c % n[0], (c / n[0]) % n[1], c / (n[0] * n[1])};
-            const int   sub[3] = {k % 4, (k / 4) % 4, k / 16};
-            for (int d = 0; d < 3; ++d)
-              p[d] = bed.f.box_min[d] + bed.extent[d] * (double(idx[d]) + (sub[d] + uniform01(rng)) / 4) / double(n[d]);
+            p = bed.sweep_point(cells[next_cell - 1], next_point++, rng);
             return true;
           }
       }
@@ -295,10 +303,11 @@ namespace abrade::dem
     for (auto id : P.id)
       next_id = std::max(next_id, id + 1);
     const double density = sim.materials().at(f.material).density;
-    for (std::size_t k = 0; k < bed.placed.size(); ++k)
+    const auto  &placed  = bed.positions();
+    for (std::size_t k = 0; k < placed.size(); ++k)
       {
-        const std::size_t i = P.add(next_id++, bed.placed[k][0], bed.placed[k][1], bed.placed[k][2], bed.radii[k],
-                                    density, f.material);
+        const std::size_t i = P.add(next_id++, placed[k][0], placed[k][1], placed[k][2], bed.radii()[k], density,
+                                    f.material);
         P.vx[i] = f.velocity[0], P.vy[i] = f.velocity[1], P.vz[i] = f.velocity[2];
       }
     return wanted;
