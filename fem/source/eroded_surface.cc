@@ -203,7 +203,9 @@ namespace abrade::fem
                 {
                   const double x[3] = {lo[0] + i * h, lo[1] + j * h, lo[2] + k * h};
                   double       foot[3];
-                  float       &gn   = g[grid.node(i, j, k)];
+                  float       &gn = g[grid.node(i, j, k)];
+                  if (t.exceeds(x, gn, worn.round_off())) // (then it could not lower g)
+                    continue;
                   const double ball = t.distance(x, foot);
                   if (ball < gn)
                     gn = float(ball);
@@ -396,10 +398,9 @@ namespace abrade::fem
     }
 
     /// What the part's STL reader will accept (solid_file.cc): its corners in single precision
-    /// as the STL has them, no triangle it would drop as a sliver (its height over its longest
-    /// edge below 1e-8 of the box's diagonal: a crack; checked here at 1e-7 of the box's
-    /// largest side, 5.8 to 10 times stricter), and no fold once they are welded within 1e-6 of
-    /// that side.
+    /// as the STL has them, no triangle it would drop as a sliver (folds::is_sliver; checked
+    /// here at ten times the reader's height), and no fold once they are welded within 1e-6 of
+    /// the box's largest side.
     bool the_stl_reader_accepts(const io::PolyData &surface)
     {
       io::PolyData as_stl = surface;
@@ -411,11 +412,14 @@ namespace abrade::fem
           as_stl.points[k] = double(float(as_stl.points[k]));
           lo[k % 3] = std::min(lo[k % 3], as_stl.points[k]), hi[k % 3] = std::max(hi[k % 3], as_stl.points[k]);
         }
-      const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-      if (!folds::caps(as_stl, 0, 1e-7 * size).empty())
-        return false;
+      const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+      for (const auto &t : as_stl.triangles)
+        if (folds::is_sliver(&as_stl.points[3 * t[0]], &as_stl.points[3 * t[1]], &as_stl.points[3 * t[2]],
+                             10 * folds::sliver_height_fraction * diagonal))
+          return false;
       try
         {
+          const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
           return repair_overlapping_facets(as_stl, 1e-6 * size).folds == 0;
         }
       catch (const std::runtime_error &)
@@ -505,36 +509,61 @@ namespace abrade::fem
   } // namespace
 
   ErodedSurface eroded_surface(const io::PolyData &surface, const std::vector<double> &depth, double h,
-                               double edge_length)
+                               double edge_length, io::Timers *timers)
   {
     if (depth.size() != surface.points.size() / 3)
       throw std::logic_error("eroded_surface: one depth per point expected");
     if (!(h > 0))
       throw std::logic_error("eroded_surface: the grid spacing must be positive");
+    io::Timers  unused;
+    io::Timers &clock = timers ? *timers : unused;
+    const auto  step  = [&](const char *name) { return io::ScopedTimer(clock, std::string("surface as a set: ") + name); };
 
     // g = min(phi, the balls) on the grid, and its zero set: W = { g > 0 }
     const Grid                      grid(surface, h);
     const geometry::SurfaceDistance distance(surface.points, surface.triangles);
     const WornFront                 worn(surface, depth, 2 * h);
-    std::vector<float>              g = signed_distance_on(grid, distance);
-    carve_the_balls(grid, worn, g);
+    std::vector<float>              g;
+    {
+      const auto t = step("signed distance");
+      g            = signed_distance_on(grid, distance);
+    }
+    {
+      const auto t = step("balls");
+      carve_the_balls(grid, worn, g);
+    }
     ErodedSurface result;
-    result.spacing                     = h;
-    vtkSmartPointer<vtkPolyData> front = largest_piece_of_the_zero_set(grid, g, result.volume_cut_off);
+    result.spacing = h;
+    vtkSmartPointer<vtkPolyData> front;
+    {
+      const auto t = step("zero set");
+      front        = largest_piece_of_the_zero_set(grid, g, result.volume_cut_off);
+    }
 
     // onto the exact zero set (marching cubes cuts every edge and corner of the front), to the
     // target length, and without folds
     const ExactFront exact(distance, worn, h);
-    onto_the_front_unturned(front, exact, h);
-    // (vertices projected onto one point beside a sharp edge are one vertex)
-    front           = merged_within(front, 1e-4 * h);
-    io::PolyData out = decimated_without_folds(front, edge_length, grid.extent, exact);
+    {
+      const auto t = step("onto the front");
+      onto_the_front_unturned(front, exact, h);
+    }
+    {
+      // (vertices projected onto one point beside a sharp edge are one vertex)
+      const auto t = step("merge");
+      front        = merged_within(front, 1e-4 * h);
+    }
+    io::PolyData out;
+    {
+      const auto t = step("decimation");
+      out          = decimated_without_folds(front, edge_length, grid.extent, exact);
+    }
 
     // the last projection can put two vertices onto one point (beside a sharp edge): one vertex,
     // the facets between them dropped (an STL of them has edges of no length, a hole for Gmsh)
     try
       {
-        out = repair_overlapping_facets(out, 1e-4 * h).surface;
+        const auto t = step("repair");
+        out          = repair_overlapping_facets(out, 1e-4 * h).surface;
       }
     catch (const std::runtime_error &)
       {

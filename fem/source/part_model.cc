@@ -409,7 +409,7 @@ namespace abrade::fem
       for (double &d : depth)
         d *= scale;
       io::ScopedTimer t(timers, "surface as a set");
-      return eroded_surface(start, depth, erosion_spacing(), settings.mesh_size / 3);
+      return eroded_surface(start, depth, erosion_spacing(), settings.mesh_size / 3, &timers);
     };
     ErodedSurface eroded = build(1);
     // A volume to remove: the depth scaled as a whole until the set removes it (to 0.5 %), as

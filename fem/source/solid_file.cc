@@ -15,6 +15,7 @@
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
 #include <abrade/fem/surface_repair.h>
+#include <abrade/fem/triangle_folds.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
@@ -431,13 +432,10 @@ namespace abrade::fem
       check_volume(path, volume, h, settings);
     }
 
-    /// The current Gmsh model from a closed STL surface (in the file's unit), checked: sharp
-    /// edges (more than 15 degrees) stay edges, the facets become remeshable surfaces. With
-    /// @p keep_triangles the facets are not remeshed: they bound the volume as they are (a
-    /// worn surface whose remeshing failed).
-    /// Removes the triangles of zero area (three points on or within 1e-8 of the part's size of
-    /// a line: an STL exporter's slivers) from the merged STL: Gmsh's surface mesher throws inside a parallel region on one, and
-    /// the process aborts; and repeated facets. Returns how many of each were removed.
+    /// Removes the slivers (folds::is_sliver: three points on or within 1e-8 of the part's size
+    /// of a line, an STL exporter's) from the merged STL: Gmsh's surface mesher throws inside a
+    /// parallel region on one, and the process aborts; and repeated facets. Returns how many of
+    /// each were removed.
     std::pair<std::size_t, std::size_t> remove_zero_area_triangles()
     {
       std::size_t duplicates = 0;
@@ -445,7 +443,9 @@ namespace abrade::fem
       gmsh::model::getEntities(surfaces, 2);
       double box[6];
       gmsh::model::getBoundingBox(-1, -1, box[0], box[1], box[2], box[3], box[4], box[5]);
-      const double size2 = std::pow(box[3] - box[0], 2) + std::pow(box[4] - box[1], 2) + std::pow(box[5] - box[2], 2);
+      const double sliver_height =
+        folds::sliver_height_fraction *
+        std::sqrt(std::pow(box[3] - box[0], 2) + std::pow(box[4] - box[1], 2) + std::pow(box[5] - box[2], 2));
       struct Surface
       {
         int                      tag;
@@ -471,22 +471,11 @@ namespace abrade::fem
               for (int c = 0; c < 3; ++c)
                 for (int d = 0; d < 3; ++d)
                   p[c][d] = s.xyz[3 * index[corners[3 * t + c]] + d];
-              const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-              const double v[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-              const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-              // its height over the longest edge: below 1e-8 of the part's size it is a sliver
-              // (Gmsh aborted on heights of 1e-12 to 1e-10 of it)
-              double longest2 = 0;
-              for (int c = 0; c < 3; ++c)
-                longest2 = std::max(longest2, std::pow(p[c][0] - p[(c + 1) % 3][0], 2) +
-                                                std::pow(p[c][1] - p[(c + 1) % 3][1], 2) +
-                                                std::pow(p[c][2] - p[(c + 1) % 3][2], 2));
-              const double twice_area2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
               // a facet given twice (the same three corners, either orientation) sends METIS,
               // called from Gmsh's surface classification, into an endless loop
               std::array<std::size_t, 3> corner_set = {corners[3 * t], corners[3 * t + 1], corners[3 * t + 2]};
               std::sort(corner_set.begin(), corner_set.end());
-              if (longest2 == 0 || twice_area2 <= 1e-16 * size2 * longest2)
+              if (folds::is_sliver(p[0], p[1], p[2], sliver_height))
                 ++removed;
               else if (!seen.insert(corner_set).second)
                 ++duplicates;
@@ -570,6 +559,10 @@ namespace abrade::fem
                                  "join them in the CAD tool)");
     }
 
+    /// The current Gmsh model from a closed STL surface (in the file's unit), checked: sharp
+    /// edges (more than 15 degrees) stay edges, the facets become remeshable surfaces. With
+    /// @p keep_triangles the facets are not remeshed: they bound the volume as they are (a
+    /// worn surface whose remeshing failed).
     void load_stl(const std::string &path, double h, const SolidFileSettings &settings, SolidFileReport *report,
                   bool keep_triangles = false)
     {

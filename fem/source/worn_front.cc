@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace abrade::fem
@@ -42,6 +43,8 @@ namespace abrade::fem
     depth[0] = da, depth[1] = db, depth[2] = dc;
     d_max    = std::max({da, db, dc});
     for (int q = 0; q < 3; ++q)
+      lo[q] = std::min({a[q], b[q], c[q]}), hi[q] = std::max({a[q], b[q], c[q]});
+    for (int q = 0; q < 3; ++q)
       e1[q] = b[q] - a[q], e2[q] = c[q] - a[q];
     d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
     det = d00 * d11 - d01 * d01;
@@ -61,13 +64,7 @@ namespace abrade::fem
 
   std::array<double, 6> SweptTriangle::box() const
   {
-    std::array<double, 6> b{};
-    for (int c = 0; c < 3; ++c)
-      {
-        b[c]     = std::min({corner[0][c], corner[1][c], corner[2][c]});
-        b[c + 3] = std::max({corner[0][c], corner[1][c], corner[2][c]});
-      }
-    return b;
+    return {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
   }
 
   double SweptTriangle::distance(const double *x, double *foot) const
@@ -113,6 +110,11 @@ namespace abrade::fem
         largest = std::max(largest, worn.back().largest_depth());
       }
     cell = largest + margin;
+    // (f_T's round-off: a few units in the last place of the coordinates)
+    double extent = 0;
+    for (const double c : s.points)
+      extent = std::max(extent, std::abs(c));
+    guard = 1e-12 * (extent + cell);
     for (unsigned q = 0; q < worn.size(); ++q)
       {
         const auto b = worn[q].box();
@@ -128,7 +130,15 @@ namespace abrade::fem
 
   double WornFront::distance(const double *x, double *on_front, double *gradient) const
   {
-    double       best = std::numeric_limits<double>::infinity(), foot[3] = {0, 0, 0}, p[3];
+    // A triangle is listed in every cell its box overlaps, so that one seen in an earlier cell
+    // of the 27 is skipped (a second look could not lower the minimum), as is one whose box
+    // rules it out. Each thread marks what it has seen with the number of its query.
+    thread_local std::vector<std::uint64_t> seen;
+    thread_local std::uint64_t              query = 0;
+    if (seen.size() < worn.size())
+      seen.resize(worn.size(), 0);
+    ++query;
+    double     best = std::numeric_limits<double>::infinity(), foot[3] = {0, 0, 0}, p[3];
     const long i0 = long(std::floor(x[0] / cell)), j0 = long(std::floor(x[1] / cell)), k0 = long(std::floor(x[2] / cell));
     for (long i = i0 - 1; i <= i0 + 1; ++i)
       for (long j = j0 - 1; j <= j0 + 1; ++j)
@@ -136,6 +146,11 @@ namespace abrade::fem
           if (const auto it = cells.find(key(i, j, k)); it != cells.end())
             for (const unsigned q : it->second)
               {
+                if (seen[q] == query)
+                  continue;
+                seen[q] = query;
+                if (worn[q].exceeds(x, best, guard))
+                  continue;
                 const double f = worn[q].distance(x, p);
                 if (f < best)
                   best = f, std::copy_n(p, 3, foot);

@@ -12,6 +12,7 @@
 #include <abrade/fem/solid_file.h>
 #include <abrade/fem/solid_output.h>
 #include <abrade/fem/surface_repair.h>
+#include <abrade/fem/triangle_folds.h>
 #include <abrade/fem/worn_front.h>
 
 #include <deal.II/grid/tria.h>
@@ -358,4 +359,23 @@ TEST(ErodedSurface, ALongChiselWornAtItsEdgeIsDecimatedUnfoldedAndFilled)
   ASSERT_NO_THROW(read_closed_triangles(stl, 0.04, filled, 120));
   EXPECT_NEAR(mesh_volume(filled), e.volume, 1e-6 * e.volume);
   std::filesystem::remove(stl);
+}
+
+// The STL reader's sliver rule (folds::is_sliver), which the set's decimation checks against:
+// the height over the longest edge, computed here by hand.
+TEST(Slivers, TheHeightOverTheLongestEdgeDecides)
+{
+  // a 2 m edge with its third corner 1 mm beside it, 3 m from the origin
+  const double a[3] = {3, 0, 0}, b[3] = {5, 0, 0}, c[3] = {3.3, 1e-3, 0};
+  EXPECT_TRUE(folds::is_sliver(a, b, c, 1.01e-3));
+  EXPECT_FALSE(folds::is_sliver(a, b, c, 0.99e-3));
+  EXPECT_FALSE(folds::is_sliver(c, a, b, 0.99e-3)); // (any order of the corners)
+  // longest edge a -> f (5 m): twice the area 0.1 m x 1 mm, over 5 m: a height of 2e-5 m
+  // (over the short edge a -> e it would be 1 mm)
+  const double e[3] = {3.1, 0, 0}, f[3] = {8, 1e-3, 0};
+  const double height = 1e-4 / std::hypot(5.0, 1e-3);
+  EXPECT_TRUE(folds::is_sliver(a, e, f, 1.01 * height));
+  EXPECT_FALSE(folds::is_sliver(a, e, f, 0.99 * height));
+  // three corners at one point: a sliver at any height
+  EXPECT_TRUE(folds::is_sliver(a, a, a, 0));
 }

@@ -30,6 +30,7 @@
 // marching cubes or the quadrics put them, or it is flipped with a neighbour; a decimation with
 // a fold left (also once the STL reader welds corners within 1e-6 of the part's size) is done
 // again finer.
+#include <abrade/common/timer.h>
 #include <abrade/common/vtk_output.h>
 
 #include <vector>
@@ -46,7 +47,9 @@ namespace abrade::fem
 
   /// @p surface: a closed, outward-oriented triangle surface; @p depth: per point [m] (>= 0);
   /// @p spacing: the grid spacing [m]; @p edge_length: the decimated triangles' length [m].
-  /// Throws RunError when nothing of the solid is left.
+  /// Throws RunError when nothing of the solid is left. @p timers, if given, gets the seconds of
+  /// each step ("surface as a set: signed distance", ": balls", ": zero set", ": onto the front",
+  /// ": merge", ": decimation", ": repair"), for the run's profile.
   ErodedSurface eroded_surface(const io::PolyData &surface, const std::vector<double> &depth, double spacing,
-                               double edge_length);
+                               double edge_length, io::Timers *timers = nullptr);
 } // namespace abrade::fem

@@ -10,6 +10,7 @@
 // them and flip them with a neighbour.
 #include <abrade/common/vtk_output.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -26,6 +27,28 @@ namespace abrade::fem::folds
   {
     const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  }
+
+  /// The part's STL reader (solid_file.cc) drops a triangle whose height over its longest edge
+  /// is at most this fraction of the diagonal of the part's box: a sliver (Gmsh's surface mesher
+  /// aborted on heights of 1e-12 to 1e-10 of it).
+  constexpr double sliver_height_fraction = 1e-8;
+
+  /// Whether the triangle (a, b, c) is a sliver at @p height [m]: its height over its longest
+  /// edge at most @p height, or its corners one point. The STL reader's rule with @p height =
+  /// sliver_height_fraction times the box's diagonal.
+  inline bool is_sliver(const double *a, const double *b, const double *c, double height)
+  {
+    const double *p[3]     = {a, b, c};
+    double        longest2 = 0;
+    for (int e = 0; e < 3; ++e)
+      {
+        const double *u = p[e], *v = p[(e + 1) % 3];
+        longest2 = std::max(longest2, (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]) +
+                                        (u[2] - v[2]) * (u[2] - v[2]));
+      }
+    const std::array<double, 3> n = normal_of(a, b, c); // (its length: the height times the longest edge)
+    return longest2 == 0 || dot(n, n) <= height * height * longest2;
   }
 
   /// Whether the segment p -> q passes through the triangle (a, b, c) strictly inside both

@@ -38,8 +38,27 @@ namespace abrade::fem
     double                largest_depth() const { return d_max; }
     std::array<double, 6> box() const;
 
+    /// Whether f_T(x) > @p value is certain without computing it: the distance from x to the
+    /// triangle's box less the largest depth exceeds @p value (by a round-off guard, @p guard
+    /// [m]), as f_T(x) >= |x - box| - d_max. Exact for a search of the minimum: a triangle so
+    /// ruled out could not have changed it.
+    bool exceeds(const double *x, double value, double guard) const
+    {
+      const double bound = value + guard + d_max;
+      if (bound < 0)
+        return true;
+      double gap2 = 0;
+      for (int c = 0; c < 3; ++c)
+        {
+          const double out = x[c] < lo[c] ? lo[c] - x[c] : x[c] > hi[c] ? x[c] - hi[c] : 0.0;
+          gap2 += out * out;
+        }
+      return gap2 > bound * bound;
+    }
+
   private:
     double corner[3][3], depth[3], e1[3], e2[3], normal[3] = {0, 0, 0};
+    double lo[3], hi[3]; ///< the box
     double d00 = 0, d01 = 0, d11 = 0, det = 0; ///< Gram matrix of e1, e2
     double alpha = 0, beta = 0, gg = 0;        ///< g = alpha e1 + beta e2, |g|^2
     double d_max = 0;
@@ -61,10 +80,13 @@ namespace abrade::fem
     double distance(const double *x, double *on_front, double *gradient = nullptr) const;
 
     const std::vector<SweptTriangle> &triangles() const { return worn; }
+    /// [m] a bound on the round-off of f_T, for SweptTriangle::exceeds
+    double round_off() const { return guard; }
 
   private:
     std::vector<SweptTriangle>                             worn;
     double                                                 cell = 1;
+    double                                                 guard = 0; ///< [m] round-off of f_T
     std::unordered_map<long long, std::vector<unsigned>> cells;
     long long key(long i, long j, long k) const { return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL); }
   };
