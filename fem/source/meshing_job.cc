@@ -22,8 +22,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-extern char **environ;
-
 #ifndef ABRADE_MESHER_DEFAULT
 #  define ABRADE_MESHER_DEFAULT ""
 #endif
@@ -96,19 +94,87 @@ namespace abrade::fem
       return time_limit > 0 ? time_limit : 1800;
     }
 
-    /// The files beside the job's output: the child's notes, its error (an input error it
-    /// found) and its log (what Gmsh said).
-    struct ChildFiles
+    /// Where the child works: a directory of its own beside the job's output, its path of one
+    /// length, holding the input and the output under fixed names and the mesher (the input and
+    /// the mesher hard links where they can be, else copies), so that the child is given the same arguments, in
+    /// the same environment, from paths of the same length, whatever the paths of the run.
+    /// Gmsh's meshes depend on where its data lie in memory (HXT orders by addresses; the
+    /// parent fixes the child's addresses), and Gmsh keeps the paths of its executable and its
+    /// working directory in memory: an output directory of another length, the mesher
+    /// installed elsewhere, or one environment variable more or less gave another mesh of the
+    /// same job. Removed with everything in it when done.
+    struct ChildDirectory
     {
-      explicit ChildFiles(const MeshingJob &job)
-        : notes(job.output + ".notes"), error(job.output + ".error"), log(job.output + ".log")
-      {}
-      std::string notes, error, log;
+      /// The length of the directory's path (the paths of most runs are shorter: theirs is
+      /// padded to it).
+      static constexpr std::size_t path_length = 240;
+
+      ChildDirectory(const MeshingJob &job, const std::string &mesher)
+        : input("input" + std::filesystem::path(job.input).extension().string())
+        , output("mesh" + std::filesystem::path(job.output).extension().string())
+      {
+        namespace fs = std::filesystem;
+        static int      made = 0;
+        std::error_code ec;
+        const fs::path  beside = fs::absolute(job.output, ec).parent_path();
+        char            name[64];
+        std::snprintf(name, sizeof name, "abrade-mesher-%010ld-%06d", long(::getpid()), made++ % 1000000);
+        path = (beside / name).string();
+        if (path.size() < path_length)
+          path.append(path_length - path.size(), '_');
+        fs::remove_all(path, ec);
+        fs::create_directories(path, ec);
+        if (ec)
+          throw RunError("cannot create " + path + " for the mesher: " + ec.message());
+        // (a hard link or a copy: through a symbolic link the input's own path reached the
+        // child's memory, and another mesh came from an input in a directory of another length)
+        fs::create_hard_link(job.input, fs::path(path) / input, ec);
+        if (ec)
+          fs::copy_file(job.input, fs::path(path) / input, ec);
+        if (ec)
+          throw RunError("cannot give " + job.input + " to the mesher in " + path + ": " + ec.message());
+        fs::create_hard_link(mesher, fs::path(path) / executable, ec);
+        if (ec)
+          fs::copy_file(mesher, fs::path(path) / executable, ec);
+        if (ec)
+          throw RunError("cannot copy the mesher " + mesher + " into " + path + ": " + ec.message());
+      }
+      ~ChildDirectory()
+      {
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+      }
+      ChildDirectory(const ChildDirectory &)            = delete;
+      ChildDirectory &operator=(const ChildDirectory &) = delete;
+
+      /// The job as the child is given it: the fixed names, relative to the directory.
+      MeshingJob job_of(const MeshingJob &job) const
+      {
+        MeshingJob child = job;
+        child.input      = input, child.output = output;
+        return child;
+      }
+      std::string in(const std::string &name) const { return path + "/" + name; }
+
+      std::string       path, input, output;
+      const std::string executable = "abrade-mesher";
     };
 
-    /// @p mesher started on @p job in a process group of its own, its output into @p log_file;
-    /// its process id.
-    pid_t start_mesher(const std::string &mesher, const MeshingJob &job, const std::string &log_file)
+    /// The files the child leaves: its notes, its error (an input error it found), both in its
+    /// directory, and its log (what Gmsh said) beside the job's output.
+    struct ChildFiles
+    {
+      ChildFiles(const MeshingJob &job, const ChildDirectory &dir)
+        : output(dir.in(dir.output)), notes(dir.in(dir.output + ".notes")), error(dir.in(dir.output + ".error"))
+        , log(job.output + ".log")
+      {}
+      std::string output, notes, error, log;
+    };
+
+    /// @p mesher started on @p job (as the child sees it: ChildDirectory::job_of) in
+    /// @p directory, in a process group of its own, its output into @p log_file; its process id.
+    pid_t start_mesher(const std::string &mesher, const MeshingJob &job, const std::string &directory,
+                       const std::string &log_file)
     {
       // everything the child needs, made before fork (after it only async-signal-safe calls)
       const auto &s = job.settings;
@@ -130,15 +196,13 @@ namespace abrade::fem
       for (auto &a : args)
         argv.push_back(a.data());
       argv.push_back(nullptr);
-      // the child is no MPI rank: without the launcher's variables an MPI library it loads does
-      // not try to join the parent's job
-      std::vector<std::string> env;
-      for (char **e = environ; *e; ++e)
-        {
-          const std::string v = *e;
-          if (v.rfind("OMPI_", 0) != 0 && v.rfind("PMIX_", 0) != 0 && v.rfind("PMI_", 0) != 0)
-            env.push_back(v);
-        }
+      // the same environment for every job (ChildDirectory): the C locale, temporary files in
+      // its directory, the library path where one is set (a deal.II or Gmsh of one's own). The
+      // child is no MPI rank: without the launcher's variables an MPI library it loads does not
+      // try to join the parent's job
+      std::vector<std::string> env = {"LC_ALL=C", "TMPDIR=."};
+      if (const char *libraries = std::getenv("LD_LIBRARY_PATH"))
+        env.push_back(std::string("LD_LIBRARY_PATH=") + libraries);
       std::vector<char *> envp;
       for (auto &v : env)
         envp.push_back(v.data());
@@ -165,6 +229,8 @@ namespace abrade::fem
           ::setpgid(0, 0); // a group of its own, which a time-out ends whole
           for (const int signal : {SIGINT, SIGTERM, SIGHUP}) // not the run's handlers (summary.json)
             ::signal(signal, SIG_DFL);
+          if (::chdir(directory.c_str()) != 0)
+            ::_exit(127);
           ::dup2(log, 1);
           ::dup2(log, 2);
           const int null = ::open("/dev/null", O_RDONLY);
@@ -221,21 +287,26 @@ namespace abrade::fem
 
     /// What the child's exit @p status and files say: its notes (meshed), the input error it
     /// wrote, or how it crashed with the last lines of its log.
-    std::vector<std::string> outcome(int status, const MeshingJob &job, const ChildFiles &files)
+    std::vector<std::string> outcome(int status, const MeshingJob &job, const ChildDirectory &dir,
+                                     const ChildFiles &files)
     {
-      if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(job.output))
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(files.output))
         {
+          std::error_code ec;
+          std::filesystem::rename(files.output, job.output, ec);
+          if (ec)
+            throw RunError("cannot move the mesher's " + files.output + " to " + job.output + ": " + ec.message());
           std::filesystem::remove(files.log);
-          auto notes = lines_of(read_text(files.notes));
-          std::filesystem::remove(files.notes);
-          return notes;
+          return lines_of(read_text(files.notes));
         }
       if (WIFEXITED(status) && WEXITSTATUS(status) == 2 && std::filesystem::exists(files.error))
         {
-          const std::string what = read_text(files.error);
-          std::filesystem::remove(files.error);
+          // it names the file itself, by the name it was given: the user's
+          std::string what = read_text(files.error);
+          if (what.rfind(dir.input, 0) == 0)
+            what.replace(0, dir.input.size(), job.input);
           std::filesystem::remove(files.log);
-          throw InputError("", what); // it names the file itself
+          throw InputError("", what);
         }
       const std::string tail = log_tail(files.log);
       const std::string how  = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"
@@ -253,12 +324,12 @@ namespace abrade::fem
         notes.push_back("meshed in this process (abrade-mesher not found: set ABRADE_MESHER)");
         return notes;
       }
-    const double     time_limit = time_limit_of(job);
-    const ChildFiles files(job);
-    for (const auto &f : {job.output, files.notes, files.error})
-      std::filesystem::remove(f);
-    const pid_t pid = start_mesher(mesher, job, files.log);
-    return outcome(wait_for(pid, time_limit, job), job, files);
+    const double         time_limit = time_limit_of(job);
+    std::filesystem::remove(job.output);
+    const ChildDirectory dir(job, mesher);
+    const ChildFiles     files(job, dir);
+    const pid_t          pid = start_mesher("./" + dir.executable, dir.job_of(job), dir.path, files.log);
+    return outcome(wait_for(pid, time_limit, job), job, dir, files);
   }
 
   int meshing_job_main(int argc, char **argv)

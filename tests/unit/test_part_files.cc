@@ -25,6 +25,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -211,24 +213,53 @@ TEST(PartFiles, TheSameJobMeshesTheSameEveryTime)
       if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         GTEST_SKIP() << "personality(ADDR_NO_RANDOMIZE) is refused here";
     }
-  MeshingJob job;
-  job.input          = std::string(ABRADE_TESTS_DIR) + "/../cases/bolted_edge/edge.step";
-  job.mesh_size      = 0.03;
-  job.again          = true;
-  job.settings.scale = 1.5;
-  std::string meshes[3];
-  for (int k = 0; k < 3; ++k)
+  // each job three times: as it is, from and into a directory whose path is longer, and with
+  // one more variable in the environment (each gave another mesh before the mesher's directory
+  // of its own with fixed names and a fixed environment: meshing_job.cc; the STL's with the
+  // input linked by its path, not copied)
+  MeshingJob cad;
+  cad.input          = std::string(ABRADE_TESTS_DIR) + "/../cases/bolted_edge/edge.step";
+  cad.mesh_size      = 0.03;
+  cad.again          = true;
+  cad.settings.scale = 1.5;
+  MeshingJob stl;
+  stl.input          = std::string(ABRADE_TESTS_DIR) + "/cli/knife_mm.stl";
+  stl.mesh_size      = 20;
+  stl.again          = true;
+  stl.settings.scale = 0.001;
+  const std::string longer = tmp("abrade_same_job_in_a_directory_with_a_longer_path");
+  std::filesystem::create_directories(longer);
+  for (MeshingJob job : {cad, stl})
     {
-      job.output = tmp("abrade_same_job_" + std::to_string(k) + ".msh");
-      run_meshing_job(job);
-      std::ifstream      in(job.output);
-      std::ostringstream text;
-      text << in.rdbuf();
-      meshes[k] = text.str();
-      ASSERT_GT(meshes[k].size(), 1000u);
+      const std::string input = job.input, extension = std::filesystem::path(input).extension().string();
+      const std::string moved = longer + "/part" + extension;
+      std::filesystem::copy_file(input, moved, std::filesystem::copy_options::overwrite_existing);
+      const std::string outputs[3] = {tmp("abrade_same_job_0.msh"), longer + "/abrade_same_job_1.msh",
+                                      tmp("abrade_same_job_2.msh")};
+      std::string       meshes[3];
+      for (int k = 0; k < 3; ++k)
+        {
+          job.output = outputs[k];
+          job.input  = k == 1 ? moved : input;
+          if (k == 2)
+            ::setenv("ABRADE_TEST_ONE_MORE_VARIABLE", "1", 1);
+          run_meshing_job(job);
+          ::unsetenv("ABRADE_TEST_ONE_MORE_VARIABLE");
+          std::ifstream      in(job.output);
+          std::ostringstream text;
+          text << in.rdbuf();
+          meshes[k] = text.str();
+          ASSERT_GT(meshes[k].size(), 1000u) << input;
+        }
+      EXPECT_TRUE(meshes[0] == meshes[1]) << input << ": another mesh from and into another directory: "
+                                          << meshes[0].size() << " and " << meshes[1].size() << " bytes";
+      EXPECT_TRUE(meshes[0] == meshes[2]) << input << ": another mesh with another environment: " << meshes[0].size()
+                                          << " and " << meshes[2].size() << " bytes";
+      std::filesystem::remove(moved);
     }
-  EXPECT_TRUE(meshes[0] == meshes[1] && meshes[1] == meshes[2]) << meshes[0].size() << " " << meshes[1].size() << " "
-                                                                << meshes[2].size() << " bytes";
+  // nothing of the mesher's working directory is left beside the output
+  for (const auto &entry : std::filesystem::directory_iterator(longer))
+    EXPECT_EQ(entry.path().filename().string().rfind("abrade-mesher-", 0), std::string::npos) << entry.path();
 }
 
 TEST(PartFiles, SelectorsAreParsedOrRefused)
