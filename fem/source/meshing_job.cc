@@ -172,9 +172,10 @@ namespace abrade::fem
     };
 
     /// @p mesher started on @p job (as the child sees it: ChildDirectory::job_of) in
-    /// @p directory, in a process group of its own, its output into @p log_file; its process id.
+    /// @p directory, in a process group of its own, its output into @p log_file (@p installed:
+    /// the mesher where it is installed, started where @p mesher cannot be); its process id.
     pid_t start_mesher(const std::string &mesher, const MeshingJob &job, const std::string &directory,
-                       const std::string &log_file)
+                       const std::string &log_file, const std::string &installed)
     {
       // everything the child needs, made before fork (after it only async-signal-safe calls)
       const auto &s = job.settings;
@@ -251,6 +252,9 @@ namespace abrade::fem
               [[maybe_unused]] const auto written = ::write(2, refused, sizeof refused - 1);
             }
           ::execve(argv[0], argv.data(), envp.data());
+          // (a directory that may not hold programs, mounted noexec: the mesher where it is
+          // installed, whose path then reaches its memory)
+          ::execve(installed.c_str(), argv.data(), envp.data());
           ::_exit(127);
         }
       ::close(log);
@@ -328,7 +332,8 @@ namespace abrade::fem
     std::filesystem::remove(job.output);
     const ChildDirectory dir(job, mesher);
     const ChildFiles     files(job, dir);
-    const pid_t          pid = start_mesher("./" + dir.executable, dir.job_of(job), dir.path, files.log);
+    const pid_t          pid = start_mesher("./" + dir.executable, dir.job_of(job), dir.path, files.log,
+                                              std::filesystem::absolute(mesher).string());
     return outcome(wait_for(pid, time_limit, job), job, dir, files);
   }
 
