@@ -2,16 +2,9 @@
 #include <abrade/common/closest_point.h>
 #include <abrade/common/surface_distance.h>
 
-#include <vtkCellArray.h>
-#include <vtkGenericCell.h>
-#include <vtkNew.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
-#include <vtkStaticCellLocator.h>
-
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -44,19 +37,27 @@ namespace abrade::geometry
   {
     std::size_t                           n_given = 0;
     std::vector<double>                   x;             ///< coordinates, as given
-    std::vector<std::array<long, 3>>      searched;      ///< the triangles of positive area (welded ids), cell i of the locator
+    std::vector<std::array<long, 3>>      searched;      ///< the triangles of positive area (welded ids)
     std::vector<V3>                       face_normal;   ///< unit, per searched triangle
     std::vector<std::array<V3, 3>>        edge_normal;   ///< per searched triangle: of its edges (v0,v1), (v1,v2), (v2,v0)
     std::vector<V3>                       vertex_normal; ///< per vertex (at the welded ids)
     std::vector<std::array<bool, 3>>      edge_on_rim;   ///< per searched triangle: its edges that only it has
     std::vector<bool>                     vertex_on_rim; ///< per vertex: on such an edge
-    vtkSmartPointer<vtkPolyData>          surface;
-    vtkSmartPointer<vtkStaticCellLocator> locator;
+    std::vector<std::array<double, 6>>    box;           ///< per searched triangle: lo, hi
+
+    /// The searched triangles in a uniform grid of cubic cells (edge @p cell, from @p lo, @p n
+    /// cells along each axis): each listed in every cell its box overlaps (from_cell: offsets
+    /// into in_cell).
+    double                   cell = 1;
+    std::array<double, 3>    lo{};
+    std::array<long, 3>      n{};
+    std::vector<std::size_t> from_cell;
+    std::vector<unsigned>    in_cell;
 
     const double *at(long v) const { return x.data() + 3 * v; }
 
     /// The angle-weighted pseudonormal of a feature of searched triangle @p t.
-    const V3 &pseudonormal(vtkIdType t, Feature f) const
+    const V3 &pseudonormal(std::size_t t, Feature f) const
     {
       switch (f)
         {
@@ -73,7 +74,7 @@ namespace abrade::geometry
 
     /// Whether a feature of searched triangle @p t lies on the surface's rim (an open surface's
     /// boundary): an edge that only this triangle has, or a vertex on one.
-    bool on_rim(vtkIdType t, Feature f) const
+    bool on_rim(std::size_t t, Feature f) const
     {
       switch (f)
         {
@@ -88,26 +89,103 @@ namespace abrade::geometry
         }
     }
 
-    double signed_distance(const double q[3], vtkGenericCell *cell, double *closest = nullptr, bool *rim = nullptr) const
+    long cell_index(double c, int axis) const
+    {
+      return std::clamp(long(std::floor((c - lo[axis]) / cell)), 0L, n[axis] - 1);
+    }
+
+    /// The squared distance from @p q to the box @p b (lo, hi).
+    static double box_distance2(const double q[3], const double *b)
+    {
+      double d2 = 0;
+      for (int d = 0; d < 3; ++d)
+        {
+          const double out = q[d] < b[d] ? b[d] - q[d] : q[d] > b[d + 3] ? q[d] - b[d + 3] : 0.0;
+          d2 += out * out;
+        }
+      return d2;
+    }
+
+    /// The searched triangle closest to @p q and its closest point: the cells about the one
+    /// nearest q in shells (the cell, then its neighbours, ...) until a triangle is found, then
+    /// every cell within that triangle's distance of q not yet looked at; a cell or a triangle
+    /// whose box lies farther than the closest one found is passed over. Of equally close
+    /// triangles (a point closest to an edge or a vertex they share) the first found is taken:
+    /// they give the same feature, pseudonormal and distance, their closest points differ by
+    /// round-off.
+    std::pair<unsigned, ClosestPoint> closest_triangle(const double q[3]) const
+    {
+      // each thread marks the triangles it has looked at in a query (one may lie in several
+      // cells) with the number of the query
+      thread_local std::vector<std::uint64_t> seen;
+      thread_local std::uint64_t              query = 0;
+      if (seen.size() < searched.size())
+        seen.resize(searched.size(), 0);
+      ++query;
+      double       best  = std::numeric_limits<double>::infinity();
+      unsigned     found = 0;
+      ClosestPoint at_best{};
+      auto         look_at = [&](long ii, long jj, long kk) {
+        const double cell_box[6] = {lo[0] + ii * cell,       lo[1] + jj * cell,       lo[2] + kk * cell,
+                                    lo[0] + (ii + 1) * cell, lo[1] + (jj + 1) * cell, lo[2] + (kk + 1) * cell};
+        if (!(box_distance2(q, cell_box) < best))
+          return;
+        const std::size_t cc = std::size_t((kk * n[1] + jj) * n[0] + ii);
+        for (std::size_t e = from_cell[cc]; e < from_cell[cc + 1]; ++e)
+          {
+            const unsigned t = in_cell[e];
+            if (seen[t] == query)
+              continue;
+            seen[t] = query;
+            if (!(box_distance2(q, box[t].data()) < best))
+              continue;
+            const auto        &v = searched[t];
+            const ClosestPoint p = closest_point_on_triangle(q, at(v[0]), at(v[1]), at(v[2]));
+            const double d2 = (q[0] - p.p[0]) * (q[0] - p.p[0]) + (q[1] - p.p[1]) * (q[1] - p.p[1]) +
+                              (q[2] - p.p[2]) * (q[2] - p.p[2]);
+            if (d2 < best)
+              best = d2, found = t, at_best = p;
+          }
+      };
+      const long c[3] = {cell_index(q[0], 0), cell_index(q[1], 1), cell_index(q[2], 2)};
+      auto       ring = [&](long ii, long jj, long kk) {
+        return std::max({std::abs(ii - c[0]), std::abs(jj - c[1]), std::abs(kk - c[2])});
+      };
+      // shells until one holds a triangle (the cell's neighbours at least)
+      long k = 0;
+      for (const long shells = std::max({n[0], n[1], n[2]}); k < shells; ++k)
+        {
+          for (long kk = std::max(0L, c[2] - k); kk <= std::min(n[2] - 1, c[2] + k); ++kk)
+            for (long jj = std::max(0L, c[1] - k); jj <= std::min(n[1] - 1, c[1] + k); ++jj)
+              for (long ii = std::max(0L, c[0] - k); ii <= std::min(n[0] - 1, c[0] + k); ++ii)
+                if (ring(ii, jj, kk) == k)
+                  look_at(ii, jj, kk);
+          if (k >= 1 && best < std::numeric_limits<double>::infinity())
+            break;
+        }
+      // then the cells within the closest distance found, beyond those shells
+      if (!(best < std::numeric_limits<double>::infinity())) // (none: there is always one)
+        throw std::logic_error("SurfaceDistance: no triangle found");
+      const double r = std::sqrt(best);
+      for (long kk = cell_index(q[2] - r, 2); kk <= cell_index(q[2] + r, 2); ++kk)
+        for (long jj = cell_index(q[1] - r, 1); jj <= cell_index(q[1] + r, 1); ++jj)
+          for (long ii = cell_index(q[0] - r, 0); ii <= cell_index(q[0] + r, 0); ++ii)
+            if (ring(ii, jj, kk) > k)
+              look_at(ii, jj, kk);
+      return {found, at_best};
+    }
+
+    double signed_distance(const double q[3], double *closest = nullptr, bool *rim = nullptr) const
     {
       if (!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
         return std::numeric_limits<double>::quiet_NaN();
-      double    vtk_point[3], dist2 = 0;
-      vtkIdType id    = -1;
-      int       subid = 0;
-      locator->FindClosestPoint(q, vtk_point, cell, id, subid, dist2);
-      if (id < 0 || id >= vtkIdType(searched.size()))
-        throw std::logic_error("SurfaceDistance: the cell locator found no triangle");
-      // the closest point and its feature on that triangle; the distance from it, not from
-      // VTK's, so that distance and sign come from the same point
-      const auto        &t = searched[id];
-      const ClosestPoint c = closest_point_on_triangle(q, at(t[0]), at(t[1]), at(t[2]));
+      const auto [id, c] = closest_triangle(q);
       if (closest)
         closest[0] = c.p[0], closest[1] = c.p[1], closest[2] = c.p[2];
       if (rim)
         *rim = on_rim(id, c.feature);
-      const V3           d = sub(q, c.p);
-      const double       r = std::sqrt(dot(d, d));
+      const V3     d = sub(q, c.p);
+      const double r = std::sqrt(dot(d, d));
       // inside where q - p points against the pseudonormal; on the surface (r = 0) +0
       return dot(d, pseudonormal(id, c.feature)) < 0 ? -r : r;
     }
@@ -187,25 +265,49 @@ namespace abrade::geometry
             m.vertex_on_rim[a] = m.vertex_on_rim[b] = true;
         }
 
-    // the locator on a vtkPolyData of the searched triangles (cell i is searched[i]), in double
-    vtkNew<vtkPoints> vtk_points;
-    vtk_points->SetDataTypeToDouble();
-    vtk_points->SetNumberOfPoints(n_points);
-    for (long v = 0; v < n_points; ++v)
-      vtk_points->SetPoint(v, m.at(v));
-    vtkNew<vtkCellArray> cells;
-    for (const auto &t : m.searched)
+    // the grid: cubic cells of about the triangles' mean size (at most 64 cells per triangle
+    // and 2^24 in all), each triangle in the cells its box overlaps
+    std::array<double, 3> hi{};
+    double                size = 0;
+    m.lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    m.box.resize(m.searched.size());
+    for (std::size_t i = 0; i < m.searched.size(); ++i)
       {
-        const vtkIdType ids[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, ids);
+        const auto &t = m.searched[i];
+        auto       &b = m.box[i];
+        for (int d = 0; d < 3; ++d)
+          {
+            b[d]     = std::min({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
+            b[d + 3] = std::max({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
+            m.lo[d]  = std::min(m.lo[d], b[d]), hi[d] = std::max(hi[d], b[d + 3]);
+          }
+        size += std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
       }
-    m.surface = vtkSmartPointer<vtkPolyData>::New();
-    m.surface->SetPoints(vtk_points);
-    m.surface->SetPolys(cells);
-    m.surface->BuildCells(); // now, not lazily in a query (which may run on several threads)
-    m.locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-    m.locator->SetDataSet(m.surface);
-    m.locator->BuildLocator();
+    const double extent = std::max({hi[0] - m.lo[0], hi[1] - m.lo[1], hi[2] - m.lo[2]});
+    m.cell              = std::max(size / double(m.searched.size()), 1e-9 * extent);
+    auto cells_along    = [&](int d) { return long(std::floor((hi[d] - m.lo[d]) / m.cell)) + 1; };
+    while (double(cells_along(0)) * double(cells_along(1)) * double(cells_along(2)) >
+           std::min(64.0 * double(m.searched.size()), double(1 << 24)))
+      m.cell *= 1.5;
+    for (int d = 0; d < 3; ++d)
+      m.n[d] = cells_along(d);
+    const std::size_t n_cells   = std::size_t(m.n[0] * m.n[1] * m.n[2]);
+    auto              each_cell = [&](const std::array<double, 6> &b, auto &&visit) {
+      for (long kk = m.cell_index(b[2], 2); kk <= m.cell_index(b[5], 2); ++kk)
+        for (long jj = m.cell_index(b[1], 1); jj <= m.cell_index(b[4], 1); ++jj)
+          for (long ii = m.cell_index(b[0], 0); ii <= m.cell_index(b[3], 0); ++ii)
+            visit(std::size_t((kk * m.n[1] + jj) * m.n[0] + ii));
+    };
+    m.from_cell.assign(n_cells + 1, 0);
+    for (const auto &b : m.box)
+      each_cell(b, [&](std::size_t c) { ++m.from_cell[c + 1]; });
+    for (std::size_t c = 0; c < n_cells; ++c)
+      m.from_cell[c + 1] += m.from_cell[c];
+    m.in_cell.resize(m.from_cell[n_cells]);
+    std::vector<std::size_t> fill(m.from_cell.begin(), m.from_cell.end() - 1);
+    for (unsigned i = 0; i < m.searched.size(); ++i)
+      each_cell(m.box[i], [&](std::size_t c) { m.in_cell[fill[c]++] = i; });
   }
 
   SurfaceDistance::~SurfaceDistance()                                     = default;
@@ -214,17 +316,10 @@ namespace abrade::geometry
 
   double SurfaceDistance::signed_distance(const double q[3], bool &on_rim, double closest[3]) const
   {
-    thread_local const vtkSmartPointer<vtkGenericCell> cell = vtkSmartPointer<vtkGenericCell>::New();
-    return impl->signed_distance(q, cell, closest, &on_rim);
+    return impl->signed_distance(q, closest, &on_rim);
   }
 
-  double SurfaceDistance::signed_distance(const double q[3]) const
-  {
-    // VTK fills a scratch cell in a query: one per thread, so that concurrent calls share
-    // nothing they write (and a call does not pay for making one: half its time)
-    thread_local const vtkSmartPointer<vtkGenericCell> cell = vtkSmartPointer<vtkGenericCell>::New();
-    return impl->signed_distance(q, cell);
-  }
+  double SurfaceDistance::signed_distance(const double q[3]) const { return impl->signed_distance(q); }
 
   std::size_t SurfaceDistance::n_triangles() const { return impl->n_given; }
 
@@ -236,9 +331,8 @@ namespace abrade::geometry
     std::vector<double>    depth(points.size() / 3);
     if (feet)
       feet->assign(points.size(), std::numeric_limits<double>::quiet_NaN());
-    vtkNew<vtkGenericCell> cell;
     for (std::size_t i = 0; i < depth.size(); ++i)
-      depth[i] = -design.impl->signed_distance(points.data() + 3 * i, cell, feet ? feet->data() + 3 * i : nullptr);
+      depth[i] = -design.impl->signed_distance(points.data() + 3 * i, feet ? feet->data() + 3 * i : nullptr);
     return depth;
   }
 } // namespace abrade::geometry
