@@ -94,19 +94,24 @@ namespace abrade::fem
       return time_limit > 0 ? time_limit : 1800;
     }
 
-    /// Where the child works: a directory of its own beside the job's output, its path of one
-    /// length, holding the input and the output under fixed names and the mesher (the input and
-    /// the mesher hard links where they can be, else copies), so that the child is given the same arguments, in
-    /// the same environment, from paths of the same length, whatever the paths of the run.
-    /// Gmsh's meshes depend on where its data lie in memory (HXT orders by addresses; the
-    /// parent fixes the child's addresses), and Gmsh keeps the paths of its executable and its
-    /// working directory in memory: an output directory of another length, the mesher
-    /// installed elsewhere, or one environment variable more or less gave another mesh of the
-    /// same job. Removed with everything in it when done.
+    /// Where the child works: a directory of its own beside the job's output, its real path
+    /// (symbolic links resolved, as the child's getcwd() sees it) of one length, holding the
+    /// input and the output under fixed names and the mesher (the input and the mesher, their
+    /// links resolved, hard-linked where they can be, else copied), so that the child is given
+    /// the same arguments, in the same environment, from paths of the same length, whatever
+    /// the paths of the run. Gmsh's meshes depend on where its data lie in memory (HXT orders
+    /// by addresses; the parent fixes the child's addresses), and Gmsh keeps the paths of its
+    /// executable and its working directory in memory: an output directory of another length,
+    /// the mesher installed elsewhere, or one environment variable more or less gave another
+    /// mesh of the same job. Made by mkdtemp (a name no other job, process or node has), padded
+    /// by nested directories of at most 60 characters (file systems that allow short names
+    /// only), removed with everything in it when done.
+    ///
+    /// A Gmsh script (.geo: abrade convert) is run where it is instead, its own relative
+    /// paths (Merge, Save) meaning what its author meant.
     struct ChildDirectory
     {
-      /// The length of the directory's path (the paths of most runs are shorter: theirs is
-      /// padded to it).
+      /// The length of the real path of the directory the child works in.
       static constexpr std::size_t path_length = 240;
 
       ChildDirectory(const MeshingJob &job, const std::string &mesher)
@@ -114,35 +119,46 @@ namespace abrade::fem
         , output("mesh" + std::filesystem::path(job.output).extension().string())
       {
         namespace fs = std::filesystem;
-        static int      made = 0;
         std::error_code ec;
-        const fs::path  beside = fs::absolute(job.output, ec).parent_path();
-        char            name[64];
-        std::snprintf(name, sizeof name, "abrade-mesher-%010ld-%06d", long(::getpid()), made++ % 1000000);
-        path = (beside / name).string();
-        if (path.size() < path_length)
-          path.append(path_length - path.size(), '_');
-        fs::remove_all(path, ec);
-        fs::create_directories(path, ec);
+        if (std::filesystem::path(job.input).extension() == ".geo")
+          {
+            input = job.input, output = job.output, executable = mesher;
+            return;
+          }
+        const fs::path beside = fs::canonical(fs::absolute(job.output, ec).parent_path(), ec);
         if (ec)
-          throw RunError("cannot create " + path + " for the mesher: " + ec.message());
-        // (a hard link or a copy: through a symbolic link the input's own path reached the
-        // child's memory, and another mesh came from an input in a directory of another length)
-        fs::create_hard_link(job.input, fs::path(path) / input, ec);
-        if (ec)
-          fs::copy_file(job.input, fs::path(path) / input, ec);
-        if (ec)
-          throw RunError("cannot give " + job.input + " to the mesher in " + path + ": " + ec.message());
-        fs::create_hard_link(mesher, fs::path(path) / executable, ec);
-        if (ec)
-          fs::copy_file(mesher, fs::path(path) / executable, ec);
-        if (ec)
-          throw RunError("cannot copy the mesher " + mesher + " into " + path + ": " + ec.message());
+          throw RunError("no directory for the mesher's output " + job.output + ": " + ec.message());
+        std::string       pattern = (beside / "abrade-mesher-XXXXXX").string();
+        std::vector<char> name(pattern.begin(), pattern.end());
+        name.push_back('\0');
+        if (!::mkdtemp(name.data()))
+          throw RunError("cannot make a directory for the mesher beside " + job.output + ": " + std::strerror(errno));
+        top = path = name.data();
+        try
+          {
+            while (path.size() + 1 < path_length)
+              path += "/" + std::string(std::min<std::size_t>(60, path_length - path.size() - 1), '_');
+            fs::create_directories(path, ec);
+            if (ec)
+              throw RunError("cannot make a directory for the mesher beside " + job.output + ": " + ec.message());
+            if (path.size() != path_length)
+              notes.push_back("the mesher's directory beside " + job.output + " is " + std::to_string(path.size()) +
+                              " characters long, not " + std::to_string(path_length) +
+                              ": its meshes may differ from those of another output directory");
+            place(job.input, input, "the part file", true);
+            place(mesher, executable, "the mesher", false);
+          }
+        catch (...)
+          {
+            fs::remove_all(top, ec);
+            throw;
+          }
       }
       ~ChildDirectory()
       {
         std::error_code ec;
-        std::filesystem::remove_all(path, ec);
+        if (!top.empty())
+          std::filesystem::remove_all(top, ec);
       }
       ChildDirectory(const ChildDirectory &)            = delete;
       ChildDirectory &operator=(const ChildDirectory &) = delete;
@@ -154,10 +170,41 @@ namespace abrade::fem
         child.input      = input, child.output = output;
         return child;
       }
-      std::string in(const std::string &name) const { return path + "/" + name; }
+      /// A file the child writes by @p name (relative to where it works).
+      std::string in(const std::string &name) const { return path.empty() ? name : path + "/" + name; }
+      /// The child's name for @p file replaced by the user's at the start of @p text.
+      std::string users_names(std::string text, const MeshingJob &job) const
+      {
+        for (const auto &[child, user] : {std::pair(input, job.input), std::pair(output, job.output)})
+          if (!path.empty() && text.rfind(child, 0) == 0)
+            return text.replace(0, child.size(), user);
+        return text;
+      }
 
-      std::string       path, input, output;
-      const std::string executable = "abrade-mesher";
+      std::string              path, top, input, output;
+      std::string              executable = "./abrade-mesher";
+      std::vector<std::string> notes; ///< for the job's notes
+      
+    private:
+      /// @p file, its links resolved, into the directory as @p name: a hard link, else a copy.
+      /// (Through a symbolic link the file's own path reached the child's memory, and another
+      /// mesh came from an input in a directory of another length.)
+      void place(const std::string &file, const std::string &name, const std::string &what, bool users)
+      {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        const fs::path  real = fs::canonical(file, ec);
+        if (!ec)
+          {
+            fs::create_hard_link(real, fs::path(path) / fs::path(name).filename(), ec);
+            if (ec)
+              fs::copy_file(real, fs::path(path) / fs::path(name).filename(), ec);
+          }
+        if (ec && users)
+          throw InputError(file, "cannot be read (" + ec.message() + ")");
+        if (ec)
+          throw RunError("cannot give " + what + " " + file + " to the mesher beside its output: " + ec.message());
+      }
     };
 
     /// The files the child leaves: its notes, its error (an input error it found), both in its
@@ -198,12 +245,11 @@ namespace abrade::fem
         argv.push_back(a.data());
       argv.push_back(nullptr);
       // the same environment for every job (ChildDirectory): the C locale, temporary files in
-      // its directory, the library path where one is set (a deal.II or Gmsh of one's own). The
+      // its directory, the library path (a deal.II or Gmsh of one's own; empty if none). The
       // child is no MPI rank: without the launcher's variables an MPI library it loads does not
       // try to join the parent's job
-      std::vector<std::string> env = {"LC_ALL=C", "TMPDIR=."};
-      if (const char *libraries = std::getenv("LD_LIBRARY_PATH"))
-        env.push_back(std::string("LD_LIBRARY_PATH=") + libraries);
+      const char              *libraries = std::getenv("LD_LIBRARY_PATH"); // (set or not: as many variables)
+      std::vector<std::string> env = {"LC_ALL=C", "TMPDIR=.", std::string("LD_LIBRARY_PATH=") + (libraries ? libraries : "")};
       std::vector<char *> envp;
       for (auto &v : env)
         envp.push_back(v.data());
@@ -230,10 +276,14 @@ namespace abrade::fem
           ::setpgid(0, 0); // a group of its own, which a time-out ends whole
           for (const int signal : {SIGINT, SIGTERM, SIGHUP}) // not the run's handlers (summary.json)
             ::signal(signal, SIG_DFL);
-          if (::chdir(directory.c_str()) != 0)
-            ::_exit(127);
           ::dup2(log, 1);
           ::dup2(log, 2);
+          auto say = [](const char *text) { [[maybe_unused]] const auto written = ::write(2, text, std::strlen(text)); };
+          if (!directory.empty() && ::chdir(directory.c_str()) != 0)
+            {
+              say("abrade-mesher: cannot enter its directory\n");
+              ::_exit(127);
+            }
           const int null = ::open("/dev/null", O_RDONLY);
           if (null >= 0)
             ::dup2(null, 0);
@@ -254,7 +304,10 @@ namespace abrade::fem
           ::execve(argv[0], argv.data(), envp.data());
           // (a directory that may not hold programs, mounted noexec: the mesher where it is
           // installed, whose path then reaches its memory)
+          say("abrade-mesher: its copy beside the output cannot be started (a file system mounted noexec?): "
+              "started where it is installed, and its meshes may differ from those of another output directory\n");
           ::execve(installed.c_str(), argv.data(), envp.data());
+          say("abrade-mesher: cannot be started\n");
           ::_exit(127);
         }
       ::close(log);
@@ -297,21 +350,33 @@ namespace abrade::fem
       if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::exists(files.output))
         {
           std::error_code ec;
-          std::filesystem::rename(files.output, job.output, ec);
+          if (files.output != job.output)
+            std::filesystem::rename(files.output, job.output, ec);
           if (ec)
-            throw RunError("cannot move the mesher's " + files.output + " to " + job.output + ": " + ec.message());
+            throw RunError("cannot move the mesher's output to " + job.output + ": " + ec.message());
+          auto notes = lines_of(read_text(files.notes));
+          if (files.notes == job.output + ".notes")
+            std::filesystem::remove(files.notes);
+          // (said in its log, which goes: a note instead)
+          const std::string log = read_text(files.log);
+          for (const std::string said : {"fixed addresses refused", "cannot be started"})
+            if (log.find(said) != std::string::npos)
+              notes.push_back(lines_of(log.substr(log.rfind('\n', log.find(said)) + 1)).front());
           std::filesystem::remove(files.log);
-          return lines_of(read_text(files.notes));
+          notes.insert(notes.end(), dir.notes.begin(), dir.notes.end());
+          return notes;
         }
       if (WIFEXITED(status) && WEXITSTATUS(status) == 2 && std::filesystem::exists(files.error))
         {
           // it names the file itself, by the name it was given: the user's
-          std::string what = read_text(files.error);
-          if (what.rfind(dir.input, 0) == 0)
-            what.replace(0, dir.input.size(), job.input);
+          const std::string what = dir.users_names(read_text(files.error), job);
           std::filesystem::remove(files.log);
+          if (files.error == job.output + ".error")
+            std::filesystem::remove(files.error);
           throw InputError("", what);
         }
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+        throw RunError("the mesher could not be started for " + job.input + ": " + log_tail(files.log));
       const std::string tail = log_tail(files.log);
       const std::string how  = WIFSIGNALED(status) ? "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"
                                                    : "failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
@@ -328,17 +393,24 @@ namespace abrade::fem
         notes.push_back("meshed in this process (abrade-mesher not found: set ABRADE_MESHER)");
         return notes;
       }
-    const double         time_limit = time_limit_of(job);
+    const double time_limit = time_limit_of(job);
     std::filesystem::remove(job.output);
     const ChildDirectory dir(job, mesher);
     const ChildFiles     files(job, dir);
-    const pid_t          pid = start_mesher("./" + dir.executable, dir.job_of(job), dir.path, files.log,
-                                              std::filesystem::absolute(mesher).string());
+    for (const auto &f : {files.notes, files.error})
+      std::filesystem::remove(f);
+    const pid_t pid = start_mesher(dir.executable, dir.job_of(job), dir.path, files.log,
+                                   std::filesystem::absolute(mesher).string());
     return outcome(wait_for(pid, time_limit, job), job, dir, files);
   }
 
   int meshing_job_main(int argc, char **argv)
   {
+    // stdout (the log) buffered in a buffer of one size and place, whatever file system holds
+    // the log: glibc sizes its own by the file's block size (4 kB on ext4, 8 kB on NFS), and
+    // Gmsh's meshes depend on where its data lie in memory
+    static char buffer[8192];
+    std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
     if (argc < 12 || argc > 14)
       {
         std::fprintf(stderr, "abrade-mesher: abrade's Gmsh child process (started by abrade, not by hand)\n");

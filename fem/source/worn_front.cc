@@ -23,7 +23,12 @@ namespace abrade::fem
           std::copy_n(A, 3, foot);
           return std::sqrt(dot(w, w)) - std::max(dA, dB);
         }
-      const double s0 = dot(w, e) / L, w2 = std::max(0.0, dot(w, w) - s0 * s0), k = (dB - dA) / L;
+      // (w2, the squared distance from the edge's line, from the perpendicular itself: |w|^2 -
+      // s0^2 lost its digits near the line, and f fell below |x - box| - d_max, the bound by
+      // which WornFront passes triangles over)
+      const double s0 = dot(w, e) / L, k = (dB - dA) / L;
+      const double perpendicular[3] = {w[0] - s0 / L * e[0], w[1] - s0 / L * e[1], w[2] - s0 / L * e[2]};
+      const double w2 = dot(perpendicular, perpendicular);
       double       s;
       if (k >= 1)
         s = L;

@@ -213,10 +213,11 @@ TEST(PartFiles, TheSameJobMeshesTheSameEveryTime)
       if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         GTEST_SKIP() << "personality(ADDR_NO_RANDOMIZE) is refused here";
     }
-  // each job three times: as it is, from and into a directory whose path is longer, and with
-  // one more variable in the environment (each gave another mesh before the mesher's directory
-  // of its own with fixed names and a fixed environment: meshing_job.cc; the STL's with the
-  // input linked by its path, not copied)
+  // each job three times: as it is, from a relative symbolic link and into a directory whose
+  // path is longer, and with one more variable and a library path in the environment (each
+  // gave another mesh before the mesher's directory of its own with fixed names and a fixed
+  // environment: meshing_job.cc; the STL's with the input linked by its path, not copied; a
+  // relative symbolic link, linked as it was, pointed nowhere)
   MeshingJob cad;
   cad.input          = std::string(ABRADE_TESTS_DIR) + "/../cases/bolted_edge/edge.step";
   cad.mesh_size      = 0.03;
@@ -232,19 +233,24 @@ TEST(PartFiles, TheSameJobMeshesTheSameEveryTime)
   for (MeshingJob job : {cad, stl})
     {
       const std::string input = job.input, extension = std::filesystem::path(input).extension().string();
-      const std::string moved = longer + "/part" + extension;
+      const std::string moved = longer + "/part" + extension, link = longer + "/link" + extension;
       std::filesystem::copy_file(input, moved, std::filesystem::copy_options::overwrite_existing);
+      std::filesystem::remove(link);
+      std::filesystem::create_symlink("part" + extension, link);
       const std::string outputs[3] = {tmp("abrade_same_job_0.msh"), longer + "/abrade_same_job_1.msh",
                                       tmp("abrade_same_job_2.msh")};
       std::string       meshes[3];
       for (int k = 0; k < 3; ++k)
         {
           job.output = outputs[k];
-          job.input  = k == 1 ? moved : input;
+          job.input  = k == 1 ? link : input;
+          const char       *had       = std::getenv("LD_LIBRARY_PATH");
+          const std::string libraries = had ? had : "";
           if (k == 2)
-            ::setenv("ABRADE_TEST_ONE_MORE_VARIABLE", "1", 1);
+            ::setenv("ABRADE_TEST_ONE_MORE_VARIABLE", "1", 1), ::setenv("LD_LIBRARY_PATH", "/nowhere", 1);
           run_meshing_job(job);
           ::unsetenv("ABRADE_TEST_ONE_MORE_VARIABLE");
+          had ? ::setenv("LD_LIBRARY_PATH", libraries.c_str(), 1) : ::unsetenv("LD_LIBRARY_PATH");
           std::ifstream      in(job.output);
           std::ostringstream text;
           text << in.rdbuf();
@@ -256,6 +262,7 @@ TEST(PartFiles, TheSameJobMeshesTheSameEveryTime)
       EXPECT_TRUE(meshes[0] == meshes[2]) << input << ": another mesh with another environment: " << meshes[0].size()
                                           << " and " << meshes[2].size() << " bytes";
       std::filesystem::remove(moved);
+      std::filesystem::remove(link);
     }
   // nothing of the mesher's working directory is left beside the output
   for (const auto &entry : std::filesystem::directory_iterator(longer))
