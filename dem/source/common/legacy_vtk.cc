@@ -165,126 +165,171 @@ namespace abrade::io
         f.fail("'" + word.substr(0, 20) + "' is not a count of " + what);
       return n;
     }
+
+    /// The four header lines: the version, the title, ASCII or BINARY, DATASET POLYDATA.
+    void read_header(LegacyVtkFile &f)
+    {
+      if (f.line().rfind("# vtk DataFile Version", 0) != 0)
+        f.fail("not a legacy VTK file (it does not start with '# vtk DataFile Version')");
+      f.line(true); // the title (it may be empty)
+      std::string format = f.line();
+      std::transform(format.begin(), format.end(), format.begin(), ::toupper);
+      if (format != "ASCII" && format != "BINARY")
+        f.fail("'ASCII' or 'BINARY' expected, found '" + format.substr(0, 40) + "'");
+      const std::string dataset = f.line();
+      if (dataset != "DATASET POLYDATA")
+        f.fail("'" + dataset.substr(0, 40) + "': only DATASET POLYDATA is read (save other kinds as .vtp or .stl)");
+      f.binary = format == "BINARY";
+    }
+
+    /// "POINTS n type": the number of points and their coordinates into @p points.
+    long read_points(LegacyVtkFile &f, const std::string &count, const std::string &type, vtkPoints *points)
+    {
+      const long n   = count_from(f, count, "points");
+      const auto xyz = f.values(3 * n, type);
+      points->SetDataTypeToDouble();
+      points->SetNumberOfPoints(n);
+      for (long i = 0; i < n; ++i)
+        points->SetPoint(i, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+      return n;
+    }
+
+    /// A cell section's cells: where each starts in the point indices (offsets, one more than
+    /// the cells) and the indices.
+    struct Cells
+    {
+      std::vector<long>      offsets = {0};
+      std::vector<vtkIdType> ids;
+    };
+
+    /// Version 5: "OFFSETS type" (@p n offsets), then "CONNECTIVITY type" (@p size indices).
+    Cells offsets_and_connectivity(LegacyVtkFile &f, const std::string &key, long n, long size,
+                                   const std::string &offsets_type)
+    {
+      Cells      cells;
+      const auto o = f.values(n, offsets_type);
+      cells.offsets.assign(o.begin(), o.end());
+      // (a CONNECTIVITY line without a type takes the offsets')
+      std::string next_key = "OFFSETS", type = offsets_type;
+      std::istringstream(f.line()) >> next_key >> type;
+      if (next_key != "CONNECTIVITY")
+        f.fail(key + ": CONNECTIVITY expected after OFFSETS");
+      const auto c = f.values(size, type);
+      cells.ids.assign(c.begin(), c.end());
+      if (n < 1 || cells.offsets.front() != 0 || cells.offsets.back() != size ||
+          !std::is_sorted(cells.offsets.begin(), cells.offsets.end()))
+        f.fail(key + ": the offsets do not run from 0 to " + std::to_string(size) + " in order");
+      return cells;
+    }
+
+    /// Up to version 4: @p n cells as "k i1 ... ik", @p size values in all.
+    Cells counted_cells(LegacyVtkFile &f, const std::string &key, long n, long size)
+    {
+      Cells      cells;
+      const auto v = f.values(size, "int");
+      long       p = 0;
+      for (long c = 0; c < n; ++c)
+        {
+          // (compared as read: a count past a long's range has no long value)
+          const double counted = p < size ? v[p] : -1;
+          const long   k       = counted >= 1 && counted <= double(size - p - 1) ? long(counted) : -1;
+          if (k < 1 || p + 1 + k > size)
+            f.fail(key + ": cell " + std::to_string(c) + " of " + std::to_string(n) +
+                   " does not fit into the section's " + std::to_string(size) + " values");
+          cells.ids.insert(cells.ids.end(), v.begin() + p + 1, v.begin() + p + 1 + k);
+          cells.offsets.push_back(long(cells.ids.size()));
+          p += 1 + k;
+        }
+      if (p != size)
+        f.fail(key + ": " + std::to_string(n) + " cells take " + std::to_string(p) + " values, the section announces " +
+               std::to_string(size));
+      return cells;
+    }
+
+    /// "VERTICES|LINES|POLYGONS|TRIANGLE_STRIPS n size" (either layout), checked against the
+    /// @p n_points points; the polygons and the strips' triangles into @p polys.
+    void read_cells(LegacyVtkFile &f, const std::string &key, const std::string &count, const std::string &values,
+                    long n_points, vtkCellArray *polys)
+    {
+      if (n_points < 0)
+        f.fail(key + " before POINTS");
+      const long         n = count_from(f, count, "cells"), size = count_from(f, values, "values");
+      const auto         mark = f.position();
+      std::string        next_key, type;
+      std::istringstream(f.line()) >> next_key >> type;
+      Cells cells;
+      if (next_key == "OFFSETS")
+        cells = offsets_and_connectivity(f, key, n, size, type);
+      else
+        {
+          f.seek(mark);
+          cells = counted_cells(f, key, n, size);
+        }
+      for (const vtkIdType id : cells.ids)
+        if (id < 0 || id >= n_points)
+          f.fail(key + ": point index " + std::to_string(id) + " out of range (" + std::to_string(n_points) +
+                 " points, counted from 0)");
+      for (std::size_t c = 0; c + 1 < cells.offsets.size(); ++c)
+        {
+          const vtkIdType *cell = cells.ids.data() + cells.offsets[c];
+          const long       k    = cells.offsets[c + 1] - cells.offsets[c];
+          if (key == "POLYGONS" && k >= 3)
+            polys->InsertNextCell(k, cell);
+          else if (key == "POLYGONS")
+            f.fail("POLYGONS: polygon " + std::to_string(c) + " has " + std::to_string(k) + " points");
+          else if (key == "TRIANGLE_STRIPS") // triangles (i, i+1, i+2), every other one turned
+            for (long t = 0; t + 2 < k; ++t)
+              {
+                const vtkIdType tri[3] = {cell[t], cell[t + (t % 2 ? 2 : 1)], cell[t + (t % 2 ? 1 : 2)]};
+                polys->InsertNextCell(3, tri);
+              }
+        }
+    }
+
+    /// "FIELD name n": n arrays "name components tuples type" and their values, skipped.
+    void skip_field(LegacyVtkFile &f, const std::string &n_arrays)
+    {
+      const long arrays = count_from(f, n_arrays, "arrays");
+      for (long k = 0; k < arrays; ++k)
+        {
+          std::istringstream array(f.line());
+          std::string        name, components, tuples, type;
+          array >> name >> components >> tuples >> type;
+          if (name == "NULL_ARRAY")
+            continue;
+          f.values(count_from(f, components, "components") * count_from(f, tuples, "tuples"), type);
+        }
+    }
   } // namespace
 
   vtkSmartPointer<vtkPolyData> read_legacy_vtk(const std::string &path)
   {
     LegacyVtkFile f(path);
-    if (f.line().rfind("# vtk DataFile Version", 0) != 0)
-      f.fail("not a legacy VTK file (it does not start with '# vtk DataFile Version')");
-    f.line(true); // the title (it may be empty)
-    std::string format = f.line();
-    std::transform(format.begin(), format.end(), format.begin(), ::toupper);
-    if (format != "ASCII" && format != "BINARY")
-      f.fail("'ASCII' or 'BINARY' expected, found '" + format.substr(0, 40) + "'");
-    const std::string dataset = f.line();
-    if (dataset != "DATASET POLYDATA")
-      f.fail("'" + dataset.substr(0, 40) + "': only DATASET POLYDATA is read (save other kinds as .vtp or .stl)");
-    f.binary = format == "BINARY";
-
-    auto              polydata = vtkSmartPointer<vtkPolyData>::New();
-    vtkNew<vtkPoints> points;
+    read_header(f);
+    auto                 polydata = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints>    points;
     vtkNew<vtkCellArray> polys;
-    long              n_points = -1;
+    long                 n_points = -1;
     for (std::string l = f.line(); !l.empty(); l = f.line())
       {
         std::istringstream words(l);
         std::string        key, a, b;
         words >> key >> a >> b;
-        if (key == "POINT_DATA" || key == "CELL_DATA")
+        if (key == "POINT_DATA" || key == "CELL_DATA") // (the end of the geometry)
           break;
         if (key == "POINTS")
           {
             if (n_points >= 0) // (the cells read so far index the first points)
               f.fail("POINTS given twice");
-            n_points       = count_from(f, a, "points");
-            const auto xyz = f.values(3 * n_points, b);
-            points->SetDataTypeToDouble();
-            points->SetNumberOfPoints(n_points);
-            for (long i = 0; i < n_points; ++i)
-              points->SetPoint(i, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+            n_points = read_points(f, a, b, points);
           }
         else if (key == "VERTICES" || key == "LINES" || key == "POLYGONS" || key == "TRIANGLE_STRIPS")
-          {
-            if (n_points < 0)
-              f.fail(key + " before POINTS");
-            const long        n = count_from(f, a, "cells"), size = count_from(f, b, "values");
-            std::vector<long>      offsets = {0};
-            std::vector<vtkIdType> ids;
-            const auto        mark = f.position();
-            std::string       next_key, type;
-            std::istringstream(f.line()) >> next_key >> type;
-            if (next_key == "OFFSETS") // version 5: n offsets, then size point indices
-              {
-                const auto o = f.values(n, type);
-                offsets.assign(o.begin(), o.end());
-                std::istringstream(f.line()) >> next_key >> type;
-                if (next_key != "CONNECTIVITY")
-                  f.fail(key + ": CONNECTIVITY expected after OFFSETS");
-                const auto c = f.values(size, type);
-                ids.assign(c.begin(), c.end());
-                if (n < 1 || offsets.front() != 0 || offsets.back() != size ||
-                    !std::is_sorted(offsets.begin(), offsets.end()))
-                  f.fail(key + ": the offsets do not run from 0 to " + std::to_string(size) + " in order");
-              }
-            else // "k i1 ... ik" per cell, size values in all
-              {
-                f.seek(mark);
-                const auto v = f.values(size, "int");
-                long       p = 0;
-                for (long c = 0; c < n; ++c)
-                  {
-                    // (compared as read: a count past a long's range has no long value)
-                    const double counted = p < size ? v[p] : -1;
-                    const long   k       = counted >= 1 && counted <= double(size - p - 1) ? long(counted) : -1;
-                    if (k < 1 || p + 1 + k > size)
-                      f.fail(key + ": cell " + std::to_string(c) + " of " + std::to_string(n) +
-                             " does not fit into the section's " + std::to_string(size) + " values");
-                    ids.insert(ids.end(), v.begin() + p + 1, v.begin() + p + 1 + k);
-                    offsets.push_back(long(ids.size()));
-                    p += 1 + k;
-                  }
-                if (p != size)
-                  f.fail(key + ": " + std::to_string(n) + " cells take " + std::to_string(p) + " values, the section "
-                                                                                                "announces " +
-                         std::to_string(size));
-              }
-            for (const vtkIdType id : ids)
-              if (id < 0 || id >= n_points)
-                f.fail(key + ": point index " + std::to_string(id) + " out of range (" + std::to_string(n_points) +
-                       " points, counted from 0)");
-            for (std::size_t c = 0; c + 1 < offsets.size(); ++c)
-              {
-                const vtkIdType *cell = ids.data() + offsets[c];
-                const long       k    = offsets[c + 1] - offsets[c];
-                if (key == "POLYGONS" && k >= 3)
-                  polys->InsertNextCell(k, cell);
-                else if (key == "POLYGONS")
-                  f.fail("POLYGONS: polygon " + std::to_string(c) + " has " + std::to_string(k) + " points");
-                else if (key == "TRIANGLE_STRIPS") // triangles (i, i+1, i+2), every other one turned
-                  for (long t = 0; t + 2 < k; ++t)
-                    {
-                      const vtkIdType tri[3] = {cell[t], cell[t + (t % 2 ? 2 : 1)], cell[t + (t % 2 ? 1 : 2)]};
-                      polys->InsertNextCell(3, tri);
-                    }
-              }
-          }
+          read_cells(f, key, a, b, n_points, polys);
         else if (key == "METADATA") // information keys, up to a blank line
           while (!f.at_end() && !f.line(true).empty())
             ;
-        else if (key == "FIELD") // FIELD name n, then n arrays "name components tuples type" + values
-          {
-            const long arrays = count_from(f, b, "arrays");
-            for (long k = 0; k < arrays; ++k)
-              {
-                std::istringstream array(f.line());
-                std::string        name, components, tuples, type;
-                array >> name >> components >> tuples >> type;
-                if (name == "NULL_ARRAY")
-                  continue;
-                f.values(count_from(f, components, "components") * count_from(f, tuples, "tuples"), type);
-              }
-          }
+        else if (key == "FIELD")
+          skip_field(f, b);
         else
           f.fail("unknown section '" + l.substr(0, 40) + "'");
       }
