@@ -153,16 +153,114 @@ namespace abrade::coupling
     };
   } // namespace
 
+  namespace
+  {
+    /// The mesh's cells, volume, mass and quality, logged; a mesh with an inverted cell is
+    /// refused.
+    fem::MeshQuality checked_quality(const dealii::Triangulation<3> &tria, double density, io::Log &log)
+    {
+      const fem::MeshQuality q      = fem::mesh_quality(tria);
+      const double           volume = fem::mesh_volume(tria);
+      std::ostringstream     s;
+      s << "Knife: " << tria.n_active_cells() << " cells, volume " << volume << " m^3, mass " << volume * density
+        << " kg; min scaled Jacobian " << q.min_scaled_jacobian << ", max aspect ratio " << q.max_aspect_ratio;
+      log.line(s.str());
+      if (q.n_inverted > 0)
+        throw RunError("the knife mesh has " + std::to_string(q.n_inverted) + " inverted cells (cell " +
+                       std::to_string(q.worst_cell) + " is the worst)");
+      return q;
+    }
+
+    /// The part into @p dir: the mesh with its cells' quality (VTU), its surface (STL, and VTP
+    /// with the boundary ids: 1 wears, 2 clamped) and its faces with their roles (the
+    /// preview's, returned).
+    io::PolyData write_the_part(const dealii::Triangulation<3> &tria, const PartMesh &m, const PartParameters &part,
+                                const fem::SolidSurface &surface, const std::string &dir)
+    {
+      fem::SolidOutput out(dir, "knife");
+      out.write(tria, {{"scaled_jacobian", fem::cell_scaled_jacobians(tria)}}, 0.0);
+      io::write_stl(dir + "/knife.stl", surface.as_polydata());
+      io::write_vtp(dir + "/knife_surface.vtp", surface.as_polydata());
+      io::PolyData faces = part_faces_surface(tria, m, part.from_file);
+      io::write_vtp(dir + "/faces.vtp", faces);
+      return faces;
+    }
+
+    /// The summary's account of the part: cells, volume, mass, surface, quality, box.
+    void describe_the_part(io::Json &r, const dealii::Triangulation<3> &tria, const fem::SolidSurface &surface,
+                           const fem::MeshQuality &q, double density)
+    {
+      const double volume      = fem::mesh_volume(tria);
+      r["cells"]               = static_cast<long>(tria.n_active_cells());
+      r["volume"]              = volume;
+      r["mass"]                = volume * density;
+      r["surface_area"]        = surface.area();
+      r["surface_triangles"]   = static_cast<long>(surface.triangles.size());
+      r["min_scaled_jacobian"] = q.min_scaled_jacobian;
+      r["max_aspect_ratio"]    = q.max_aspect_ratio;
+      const dealii::BoundingBox<3> box = dealii::GridTools::compute_bounding_box(tria);
+      r["bounding_box"] = std::vector<double>{box.lower_bound(0), box.lower_bound(1), box.lower_bound(2),
+                                              box.upper_bound(0), box.upper_bound(1), box.upper_bound(2)};
+    }
+
+    /// A part file's faces as the file numbers them (what Clamped faces / Wearable faces
+    /// select): each face's area, place and role (a box or a normal selector may take a part
+    /// of a face: then it is mixed), each selector's area and faces, and the reading's
+    /// warnings.
+    void describe_the_files_faces(io::Json &r, const PartMesh &m, const std::vector<std::string> &warnings)
+    {
+      r["solids"]        = static_cast<long>(m.report.n_solids);
+      r["wearable_area"] = m.faces.wearable_area;
+      r["clamped_area"]  = m.faces.clamped_area;
+      io::Json &faces    = r["file_faces"];
+      faces              = std::vector<double>{};
+      for (const auto &f : m.file_faces)
+        {
+          io::Json face;
+          face["id"]     = static_cast<long>(f.id);
+          face["name"]   = f.name;
+          face["area"]   = f.area;
+          face["centre"] = std::vector<double>{f.centre[0], f.centre[1], f.centre[2]};
+          face["normal"] = std::vector<double>{f.normal[0], f.normal[1], f.normal[2]};
+          const auto   it       = m.faces.by_face.find(f.id);
+          const auto   role     = it != m.faces.by_face.end() ? it->second : fem::FaceAssignment::Role();
+          const double parts[3] = {role.wearing_area, role.clamped_area, role.held_area};
+          const char  *names[3] = {"wears", "clamped", "held"};
+          int          single = -1, nonzero = 0;
+          for (int k = 0; k < 3; ++k)
+            if (parts[k] > 0)
+              single = k, ++nonzero;
+          face["role"]         = nonzero == 1 ? names[single] : nonzero == 0 ? "none" : "mixed";
+          face["wearing_area"] = role.wearing_area;
+          face["clamped_area"] = role.clamped_area;
+          face["held_area"]    = role.held_area;
+          faces.push_back(face);
+        }
+      io::Json &selectors = r["selectors"];
+      selectors           = std::vector<double>{};
+      for (const auto &t : m.faces.taken)
+        {
+          io::Json one;
+          one["list"]     = t.list;
+          one["selector"] = t.selector;
+          one["area"]     = t.area;
+          one["faces"]    = std::vector<double>{};
+          for (const auto id : t.faces)
+            one["faces"].push_back(static_cast<long>(id));
+          selectors.push_back(one);
+        }
+      r["warnings"] = std::vector<double>{};
+      for (const auto &w : warnings)
+        r["warnings"].push_back(w);
+    }
+  } // namespace
+
   void KnifeJob::run(JobContext &ctx) const
   {
-    const PartParameters       part    = read_part_parameters(ctx.parameters);
-    const fem::ParametricKnife &k       = part.geometry;
-    const double                density = part.density;
-
+    const PartParameters part = read_part_parameters(ctx.parameters);
     init_mpi_once();
-
     const std::string dir = ctx.output.subdirectory("knife");
-    PartMesh         m;
+    PartMesh          m;
     {
       io::ScopedTimer t(ctx.timers, "mesh knife");
       m = mesh_part(part, ctx.parameters, dir);
@@ -170,90 +268,19 @@ namespace abrade::coupling
     const dealii::Triangulation<3> &tria = *m.tria;
     std::vector<std::string>        warnings;
     report_part_mesh(part, m, ctx.log, &warnings);
-    const fem::MeshQuality q = fem::mesh_quality(tria);
-    const double           volume = fem::mesh_volume(tria);
-    std::ostringstream     s;
-    s << "Knife: " << tria.n_active_cells() << " cells, volume " << volume << " m^3, mass " << volume * density
-      << " kg; min scaled Jacobian " << q.min_scaled_jacobian << ", max aspect ratio " << q.max_aspect_ratio;
-    ctx.log.line(s.str());
-    if (q.n_inverted > 0)
-      throw RunError("the knife mesh has " + std::to_string(q.n_inverted) + " inverted cells (cell " +
-                     std::to_string(q.worst_cell) + " is the worst)");
-
-    fem::SolidOutput out(dir, "knife");
-    out.write(tria, {{"scaled_jacobian", fem::cell_scaled_jacobians(tria)}}, 0.0);
+    const fem::MeshQuality  q       = checked_quality(tria, part.density, ctx.log);
     const fem::SolidSurface surface = fem::extract_surface(tria);
-    io::write_stl(dir + "/knife.stl", surface.as_polydata());
-    io::write_vtp(dir + "/knife_surface.vtp", surface.as_polydata()); // boundary_id: 1 wears, 2 clamped
-    const io::PolyData faces = part_faces_surface(tria, m, part.from_file);
-    io::write_vtp(dir + "/faces.vtp", faces); // the preview's (face_id, role)
+    const io::PolyData      faces   = write_the_part(tria, m, part, surface, dir);
 
-    io::Json &r                  = ctx.results["knife"];
-    r["cells"]                   = static_cast<long>(tria.n_active_cells());
-    r["volume"]                  = volume;
-    r["mass"]                    = volume * density;
-    r["surface_area"]            = surface.area();
-    r["surface_triangles"]       = static_cast<long>(surface.triangles.size());
-    r["min_scaled_jacobian"]     = q.min_scaled_jacobian;
-    r["max_aspect_ratio"]        = q.max_aspect_ratio;
-    const dealii::BoundingBox<3> box = dealii::GridTools::compute_bounding_box(tria);
-    r["bounding_box"] = std::vector<double>{box.lower_bound(0), box.lower_bound(1), box.lower_bound(2),
-                                            box.upper_bound(0), box.upper_bound(1), box.upper_bound(2)};
+    io::Json &r = ctx.results["knife"];
+    describe_the_part(r, tria, surface, q, part.density);
     if (!part.from_file)
       {
-        r["analytic_volume"] = k.volume();
-        k.write_step(dir + "/knife.step"); // the design as CAD, in millimetres
+        r["analytic_volume"] = part.geometry.volume();
+        part.geometry.write_step(dir + "/knife.step"); // the design as CAD, in millimetres
       }
     else
-      {
-        // the part's faces as the file numbers them: what Clamped faces / Wearable faces select
-        r["solids"]        = static_cast<long>(m.report.n_solids);
-        r["wearable_area"] = m.faces.wearable_area;
-        r["clamped_area"]  = m.faces.clamped_area;
-        io::Json &faces    = r["file_faces"];
-        faces              = std::vector<double>{};
-        for (const auto &f : m.file_faces)
-          {
-            io::Json face;
-            face["id"]     = static_cast<long>(f.id);
-            face["name"]   = f.name;
-            face["area"]   = f.area;
-            face["centre"] = std::vector<double>{f.centre[0], f.centre[1], f.centre[2]};
-            face["normal"] = std::vector<double>{f.normal[0], f.normal[1], f.normal[2]};
-            // what Clamped faces / Wearable faces made of it (a box or a normal selector may
-            // take a part of a face: then it is mixed)
-            const auto   it   = m.faces.by_face.find(f.id);
-            const auto   role = it != m.faces.by_face.end() ? it->second : fem::FaceAssignment::Role();
-            const double parts[3] = {role.wearing_area, role.clamped_area, role.held_area};
-            const char  *names[3] = {"wears", "clamped", "held"};
-            int          single = -1, nonzero = 0;
-            for (int k = 0; k < 3; ++k)
-              if (parts[k] > 0)
-                single = k, ++nonzero;
-            face["role"]         = nonzero == 1 ? names[single] : nonzero == 0 ? "none" : "mixed";
-            face["wearing_area"] = role.wearing_area;
-            face["clamped_area"] = role.clamped_area;
-            face["held_area"]    = role.held_area;
-            faces.push_back(face);
-          }
-        // each selector: the area and the file's faces it took
-        io::Json &selectors = r["selectors"];
-        selectors           = std::vector<double>{};
-        for (const auto &t : m.faces.taken)
-          {
-            io::Json one;
-            one["list"]     = t.list;
-            one["selector"] = t.selector;
-            one["area"]     = t.area;
-            one["faces"]    = std::vector<double>{};
-            for (const auto id : t.faces)
-              one["faces"].push_back(static_cast<long>(id));
-            selectors.push_back(one);
-          }
-        r["warnings"] = std::vector<double>{};
-        for (const auto &w : warnings)
-          r["warnings"].push_back(w);
-      }
+      describe_the_files_faces(r, m, warnings);
     write_case_scene(ctx, surface, faces, dir);
   }
 
