@@ -73,8 +73,15 @@ if command -v strace > /dev/null; then
   # inside knife_job/ only (/dev/null and the terminal aside, and Open MPI's run time: its
   # session directory ompi.* in the temporary folder and its shared memory /dev/shm/open_mpi.*,
   # removed by MPI_Finalize)
+  # (the mesher works in a directory of its own inside knife_job/, by relative names: its
+  # process's relative paths lie there; a link's first path is what it links to, not written;
+  # removing that directory goes by names relative to its opened subdirectories)
+  mesher_pids=$(grep -E '^[0-9]+ +chdir\("[^"]*knife_job/' trace.txt | awk '{print $1}' | sort -u | paste -sd'|')
   outside=$(grep -E '^[0-9]+ +(open|openat|openat2)\(.*(O_WRONLY|O_RDWR|O_CREAT)|^[0-9]+ +(creat|mkdir|mkdirat|rmdir|unlink|unlinkat|rename|renameat|renameat2|link|linkat|symlink|symlinkat|truncate)\(' trace.txt |
-              grep -v -- "= -1 E" | grep -oE '"[^"]*"' | tr -d '"' |
+              grep -v -- "= -1 E" | grep -vE '^[0-9]+ +unlinkat\([0-9]+, ' |
+              sed -E 's/^([0-9]+ +(link|linkat|symlink|symlinkat)\()([^"]*"[^"]*")/\1/' |
+              if [[ -n $mesher_pids ]]; then grep -vE "^($mesher_pids) +[a-z0-9]+\((AT_FDCWD, )?\"[^/]"; else cat; fi |
+              grep -oE '"[^"]*"' | tr -d '"' |
               while read -r f; do
                 case $f in
                   AT_FDCWD) ;;

@@ -3,7 +3,7 @@
 #  - as soon as its first bed file appears (before the first update: the run went on from the
 #    settled state in memory, the resumed one from the file, and the life came out 1.38e7 t
 #    against 4.99e6 t),
-#  - while the mesher remeshes the worn knife (an abrade-mesher process of the run exists),
+#  - while the mesher remeshes the worn knife (the mesher's directory of the run exists),
 #  - as each update's checkpoint appears, and 0.3 s after (inside the next update's cycles),
 # then resumed with --resume to the end: trajectory, profiles and prediction are byte-identical
 # to the uninterrupted run's at every kill point.
@@ -49,7 +49,7 @@ at_event() {
   echo "the run in $d ended before $what"; exit 1
 }
 bed_exists() { compgen -G "$1/beds/*.bed" > /dev/null || compgen -G "$1/*.bed" > /dev/null; }
-meshing() { pgrep -f -- "$1/knife/work" > /dev/null; }
+meshing() { compgen -G "$1/knife/work/abrade-mesher-*" > /dev/null; } # (the mesher's own directory)
 if grep -q "Wear source *= *analytic" "$prm" 2>/dev/null; then :; else
   at_event "at the first bed file (before the first update)" bed_exists "$out/bed"
 fi
