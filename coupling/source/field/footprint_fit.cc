@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 
 namespace abrade::field
 {
@@ -43,166 +44,220 @@ namespace abrade::field
     }
   } // namespace
 
-  FootprintFit fit_footprint(std::vector<FootprintCandidate> c, const Profile &profile, const ProfileWithout &without)
+  namespace
   {
-    FootprintFit f;
-    c.erase(std::remove_if(c.begin(), c.end(),
-                           [](const FootprintCandidate &k) { return !(k.r > 0 && k.w > 0 && std::isfinite(k.rss)); }),
-            c.end());
-    if (!c.empty()) // not identifiable: W for the footprint assumed (the first run given)
-      f.r = f.r_low = f.r_high = c.front().r, f.w = c.front().w;
-    const FootprintFit assumed = f;
-    std::sort(c.begin(), c.end(), [](const auto &a, const auto &b) { return a.r < b.r; });
-    if (c.empty())
+    /// The fit of the footprint r and W to the candidates (footprint_fit.h), in its steps.
+    class FootprintFitter
+    {
+    public:
+      FootprintFitter(std::vector<FootprintCandidate> candidates, const Profile &profile, const ProfileWithout &without)
+        : c(std::move(candidates)), profile(profile), without(without)
+      {}
+
+      FootprintFit fit()
       {
-        f.reason = "no candidate run records its footprint (Smoothing radius) and a positive fitted W";
-        return f;
-      }
-    const std::size_t best = std::min_element(c.begin(), c.end(), [](const auto &a, const auto &b) {
-                               return a.rss < b.rss;
-                             }) - c.begin();
-    char text[480];
-    for (std::size_t k = 1; k < c.size(); ++k)
-      if (!(c[k].r > c[k - 1].r * (1 + 1e-9)))
+        if (const std::string why = why_not_identifiable(); !why.empty())
         {
-          std::snprintf(text, sizeof text, "two candidates have the same footprint (%.4g m)", c[k].r);
-          f.reason = text;
+          f.reason = why;
           return f;
         }
-    if (c.size() < 3)
-      {
-        f.reason = "fewer than three footprints (Smoothing radius) among the runs: W holds for the best run's";
+        locate_the_minimum();
+        leave_out_candidates();
+        const FootprintCandidate at = profile(f.r, true, true); // the fit there
+        if (!(at.w > 0) || !(at.rss >= 0))
+          {
+            f        = assumed;
+            f.reason = "the fit between the candidates failed (no positive W at the profile's minimum)";
+            return f;
+          }
+        if (!interval_of_r(at))
+          return f;
+        w_and_its_interval(at);
         return f;
       }
-    // (a single depth, or a few close points: before the best's place, which is then arbitrary)
-    f.dof = double(c[best].blocks - 2);
-    if (f.dof < 1)
+
+    private:
+      /// The usable candidates (a footprint, a positive W, a residual), sorted by r, and the
+      /// best; W for the footprint assumed (the first run given) until the fit succeeds. Why
+      /// the footprint cannot be fitted from them ("": it can).
+      std::string why_not_identifiable()
       {
-        f.reason = "the measurements fall into too few spatial blocks to tell the footprint from W (a single "
-                   "depth, or a few close points: W and the footprint are degenerate)";
-        return f;
-      }
-    if (best == 0 || best + 1 == c.size())
-      {
-        std::snprintf(text, sizeof text,
-                      "the best footprint is the %s candidate (%.4g m): the fit lies beyond the candidates; add a run "
-                      "at a %s Smoothing radius",
-                      best == 0 ? "smallest" : "largest", c[best].r, best == 0 ? "smaller" : "larger");
-        f.reason = text;
-        return f;
-      }
-    const double t = boost::math::quantile(boost::math::students_t_distribution<double>(f.dof), 0.975);
-    // r^: the profile's minimum between the best candidate's neighbours (golden sections on
-    // ln r), with the candidates' predictions interpolated in ln r and in r: the two minima
-    // differ by the interpolation's error, and half their distance widens the interval
-    auto         rss   = [&](double x) { return profile(std::exp(x), false, true).rss; };
-    const double x_log = profile_minimum(c, profile, true), x_lin = profile_minimum(c, profile, false);
-    f.half_interpolation = 0.5 * std::abs(x_log - x_lin);
-    f.r                  = std::exp(0.5 * (x_log + x_lin));
-    // the candidates' own error (a replay's geometry feedback left out, a run's beds): r^ again
-    // without each candidate in turn that enters the interpolation from beyond the best and its
-    // neighbours (the best +- 2: leaving out one of those three would measure the interpolation
-    // at twice the spacing, not that candidate), and without each replay among them wherever it
-    // sits (referee helper-14: a biased replay as the best or its neighbour, not left out, took
-    // r's coverage to 0-83 %), where the rest still hold a minimum between them
-    std::vector<double> left_out; // (their footprints)
-    if (without)
-      for (std::size_t k = 0; k < c.size(); ++k)
-        {
-          const bool outer = k + 2 == best || k == best + 2, in_bracket = k + 1 >= best && k <= best + 1;
-          if (!outer && !(in_bracket && c[k].replay))
-            continue;
-          std::vector<FootprintCandidate> rest = c;
-          rest.erase(rest.begin() + long(k));
-          const double x = profile_minimum(rest, without(c[k].r), true);
-          if (std::isfinite(x))
-            f.candidate_sensitivity = std::max(f.candidate_sensitivity, std::abs(x - x_log)), left_out.push_back(c[k].r);
-          else if (c[k].replay)
-            f.replays_not_assessed.push_back(c[k].r);
-        }
-    f.candidates_left_out = int(left_out.size());
-    // the fit there: W, its error, and the residuals' design effect for the interval's level
-    const FootprintCandidate at = profile(f.r, true, true);
-    if (!(at.w > 0) || !(at.rss >= 0))
-      {
-        f        = assumed;
-        f.reason = "the fit between the candidates failed (no positive W at the profile's minimum)";
-        return f;
-      }
-    const double n     = double(at.measurements);
-    const double ratio = n > 2 ? 1 + std::clamp(at.design_effect, 1.0, n / f.dof) * t * t / (n - 2)
-                               : 1 + t * t / f.dof;
-    const double level = at.rss * ratio;
-    // the interval's ends: outwards from r^, the first candidate above the level, then bisection
-    // between it and the point inside; none within the candidates: not identifiable
-    auto end = [&](int direction) {
-      double inside = x_log;
-      for (long k = long(best); k >= 0 && k < long(c.size()); k += direction)
-        {
-          if ((std::log(c[k].r) - inside) * direction <= 0)
-            continue;
-          if (c[k].rss <= level)
+        c.erase(std::remove_if(c.begin(), c.end(),
+                               [](const FootprintCandidate &k) { return !(k.r > 0 && k.w > 0 && std::isfinite(k.rss)); }),
+                c.end());
+        if (!c.empty()) // not identifiable: W for the footprint assumed (the first run given)
+          f.r = f.r_low = f.r_high = c.front().r, f.w = c.front().w;
+        assumed = f;
+        std::sort(c.begin(), c.end(), [](const auto &a, const auto &b) { return a.r < b.r; });
+        if (c.empty())
+          return "no candidate run records its footprint (Smoothing radius) and a positive fitted W";
+        best = std::size_t(std::min_element(c.begin(), c.end(), [](const auto &a, const auto &b) { return a.rss < b.rss; }) -
+                           c.begin());
+        char text[480];
+        for (std::size_t k = 1; k < c.size(); ++k)
+          if (!(c[k].r > c[k - 1].r * (1 + 1e-9)))
             {
-              inside = std::log(c[k].r);
-              continue;
+              std::snprintf(text, sizeof text, "two candidates have the same footprint (%.4g m)", c[k].r);
+              return text;
             }
-          double outside = std::log(c[k].r);
-          for (int it = 0; it < 50 && std::abs(outside - inside) > 1e-7; ++it)
+        if (c.size() < 3)
+          return "fewer than three footprints (Smoothing radius) among the runs: W holds for the best run's";
+        // (a single depth, or a few close points: before the best's place, which is then arbitrary)
+        f.dof = double(c[best].blocks - 2);
+        if (f.dof < 1)
+          return "the measurements fall into too few spatial blocks to tell the footprint from W (a single depth, or "
+                 "a few close points: W and the footprint are degenerate)";
+        if (best == 0 || best + 1 == c.size())
+          {
+            std::snprintf(text, sizeof text,
+                          "the best footprint is the %s candidate (%.4g m): the fit lies beyond the candidates; add a "
+                          "run at a %s Smoothing radius",
+                          best == 0 ? "smallest" : "largest", c[best].r, best == 0 ? "smaller" : "larger");
+            return text;
+          }
+        t = boost::math::quantile(boost::math::students_t_distribution<double>(f.dof), 0.975);
+        return "";
+      }
+
+      /// r^: the profile's minimum between the best candidate's neighbours (golden sections on
+      /// ln r), with the candidates' predictions interpolated in ln r and in r: the two minima
+      /// differ by the interpolation's error, and half their distance widens the interval.
+      void locate_the_minimum()
+      {
+        x_log = profile_minimum(c, profile, true);
+        const double x_lin   = profile_minimum(c, profile, false);
+        f.half_interpolation = 0.5 * std::abs(x_log - x_lin);
+        f.r                  = std::exp(0.5 * (x_log + x_lin));
+      }
+
+      /// The candidates' own error (a replay's geometry feedback left out, a run's beds): r^
+      /// again without each candidate in turn that enters the interpolation from beyond the
+      /// best and its neighbours (the best +- 2: leaving out one of those three would measure
+      /// the interpolation at twice the spacing, not that candidate), and without each replay
+      /// among them wherever it sits (referee helper-14: a biased replay as the best or its
+      /// neighbour, not left out, took r's coverage to 0-83 %), where the rest still hold a
+      /// minimum between them.
+      void leave_out_candidates()
+      {
+        if (without)
+          for (std::size_t k = 0; k < c.size(); ++k)
             {
-              const double x = 0.5 * (inside + outside);
-              (rss(x) <= level ? inside : outside) = x;
+              const bool outer = k + 2 == best || k == best + 2, in_bracket = k + 1 >= best && k <= best + 1;
+              if (!outer && !(in_bracket && c[k].replay))
+                continue;
+              std::vector<FootprintCandidate> rest = c;
+              rest.erase(rest.begin() + long(k));
+              const double x = profile_minimum(rest, without(c[k].r), true);
+              if (std::isfinite(x))
+                f.candidate_sensitivity = std::max(f.candidate_sensitivity, std::abs(x - x_log)), left_out.push_back(c[k].r);
+              else if (c[k].replay)
+                f.replays_not_assessed.push_back(c[k].r);
             }
-          return std::exp(0.5 * (inside + outside));
-        }
-      return 0.0;
+        f.candidates_left_out = int(left_out.size());
+      }
+
+      /// r's interval from the fit @p at r^: the level of the residuals (with the residuals'
+      /// design effect), its ends outwards from r^ (the first candidate above the level, then
+      /// bisection between it and the point inside), widened by the interpolation's or the
+      /// candidates' error. None within the candidates: not identifiable (false, f says why).
+      bool interval_of_r(const FootprintCandidate &at)
+      {
+        const double n     = double(at.measurements);
+        const double ratio = n > 2 ? 1 + std::clamp(at.design_effect, 1.0, n / f.dof) * t * t / (n - 2)
+                                   : 1 + t * t / f.dof;
+        const double level = at.rss * ratio;
+        auto         rss   = [&](double x) { return profile(std::exp(x), false, true).rss; };
+        auto         end   = [&](int direction) {
+          double inside = x_log;
+          for (long k = long(best); k >= 0 && k < long(c.size()); k += direction)
+            {
+              if ((std::log(c[k].r) - inside) * direction <= 0)
+                continue;
+              if (c[k].rss <= level)
+                {
+                  inside = std::log(c[k].r);
+                  continue;
+                }
+              double outside = std::log(c[k].r);
+              for (int it = 0; it < 50 && std::abs(outside - inside) > 1e-7; ++it)
+                {
+                  const double x = 0.5 * (inside + outside);
+                  (rss(x) <= level ? inside : outside) = x;
+                }
+              return std::exp(0.5 * (inside + outside));
+            }
+          return 0.0;
+        };
+        const double widen = std::max(f.half_interpolation, f.candidate_sensitivity);
+        f.r_low = end(-1) * std::exp(-widen), f.r_high = end(+1) * std::exp(widen);
+        if (!(f.r_low > 0) || !(f.r_high > 0))
+          {
+            char text[480];
+            std::snprintf(text, sizeof text,
+                          "the measurements cannot tell the footprint: the residuals do not rise above %.3g of the "
+                          "best within the candidates (%.4g ... %.4g m) on %s side, so W and the footprint are "
+                          "degenerate (a single depth, or no width information); W is given for the footprint assumed "
+                          "(the first run's)",
+                          ratio, c.front().r, c.back().r, f.r_low > 0 ? "the larger" : f.r_high > 0 ? "the smaller" : "either");
+            const double dof = f.dof;
+            f = assumed, f.reason = text, f.dof = dof;
+            return false;
+          }
+        f.identifiable = true, f.reason.clear();
+        f.sd_log_r     = std::log(f.r_high / f.r_low) / (2 * t);
+        return true;
+      }
+
+      /// W at r^ and along the ridge, the life along it from the three candidates' lives, W
+      /// given r (the fit's relative standard error at r^ and the candidates' own error), W's
+      /// interval with r's uncertainty in it, and the joint region (joint_distance).
+      void w_and_its_interval(const FootprintCandidate &at)
+      {
+        f.w               = at.w;
+        const double step = 0.05;
+        f.dlnw_dlnr = std::log(profile(f.r * std::exp(step), false, true).w / profile(f.r * std::exp(-step), false, true).w) /
+                      (2 * step);
+        if (c[best - 1].life > 0 && c[best].life > 0 && c[best + 1].life > 0)
+          {
+            const std::array<double, 3> x = {std::log(c[best - 1].r), std::log(c[best].r), std::log(c[best + 1].r)};
+            auto life = [](const FootprintCandidate &k) { return std::log(k.life / k.scale); };
+            const auto [p, q, unused] = parabola(x, {life(c[best - 1]), life(c[best]), life(c[best + 1])});
+            f.dlnlife_dlnr            = 2 * p * std::log(f.r) + q;
+          }
+        f.sd_log_w       = at.relative_se;
+        f.w_dof          = at.w_dof >= 1 ? std::min(at.w_dof, f.dof) : f.dof;
+        const double t_w = boost::math::quantile(boost::math::students_t_distribution<double>(f.w_dof), 0.975);
+        // W given r carries the candidates' own error too: W at r^ without each candidate left
+        // out above (the profile between the rest)
+        for (const double r : left_out)
+          f.w_candidate_sensitivity =
+            std::max(f.w_candidate_sensitivity, std::abs(std::log(without(r)(f.r, false, true).w / f.w)));
+        const double given_r = t_w * f.sd_log_w + f.w_candidate_sensitivity; // (W given r's half-width on ln W)
+        // (the two parts' half-widths, each at its own degrees of freedom, added in quadrature:
+        // r's along the ridge, W's given r)
+        const double below = std::hypot(f.dlnw_dlnr * std::log(f.r / f.r_low), given_r);
+        const double above = std::hypot(f.dlnw_dlnr * std::log(f.r_high / f.r), given_r);
+        f.w_low            = f.w * std::exp(-(f.dlnw_dlnr >= 0 ? below : above));
+        f.w_high           = f.w * std::exp(f.dlnw_dlnr >= 0 ? above : below);
+        // the joint region's axes: r's interval on each side and W's given r, each at its own
+        // degrees of freedom, scaled to the normal's 1.96: chi-square(2)'s 95 % level then
+        f.joint_sd_w  = given_r / z95;
+        f.joint_level = 5.991464547; // chi-square(0.95; 2)
+      }
+
+      std::vector<FootprintCandidate> c;
+      const Profile                  &profile;
+      const ProfileWithout           &without;
+      FootprintFit                    f, assumed;
+      std::size_t                     best = 0;
+      double                          t = 0, x_log = 0;
+      std::vector<double>             left_out; ///< the footprints of the candidates left out in turn
     };
-    const double widen = std::max(f.half_interpolation, f.candidate_sensitivity);
-    f.r_low = end(-1) * std::exp(-widen), f.r_high = end(+1) * std::exp(widen);
-    if (!(f.r_low > 0) || !(f.r_high > 0))
-      {
-        std::snprintf(text, sizeof text,
-                      "the measurements cannot tell the footprint: the residuals do not rise above %.3g of the best "
-                      "within the candidates (%.4g ... %.4g m) on %s side, so W and the footprint are degenerate (a "
-                      "single depth, or no width information); W is given for the footprint assumed (the first run's)",
-                      ratio, c.front().r, c.back().r, f.r_low > 0 ? "the larger" : f.r_high > 0 ? "the smaller" : "either");
-        const double dof = f.dof;
-        f = assumed, f.reason = text, f.dof = dof;
-        return f;
-      }
-    f.identifiable = true, f.reason.clear();
-    f.sd_log_r     = std::log(f.r_high / f.r_low) / (2 * t);
-    // W at r^ and along the ridge; the life along it from the three candidates' lives
-    f.w          = at.w;
-    const double step = 0.05;
-    f.dlnw_dlnr  = std::log(profile(f.r * std::exp(step), false, true).w / profile(f.r * std::exp(-step), false, true).w) / (2 * step);
-    if (c[best - 1].life > 0 && c[best].life > 0 && c[best + 1].life > 0)
-      {
-        const std::array<double, 3> x = {std::log(c[best - 1].r), std::log(c[best].r), std::log(c[best + 1].r)};
-        auto life = [](const FootprintCandidate &k) { return std::log(k.life / k.scale); };
-        const auto [p, q, unused] = parabola(x, {life(c[best - 1]), life(c[best]), life(c[best + 1])});
-        f.dlnlife_dlnr            = 2 * p * std::log(f.r) + q;
-      }
-    // W given r: the fit's relative standard error at r^; W's own interval with r's uncertainty
-    // in it; the joint region (joint_distance)
-    f.sd_log_w          = at.relative_se;
-    f.w_dof             = at.w_dof >= 1 ? std::min(at.w_dof, f.dof) : f.dof;
-    const double t_w    = boost::math::quantile(boost::math::students_t_distribution<double>(f.w_dof), 0.975);
-    // W given r carries the candidates' own error too: W at r^ without each candidate left out
-    // above (the profile between the rest)
-    for (const double r : left_out)
-      f.w_candidate_sensitivity = std::max(f.w_candidate_sensitivity, std::abs(std::log(without(r)(f.r, false, true).w / f.w)));
-    const double given_r = t_w * f.sd_log_w + f.w_candidate_sensitivity; // (W given r's half-width on ln W)
-    // (the two parts' half-widths, each at its own degrees of freedom, added in quadrature:
-    // r's along the ridge, W's given r)
-    const double below  = std::hypot(f.dlnw_dlnr * std::log(f.r / f.r_low), given_r);
-    const double above  = std::hypot(f.dlnw_dlnr * std::log(f.r_high / f.r), given_r);
-    f.w_low             = f.w * std::exp(-(f.dlnw_dlnr >= 0 ? below : above));
-    f.w_high            = f.w * std::exp(f.dlnw_dlnr >= 0 ? above : below);
-    // the joint region's axes: r's interval on each side and W's given r, each at its own
-    // degrees of freedom, scaled to the normal's 1.96: chi-square(2)'s 95 % level then
-    f.joint_sd_w        = given_r / z95;
-    f.joint_level       = 5.991464547; // chi-square(0.95; 2)
-    return f;
+  } // namespace
+
+  FootprintFit fit_footprint(std::vector<FootprintCandidate> c, const Profile &profile, const ProfileWithout &without)
+  {
+    return FootprintFitter(std::move(c), profile, without).fit();
   }
 
   namespace
