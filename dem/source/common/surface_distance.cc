@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -45,14 +44,16 @@ namespace abrade::geometry
     std::vector<bool>                     vertex_on_rim; ///< per vertex: on such an edge
     std::vector<std::array<double, 6>>    box;           ///< per searched triangle: lo, hi
 
-    /// The searched triangles in a uniform grid of cubic cells (edge @p cell, from @p lo, @p n
-    /// cells along each axis): each listed in every cell its box overlaps (from_cell: offsets
-    /// into in_cell).
-    double                   cell = 1;
-    std::array<double, 3>    lo{};
-    std::array<long, 3>      n{};
-    std::vector<std::size_t> from_cell;
-    std::vector<unsigned>    in_cell;
+    /// A bounding-volume hierarchy of the searched triangles: nodes with the box of what they
+    /// hold, a leaf the triangles order[first, first + count), an inner node its two children
+    /// (the first at the next index, the second at @p second).
+    struct Node
+    {
+      double   box[6];
+      unsigned first = 0, count = 0, second = 0;
+    };
+    std::vector<Node>     nodes;
+    std::vector<unsigned> order;
 
     const double *at(long v) const { return x.data() + 3 * v; }
 
@@ -89,11 +90,6 @@ namespace abrade::geometry
         }
     }
 
-    long cell_index(double c, int axis) const
-    {
-      return std::clamp(long(std::floor((c - lo[axis]) / cell)), 0L, n[axis] - 1);
-    }
-
     /// The squared distance from @p q to the box @p b (lo, hi).
     static double box_distance2(const double q[3], const double *b)
     {
@@ -106,72 +102,46 @@ namespace abrade::geometry
       return d2;
     }
 
-    /// The searched triangle closest to @p q and its closest point: the cells about the one
-    /// nearest q in shells (the cell, then its neighbours, ...) until a triangle is found, then
-    /// every cell within that triangle's distance of q not yet looked at; a cell or a triangle
-    /// whose box lies farther than the closest one found is passed over. Of equally close
-    /// triangles (a point closest to an edge or a vertex they share) the first found is taken:
-    /// they give the same feature, pseudonormal and distance, their closest points differ by
-    /// round-off.
+    /// The searched triangle closest to @p q and its closest point: the hierarchy walked
+    /// nearer child first, a node or a triangle whose box lies farther than the closest one
+    /// found passed over (exact: none that could be closer is left out). Of equally close
+    /// triangles the first found is taken: where they share the edge or vertex closest to q
+    /// they give the same feature, pseudonormal and distance, and their closest points differ
+    /// by round-off; on a surface's medial axis (q as far from two faces) either is right.
     std::pair<unsigned, ClosestPoint> closest_triangle(const double q[3]) const
     {
-      // each thread marks the triangles it has looked at in a query (one may lie in several
-      // cells) with the number of the query
-      thread_local std::vector<std::uint64_t> seen;
-      thread_local std::uint64_t              query = 0;
-      if (seen.size() < searched.size())
-        seen.resize(searched.size(), 0);
-      ++query;
       double       best  = std::numeric_limits<double>::infinity();
       unsigned     found = 0;
       ClosestPoint at_best{};
-      auto         look_at = [&](long ii, long jj, long kk) {
-        const double cell_box[6] = {lo[0] + ii * cell,       lo[1] + jj * cell,       lo[2] + kk * cell,
-                                    lo[0] + (ii + 1) * cell, lo[1] + (jj + 1) * cell, lo[2] + (kk + 1) * cell};
-        if (!(box_distance2(q, cell_box) < best))
-          return;
-        const std::size_t cc = std::size_t((kk * n[1] + jj) * n[0] + ii);
-        for (std::size_t e = from_cell[cc]; e < from_cell[cc + 1]; ++e)
-          {
-            const unsigned t = in_cell[e];
-            if (seen[t] == query)
-              continue;
-            seen[t] = query;
-            if (!(box_distance2(q, box[t].data()) < best))
-              continue;
-            const auto        &v = searched[t];
-            const ClosestPoint p = closest_point_on_triangle(q, at(v[0]), at(v[1]), at(v[2]));
-            const double d2 = (q[0] - p.p[0]) * (q[0] - p.p[0]) + (q[1] - p.p[1]) * (q[1] - p.p[1]) +
-                              (q[2] - p.p[2]) * (q[2] - p.p[2]);
-            if (d2 < best)
-              best = d2, found = t, at_best = p;
-          }
-      };
-      const long c[3] = {cell_index(q[0], 0), cell_index(q[1], 1), cell_index(q[2], 2)};
-      auto       ring = [&](long ii, long jj, long kk) {
-        return std::max({std::abs(ii - c[0]), std::abs(jj - c[1]), std::abs(kk - c[2])});
-      };
-      // shells until one holds a triangle (the cell's neighbours at least)
-      long k = 0;
-      for (const long shells = std::max({n[0], n[1], n[2]}); k < shells; ++k)
+      unsigned     stack[128];
+      int          top = 0;
+      stack[top++]     = 0;
+      while (top > 0)
         {
-          for (long kk = std::max(0L, c[2] - k); kk <= std::min(n[2] - 1, c[2] + k); ++kk)
-            for (long jj = std::max(0L, c[1] - k); jj <= std::min(n[1] - 1, c[1] + k); ++jj)
-              for (long ii = std::max(0L, c[0] - k); ii <= std::min(n[0] - 1, c[0] + k); ++ii)
-                if (ring(ii, jj, kk) == k)
-                  look_at(ii, jj, kk);
-          if (k >= 1 && best < std::numeric_limits<double>::infinity())
-            break;
+          const Node &node = nodes[stack[--top]];
+          if (!(box_distance2(q, node.box) < best))
+            continue;
+          if (node.count > 0)
+            {
+              for (unsigned e = node.first; e < node.first + node.count; ++e)
+                {
+                  const unsigned t = order[e];
+                  if (!(box_distance2(q, box[t].data()) < best))
+                    continue;
+                  const auto        &v = searched[t];
+                  const ClosestPoint p = closest_point_on_triangle(q, at(v[0]), at(v[1]), at(v[2]));
+                  const double d2 = (q[0] - p.p[0]) * (q[0] - p.p[0]) + (q[1] - p.p[1]) * (q[1] - p.p[1]) +
+                                    (q[2] - p.p[2]) * (q[2] - p.p[2]);
+                  if (d2 < best)
+                    best = d2, found = t, at_best = p;
+                }
+              continue;
+            }
+          const unsigned near_child = unsigned(&node - nodes.data()) + 1, far_child = node.second;
+          const bool     swap = box_distance2(q, nodes[far_child].box) < box_distance2(q, nodes[near_child].box);
+          stack[top++]        = swap ? near_child : far_child; // (the nearer one on top: walked first)
+          stack[top++]        = swap ? far_child : near_child;
         }
-      // then the cells within the closest distance found, beyond those shells
-      if (!(best < std::numeric_limits<double>::infinity())) // (none: there is always one)
-        throw std::logic_error("SurfaceDistance: no triangle found");
-      const double r = std::sqrt(best);
-      for (long kk = cell_index(q[2] - r, 2); kk <= cell_index(q[2] + r, 2); ++kk)
-        for (long jj = cell_index(q[1] - r, 1); jj <= cell_index(q[1] + r, 1); ++jj)
-          for (long ii = cell_index(q[0] - r, 0); ii <= cell_index(q[0] + r, 0); ++ii)
-            if (ring(ii, jj, kk) > k)
-              look_at(ii, jj, kk);
       return {found, at_best};
     }
 
@@ -265,49 +235,57 @@ namespace abrade::geometry
             m.vertex_on_rim[a] = m.vertex_on_rim[b] = true;
         }
 
-    // the grid: cubic cells of about the triangles' mean size (at most 64 cells per triangle
-    // and 2^24 in all), each triangle in the cells its box overlaps
-    std::array<double, 3> hi{};
-    double                size = 0;
-    m.lo.fill(std::numeric_limits<double>::infinity());
-    hi.fill(-std::numeric_limits<double>::infinity());
+    // the hierarchy: each node's triangles split at the median of their centres along the
+    // longest side of the centres' box, down to leaves of at most four (a depth of about
+    // log2(n / 4), far below the query's stack of 128)
     m.box.resize(m.searched.size());
+    std::vector<std::array<double, 3>> centre(m.searched.size());
     for (std::size_t i = 0; i < m.searched.size(); ++i)
       {
         const auto &t = m.searched[i];
         auto       &b = m.box[i];
         for (int d = 0; d < 3; ++d)
           {
-            b[d]     = std::min({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
-            b[d + 3] = std::max({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
-            m.lo[d]  = std::min(m.lo[d], b[d]), hi[d] = std::max(hi[d], b[d + 3]);
+            b[d]      = std::min({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
+            b[d + 3]  = std::max({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
+            centre[i][d] = 0.5 * (b[d] + b[d + 3]);
           }
-        size += std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
       }
-    const double extent = std::max({hi[0] - m.lo[0], hi[1] - m.lo[1], hi[2] - m.lo[2]});
-    m.cell              = std::max(size / double(m.searched.size()), 1e-9 * extent);
-    auto cells_along    = [&](int d) { return long(std::floor((hi[d] - m.lo[d]) / m.cell)) + 1; };
-    while (double(cells_along(0)) * double(cells_along(1)) * double(cells_along(2)) >
-           std::min(64.0 * double(m.searched.size()), double(1 << 24)))
-      m.cell *= 1.5;
-    for (int d = 0; d < 3; ++d)
-      m.n[d] = cells_along(d);
-    const std::size_t n_cells   = std::size_t(m.n[0] * m.n[1] * m.n[2]);
-    auto              each_cell = [&](const std::array<double, 6> &b, auto &&visit) {
-      for (long kk = m.cell_index(b[2], 2); kk <= m.cell_index(b[5], 2); ++kk)
-        for (long jj = m.cell_index(b[1], 1); jj <= m.cell_index(b[4], 1); ++jj)
-          for (long ii = m.cell_index(b[0], 0); ii <= m.cell_index(b[3], 0); ++ii)
-            visit(std::size_t((kk * m.n[1] + jj) * m.n[0] + ii));
+    m.order.resize(m.searched.size());
+    for (unsigned i = 0; i < m.order.size(); ++i)
+      m.order[i] = i;
+    m.nodes.reserve(2 * m.searched.size());
+    auto build = [&](auto &&self, unsigned first, unsigned count) -> void {
+      const unsigned index = unsigned(m.nodes.size());
+      m.nodes.emplace_back();
+      double lo[3], hi[3], clo[3], chi[3];
+      for (int d = 0; d < 3; ++d)
+        lo[d] = clo[d] = std::numeric_limits<double>::infinity(), hi[d] = chi[d] = -lo[d];
+      for (unsigned e = first; e < first + count; ++e)
+        for (int d = 0; d < 3; ++d)
+          {
+            const unsigned t = m.order[e];
+            lo[d] = std::min(lo[d], m.box[t][d]), hi[d] = std::max(hi[d], m.box[t][d + 3]);
+            clo[d] = std::min(clo[d], centre[t][d]), chi[d] = std::max(chi[d], centre[t][d]);
+          }
+      for (int d = 0; d < 3; ++d)
+        m.nodes[index].box[d] = lo[d], m.nodes[index].box[d + 3] = hi[d];
+      if (count <= 4)
+        {
+          m.nodes[index].first = first, m.nodes[index].count = count;
+          return;
+        }
+      const int axis = chi[0] - clo[0] >= chi[1] - clo[1] && chi[0] - clo[0] >= chi[2] - clo[2] ? 0
+                       : chi[1] - clo[1] >= chi[2] - clo[2]                                     ? 1
+                                                                                                 : 2;
+      const unsigned half = count / 2;
+      std::nth_element(m.order.begin() + first, m.order.begin() + first + half, m.order.begin() + first + count,
+                       [&](unsigned a, unsigned b) { return centre[a][axis] < centre[b][axis] || (centre[a][axis] == centre[b][axis] && a < b); });
+      self(self, first, half);
+      m.nodes[index].second = unsigned(m.nodes.size());
+      self(self, first + half, count - half);
     };
-    m.from_cell.assign(n_cells + 1, 0);
-    for (const auto &b : m.box)
-      each_cell(b, [&](std::size_t c) { ++m.from_cell[c + 1]; });
-    for (std::size_t c = 0; c < n_cells; ++c)
-      m.from_cell[c + 1] += m.from_cell[c];
-    m.in_cell.resize(m.from_cell[n_cells]);
-    std::vector<std::size_t> fill(m.from_cell.begin(), m.from_cell.end() - 1);
-    for (unsigned i = 0; i < m.searched.size(); ++i)
-      each_cell(m.box[i], [&](std::size_t c) { m.in_cell[fill[c]++] = i; });
+    build(build, 0, unsigned(m.searched.size()));
   }
 
   SurfaceDistance::~SurfaceDistance()                                     = default;
