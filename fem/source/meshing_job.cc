@@ -105,7 +105,9 @@ namespace abrade::fem
     /// the mesher installed elsewhere, or one environment variable more or less gave another
     /// mesh of the same job. Made by mkdtemp (a name no other job, process or node has), padded
     /// by nested directories of at most 60 characters (file systems that allow short names
-    /// only), removed with everything in it when done.
+    /// only), removed with everything in it when done; those that a run killed while it meshed
+    /// left behind are removed by the next job beside them (its owner file names the host and
+    /// the process).
     ///
     /// A Gmsh script (.geo: abrade convert) is run where it is instead, its own relative
     /// paths (Merge, Save) meaning what its author meant.
@@ -128,6 +130,7 @@ namespace abrade::fem
         const fs::path beside = fs::canonical(fs::absolute(job.output, ec).parent_path(), ec);
         if (ec)
           throw RunError("no directory for the mesher's output " + job.output + ": " + ec.message());
+        remove_stale_directories(beside);
         std::string       pattern = (beside / "abrade-mesher-XXXXXX").string();
         std::vector<char> name(pattern.begin(), pattern.end());
         name.push_back('\0');
@@ -136,6 +139,7 @@ namespace abrade::fem
         top = path = name.data();
         try
           {
+            std::ofstream(top + "/owner") << this_host() << ' ' << ::getpid() << '\n';
             while (path.size() + 1 < path_length)
               path += "/" + std::string(std::min<std::size_t>(60, path_length - path.size() - 1), '_');
             fs::create_directories(path, ec);
@@ -186,6 +190,34 @@ namespace abrade::fem
       std::vector<std::string> notes; ///< for the job's notes
       
     private:
+      static std::string this_host()
+      {
+        char host[256] = {};
+        ::gethostname(host, sizeof host - 1);
+        return host;
+      }
+
+      /// The directories of mesher jobs beside @p beside whose process has ended without
+      /// removing them (a run killed while it meshed): those this host's processes made (their
+      /// owner file names the host and the process), whose process is gone. (Another host's,
+      /// on a shared file system, are left alone: their process cannot be asked from here.)
+      static void remove_stale_directories(const std::filesystem::path &beside)
+      {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        for (const auto &entry : fs::directory_iterator(beside, ec))
+          {
+            const std::string name = entry.path().filename().string();
+            if (name.size() != 20 || name.rfind("abrade-mesher-", 0) != 0 || !entry.is_directory(ec))
+              continue;
+            std::ifstream owner(entry.path() / "owner");
+            std::string   host;
+            long          pid = 0;
+            if (owner >> host >> pid && host == this_host() && pid > 0 && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH)
+              fs::remove_all(entry.path(), ec);
+          }
+      }
+
       /// @p file, its links resolved, into the directory as @p name: a hard link, else a copy.
       /// (Through a symbolic link the file's own path reached the child's memory, and another
       /// mesh came from an input in a directory of another length.)

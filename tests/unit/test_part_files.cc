@@ -269,6 +269,37 @@ TEST(PartFiles, TheSameJobMeshesTheSameEveryTime)
     EXPECT_EQ(entry.path().filename().string().rfind("abrade-mesher-", 0), std::string::npos) << entry.path();
 }
 
+// A mesher's directory that a run killed while it meshed left beside the output is removed by
+// the next job there (its process is gone); one whose process lives is kept.
+TEST(PartFiles, AMeshersDirectoryLeftByAKilledRunIsRemoved)
+{
+  const std::string dir = tmp("abrade_stale_mesher");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/abrade-mesher-Killed/____");
+  std::filesystem::create_directories(dir + "/abrade-mesher-Living");
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  const pid_t gone = ::fork();
+  if (gone == 0)
+    ::_exit(0);
+  ::waitpid(gone, nullptr, 0);
+  std::ofstream(dir + "/abrade-mesher-Killed/owner") << host << ' ' << gone << '\n';
+  std::ofstream(dir + "/abrade-mesher-Living/owner") << host << ' ' << ::getpid() << '\n';
+  MeshingJob job;
+  job.input          = std::string(ABRADE_TESTS_DIR) + "/cli/knife_mm.stl";
+  job.output         = dir + "/knife.msh";
+  job.mesh_size      = 40;
+  job.settings.scale = 0.001;
+  run_meshing_job(job);
+  EXPECT_TRUE(std::filesystem::exists(job.output));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/abrade-mesher-Killed")) << "left by a killed run";
+  EXPECT_TRUE(std::filesystem::exists(dir + "/abrade-mesher-Living")) << "a living process's";
+  std::size_t left = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(dir))
+    left += entry.path().filename().string().rfind("abrade-mesher-", 0) == 0;
+  EXPECT_EQ(left, 1u) << "the job's own directory was not removed";
+}
+
 TEST(PartFiles, SelectorsAreParsedOrRefused)
 {
   const auto v = parse_face_selectors("group bolt holes; normal 0, 0, 2, 30 ;box 1,2,3, 0,0,0");
