@@ -48,7 +48,7 @@ namespace abrade::fem
     depth[0] = da, depth[1] = db, depth[2] = dc;
     d_max    = std::max({da, db, dc});
     for (int q = 0; q < 3; ++q)
-      lo[q] = std::min({a[q], b[q], c[q]}), hi[q] = std::max({a[q], b[q], c[q]});
+      bounds[q] = std::min({a[q], b[q], c[q]}), bounds[q + 3] = std::max({a[q], b[q], c[q]});
     for (int q = 0; q < 3; ++q)
       e1[q] = b[q] - a[q], e2[q] = c[q] - a[q];
     d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
@@ -69,7 +69,7 @@ namespace abrade::fem
 
   std::array<double, 6> SweptTriangle::box() const
   {
-    return {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
+    return {bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5]};
   }
 
   double SweptTriangle::distance(const double *x, double *foot) const

@@ -155,12 +155,11 @@ namespace abrade::coupling
 
   namespace
   {
-    /// The mesh's cells, volume, mass and quality, logged; a mesh with an inverted cell is
+    /// The mesh's cells, @p volume, mass and quality, logged; a mesh with an inverted cell is
     /// refused.
-    fem::MeshQuality checked_quality(const dealii::Triangulation<3> &tria, double density, io::Log &log)
+    fem::MeshQuality checked_quality(const dealii::Triangulation<3> &tria, double volume, double density, io::Log &log)
     {
-      const fem::MeshQuality q      = fem::mesh_quality(tria);
-      const double           volume = fem::mesh_volume(tria);
+      const fem::MeshQuality q = fem::mesh_quality(tria);
       std::ostringstream     s;
       s << "Knife: " << tria.n_active_cells() << " cells, volume " << volume << " m^3, mass " << volume * density
         << " kg; min scaled Jacobian " << q.min_scaled_jacobian << ", max aspect ratio " << q.max_aspect_ratio;
@@ -187,10 +186,9 @@ namespace abrade::coupling
     }
 
     /// The summary's account of the part: cells, volume, mass, surface, quality, box.
-    void describe_the_part(io::Json &r, const dealii::Triangulation<3> &tria, const fem::SolidSurface &surface,
-                           const fem::MeshQuality &q, double density)
+    void describe_the_part(io::Json &r, const dealii::Triangulation<3> &tria, double volume,
+                           const fem::SolidSurface &surface, const fem::MeshQuality &q, double density)
     {
-      const double volume      = fem::mesh_volume(tria);
       r["cells"]               = static_cast<long>(tria.n_active_cells());
       r["volume"]              = volume;
       r["mass"]                = volume * density;
@@ -268,12 +266,13 @@ namespace abrade::coupling
     const dealii::Triangulation<3> &tria = *m.tria;
     std::vector<std::string>        warnings;
     report_part_mesh(part, m, ctx.log, &warnings);
-    const fem::MeshQuality  q       = checked_quality(tria, part.density, ctx.log);
+    const double            volume  = fem::mesh_volume(tria);
+    const fem::MeshQuality  q       = checked_quality(tria, volume, part.density, ctx.log);
     const fem::SolidSurface surface = fem::extract_surface(tria);
     const io::PolyData      faces   = write_the_part(tria, m, part, surface, dir);
 
     io::Json &r = ctx.results["knife"];
-    describe_the_part(r, tria, surface, q, part.density);
+    describe_the_part(r, tria, volume, surface, q, part.density);
     if (!part.from_file)
       {
         r["analytic_volume"] = part.geometry.volume();

@@ -90,18 +90,6 @@ namespace abrade::geometry
         }
     }
 
-    /// The squared distance from @p q to the box @p b (lo, hi).
-    static double box_distance2(const double q[3], const double *b)
-    {
-      double d2 = 0;
-      for (int d = 0; d < 3; ++d)
-        {
-          const double out = q[d] < b[d] ? b[d] - q[d] : q[d] > b[d + 3] ? q[d] - b[d + 3] : 0.0;
-          d2 += out * out;
-        }
-      return d2;
-    }
-
     /// The searched triangle closest to @p q and its closest point: the hierarchy walked
     /// nearer child first, a node or a triangle whose box lies farther than the closest one
     /// found passed over (exact: none that could be closer is left out). Of equally close

@@ -91,6 +91,18 @@ namespace abrade::geometry
     const double inv = 1 / dot(n, n), la = dot(n, na) * inv, lb = dot(n, nb) * inv;
     return {la, lb, 1 - la - lb};
   }
+
+  /// The squared distance from @p q to the box @p b (lo x, y, z, then hi x, y, z): 0 inside.
+  inline double box_distance2(const double q[3], const double *b)
+  {
+    double d2 = 0;
+    for (int d = 0; d < 3; ++d)
+      {
+        const double out = q[d] < b[d] ? b[d] - q[d] : q[d] > b[d + 3] ? q[d] - b[d + 3] : 0.0;
+        d2 += out * out;
+      }
+    return d2;
+  }
 } // namespace abrade::geometry
 
 namespace abrade::dem

@@ -16,6 +16,7 @@
 // where the depth is smaller than their spacing). f is 1-Lipschitz with |grad f| = 1, grad f =
 // (x - p*) / |x - p*| at the minimiser p*, so x - f grad f is the point of the front nearest x
 // where the minimiser does not change (on a flat face's offset: exactly).
+#include <abrade/common/closest_point.h>
 #include <abrade/common/vtk_output.h>
 
 #include <array>
@@ -47,18 +48,13 @@ namespace abrade::fem
       const double bound = value + guard + d_max;
       if (bound < 0)
         return true;
-      double gap2 = 0;
-      for (int c = 0; c < 3; ++c)
-        {
-          const double out = x[c] < lo[c] ? lo[c] - x[c] : x[c] > hi[c] ? x[c] - hi[c] : 0.0;
-          gap2 += out * out;
-        }
+      const double gap2 = geometry::box_distance2(x, bounds);
       return gap2 > bound * bound;
     }
 
   private:
     double corner[3][3], depth[3], e1[3], e2[3], normal[3] = {0, 0, 0};
-    double lo[3], hi[3]; ///< the box
+    double bounds[6]; ///< the box: lo x, y, z, hi x, y, z
     double d00 = 0, d01 = 0, d11 = 0, det = 0; ///< Gram matrix of e1, e2
     double alpha = 0, beta = 0, gg = 0;        ///< g = alpha e1 + beta e2, |g|^2
     double d_max = 0;
