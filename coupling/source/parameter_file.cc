@@ -263,6 +263,8 @@ namespace abrade::coupling
       }
     for (const auto &s : set)
       overrides.push_back(parse_override(s));
+    // entries that moved, read where they are now
+    const std::vector<std::string> moved = read_moved_entries(text, origin, file, overrides);
 
     // pass 1: the lists that shape the declarations
     dealii::ParameterHandler lists;
@@ -279,7 +281,9 @@ namespace abrade::coupling
     for (const auto &o : overrides)
       apply_override(choices, o, true);
     l.wall_choices = read_wall_choices(choices, l.walls);
-    notes_         = leave_out_replaced_entries(text, origin, file, l, overrides);
+    notes_         = moved;
+    for (auto &note : leave_out_replaced_entries(text, origin, file, l, overrides))
+      notes_.push_back(note);
     overrides.erase(std::remove_if(overrides.begin(), overrides.end(),
                                    [&l](const Override &o) { return is_foreign_default(l, o.path, o.key, o.value); }),
                     overrides.end());

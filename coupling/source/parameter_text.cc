@@ -78,6 +78,90 @@ namespace abrade::coupling
     return f && f->at_default(value);
   }
 
+  namespace
+  {
+    /// An entry that moved: key @p old_key of a subsection named @p in is now @p key of its
+    /// subsection @p now.
+    struct MovedEntry
+    {
+      const char *in, *old_key, *now, *key;
+    };
+    // each wear law's parameters moved into the law's own subsection of Wear (the plugins)
+    constexpr MovedEntry moved_entries[] = {{"Wear", "Archard coefficient", "Archard", "Coefficient"},
+                                            {"Wear", "Finnie coefficient", "Finnie", "Coefficient"}};
+
+    const MovedEntry *moved_entry(const std::vector<std::string> &path, const std::string &key)
+    {
+      for (const auto &m : moved_entries)
+        if (!path.empty() && path.back() == m.in && key == m.old_key)
+          return &m;
+      return nullptr;
+    }
+
+    std::string joined(const std::vector<std::string> &path, const std::string &key)
+    {
+      std::string s;
+      for (const auto &p : path)
+        s += p + "/";
+      return s + key;
+    }
+  } // namespace
+
+  std::vector<std::string> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
+                                              const std::string &file, std::vector<Override> &overrides)
+  {
+    const std::vector<std::string>           lines   = lines_of(text);
+    const auto                               entries = entries_by_line(lines);
+    std::vector<std::pair<std::string, int>> from    = origin;
+    for (std::size_t n = from.size(); n < lines.size(); ++n) // (no file: the embedded default case)
+      from.emplace_back(file, int(n + 1));
+    std::vector<std::string>                 notes, out;
+    std::vector<std::pair<std::string, int>> out_origin;
+    const auto note = [&notes](const std::string &where, const MovedEntry &m, const std::vector<std::string> &path) {
+      std::vector<std::string> now = path;
+      now.push_back(m.now);
+      notes.push_back(where + ": " + joined(path, m.old_key) + " is read as " + joined(now, m.key) +
+                      " (its place now; the old spelling still works)");
+    };
+    for (std::size_t n = 0; n < lines.size(); ++n)
+      {
+        const MovedEntry *m = moved_entry(entries[n].path, entries[n].key);
+        if (!m)
+          {
+            out.push_back(lines[n]);
+            out_origin.push_back(from[n]);
+            continue;
+          }
+        note(from[n].first + ":" + std::to_string(from[n].second), *m, entries[n].path);
+        for (const std::string &l : {std::string("subsection ") + m->now,
+                                     std::string("  set ") + m->key + " = " + entries[n].value, std::string("end")})
+          {
+            out.push_back(l);
+            out_origin.push_back(from[n]);
+          }
+        for (std::size_t k = n + 1; k <= entries[n].last; ++k) // (the lines it continued into)
+          {
+            out.push_back("");
+            out_origin.push_back(from[k]);
+          }
+        n = entries[n].last;
+      }
+    for (auto &o : overrides)
+      if (const MovedEntry *m = moved_entry(o.path, o.key))
+        {
+          note("--set '" + o.text + "'", *m, o.path);
+          o.path.push_back(m->now);
+          o.key = m->key;
+        }
+    if (notes.empty())
+      return notes;
+    text.clear();
+    for (const auto &l : out)
+      text += l + "\n";
+    origin = out_origin;
+    return notes;
+  }
+
   std::vector<std::string> leave_out_replaced_entries(std::string &text, std::vector<std::pair<std::string, int>> origin,
                                                       const std::string &file, const DeclarationLists &lists,
                                                       const std::vector<Override> &overrides)

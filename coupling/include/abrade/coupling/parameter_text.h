@@ -42,6 +42,14 @@ namespace abrade::coupling
   bool is_foreign_default(const DeclarationLists &lists, const std::vector<std::string> &path, const std::string &key,
                           const std::string &value);
 
+  /// Entries that moved keep working under their old spelling: each line of @p text that sets
+  /// one (`set Archard coefficient = W` in a wall's Wear) becomes the entry where it is now
+  /// (`subsection Archard`, `set Coefficient = W`, `end`), in place, so that the last setting
+  /// still wins; @p origin follows the new lines. Each --set of @p overrides with an old path is
+  /// rewritten likewise. Returns a note per old spelling read, saying where it is now.
+  std::vector<std::string> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
+                                              const std::string &file, std::vector<Override> &overrides);
+
   /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
   /// another geometry or motion than the wall's (@p lists), when they are
   ///  - that geometry's or motion's defaults (a parameters.prm written by an earlier version,

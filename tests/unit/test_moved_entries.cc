@@ -1,0 +1,121 @@
+// An entry that moved keeps working under its old spelling (parameter_text.h,
+// read_moved_entries): a wall's `Wear/Archard coefficient` of an older case file is read as
+// `Wear/Archard/Coefficient`, where it is now, in the file and in --set, with a note naming
+// where it was read; the last setting still wins whichever spelling gives it, and every later
+// line of the file keeps its number in messages.
+#include <abrade/coupling/parameter_file.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace
+{
+  namespace fs = std::filesystem;
+
+  const std::string knife_bed = ABRADE_TESTS_DIR "/../cases/knife_bed/knife_bed.prm";
+
+  /// Writes @p body after an include of the knife-bed case into a file of its own.
+  std::string case_file(const std::string &name, const std::string &body)
+  {
+    const fs::path dir = fs::temp_directory_path() / ("abrade_moved_entries_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string file = (dir / name).string();
+    std::ofstream(file) << "include " << knife_bed << "\n" << body;
+    return file;
+  }
+
+  double coefficient(abrade::coupling::ParameterFile &f, const std::string &law)
+  {
+    auto &prm = f.handler();
+    prm.enter_subsection("Wall knife");
+    prm.enter_subsection("Wear");
+    prm.enter_subsection(law);
+    const double w = prm.get_double("Coefficient");
+    prm.leave_subsection();
+    prm.leave_subsection();
+    prm.leave_subsection();
+    return w;
+  }
+
+  bool has_note(const abrade::coupling::ParameterFile &f, const std::string &text)
+  {
+    for (const auto &n : f.notes())
+      if (n.find(text) != std::string::npos)
+        return true;
+    return false;
+  }
+} // namespace
+
+TEST(MovedEntries, TheOldSpellingInAFileIsReadWhereTheEntryIsNow)
+{
+  const std::string file = case_file("old.prm", "subsection Wall knife\n"
+                                                "  subsection Wear\n"
+                                                "    set Laws = archard, finnie\n"
+                                                "    set Archard coefficient = 3e-14   # an older file\n"
+                                                "    set Finnie coefficient  = 0.25\n"
+                                                "  end\n"
+                                                "end\n");
+  abrade::coupling::ParameterFile f(file, {});
+  EXPECT_EQ(coefficient(f, "Archard"), 3e-14);
+  EXPECT_EQ(coefficient(f, "Finnie"), 0.25);
+  EXPECT_TRUE(has_note(f, file + ":5: Wall knife/Wear/Archard coefficient is read as Wall knife/Wear/Archard/Coefficient"));
+  EXPECT_TRUE(has_note(f, file + ":6: Wall knife/Wear/Finnie coefficient is read as"));
+}
+
+TEST(MovedEntries, TheLastSettingWinsWhicheverSpellingGivesIt)
+{
+  const std::string new_last = case_file("new_last.prm", "subsection Wall knife\n  subsection Wear\n"
+                                                         "    set Archard coefficient = 3e-14\n"
+                                                         "    subsection Archard\n      set Coefficient = 5e-14\n    end\n"
+                                                         "  end\nend\n");
+  abrade::coupling::ParameterFile a(new_last, {});
+  EXPECT_EQ(coefficient(a, "Archard"), 5e-14);
+  const std::string old_last = case_file("old_last.prm", "subsection Wall knife\n  subsection Wear\n"
+                                                         "    subsection Archard\n      set Coefficient = 5e-14\n    end\n"
+                                                         "    set Archard coefficient = 3e-14\n"
+                                                         "  end\nend\n");
+  abrade::coupling::ParameterFile b(old_last, {});
+  EXPECT_EQ(coefficient(b, "Archard"), 3e-14);
+  // (the knife-bed case itself sets the new spelling to 1: the old one after it wins)
+  abrade::coupling::ParameterFile c(knife_bed, {"Wall knife/Wear/Archard coefficient=7e-14"});
+  EXPECT_EQ(coefficient(c, "Archard"), 7e-14);
+  EXPECT_TRUE(has_note(c, "--set 'Wall knife/Wear/Archard coefficient=7e-14': Wall knife/Wear/Archard coefficient is "
+                          "read as Wall knife/Wear/Archard/Coefficient"));
+  abrade::coupling::ParameterFile d(knife_bed, {"Wall knife/Wear/Archard coefficient=7e-14",
+                                                "Wall knife/Wear/Archard/Coefficient=2e-14"});
+  EXPECT_EQ(coefficient(d, "Archard"), 2e-14);
+}
+
+// the rewritten entry takes three lines where it had one (or continued over several): a mistake
+// after it is still named by its own line, and a continued value is read whole
+TEST(MovedEntries, LaterLinesKeepTheirNumbers)
+{
+  const std::string file = case_file("numbers.prm", "subsection Wall knife\n"
+                                                    "  subsection Wear\n"
+                                                    "    set Archard coefficient = \\\n"
+                                                    "        4e-14\n"
+                                                    "    set Lawz = archard\n"
+                                                    "  end\n"
+                                                    "end\n");
+  try
+    {
+      abrade::coupling::ParameterFile f(file, {});
+      FAIL() << "a misspelt key was read";
+    }
+  catch (const std::exception &e)
+    {
+      EXPECT_NE(std::string(e.what()).find(file + ":6:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("Lawz"), std::string::npos) << e.what();
+    }
+  const std::string whole = case_file("continued.prm", "subsection Wall knife\n"
+                                                       "  subsection Wear\n"
+                                                       "    set Archard coefficient = \\\n"
+                                                       "        4e-14\n"
+                                                       "  end\n"
+                                                       "end\n");
+  abrade::coupling::ParameterFile f(whole, {});
+  EXPECT_EQ(coefficient(f, "Archard"), 4e-14);
+  EXPECT_EQ(f.locate({"Wall knife", "Wear", "Archard"}, "Coefficient"), whole + ":4");
+}
