@@ -26,10 +26,11 @@ namespace
   const Material pellet = Material::from_shear_modulus("pellet", 1e8, 0.25, 3700, true);
 
   /// A dense gas of particles with random velocities, no gravity, no walls.
-  Simulation gas(int threads, double skin, int n = 400, std::uint64_t seed = 3)
+  Simulation gas(int threads, double skin, int n = 400, std::uint64_t seed = 3, int shares = 0)
   {
     Settings s = quiet_settings(5e-5);
     s.threads  = threads;
+    s.shares   = shares;
     s.skin     = skin;
     Simulation sim(s);
     const int  m = sim.add_material(pellet);
@@ -65,9 +66,17 @@ namespace
   }
 } // namespace
 
-TEST(Engine, MomentumIsConservedWithoutWallsAndGravity)
+// Also with more shares of the pair loop than two: a share other than the first adds into its
+// own buffer over the particles its pairs reach (Impl::share_spans), and with three or more a
+// share's pairs reach into the next share's rows: a span that misses them loses forces.
+class EngineShares : public ::testing::TestWithParam<int>
+{};
+INSTANTIATE_TEST_SUITE_P(Engine, EngineShares, ::testing::Values(2, 5));
+
+TEST_P(EngineShares, MomentumIsConservedWithoutWallsAndGravity)
 {
-  Simulation  sim = gas(2, 0);
+  Simulation  sim = gas(2, 0, 400, 3, GetParam());
+  ASSERT_EQ(sim.shares(), GetParam());
   const auto &P   = sim.particles();
   auto momentum = [&] {
     Vec3 p = Vec3::Zero();

@@ -94,8 +94,8 @@ namespace abrade::dem
     m.max_displacement = 0;
     for (auto &w : walls)
       w.mark_build();
-    for (auto &b : m.buffers)
-      b.assign(7 * n_local, 0.0);
+    for (auto &b : m.buffers) // (each step zeroes what its share touches: share_spans)
+      b.resize(7 * n_local);
     m.force_rebuild = false;
     ++stats.rebuilds;
   }
@@ -272,6 +272,24 @@ namespace abrade::dem
         while (i < n && double(offsets[i]) + 4.0 * i < target)
           ++i;
         thread_begin[t] = i;
+      }
+    // what each share's pairs touch (its buffer's extent)
+    share_spans.assign(n_threads, {});
+    for (int t = 0; t < n_threads; ++t)
+      {
+        ShareSpan &s = share_spans[t];
+        s.owned_begin = thread_begin[t], s.owned_end = thread_begin[t + 1];
+        s.ghost_begin = std::numeric_limits<std::size_t>::max(), s.ghost_end = 0;
+        for (std::size_t k = offsets[thread_begin[t]]; k < offsets[thread_begin[t + 1]]; ++k)
+          {
+            const std::size_t j = std::size_t(neighbours[k]);
+            if (j < n)
+              s.owned_begin = std::min(s.owned_begin, j), s.owned_end = std::max(s.owned_end, j + 1);
+            else
+              s.ghost_begin = std::min(s.ghost_begin, j), s.ghost_end = std::max(s.ghost_end, j + 1);
+          }
+        if (s.ghost_begin >= s.ghost_end)
+          s.ghost_begin = s.ghost_end = n;
       }
   }
 

@@ -224,18 +224,29 @@ namespace abrade::dem
       const int team = omp_get_num_threads();
       double   *fx, *fy, *fz, *tx, *ty, *tz, *rl;
       auto      use_buffer_of = [&](int range) {
+        // share 0's are every particle's sums, zeroed whole; another share's buffer only where
+        // its pairs add (Impl::share_spans: the rest stays zero)
+        auto zero = [&](std::size_t begin, std::size_t end) {
+          for (double *a : {fx, fy, fz})
+            std::fill(a + begin, a + end, 0.0);
+          if (rotation)
+            for (double *a : {tx, ty, tz, rl})
+              std::fill(a + begin, a + end, 0.0);
+        };
         if (range == 0)
-          fx = P.fx.data(), fy = P.fy.data(), fz = P.fz.data(), tx = P.tx.data(), ty = P.ty.data(),
-          tz = P.tz.data(), rl = P.rolling.data();
+          {
+            fx = P.fx.data(), fy = P.fy.data(), fz = P.fz.data(), tx = P.tx.data(), ty = P.ty.data(),
+            tz = P.tz.data(), rl = P.rolling.data();
+            zero(0, n);
+          }
         else
           {
             double *b = m.buffers[range].data();
             fx = b, fy = b + n, fz = b + 2 * n, tx = b + 3 * n, ty = b + 4 * n, tz = b + 5 * n, rl = b + 6 * n;
+            const auto &span = m.share_spans[range];
+            zero(span.owned_begin, span.owned_end);
+            zero(span.ghost_begin, span.ghost_end);
           }
-        std::fill(fx, fx + n, 0.0), std::fill(fy, fy + n, 0.0), std::fill(fz, fz + n, 0.0);
-        if (rotation)
-          std::fill(tx, tx + n, 0.0), std::fill(ty, ty + n, 0.0), std::fill(tz, tz + n, 0.0),
-            std::fill(rl, rl + n, 0.0);
       };
       double my_worst = 0;
       long   my_i = -1, my_j = -1;

@@ -11,10 +11,17 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace abrade::dem
 {
+  /// The contiguous share of @p n items of thread @p t of @p team (static schedule).
+  inline std::pair<std::size_t, std::size_t> share(std::size_t n, int t, int team)
+  {
+    return {n * t / team, n * (t + 1) / team};
+  }
+
   struct Simulation::Impl
   {
     /// The shares each step's work is cut into (Settings::threads): they, not the number of
@@ -135,6 +142,15 @@ namespace abrade::dem
     // per-share force buffers (share 0 writes to the particle arrays), wall loads and wall
     // contacts (ContactLog::per_thread holds one list per share)
     std::vector<std::vector<double>> buffers;    // 7 n_local per share >= 1 (force, torque, rolling)
+    /// The particles a share's pairs touch: its rows and the partners after them (the list is
+    /// a forward half list of particles sorted by cell, so a share of about n / shares rows
+    /// reaches a layer of cells beyond them), owned [0] .. [1] and ghosts [2] .. [3]. A share's
+    /// buffer is zeroed and added back over these only: the rest of it stays zero.
+    struct ShareSpan
+    {
+      std::size_t owned_begin = 0, owned_end = 0, ghost_begin = 0, ghost_end = 0;
+    };
+    std::vector<ShareSpan> share_spans;
     std::vector<std::vector<double>> wall_loads; // 6 per wall per share
     ContactLog                       log;
 
