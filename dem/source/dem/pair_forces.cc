@@ -2,12 +2,13 @@
 // of pairs so that the arithmetic vectorises:
 //
 //  1. scan the list (scalar, one stream over its pairs): distance test, queue the pairs in
-//     contact (i, j, list slot: three integers), and forget the history of a pair whose contact
-//     ended (told by the slot's one-byte 'touching' flag, so a history is read only for pairs in
-//     contact);
-//  2. contact forces of the whole batch in one SIMD loop (gathers of the particles' position,
-//     radius, mass, velocities and the pair's history; no branches: selects; the pair
-//     coefficients are loop constants when all particles share one material);
+//     contact (i, j, list slot, and the centres' difference and radii the test computed), and
+//     forget the history of a pair whose contact ended (told by the slot's one-byte 'touching'
+//     flag, so a history is read only for pairs in contact);
+//  2. contact forces of the whole batch in one SIMD loop (gathers of the particles' mass and
+//     velocities and the pair's history: the loop is bound by its gathers, and the scan's
+//     values save eight of nineteen; no branches: selects; the pair coefficients are loop
+//     constants when all particles share one material);
 //  3. add the forces, torques and rolling resistances to both particles and the histories to
 //     their slots (scalar: two pairs may share a particle).
 //
@@ -37,6 +38,9 @@ namespace abrade::dem
       int                  n = 0;
       int                  i[capacity], j[capacity];
       unsigned             slot[capacity];
+      // what the scan computed for its contact test: the centres' difference and the radii
+      // (the force pass would otherwise gather them again: it is bound by its gathers)
+      double               dx[capacity], dy[capacity], dz[capacity], ri[capacity], rj[capacity];
       double               h[max_history][capacity]; // the pair's history, out
       // results: force on i (j gets the opposite), n x ft for the torques, constant-torque
       // rolling resistances mu_r |F_n| r of i and j or the rolling model's torque on i (j gets
@@ -91,9 +95,11 @@ namespace abrade::dem
         {
           const int    i = ROW[k], j = NEIGHBOURS[k];
           const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
-          const double sr = R[i] + R[j];
+          const double ri = R[i], rj = R[j];
+          const double sr = ri + rj;
           const bool   touching = dx * dx + dy * dy + dz * dz < sr * sr;
           B.i[nb] = i, B.j[nb] = j, B.slot[nb] = static_cast<unsigned>(k);
+          B.dx[nb] = dx, B.dy[nb] = dy, B.dz[nb] = dz, B.ri[nb] = ri, B.rj[nb] = rj;
           nb += touching;
           if (touching != bool(L.TOUCHING[k]))
             L.contact_changed(k, touching);
@@ -109,8 +115,8 @@ namespace abrade::dem
     {
       constexpr int          H  = Law::history;
       const PairCoefficients c0 = COEF[0];
-      const double *__restrict X = in.X, *__restrict Y = in.Y, *__restrict Z = in.Z, *__restrict S = in.SHEAR;
-      const double *__restrict R = in.R, *__restrict M = in.M, *__restrict VX = in.VX, *__restrict VY = in.VY,
+      const double *__restrict S = in.SHEAR;
+      const double *__restrict M = in.M, *__restrict VX = in.VX, *__restrict VY = in.VY,
                                *__restrict VZ = in.VZ, *__restrict WX = in.WX, *__restrict WY = in.WY,
                                *__restrict WZ = in.WZ;
       const int *__restrict MAT = in.MAT;
@@ -123,9 +129,9 @@ namespace abrade::dem
       for (int b = 0; b < nb; ++b)
         {
           const int    i = B.i[b], j = B.j[b];
-          const double ri = R[i], rj = R[j], mi = M[i], mj = M[j];
+          const double ri = B.ri[b], rj = B.rj[b], mi = M[i], mj = M[j];
           // one division for 1/d, R* = ri rj / sr and m* = mi mj / (mi + mj)
-          const double dx = X[i] - X[j], dy = Y[i] - Y[j], dz = Z[i] - Z[j];
+          const double dx = B.dx[b], dy = B.dy[b], dz = B.dz[b];
           const double d  = std::sqrt(dx * dx + dy * dy + dz * dz);
           const double sr = ri + rj;
           // (the scan's contact test summed r2 in scalar code: a pair at the edge of contact may
