@@ -112,5 +112,32 @@ namespace abrade::dem
     std::vector<Box>  boxes;
 
     void reset(int n_ranks);
+
+    // the steps of balance(), one level of the tree at a time
+    /// A part of space still to cut: its node of the tree, its ranks [first, last), its box.
+    struct Part
+    {
+      int node, first, last;
+      Box box;
+    };
+    /// How a level cuts its parts, per part: the axis (the particles' longest extent), the
+    /// bracket [lo, hi] of the plane, the count of particles to go below it (the ranks'
+    /// proportion), the plane.
+    struct Cuts
+    {
+      std::vector<int>    axis;
+      std::vector<double> lo, hi, target, cut;
+    };
+    /// Each part's axis, bracket and target from the particles at @p coordinate (this rank's
+    /// @p n of them, in part @p part_of[i], -1: none). Collective.
+    static Cuts axes_and_targets(const Parallel &parallel, const double *const coordinate[3], std::size_t n,
+                                 const std::vector<Part> &parts, const std::vector<int> &part_of);
+    /// Every part's plane at once, by bisection on the global count below it. Collective.
+    static void bisect(const Parallel &parallel, const double *const coordinate[3], std::size_t n,
+                       const std::vector<int> &part_of, Cuts &cuts);
+    /// The parts cut: their children become nodes of the tree (a child of one rank that rank's
+    /// box), the particles move into them; returns the children still to cut.
+    std::vector<Part> split(const std::vector<Part> &parts, const Cuts &cuts, const double *const coordinate[3],
+                            std::size_t n, std::vector<int> &part_of);
   };
 } // namespace abrade::dem
