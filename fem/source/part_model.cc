@@ -168,10 +168,8 @@ namespace abrade::fem
     return r;
   }
 
-  void PartModel::move_surface(const std::vector<double> &given_depth, bool may_rebuild, UpdateResult &r, double volume,
-                                bool may_mesh_first)
+  PartModel::SurfaceMoves PartModel::surface_moves(const std::vector<double> &depth) const
   {
-    std::vector<double> depth = given_depth;
     // inward, as the offset surface moves (SolidSurface::inward_offsets), the wearable faces
     // only: a vertex of clamped faces only stays, one on a clamped face's rim moves within the
     // clamped plane as the worn faces beside it recede (held still, the rim took 1.6 % of a
@@ -184,45 +182,88 @@ namespace abrade::fem
         for (unsigned v : current_surface.triangles[t])
           wearing_triangles[v] += held[t] ? 0 : 1;
       }
-    auto              offsets = current_surface.inward_offsets(depth, &held);
-    std::vector<bool> clamped(current_surface.vertices.size(), false);
-    for (std::size_t v = 0; v < clamped.size(); ++v)
-      clamped[v] = wearing_triangles[v] == 0;
+    SurfaceMoves m;
+    m.depth   = depth;
+    m.offsets = current_surface.inward_offsets(depth, &held);
+    m.clamped.assign(current_surface.vertices.size(), false);
+    for (std::size_t v = 0; v < m.clamped.size(); ++v)
+      m.clamped[v] = wearing_triangles[v] == 0;
     // what the update starts from, for the construction that cannot fold (rebuild_eroded; a rim
     // point's ball cuts the clamped face's rim as the faces beside it recede, and nothing below
     // the clamped plane that the faces' own balls do not)
-    std::vector<Tensor<1, 3>> moves(offsets.size());
-    for (std::size_t v = 0; v < offsets.size(); ++v)
-      moves[v] = clamped[v] ? Tensor<1, 3>() : offsets[v];
-    // A volume to remove (Archard's): the offset surface removes less than depth x area where
-    // the worn area shrinks as it recedes, at convex edges (0.985 of it on the 30 mm reference
-    // knife at 2 mm steps, 0.970 at 4 mm: first order in the step). The offsets are linear in
-    // the depth: the update's depth, scaled as a whole, removes the volume given (the volume
-    // rate the update began with held over it, where the depth alone holds the depth rate;
-    // one factor, so the wear stays distributed as deposited and planes stay planes). Not
-    // where the moves fold (the enclosed volume of a folded surface counts its turned loops
-    // negative): the fresh mesh below scales its own step, the set-based rebuild takes the
-    // depth as it is.
-    const std::size_t folds = folding_triangles(current_surface, moves);
-    if (volume > 0 && folds == 0)
-      {
-        const double scale = offset_scale_for_volume(current_surface, moves, volume);
-        if (scale > 0)
-          {
-            for (std::size_t v = 0; v < moves.size(); ++v)
-              moves[v] *= scale, offsets[v] *= scale, depth[v] *= scale;
-            r.offset_scale = scale;
-          }
-        else
-          r.volume_note = "no factor between 0.05 and 2 on the depth removes the volume worn: the depth as it is";
-      }
-    std::vector<double> wearing = depth;
+    m.moves.resize(m.offsets.size());
+    for (std::size_t v = 0; v < m.offsets.size(); ++v)
+      m.moves[v] = m.clamped[v] ? Tensor<1, 3>() : m.offsets[v];
+    return m;
+  }
+
+  std::vector<double> PartModel::SurfaceMoves::wearing() const
+  {
+    std::vector<double> w = depth;
     for (std::size_t v = 0; v < clamped.size(); ++v)
       if (clamped[v])
-        wearing[v] = 0;
-    const Before before{current_surface, wearing, accumulated, displacement};
+        w[v] = 0;
+    return w;
+  }
+
+  void PartModel::scale_to_volume(SurfaceMoves &m, double volume, UpdateResult &r) const
+  {
+    // The offset surface removes less than depth x area where the worn area shrinks as it
+    // recedes, at convex edges (0.985 of it on the 30 mm reference knife at 2 mm steps, 0.970 at
+    // 4 mm: first order in the step). The offsets are linear in the depth: the update's depth,
+    // scaled as a whole, removes the volume given (the volume rate the update began with held
+    // over it, where the depth alone holds the depth rate; one factor, so the wear stays
+    // distributed as deposited and planes stay planes).
+    const double scale = offset_scale_for_volume(current_surface, m.moves, volume);
+    if (scale > 0)
+      {
+        for (std::size_t v = 0; v < m.moves.size(); ++v)
+          m.moves[v] *= scale, m.offsets[v] *= scale, m.depth[v] *= scale;
+        r.offset_scale = scale;
+      }
+    else
+      r.volume_note = "no factor between 0.05 and 2 on the depth removes the volume worn: the depth as it is";
+  }
+
+  double PartModel::move_mesh(const SurfaceMoves &m)
+  {
+    std::map<unsigned, Tensor<1, 3>> prescribed;
+    for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
+      prescribed[current_surface.tria_vertex[v]] = m.moves[v];
+    {
+      // (its DoF handler holds on to the triangulation: gone before the step may be undone)
+      io::ScopedTimer t(timers, "mesh motion");
+      MeshMotion motion(*tria, {1, settings.stiffening, 1e-10});
+      motion.solve(prescribed, {});
+      move_vertices(*tria, motion.vertex_displacements());
+    }
+    double moved_most = 0;
+    for (std::size_t v = 0; v < accumulated.size(); ++v)
+      {
+        const Tensor<1, 3> d = prescribed[current_surface.tria_vertex[v]];
+        accumulated[v] += m.clamped[v] ? 0.0 : m.offsets[v].norm(); // how far the surface receded here
+        for (unsigned c = 0; c < 3; ++c)
+          displacement[3 * v + c] += d[c];
+        since_remesh[v] += d.norm();
+        moved_most = std::max(moved_most, since_remesh[v]);
+      }
+    return moved_most;
+  }
+
+  void PartModel::move_surface(const std::vector<double> &given_depth, bool may_rebuild, UpdateResult &r, double volume,
+                                bool may_mesh_first)
+  {
+    SurfaceMoves m = surface_moves(given_depth);
+    // A volume to remove (Archard's): the depth scaled so that the moved surface removes it
+    // (scale_to_volume). Not where the moves fold (the enclosed volume of a folded surface
+    // counts its turned loops negative): the fresh mesh below scales its own step, the
+    // set-based rebuild takes the depth as it is.
+    const std::size_t folds = folding_triangles(current_surface, m.moves);
+    if (volume > 0 && folds == 0)
+      scale_to_volume(m, volume, r);
+    const Before before{current_surface, m.wearing(), accumulated, displacement};
     // (unscaled where they fold already; the scaled moves checked too)
-    if (const std::size_t folding = folds > 0 ? folds : folding_triangles(current_surface, moves); folding > 0)
+    if (const std::size_t folding = folds > 0 ? folds : folding_triangles(current_surface, m.moves); folding > 0)
       {
         const std::string why = std::to_string(folding) + " triangle(s) of the moved surface would fold";
         // Most folds are vertices the receding fronts overtake: a vertex of the bevel near a
@@ -244,26 +285,7 @@ namespace abrade::fem
     const std::vector<double> since_before = since_remesh;
     if (volume > 0)
       unmoved.copy_triangulation(*tria);
-    std::map<unsigned, Tensor<1, 3>> prescribed;
-    for (std::size_t v = 0; v < current_surface.vertices.size(); ++v)
-      prescribed[current_surface.tria_vertex[v]] = moves[v];
-    {
-      // (its DoF handler holds on to the triangulation: gone before the step may be undone)
-      io::ScopedTimer t(timers, "mesh motion");
-      MeshMotion motion(*tria, {1, settings.stiffening, 1e-10});
-      motion.solve(prescribed, {});
-      move_vertices(*tria, motion.vertex_displacements());
-    }
-    double moved_most = 0;
-    for (std::size_t v = 0; v < accumulated.size(); ++v)
-      {
-        const Tensor<1, 3> d = prescribed[current_surface.tria_vertex[v]];
-        accumulated[v] += clamped[v] ? 0.0 : offsets[v].norm(); // how far the surface receded here
-        for (unsigned c = 0; c < 3; ++c)
-          displacement[3 * v + c] += d[c];
-        since_remesh[v] += d.norm();
-        moved_most = std::max(moved_most, since_remesh[v]);
-      }
+    const double moved_most = move_mesh(m);
 
     r.quality = timed_quality(timers, *tria);
     if (r.quality.n_inverted > 0 || r.quality.min_scaled_jacobian < quality_threshold ||

@@ -570,70 +570,17 @@ namespace abrade::coupling::lifetime
     Step st;
     st.volume_before = part_model->volume();
     st.beds          = rates_at_places(rates, n);
-    const fem::SolidSurface before = part_model->surface();
-    st.before                      = before;
-    const dem::Parallel     ranks  = dem::Parallel::world();
-    auto depth = [&](long cycles) {
-      std::vector<double> d(rates.mean.size());
-      for (std::size_t v = 0; v < d.size(); ++v)
-        d[v] = cycles * rates.mean[v];
-      return d;
-    };
-    int halvings = 0;
+    st.before        = part_model->surface();
+    int halvings     = 0;
     for (int attempt = 0;; ++attempt)
       {
-        std::string error;
-        try
-          {
-            io::ScopedTimer t(ctx.timers, "fem update");
-            if (attempt > 0)
-              part_model->load(checkpoints->knife_file(update - 1));
-            // the moved vertices are exact where they do not fold, and a smaller step often
-            // does not: the surface is built anew as a set only from the third attempt on
-            // a source of volumes (the DEM's): the knife loses exactly the volume worn
-            st.result = part_model->apply_wear(depth(n), attempt >= 2 || n == 1,
-                                          source->removes_volume() ? n * rates.wear_volume : 0.0);
-          }
-        catch (const std::exception &e)
-          {
-            error = e.what();
-          }
-        // every rank moved its own copy: one whose Gmsh failed where another's did not (a time
-        // limit) took another way, and the copies would part; the same volume and vertex count
-        // on all ranks, or the step is rejected everywhere
-        // (collective: every rank asks, a failed one with -1)
-        if (ranks.size() > 1)
-          {
-            const bool   moved    = error.empty();
-            const double volume   = moved ? part_model->volume() : -1;
-            const double vertices = moved ? double(part_model->surface().vertices.size()) : -1;
-            const bool   differ   = ranks.max(volume) != ranks.min(volume) || ranks.max(vertices) != ranks.min(vertices);
-            if (moved && differ)
-              error = "the MPI ranks' knives differ after the update (a remesh went another way on one)";
-          }
-        if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
+        const std::string error = agreed_by_the_ranks(try_to_move(st, rates, n, attempt));
+        if (error.empty())
           {
             st.moved = true;
-            if (!st.result.meshed_first.empty())
-              ctx.log.line("update " + std::to_string(update) + ": the knife meshed anew before its vertices moved (" +
-                           st.result.meshed_first + ")");
-            if (!st.result.rebuilt.empty())
-              ctx.log.line("update " + std::to_string(update) + ": the worn surface built anew (" +
-                           st.result.rebuilt + ")" +
-                           (st.result.volume_cut_off > 0
-                              ? "; " + io::format_number(st.result.volume_cut_off * 1e6) + " cm^3 cut off by the wear"
-                              : std::string()));
-            if (!st.result.volume_note.empty())
-              ctx.log.warning("update " + std::to_string(update) + ": " + st.result.volume_note);
-            if (!st.result.surface_kept.empty())
-              {
-                ++surfaces_kept;
-                ctx.log.warning("update " + std::to_string(update) + ": " + st.result.surface_kept);
-              }
+            log_how_it_moved(st.result);
             break;
           }
-        if (error.empty())
-          error = "the knife could not be moved on another MPI rank";
         if (attempt == 3 || n == 1)
           {
             part_model->load(checkpoints->knife_file(update - 1)); // the rejected step leaves no trace
@@ -653,31 +600,97 @@ namespace abrade::coupling::lifetime
       }
     st.cycles = st.beds.cycles = n;
     if (!st.result.worn_through.empty())
-      {
-        // end of life within this update: where the depth increment first reaches the local
-        // thickness, as a fraction of the update
-        const auto thickness = fem::local_thickness(before);
-        double     fraction  = 1;
-        unsigned   first     = st.result.worn_through.front();
-        for (unsigned v : st.result.worn_through)
-          if (rates.mean[v] > 0 && thickness[v] / (n * rates.mean[v]) < fraction)
-            fraction = thickness[v] / (n * rates.mean[v]), first = v;
-        worn_through        = true;
-        worn_through_tonnes = tonnes + fraction * n * tonnes_per_cycle_now;
-        end = "worn through within update " + std::to_string(update);
-        const auto &p = before.vertices[first];
-        deepest = {p[0], p[1], p[2]};
-        // the other criteria within the same update, as the whole update would have left them
-        // (the depth and the worn mass: projected()); whichever is reached first ends life
-        TrajectoryPoint next = history.back();
-        next.tonnes          = tonnes + n * tonnes_per_cycle_now;
-        const PartNow now    = part_now();
-        for (std::size_t c = 0; c < criteria.size(); ++c)
-          next.values[c] = criteria[c]->projected(now, st.beds, next.values[c]);
-        worn_through_rival = history;
-        worn_through_rival.push_back(next);
-      }
+      note_worn_through(st, rates, n);
     return st;
+  }
+
+  std::string LifetimeLoop::try_to_move(Step &st, const Rates &rates, long n, int attempt)
+  {
+    std::vector<double> depth(rates.mean.size());
+    for (std::size_t v = 0; v < depth.size(); ++v)
+      depth[v] = n * rates.mean[v];
+    try
+      {
+        io::ScopedTimer t(ctx.timers, "fem update");
+        if (attempt > 0)
+          part_model->load(checkpoints->knife_file(update - 1));
+        // the moved vertices are exact where they do not fold, and a smaller step often
+        // does not: the surface is built anew as a set only from the third attempt on
+        // a source of volumes (the DEM's): the knife loses exactly the volume worn
+        st.result = part_model->apply_wear(depth, attempt >= 2 || n == 1,
+                                           source->removes_volume() ? n * rates.wear_volume : 0.0);
+      }
+    catch (const std::exception &e)
+      {
+        return e.what();
+      }
+    return "";
+  }
+
+  std::string LifetimeLoop::agreed_by_the_ranks(std::string error) const
+  {
+    // every rank moved its own copy: one whose Gmsh failed where another's did not (a time
+    // limit) took another way, and the copies would part; the same volume and vertex count
+    // on all ranks, or the step is rejected everywhere
+    // (collective: every rank asks, a failed one with -1)
+    const dem::Parallel ranks = dem::Parallel::world();
+    if (ranks.size() > 1)
+      {
+        const bool   moved    = error.empty();
+        const double volume   = moved ? part_model->volume() : -1;
+        const double vertices = moved ? double(part_model->surface().vertices.size()) : -1;
+        const bool   differ   = ranks.max(volume) != ranks.min(volume) || ranks.max(vertices) != ranks.min(vertices);
+        if (moved && differ)
+          error = "the MPI ranks' knives differ after the update (a remesh went another way on one)";
+      }
+    if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
+      return "";
+    return error.empty() ? "the knife could not be moved on another MPI rank" : error;
+  }
+
+  void LifetimeLoop::log_how_it_moved(const fem::PartModel::UpdateResult &result)
+  {
+    const std::string at = "update " + std::to_string(update) + ": ";
+    if (!result.meshed_first.empty())
+      ctx.log.line(at + "the knife meshed anew before its vertices moved (" + result.meshed_first + ")");
+    if (!result.rebuilt.empty())
+      ctx.log.line(at + "the worn surface built anew (" + result.rebuilt + ")" +
+                   (result.volume_cut_off > 0
+                      ? "; " + io::format_number(result.volume_cut_off * 1e6) + " cm^3 cut off by the wear"
+                      : std::string()));
+    if (!result.volume_note.empty())
+      ctx.log.warning(at + result.volume_note);
+    if (!result.surface_kept.empty())
+      {
+        ++surfaces_kept;
+        ctx.log.warning(at + result.surface_kept);
+      }
+  }
+
+  void LifetimeLoop::note_worn_through(const Step &st, const Rates &rates, long n)
+  {
+    // end of life within this update: where the depth increment first reaches the local
+    // thickness, as a fraction of the update
+    const auto thickness = fem::local_thickness(st.before);
+    double     fraction  = 1;
+    unsigned   first     = st.result.worn_through.front();
+    for (unsigned v : st.result.worn_through)
+      if (rates.mean[v] > 0 && thickness[v] / (n * rates.mean[v]) < fraction)
+        fraction = thickness[v] / (n * rates.mean[v]), first = v;
+    worn_through        = true;
+    worn_through_tonnes = tonnes + fraction * n * tonnes_per_cycle_now;
+    end                 = "worn through within update " + std::to_string(update);
+    const auto &p       = st.before.vertices[first];
+    deepest             = {p[0], p[1], p[2]};
+    // the other criteria within the same update, as the whole update would have left them
+    // (the depth and the worn mass: projected()); whichever is reached first ends life
+    TrajectoryPoint next = history.back();
+    next.tonnes          = tonnes + n * tonnes_per_cycle_now;
+    const PartNow now    = part_now();
+    for (std::size_t c = 0; c < criteria.size(); ++c)
+      next.values[c] = criteria[c]->projected(now, st.beds, next.values[c]);
+    worn_through_rival = history;
+    worn_through_rival.push_back(next);
   }
 
   // 5. Record: the wear depth below the design, volumes, followed points; each criterion's

@@ -158,94 +158,113 @@ namespace abrade::dem
         ++stats.rebalances;
       }
 
+    // who leaves for which rank (with its histories), who stays
     const int                        me = m.parallel.rank();
     std::vector<std::vector<double>> send(m.parallel.size());
     std::vector<std::size_t>         stay;
     stay.reserve(n);
-    constexpr int K = Impl::K;
     for (std::size_t i = 0; i < n; ++i)
+      if (const int r = m.decomposition.owner(store.x[i], store.y[i], store.z[i]); r == me)
+        stay.push_back(i);
+      else
+        m.pack_migrant(store, i, send[r]);
+    bool                      nearby = false;
+    const std::vector<double> in     = m.exchange_migrants(send, cut, skin, nearby);
+    stats.nearby_migrations += nearby;
+
+    // the ones that stay, then the arrivals
+    Impl::CarriedHistories carried = m.carried_histories_of(store, stay);
+    stats.migrated += long(n - stay.size());
+    store.permute(stay, m.team());
+    permute_wall_histories(stay);
+    stats.migrated += long(m.unpack_migrants(store, in, carried));
+    m.carried_offsets.swap(carried.offsets);
+    m.carried_partner.swap(carried.partner);
+    m.carried_shear.swap(carried.shear);
+    m.carried_owner.swap(carried.owner);
+    store.n_distributed = store.size();
+  }
+
+  void Simulation::Impl::pack_migrant(const ParticleStore &P, std::size_t i, std::vector<double> &b) const
+  {
+    P.pack(i, b);
+    for (int s = 0; s < K; ++s)
       {
-        const int r = m.decomposition.owner(store.x[i], store.y[i], store.z[i]);
-        if (r == me)
-          {
-            stay.push_back(i);
-            continue;
-          }
-        auto &b = send[r];
-        store.pack(i, b);
-        for (int s = 0; s < K; ++s)
-          {
-            b.push_back(m.hist_wall[K * i + s]), b.push_back(m.hist_tri[K * i + s]),
-              b.push_back(m.hist_used[K * i + s]);
-            for (int d = 0; d < m.history; ++d)
-              b.push_back(m.hist_shear[m.history * (K * i + s) + d]);
-          }
-        const bool        carried = m.carries(i, store.id[i]);
-        const std::size_t c0 = carried ? m.carried_offsets[i] : 0, c1 = carried ? m.carried_offsets[i + 1] : 0;
-        b.push_back(double(c1 - c0));
-        for (std::size_t c = c0; c < c1; ++c)
-          {
-            b.push_back(pack_integer(m.carried_partner[c]));
-            for (int d = 0; d < m.history; ++d)
-              b.push_back(m.carried_shear[m.history * c + d]);
-          }
+        b.push_back(hist_wall[K * i + s]), b.push_back(hist_tri[K * i + s]), b.push_back(hist_used[K * i + s]);
+        for (int d = 0; d < history; ++d)
+          b.push_back(hist_shear[history * (K * i + s) + d]);
       }
+    const bool        carried = carries(i, P.id[i]);
+    const std::size_t c0 = carried ? carried_offsets[i] : 0, c1 = carried ? carried_offsets[i + 1] : 0;
+    b.push_back(double(c1 - c0));
+    for (std::size_t c = c0; c < c1; ++c)
+      {
+        b.push_back(pack_integer(carried_partner[c]));
+        for (int d = 0; d < history; ++d)
+          b.push_back(carried_shear[history * c + d]);
+      }
+  }
+
+  std::vector<double> Simulation::Impl::exchange_migrants(const std::vector<std::vector<double>> &send, bool cut,
+                                                          double skin, bool &nearby) const
+  {
     // Between two cuts a particle moves less than a skin from one list build to the next (the
     // rebuild criterion), so it can only go to a neighbour of this box: then only the
     // neighbours exchange counts. Anything else (new cuts, particles placed by hand) is told
     // by one maximum over the ranks and falls back to the all-to-all.
-    const std::vector<int> partners = m.decomposition.neighbours(me, skin);
+    const std::vector<int> partners = decomposition.neighbours(parallel.rank(), skin);
     bool                   far      = false;
-    for (int r = 0; r < m.parallel.size() && !far; ++r)
+    for (int r = 0; r < parallel.size() && !far; ++r)
       far = !send[r].empty() && std::find(partners.begin(), partners.end(), r) == partners.end();
-    const bool                nearby = !cut && !(m.parallel.max(far ? 1.0 : 0.0) > 0);
-    const std::vector<double> in = m.parallel.exchange(send, nullptr, nearby ? &partners : nullptr);
-    stats.nearby_migrations += nearby;
+    nearby = !cut && !(parallel.max(far ? 1.0 : 0.0) > 0);
+    return parallel.exchange(send, nullptr, nearby ? &partners : nullptr);
+  }
 
-    // the ones that stay, then the arrivals
-    std::vector<std::size_t>  offsets{0};
-    std::vector<std::int64_t> partner, owner;
-    std::vector<double>       shear;
+  Simulation::Impl::CarriedHistories Simulation::Impl::carried_histories_of(const ParticleStore &P,
+                                                                          const std::vector<std::size_t> &stay) const
+  {
+    CarriedHistories kept;
+    kept.offsets.push_back(0);
     for (std::size_t i : stay)
       {
-        owner.push_back(store.id[i]);
-        if (m.carries(i, store.id[i]))
-          for (std::size_t c = m.carried_offsets[i]; c < m.carried_offsets[i + 1]; ++c)
+        kept.owner.push_back(P.id[i]);
+        if (carries(i, P.id[i]))
+          for (std::size_t c = carried_offsets[i]; c < carried_offsets[i + 1]; ++c)
             {
-              partner.push_back(m.carried_partner[c]);
-              shear.insert(shear.end(), &m.carried_shear[m.history * c], &m.carried_shear[m.history * c] + m.history);
+              kept.partner.push_back(carried_partner[c]);
+              kept.shear.insert(kept.shear.end(), &carried_shear[history * c], &carried_shear[history * c] + history);
             }
-        offsets.push_back(partner.size());
+        kept.offsets.push_back(kept.partner.size());
       }
-    stats.migrated += long(n - stay.size());
-    store.permute(stay, m.team());
-    permute_wall_histories(stay);
+    return kept;
+  }
+
+  std::size_t Simulation::Impl::unpack_migrants(ParticleStore &P, const std::vector<double> &in,
+                                                CarriedHistories &carried)
+  {
+    std::size_t arrived = 0;
     for (std::size_t p = 0; p < in.size();)
       {
-        const std::size_t i = store.unpack(&in[p]);
+        const std::size_t i = P.unpack(&in[p]);
         p += ParticleStore::record_size;
-        const int H = m.history;
+        const int H = history;
         for (int s = 0; s < K; ++s, p += 3 + H)
           {
-            m.hist_wall.push_back(int(in[p])), m.hist_tri.push_back(int(in[p + 1]));
-            m.hist_used.push_back(static_cast<unsigned char>(in[p + 2]));
-            m.hist_shear.insert(m.hist_shear.end(), &in[p + 3], &in[p + 3 + H]);
+            hist_wall.push_back(int(in[p])), hist_tri.push_back(int(in[p + 1]));
+            hist_used.push_back(static_cast<unsigned char>(in[p + 2]));
+            hist_shear.insert(hist_shear.end(), &in[p + 3], &in[p + 3 + H]);
           }
         const std::size_t count = std::size_t(in[p++]);
         for (std::size_t c = 0; c < count; ++c, p += 1 + H)
           {
-            partner.push_back(unpack_integer(in[p]));
-            shear.insert(shear.end(), &in[p + 1], &in[p + 1 + H]);
+            carried.partner.push_back(unpack_integer(in[p]));
+            carried.shear.insert(carried.shear.end(), &in[p + 1], &in[p + 1 + H]);
           }
-        owner.push_back(store.id[i]);
-        offsets.push_back(partner.size());
-        ++stats.migrated;
+        carried.owner.push_back(P.id[i]);
+        carried.offsets.push_back(carried.partner.size());
+        ++arrived;
       }
-    m.carried_offsets.swap(offsets);
-    m.carried_partner.swap(partner);
-    m.carried_shear.swap(shear);
-    m.carried_owner.swap(owner);
-    store.n_distributed = store.size();
+    return arrived;
   }
 
   // Ghosts: every owned particle within @p cutoff of another rank's box goes there (state,

@@ -58,6 +58,30 @@ namespace abrade::dem
     std::vector<std::int64_t> carried_partner;
     std::vector<double>       carried_shear;
     std::vector<std::int64_t> carried_owner; // id of each row's particle (rows of others are ignored)
+    /// Pair histories carried (the four arrays above), being assembled.
+    struct CarriedHistories
+    {
+      std::vector<std::size_t>  offsets;
+      std::vector<std::int64_t> partner;
+      std::vector<double>       shear;
+      std::vector<std::int64_t> owner;
+    };
+
+    // the steps of a migration (Simulation::rebalance_and_migrate, domain_exchange.cc)
+    /// Appends owned particle @p i of @p P to @p b: its record, its wall histories, its carried
+    /// pair histories.
+    void pack_migrant(const ParticleStore &P, std::size_t i, std::vector<double> &b) const;
+    /// The particles of @p send (per rank) sent, the ones for this rank received: among the
+    /// neighbouring boxes only (@p nearby) when the boxes were not @p cut and no particle went
+    /// farther than to a neighbour (within @p skin), else all to all. Collective.
+    std::vector<double> exchange_migrants(const std::vector<std::vector<double>> &send, bool cut, double skin,
+                                          bool &nearby) const;
+    /// The carried pair histories of the particles that stay (@p stay: their rows, in order).
+    CarriedHistories carried_histories_of(const ParticleStore &P, const std::vector<std::size_t> &stay) const;
+    /// The particles received (@p in, as pack_migrant packed them) appended to @p P, their wall
+    /// histories to this one's and their pair histories to @p carried; returns their number.
+    std::size_t unpack_migrants(ParticleStore &P, const std::vector<double> &in, CarriedHistories &carried);
+
     /// Whether carried row @p row holds the histories of the particle with id @p id.
     bool carries(std::size_t row, std::int64_t id) const
     {

@@ -190,6 +190,27 @@ namespace abrade::fem
     /// needed (the step would fold on the old ones).
     bool remesh_then_move(const SolidSurface &from, const std::vector<double> &depth, bool may_rebuild, UpdateResult &r,
                           double volume, const std::string &why, bool new_vertices);
+    /// Where an update moves the surface's vertices: inward as the offset surface moves, the
+    /// wearable faces only (a vertex of clamped faces only stays; one on a clamped face's rim
+    /// moves within the clamped plane).
+    struct SurfaceMoves
+    {
+      std::vector<double>               depth;   ///< [m] per vertex, scaled with the moves
+      std::vector<dealii::Tensor<1, 3>> offsets; ///< the offset surface's move of each vertex
+      std::vector<dealii::Tensor<1, 3>> moves;   ///< the offsets, none where clamped
+      std::vector<bool>                 clamped; ///< a vertex of clamped faces only
+      /// The depth, 0 where clamped: what the surface wears.
+      std::vector<double> wearing() const;
+    };
+    /// The moves of the current surface by @p depth (per vertex).
+    SurfaceMoves surface_moves(const std::vector<double> &depth) const;
+    /// @p m scaled as a whole so that the moved surface encloses @p volume less; @p r gets the
+    /// factor, or a note where no factor between 0.05 and 2 does it (@p m as it was).
+    void scale_to_volume(SurfaceMoves &m, double volume, UpdateResult &r) const;
+    /// The mesh moved by @p m (the interior follows the surface: MeshMotion), the surface's
+    /// accumulated recession and displacement updated; returns the largest move of a surface
+    /// vertex since the last remesh.
+    double move_mesh(const SurfaceMoves &m);
     /// apply_wear after its worn-through check: the vertices moved by @p depth, the knife meshed
     /// anew first where they would fold on the mesh as it stands, built as a set where they
     /// fold on a fresh mesh too (if @p may_rebuild).

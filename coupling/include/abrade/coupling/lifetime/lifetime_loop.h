@@ -145,6 +145,18 @@ namespace abrade::coupling::lifetime
     /// The part as the criteria read it: the knife as it is now, or its design.
     PartNow part_now() const;
     PartNow design_now() const;
+    // the parts of move_part()
+    /// One attempt at moving the part by @p n cycles of @p rates (into @p st.result); from the
+    /// second attempt on, from the last checkpoint. Returns the error, or "".
+    std::string try_to_move(Step &st, const Rates &rates, long n, int attempt);
+    /// @p error as every rank sees it: under MPI one rank's failure, or knives that differ
+    /// after the move, fail the step on all (collective).
+    std::string agreed_by_the_ranks(std::string error) const;
+    /// What the move did that a user should know: meshed first, rebuilt, volume notes.
+    void log_how_it_moved(const fem::PartModel::UpdateResult &result);
+    /// The end of life within this update (@p st worn through): where and after how many tonnes
+    /// the depth first reaches the local thickness, and the other criteria at the update's end.
+    void note_worn_through(const Step &st, const Rates &rates, long n);
     /// The beds' rates where the criteria read the knife, before it moves (move_part()).
     BedRates rates_at_places(const Rates &rates, long cycles) const;
     /// The criterion of that name (one every run has: the depth, the worn mass).
