@@ -231,7 +231,7 @@ namespace abrade::dem
       double   *fx, *fy, *fz, *tx, *ty, *tz, *rl;
       auto      use_buffer_of = [&](int range) {
         // share 0's are every particle's sums, zeroed whole; another share's buffer only where
-        // its pairs add (Impl::share_spans: the rest stays zero)
+        // its pairs add (Impl::share_spans: the rest is never read)
         auto zero = [&](std::size_t begin, std::size_t end) {
           for (double *a : {fx, fy, fz})
             std::fill(a + begin, a + end, 0.0);

@@ -168,8 +168,9 @@ namespace abrade::dem
     std::vector<std::vector<double>> buffers;    // 7 n_local per share >= 1 (force, torque, rolling)
     /// The particles a share's pairs touch: its rows and the partners after them (the list is
     /// a forward half list of particles sorted by cell, so a share of about n / shares rows
-    /// reaches a layer of cells beyond them), owned [0] .. [1] and ghosts [2] .. [3]. A share's
-    /// buffer is zeroed and added back over these only: the rest of it stays zero.
+    /// reaches a layer of cells beyond them): owned ones and ghosts, each [begin, end). A share's
+    /// buffer is zeroed and added back over these only: the rest of it is never read (it may
+    /// hold an earlier list's sums, at other offsets: the buffers are resized, not cleared).
     struct ShareSpan
     {
       std::size_t owned_begin = 0, owned_end = 0, ghost_begin = 0, ghost_end = 0;

@@ -80,6 +80,11 @@ namespace abrade::dem::wall_contacts
   /// accepted ones' indices into @p accepted and returns their number; @p r: the radius.
   inline int accept_contacts(Hit *hits, int n_hits, const std::vector<Wall> &walls, double r, int *accepted)
   {
+    if (n_hits == 1) // (most particles touch one triangle: nothing to sort or to compare)
+      {
+        accepted[0] = 0;
+        return 1;
+      }
     auto rank = [](Feature f) { return f == face ? 0 : f <= edge20 ? 1 : 2; };
     std::sort(hits, hits + n_hits, [&](const Hit &a, const Hit &b) {
       if (a.wall != b.wall) return a.wall < b.wall;

@@ -25,8 +25,10 @@ namespace abrade::geometry
     Feature feature;
   };
 
-  inline ClosestPoint closest_point_on_triangle(const double q[3], const double a[3],
-                                                const double b[3], const double c[3])
+  /// (Always inlined: the wall contacts call it for every candidate triangle of every step, and
+  /// GCC otherwise keeps it out of line.)
+  [[gnu::always_inline]] inline ClosestPoint closest_point_on_triangle(const double q[3], const double a[3],
+                                                                       const double b[3], const double c[3])
   {
     auto sub = [](const double *u, const double *v, double *w) {
       w[0] = u[0] - v[0], w[1] = u[1] - v[1], w[2] = u[2] - v[2];
