@@ -174,6 +174,9 @@ namespace abrade::fem
         child.input      = input, child.output = output;
         return child;
       }
+      /// Whether the child works where the job is (a Gmsh script): the files it leaves are
+      /// beside the output, which no removal of its directory takes with it.
+      bool in_place() const { return path.empty(); }
       /// A file the child writes by @p name (relative to where it works).
       std::string in(const std::string &name) const { return path.empty() ? name : path + "/" + name; }
       /// The child's name for @p file replaced by the user's at the start of @p text.
@@ -387,7 +390,7 @@ namespace abrade::fem
           if (ec)
             throw RunError("cannot move the mesher's output to " + job.output + ": " + ec.message());
           auto notes = lines_of(read_text(files.notes));
-          if (files.notes == job.output + ".notes")
+          if (dir.in_place())
             std::filesystem::remove(files.notes);
           // (said in its log, which goes: a note instead)
           const std::string log = read_text(files.log);
@@ -403,7 +406,7 @@ namespace abrade::fem
           // it names the file itself, by the name it was given: the user's
           const std::string what = dir.users_names(read_text(files.error), job);
           std::filesystem::remove(files.log);
-          if (files.error == job.output + ".error")
+          if (dir.in_place())
             std::filesystem::remove(files.error);
           throw InputError("", what);
         }

@@ -96,6 +96,8 @@ $expect 0 "sliver.stl: 2 triangle\(s\) of zero area removed" -- "${knife[@]}" --
 # after Gmsh imported it): the entity named
 printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.geo
 "$abrade" convert block.geo --output block.step > /dev/null
+# (a script runs where it is; the mesher's notes and log beside its output go when it is done)
+if ls block.step.* > /dev/null 2>&1; then echo "left beside block.step: $(ls block.step.*)"; exit 1; fi
 sed '0,/= DIRECTION(/s//= DIRUCTION(/' block.step > misspelt.step
 $expect 2 "misspelt.step: [0-9]+ entit(y|ies) failed to read \(entity #[0-9]+" -- "${knife[@]}" --output o_misspelt \
   --set "Knife/File=$out/misspelt.step" --set "Knife/Clamped faces=normal 0, 0, 1"

@@ -122,131 +122,159 @@ namespace abrade::coupling::lifetime
     return missing;
   }
 
+  namespace
+  {
+    /// The trajectory plot's extra curves: the limits as horizontal lines, every followed point
+    /// after the first, an extrapolation dashed to the predicted life (its data inline).
+    std::string extra_curves(const TrajectoryMarks &marks)
+    {
+      std::ostringstream extra;
+      if (marks.depth_limit > 0)
+        extra << ", " << 1000 * marks.depth_limit << " with lines dt 3 lw 2 lc rgb 'red' title 'end of life: depth "
+              << io::format_number(1000 * marks.depth_limit) << " mm'";
+      if (marks.recession_limit > 0)
+        extra << ", " << 1000 * marks.recession_limit
+              << " with lines dt 3 lw 2 lc rgb 'dark-orange' title 'end of life: recession "
+              << io::format_number(1000 * marks.recession_limit) << " mm'";
+      if (marks.edge_limit > 0)
+        extra << ", " << 1000 * marks.edge_limit
+              << " with lines dt 4 lw 2 lc rgb 'dark-violet' title 'end of life: edge recession "
+              << io::format_number(1000 * marks.edge_limit) << " mm'";
+      if (marks.plate_limit > 0)
+        extra << ", '' using (column('tonnes')/T):(column('plate_thickness')*1000) with linespoints title 'plate "
+                 "thickness (calipers at Gauge height)', "
+              << 1000 * marks.plate_limit << " with lines dt 5 lw 2 lc rgb 'brown' title 'end of life: plate thickness "
+              << io::format_number(1000 * marks.plate_limit) << " mm'";
+      // every followed point after the first (the first is drawn with the rest)
+      for (std::size_t k = 2; k <= marks.recession_points; ++k)
+        extra << ", '' using (column('tonnes')/T):(column('point_recession_" << k
+              << "')*1000) with linespoints title 'recession of followed point " << k << "'";
+      if (marks.extrapolated && marks.life > marks.last_tonnes)
+        extra << ", '-' using ($1/T):2 with lines dt 2 lw 2 lc rgb 'black' title 'extrapolated to the predicted life'";
+      return extra.str();
+    }
+
+    /// trajectory.png: depth, recessions and worn volume against the tonnes (t, kt or Mt,
+    /// whichever the largest needs), the key below the plot, off the data; then the settings
+    /// back for the cross-sections.
+    void write_trajectory_plot(std::ostream &gp, const TrajectoryMarks &marks)
+    {
+      gp << "set terminal pngcairo size 900,650\nset grid\nset datafile separator ','\nset datafile columnheaders\n"
+            "stats 'trajectory.csv' using (column('tonnes')) nooutput\n"
+            "T = STATS_max >= 1e6 ? 1e6 : (STATS_max >= 1e3 ? 1e3 : 1)\n"
+            "set output 'trajectory.png'\nset xlabel sprintf('handled material [%s]', T == 1e6 ? 'Mt' : (T == 1e3 ? 'kt' : 't'))\n"
+            "set ylabel 'wear depth, recession [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset ytics nomirror\n"
+            "set xrange [0:*]\nset yrange [0:*]\nset y2range [0:*]\nset key outside below maxrows 2\n"
+            "plot 'trajectory.csv' using (column('tonnes')/T):(column('max_depth')*1000*(1-column('wear_rate_spread'))):"
+            "(column('max_depth')*1000*(1+column('wear_rate_spread'))) with filledcurves "
+            "fs transparent solid 0.25 noborder title 'largest depth +- spread of the beds', "
+            "'' using (column('tonnes')/T):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
+            "'' using (column('tonnes')/T):(column('point_recession')*1000) with linespoints title 'recession of followed point 1', "
+            "'' using (column('tonnes')/T):(column('edge_recession')*1000) with linespoints title 'edge recession (gauged along the edge)', "
+            "'' using (column('tonnes')/T):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'"
+         << extra_curves(marks) << "\n";
+      if (marks.extrapolated && marks.life > marks.last_tonnes)
+        // (inline data under the file's settings: comma-separated, a header line first; with
+        // spaces and no header gnuplot skipped it, and the extrapolation was never drawn)
+        gp << "tonnes,value\n" << marks.last_tonnes << "," << 1000 * marks.last_value << "\n" << marks.life << ","
+           << 1000 * marks.limit << "\ne\n";
+      gp << "unset xrange\nunset yrange\nunset y2range\n"
+            "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
+    }
+
+    /// The profiles' cross-sections (knife/profile_*.csv at @p planes, fractions of the
+    /// length): the design's outline and the updates', zoomed to where they differ; each
+    /// picture drawn is added to @p pictures.
+    void write_profile_sections(std::ostream &gp, const std::string &dir, const std::vector<double> &planes,
+                                const ProfileFrame &frame, std::vector<std::string> &pictures)
+    {
+      for (double f : planes)
+        {
+          const std::string name   = "knife/" + profile_name(f);
+          const auto        blocks = read_section_blocks(dir + "/" + name + ".csv");
+          const auto        window = section_window(blocks);
+          if (section_plot(gp, blocks, window, name + ".png",
+                           "cross-section at " + io::format_number(f, 3) + " of the length (x = " +
+                             io::format_number(1000 * plane_x(frame, f), 5) + " mm)" +
+                             (window.zoomed ? ", zoomed to the wear" : "")))
+            pictures.push_back(name + ".png");
+        }
+    }
+
+    /// The cross-section through the place that ended the life (or the deepest point), cut
+    /// from the design and every update's surface (knife/knife_N.stl), written to
+    /// knife/section_worst.csv; its picture added to @p pictures when drawn.
+    void write_worst_section(std::ostream &gp, const std::string &dir, const WorstSection &worst,
+                             std::vector<std::string> &pictures)
+    {
+      auto stl = [&](long u) {
+        char name[64];
+        std::snprintf(name, sizeof name, "/knife/knife_%05ld.stl", u);
+        return dir + name;
+      };
+      // normal to x, unless the surface there is a face square to x (a worn end): a plane
+      // normal to x would lie in that face, not cut it; then the plane of the other two
+      // axes that holds the face's normal best
+      const std::array<double, 3> place = {worst.where[0], worst.where[1], worst.where[2]};
+      int                         axis  = 0;
+      try
+        {
+          const auto n = io::normal_magnitudes_near(stl(worst.updates), place);
+          if (n[0] > 0.7)
+            axis = n[1] < n[2] ? 1 : 2;
+        }
+      catch (const std::exception &)
+        {
+        }
+      std::map<long, std::vector<Segment>> blocks;
+      for (long u = 0; u <= worst.updates; ++u)
+        try
+          {
+            blocks[u] = io::plane_section_of_file(stl(u), axis, place[axis]);
+          }
+        catch (const std::exception &) // (a file missing: that update is not drawn)
+          {
+          }
+      const char       *axes = "xyz";
+      const int         iu = (axis + 1) % 3, iv = (axis + 2) % 3;
+      const std::string plane = std::string(1, axes[axis]) + " = " + io::format_number(1000 * place[axis], 5) + " mm";
+      write_section_blocks(dir + "/knife/section_worst.csv", blocks,
+                           "section " + std::string(1, axes[axis]) + " " + io::format_number(place[axis], 10) +
+                             ": u, v are " + axes[iu] + ", " + axes[iv]);
+      auto         window = section_window(blocks);
+      const double u = place[iu], v = place[iv];
+      // a thin layer along a long face: centred on the place, five of its depths around it
+      const double d = window.largest_distance;
+      if (d > 0 && std::max(window.y1 - window.y0, window.z1 - window.z0) > 10 * d)
+        window = {u - 5 * d, u + 5 * d, v - 5 * d, v + 5 * d, true, d};
+      // the place itself inside, with a margin
+      const double margin = 0.1 * std::max(window.y1 - window.y0, window.z1 - window.z0);
+      window.y0 = std::min(window.y0, u - margin), window.y1 = std::max(window.y1, u + margin);
+      window.z0 = std::min(window.z0, v - margin), window.z1 = std::max(window.z1, v + margin);
+      SectionMark mark   = worst.mark;
+      mark.shown         = true;
+      mark.at            = {u, v};
+      mark.lowest_points = mark.lowest_points && axis == 0; // (the gauge's sections are normal to x)
+      if (!blocks.empty() && blocks.rbegin()->first != worst.updates)
+        mark.text += " (the last surface found, knife_" + std::to_string(blocks.rbegin()->first) +
+                     ".stl, is drawn: a later one is missing)";
+      if (section_plot(gp, blocks, window, "knife/section_worst.png",
+                       "cross-section through where the life ended (" + plane + ")" +
+                         (window.zoomed ? ", zoomed to the wear" : ""),
+                       mark, std::string(1, axes[iu]).c_str(), std::string(1, axes[iv]).c_str()))
+        pictures.push_back("knife/section_worst.png");
+    }
+  } // namespace
+
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame,
                      const TrajectoryMarks &marks, const WorstSection *worst)
   {
-    // the limits as horizontal lines, every followed point, an extrapolation dashed to the
-    // predicted life
-    std::ostringstream extra;
-    if (marks.depth_limit > 0)
-      extra << ", " << 1000 * marks.depth_limit << " with lines dt 3 lw 2 lc rgb 'red' title 'end of life: depth "
-            << io::format_number(1000 * marks.depth_limit) << " mm'";
-    if (marks.recession_limit > 0)
-      extra << ", " << 1000 * marks.recession_limit
-            << " with lines dt 3 lw 2 lc rgb 'dark-orange' title 'end of life: recession "
-            << io::format_number(1000 * marks.recession_limit) << " mm'";
-    if (marks.edge_limit > 0)
-      extra << ", " << 1000 * marks.edge_limit
-            << " with lines dt 4 lw 2 lc rgb 'dark-violet' title 'end of life: edge recession "
-            << io::format_number(1000 * marks.edge_limit) << " mm'";
-    if (marks.plate_limit > 0)
-      extra << ", '' using (column('tonnes')/T):(column('plate_thickness')*1000) with linespoints title 'plate "
-               "thickness (calipers at Gauge height)', "
-            << 1000 * marks.plate_limit << " with lines dt 5 lw 2 lc rgb 'brown' title 'end of life: plate thickness "
-            << io::format_number(1000 * marks.plate_limit) << " mm'";
-    // every followed point after the first (the first is drawn with the rest)
-    for (std::size_t k = 2; k <= marks.recession_points; ++k)
-      extra << ", '' using (column('tonnes')/T):(column('point_recession_" << k
-            << "')*1000) with linespoints title 'recession of followed point " << k << "'";
-    if (marks.extrapolated && marks.life > marks.last_tonnes)
-      extra << ", '-' using ($1/T):2 with lines dt 2 lw 2 lc rgb 'black' title 'extrapolated to the predicted life'";
     std::ofstream gp(dir + "/lifetime.gp");
-    // tonnes in t, kt or Mt (whichever the largest needs), the key below the plot, off the data
-    gp << "set terminal pngcairo size 900,650\nset grid\nset datafile separator ','\nset datafile columnheaders\n"
-          "stats 'trajectory.csv' using (column('tonnes')) nooutput\n"
-          "T = STATS_max >= 1e6 ? 1e6 : (STATS_max >= 1e3 ? 1e3 : 1)\n"
-          "set output 'trajectory.png'\nset xlabel sprintf('handled material [%s]', T == 1e6 ? 'Mt' : (T == 1e3 ? 'kt' : 't'))\n"
-          "set ylabel 'wear depth, recession [mm]'\nset y2label 'worn volume [cm^3]'\nset y2tics\nset ytics nomirror\n"
-          "set xrange [0:*]\nset yrange [0:*]\nset y2range [0:*]\nset key outside below maxrows 2\n"
-          "plot 'trajectory.csv' using (column('tonnes')/T):(column('max_depth')*1000*(1-column('wear_rate_spread'))):"
-          "(column('max_depth')*1000*(1+column('wear_rate_spread'))) with filledcurves "
-          "fs transparent solid 0.25 noborder title 'largest depth +- spread of the beds', "
-          "'' using (column('tonnes')/T):(column('max_depth')*1000) with linespoints title 'largest wear depth (below the design)', "
-          "'' using (column('tonnes')/T):(column('point_recession')*1000) with linespoints title 'recession of followed point 1', "
-          "'' using (column('tonnes')/T):(column('edge_recession')*1000) with linespoints title 'edge recession (gauged along the edge)', "
-          "'' using (column('tonnes')/T):(column('worn_volume')*1e6) axes x1y2 with linespoints title 'worn volume'"
-       << extra.str() << "\n";
-    if (marks.extrapolated && marks.life > marks.last_tonnes)
-      // (inline data under the file's settings: comma-separated, a header line first; with
-      // spaces and no header gnuplot skipped it, and the extrapolation was never drawn)
-      gp << "tonnes,value\n" << marks.last_tonnes << "," << 1000 * marks.last_value << "\n" << marks.life << ","
-         << 1000 * marks.limit << "\ne\n";
-    gp << "unset xrange\nunset yrange\nunset y2range\n"
-          "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
-    // the cross-sections: the design's outline and the updates', zoomed to where they differ
+    write_trajectory_plot(gp, marks);
     std::vector<std::string> pictures = {"trajectory.png"};
-    for (double f : planes)
-      {
-        const std::string name   = "knife/" + profile_name(f);
-        const auto        blocks = read_section_blocks(dir + "/" + name + ".csv");
-        const auto        window = section_window(blocks);
-        if (section_plot(gp, blocks, window, name + ".png",
-                         "cross-section at " + io::format_number(f, 3) + " of the length (x = " +
-                           io::format_number(1000 * plane_x(frame, f), 5) + " mm)" +
-                           (window.zoomed ? ", zoomed to the wear" : "")))
-          pictures.push_back(name + ".png");
-      }
-    // the cross-section through the place that ended the life (or the deepest point), cut
-    // from the design and every update's surface (knife/knife_N.stl)
+    write_profile_sections(gp, dir, planes, frame, pictures);
     if (worst && worst->where.size() == 3)
-      {
-        auto stl = [&](long u) {
-          char name[64];
-          std::snprintf(name, sizeof name, "/knife/knife_%05ld.stl", u);
-          return dir + name;
-        };
-        // normal to x, unless the surface there is a face square to x (a worn end): a plane
-        // normal to x would lie in that face, not cut it; then the plane of the other two
-        // axes that holds the face's normal best
-        const std::array<double, 3> place = {worst->where[0], worst->where[1], worst->where[2]};
-        int                         axis  = 0;
-        try
-          {
-            const auto n = io::normal_magnitudes_near(stl(worst->updates), place);
-            if (n[0] > 0.7)
-              axis = n[1] < n[2] ? 1 : 2;
-          }
-        catch (const std::exception &)
-          {
-          }
-        std::map<long, std::vector<Segment>> blocks;
-        for (long u = 0; u <= worst->updates; ++u)
-          try
-            {
-              blocks[u] = io::plane_section_of_file(stl(u), axis, place[axis]);
-            }
-          catch (const std::exception &) // (a file missing: that update is not drawn)
-            {
-            }
-        const char  *axes = "xyz";
-        const int    iu = (axis + 1) % 3, iv = (axis + 2) % 3;
-        const std::string plane = std::string(1, axes[axis]) + " = " + io::format_number(1000 * place[axis], 5) + " mm";
-        write_section_blocks(dir + "/knife/section_worst.csv", blocks,
-                             "section " + std::string(1, axes[axis]) + " " + io::format_number(place[axis], 10) +
-                               ": u, v are " + axes[iu] + ", " + axes[iv]);
-        auto         window = section_window(blocks);
-        const double u = place[iu], v = place[iv];
-        // a thin layer along a long face: centred on the place, five of its depths around it
-        const double d = window.largest_distance;
-        if (d > 0 && std::max(window.y1 - window.y0, window.z1 - window.z0) > 10 * d)
-          window = {u - 5 * d, u + 5 * d, v - 5 * d, v + 5 * d, true, d};
-        // the place itself inside, with a margin
-        const double margin = 0.1 * std::max(window.y1 - window.y0, window.z1 - window.z0);
-        window.y0 = std::min(window.y0, u - margin), window.y1 = std::max(window.y1, u + margin);
-        window.z0 = std::min(window.z0, v - margin), window.z1 = std::max(window.z1, v + margin);
-        SectionMark mark = worst->mark;
-        mark.shown       = true;
-        mark.at          = {u, v};
-        mark.lowest_points = mark.lowest_points && axis == 0; // (the gauge's sections are normal to x)
-        if (!blocks.empty() && blocks.rbegin()->first != worst->updates)
-          mark.text += " (the last surface found, knife_" + std::to_string(blocks.rbegin()->first) +
-                       ".stl, is drawn: a later one is missing)";
-        if (section_plot(gp, blocks, window, "knife/section_worst.png",
-                         "cross-section through where the life ended (" + plane + ")" +
-                           (window.zoomed ? ", zoomed to the wear" : ""),
-                         mark, std::string(1, axes[iu]).c_str(), std::string(1, axes[iv]).c_str()))
-          pictures.push_back("knife/section_worst.png");
-      }
+      write_worst_section(gp, dir, *worst, pictures);
     gp.close();
     if (!gp)
       throw RunError("cannot write " + dir + "/lifetime.gp (disk full?)");

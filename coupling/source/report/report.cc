@@ -446,115 +446,128 @@ namespace abrade::report
                             "change for:<ul>" + list + "</ul>";
     }
 
+    /// The variants' table (numbers to four digits) and the changes against the first row that
+    /// are significant.
+    void add_comparison(HtmlPage &page, const io::CsvTable &csv)
+    {
+      std::vector<std::vector<std::string>> rows;
+      for (const auto &line : csv.rows)
+        {
+          std::vector<std::string> row;
+          for (const auto &cell : line)
+            {
+              char        *end = nullptr;
+              const double v   = std::strtod(cell.c_str(), &end);
+              row.push_back(end && *end == '\0' && !cell.empty() ? number(v, 4) : cell);
+            }
+          rows.push_back(row);
+        }
+      page.table(csv.header, rows);
+      page.paragraph("Wear in m^3 per cycle (Archard's volume unless Output/Wear field says otherwise), payload in "
+                     "t per cycle, wear per tonne in m^3/t; columns ending in _std are the standard deviations over the "
+                     "bed seeds, _uncertainty the uncertainty of a change against the first row, in per cent "
+                     "(docs/user-guide.md).");
+      page.heading("Significant changes");
+      page.paragraph(significant_changes(csv));
+    }
+
+    /// Each variant's worn wall after its run of the lowest seed (dir/runs/VARIANT-seedN), in
+    /// the table's order, coloured by the run's Output/Wear field.
+    std::vector<SurfacePicture> worn_shapes(const std::string &dir, const io::CsvTable &csv)
+    {
+      std::vector<std::string> runs;
+      for (const auto &e : fs::directory_iterator(dir + "/runs"))
+        if (e.is_directory())
+          runs.push_back(e.path().string());
+      auto variant = [](const std::string &run) {
+        const std::string name = fs::path(run).filename().string();
+        return name.substr(0, name.rfind("-seed"));
+      };
+      auto seed = [](const std::string &run) {
+        const auto at = run.rfind("-seed");
+        return at == std::string::npos ? 0L : std::atol(run.c_str() + at + 5);
+      };
+      auto rank = [&](const std::string &run) {
+        for (std::size_t k = 0; k < csv.rows.size(); ++k)
+          if (!csv.rows[k].empty() && csv.rows[k][0] == variant(run))
+            return long(k);
+        return long(csv.rows.size());
+      };
+      std::sort(runs.begin(), runs.end(), [&](const std::string &a, const std::string &b) {
+        return std::make_tuple(rank(a), variant(a), seed(a)) < std::make_tuple(rank(b), variant(b), seed(b));
+      });
+      std::vector<SurfacePicture> shapes;
+      std::vector<std::string>    seen;
+      for (const auto &run : runs)
+        {
+          std::string name = fs::path(run).filename().string();
+          name             = name.substr(0, name.rfind("-seed"));
+          if (std::find(seen.begin(), seen.end(), name) != seen.end())
+            continue;
+          const std::string snapshot = worn_wall_snapshot(run);
+          if (snapshot.empty())
+            continue;
+          seen.push_back(name);
+          std::string clean = name;
+          std::replace(clean.begin(), clean.end(), '\'', ' ');
+          // as the run's Output/Wear field saw it (Archard's volume by default)
+          const std::string field = io::summary_string(run + "/summary.json", "wear_field").value_or("archard_volume");
+          shapes.push_back({snapshot, io::wear_surface_field(field), clean});
+        }
+      return shapes;
+    }
+
+    /// The warnings of the runs under dir/runs, each named by its run.
+    std::vector<std::string> warnings_of_runs(const std::string &dir)
+    {
+      std::vector<std::string> warnings;
+      if (!fs::is_directory(dir + "/runs"))
+        return warnings;
+      std::vector<fs::path> runs;
+      for (const auto &e : fs::directory_iterator(dir + "/runs"))
+        if (e.is_directory())
+          runs.push_back(e.path());
+      std::sort(runs.begin(), runs.end());
+      for (const auto &run : runs)
+        {
+          std::vector<std::string> own;
+          collect_warnings(read_json((run / "summary.json").string()), own);
+          for (const auto &w : own)
+            warnings.push_back(run.filename().string() + ": " + w);
+        }
+      return warnings;
+    }
+
     std::string table_page(const std::string &dir, const std::string &title, const std::string &csv_file,
                            const std::vector<std::string> &pngs)
     {
-      HtmlPage   page(title);
+      HtmlPage           page(title);
       const io::CsvTable csv = read_table(dir + "/" + csv_file);
       page.headline("<span id=\"headline-count\" data-value=\"" + std::to_string(csv.rows.size()) + "\"><b>" +
                     std::to_string(csv.rows.size()) + "</b></span> variants compared (" +
                     escape_html(csv_file) + ")");
       page.heading("Comparison");
       if (!csv.rows.empty())
-        {
-          std::vector<std::vector<std::string>> rows;
-          for (const auto &line : csv.rows)
-            {
-              std::vector<std::string> row;
-              for (const auto &cell : line)
-                {
-                  char *end = nullptr;
-                  const double v = std::strtod(cell.c_str(), &end);
-                  row.push_back(end && *end == '\0' && !cell.empty() ? number(v, 4) : cell);
-                }
-              rows.push_back(row);
-            }
-          page.table(csv.header, rows);
-          page.paragraph("Wear in m^3 per cycle (Archard's volume unless Output/Wear field says otherwise), payload in "
-                         "t per cycle, wear per tonne in m^3/t; columns ending in _std are the standard deviations over the "
-                         "bed seeds, _uncertainty the uncertainty of a change against the first row, in per cent "
-                         "(docs/user-guide.md).");
-          page.heading("Significant changes");
-          page.paragraph(significant_changes(csv));
-        }
+        add_comparison(page, csv);
       page.heading("Plots");
       for (const auto &p : pngs)
         if (fs::exists(dir + "/" + p))
           page.png(dir + "/" + p, p, fs::path(p).stem().string());
       // the worn shapes side by side: each variant's first seed
       if (fs::exists(dir + "/runs"))
-        {
-          std::vector<SurfacePicture> shapes;
-          // each variant's run of the lowest seed, in the table's order
-          std::vector<std::string> runs;
-          for (const auto &e : fs::directory_iterator(dir + "/runs"))
-            if (e.is_directory())
-              runs.push_back(e.path().string());
-          auto variant = [](const std::string &run) {
-            const std::string name = fs::path(run).filename().string();
-            return name.substr(0, name.rfind("-seed"));
-          };
-          auto seed = [](const std::string &run) {
-            const auto at = run.rfind("-seed");
-            return at == std::string::npos ? 0L : std::atol(run.c_str() + at + 5);
-          };
-          auto rank = [&](const std::string &run) {
-            for (std::size_t k = 0; k < csv.rows.size(); ++k)
-              if (!csv.rows[k].empty() && csv.rows[k][0] == variant(run))
-                return long(k);
-            return long(csv.rows.size());
-          };
-          std::sort(runs.begin(), runs.end(), [&](const std::string &a, const std::string &b) {
-            return std::make_tuple(rank(a), variant(a), seed(a)) < std::make_tuple(rank(b), variant(b), seed(b));
-          });
-          std::vector<std::string> seen;
-          for (const auto &run : runs)
-            {
-              std::string name = fs::path(run).filename().string();
-              name             = name.substr(0, name.rfind("-seed"));
-              if (std::find(seen.begin(), seen.end(), name) != seen.end())
-                continue;
-              const std::string snapshot = worn_wall_snapshot(run);
-              if (snapshot.empty())
-                continue;
-              seen.push_back(name);
-              std::string clean = name;
-              std::replace(clean.begin(), clean.end(), '\'', ' ');
-              // as the run's Output/Wear field saw it (Archard's volume by default)
-              const std::string field =
-                io::summary_string(run + "/summary.json", "wear_field").value_or("archard_volume");
-              shapes.push_back({snapshot, io::wear_surface_field(field), clean});
-            }
-          if (!shapes.empty())
-            {
-              page.heading("Worn shapes");
-              RenderOptions o;
-              o.align = true, o.top_percentile = 0.99;
-              render_surfaces(dir + "/report", "worn_shapes.png", shapes, o);
-              page.png(dir + "/report/worn_shapes.png",
-                       "Each variant's worn knife (a knife first, else the first wall with wear) coloured by the wear "
-                       "depth of its Output/Wear field (Archard's by default) after the run (its lowest bed seed), in the table's order, seen along its principal axes; "
-                       "one colour range, whose top is the 99th percentile (the deepest 1 % share its colour).");
-            }
-        }
+        if (const auto shapes = worn_shapes(dir, csv); !shapes.empty())
+          {
+            page.heading("Worn shapes");
+            RenderOptions o;
+            o.align = true, o.top_percentile = 0.99;
+            render_surfaces(dir + "/report", "worn_shapes.png", shapes, o);
+            page.png(dir + "/report/worn_shapes.png",
+                     "Each variant's worn knife (a knife first, else the first wall with wear) coloured by the wear "
+                     "depth of its Output/Wear field (Archard's by default) after the run (its lowest bed seed), in the table's order, seen along its principal axes; "
+                     "one colour range, whose top is the 99th percentile (the deepest 1 % share its colour).");
+          }
       page.heading("Warnings");
-      std::vector<std::string> warnings; // the runs' own, each named by its run
-      if (fs::is_directory(dir + "/runs"))
-        {
-          std::vector<fs::path> runs;
-          for (const auto &e : fs::directory_iterator(dir + "/runs"))
-            if (e.is_directory())
-              runs.push_back(e.path());
-          std::sort(runs.begin(), runs.end());
-          for (const auto &run : runs)
-            {
-              std::vector<std::string> own;
-              collect_warnings(read_json((run / "summary.json").string()), own);
-              for (const auto &w : own)
-                warnings.push_back(run.filename().string() + ": " + w);
-            }
-        }
-      page.warnings(warnings);
+      page.warnings(warnings_of_runs(dir));
       if (fs::exists(dir + "/concepts.md"))
         page.details("concepts.md", read_text(dir + "/concepts.md"));
       if (fs::exists(dir + "/study.md"))

@@ -321,98 +321,109 @@ namespace abrade::report
     return write_triangles(picture, out, false, scale, values, as_points) && !as_points;
   }
 
-  bool render_surfaces(const std::string &directory, const std::string &png, const std::vector<SurfacePicture> &surfaces,
-                       const RenderOptions &options, bool *laid_face_on)
+  namespace
   {
-    const bool signed_range = options.signed_range;
-    std::filesystem::create_directories(directory);
-    const std::string stem = std::filesystem::path(png).stem().string();
-    std::vector<double> values;
-    std::vector<char>   as_points(surfaces.size(), 0);
-    // a long part (its largest extent face_on_elongation times its middle one, or more) is laid
-    // face on, its two sides one above the other at full width, so that it fills its panels;
-    // every surface in the first one's frame
-    Eigen::Vector3d extent = Eigen::Vector3d::Zero();
-    Frame           front;
-    if (options.face_on_elongation > 0 && !surfaces.empty() && options.crop.radius <= 0)
-      if (const auto poly = triangles_of_file(surfaces.front().file))
-        std::tie(front, extent) = face_on_frame(poly);
-    const bool face_on = extent[1] > 0 && extent[0] >= options.face_on_elongation * extent[1];
-    if (laid_face_on)
-      *laid_face_on = face_on;
-    Frame      back    = front;
-    back.first.row(1) *= -1, back.first.row(2) *= -1; // (turned half round x: the other side up)
-    for (std::size_t k = 0; k < surfaces.size(); ++k)
-      {
-        bool              points = false;
-        const std::string name   = directory + "/" + stem + "_" + std::to_string(k);
-        if (!write_triangles(surfaces[k], name + ".dat", options.align, options.categories.empty() ? 1000.0 : 1.0,
-                             values, points, face_on ? &front : nullptr, options.crop))
-          return false;
-        std::vector<double> again; // (the same values)
-        if (face_on && !write_triangles(surfaces[k], name + "_back.dat", false, 1000.0, again, points, &back))
-          return false;
-        as_points[k] = points;
-      }
-    if (values.empty())
-      return false;
-    std::sort(values.begin(), values.end());
-    double lo = values.front();
-    double hi = values[std::min(values.size() - 1, std::size_t(options.top_percentile * (values.size() - 1)))];
-    if (surfaces.empty())
-      return false;
-    if (signed_range)
-      hi = std::max(std::abs(lo), std::abs(hi)), lo = -hi;
-    else
-      lo = std::min(lo, 0.0);
-    if (!(hi > lo))
-      hi = lo + 1e-3;
+    /// How render_surfaces lays out its pictures, and the values they colour.
+    struct Layout
+    {
+      bool                face_on = false;        ///< a long part laid flat, its two sides one above the other
+      Eigen::Vector3d     extent  = Eigen::Vector3d::Zero(); ///< the first surface's, in its principal frame
+      Frame               front, back;            ///< (face on) the frames of the two sides
+      std::vector<double> values;                 ///< every drawn value, for the colour range
+      std::vector<char>   as_points;              ///< per surface: drawn as points (not a closed surface)
+      double              lo = 0, hi = 0;         ///< the colour range
+    };
 
-    std::ofstream gp(directory + "/" + stem + ".gp");
-    // one column per surface, the front view above the back view (face on: a row each, the
-    // panels as wide as the picture and as high as the part's shape asks)
-    const int     columns = int(surfaces.size());
-    // wear of one cycle is a few micrometres: then the colour bar is in um
-    const bool   categorical = !options.categories.empty();
-    const double unit = hi < 0.01 && !signed_range && !categorical ? 1000.0 : 1.0;
-    std::string  label = options.label;
-    if (unit != 1.0 && label.size() > 4 && label.compare(label.size() - 4, 4, "[mm]") == 0)
-      label = label.substr(0, label.size() - 4) + "[um]";
-    // (face on: the part 1246 px wide, 0.01 ... 0.9 of the width, its colour bar beside it;
-    // each panel as high as the part's shape asks, with 26 px for its title)
-    const int part_px = std::clamp(int(1246 * extent[1] / (extent[0] > 0 ? extent[0] : 1)), 60, 660);
-    const int panel   = face_on ? part_px + 26 : 0; // [px]
-    if (face_on)
-      gp << "set terminal pngcairo size 1400," << 2 * columns * panel << " font 'DejaVu Sans,10'\n"
-         << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
-         << "set multiplot\n"
-         << "set view map\nset size ratio -1\nunset tics\nunset border\nunset key\n"
-         << "set colorbox\n"
-         << "set pm3d depthorder corners2color mean\n";
-    else
-      gp << "set terminal pngcairo size " << std::max(700, 400 * columns) << ",860 font 'DejaVu Sans,10'\n"
-         << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
-         << "set multiplot layout 2," << columns << " rowsfirst\n"
-         << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
-         << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n";
-    if (categorical) // one colour per category, named on the colour bar
-      {
-        const std::size_t n = options.categories.size();
-        gp << "set cbrange [-0.5:" << double(n) - 0.5 << "]\nset cblabel '" << label << "'\nset palette maxcolors " << n
-           << "\nset palette defined (";
-        for (std::size_t k = 0; k < n; ++k)
-          gp << (k ? ", " : "") << k << " '" << options.categories[k].second << "'";
-        gp << ")\nset cbtics (";
-        for (std::size_t k = 0; k < n; ++k)
-          gp << (k ? ", " : "") << "'" << quote_free(options.categories[k].first) << "' " << k;
-        gp << ")\n";
-      }
-    else
-      gp << "set cbrange [" << unit * lo << ":" << unit * hi << "]\nset cblabel '" << label << "'\nset cbtics\n"
-         << (signed_range ? "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
-                          : "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n");
+    /// The surfaces' data files (stem_K.dat, and stem_K_back.dat face on) in @p directory, the
+    /// layout decided and the colour range found; false where a surface cannot be drawn.
+    bool write_surface_data(const std::string &directory, const std::string &stem,
+                            const std::vector<SurfacePicture> &surfaces, const RenderOptions &options, Layout &l)
+    {
+      l.as_points.assign(surfaces.size(), 0);
+      // a long part (its largest extent face_on_elongation times its middle one, or more) is laid
+      // face on, its two sides one above the other at full width, so that it fills its panels;
+      // every surface in the first one's frame
+      if (options.face_on_elongation > 0 && !surfaces.empty() && options.crop.radius <= 0)
+        if (const auto poly = triangles_of_file(surfaces.front().file))
+          std::tie(l.front, l.extent) = face_on_frame(poly);
+      l.face_on = l.extent[1] > 0 && l.extent[0] >= options.face_on_elongation * l.extent[1];
+      l.back    = l.front;
+      l.back.first.row(1) *= -1, l.back.first.row(2) *= -1; // (turned half round x: the other side up)
+      for (std::size_t k = 0; k < surfaces.size(); ++k)
+        {
+          bool              points = false;
+          const std::string name   = directory + "/" + stem + "_" + std::to_string(k);
+          if (!write_triangles(surfaces[k], name + ".dat", options.align, options.categories.empty() ? 1000.0 : 1.0,
+                               l.values, points, l.face_on ? &l.front : nullptr, options.crop))
+            return false;
+          std::vector<double> again; // (the same values)
+          if (l.face_on && !write_triangles(surfaces[k], name + "_back.dat", false, 1000.0, again, points, &l.back))
+            return false;
+          l.as_points[k] = points;
+        }
+      if (l.values.empty() || surfaces.empty())
+        return false;
+      std::sort(l.values.begin(), l.values.end());
+      l.lo = l.values.front();
+      l.hi = l.values[std::min(l.values.size() - 1, std::size_t(options.top_percentile * (l.values.size() - 1)))];
+      if (options.signed_range)
+        l.hi = std::max(std::abs(l.lo), std::abs(l.hi)), l.lo = -l.hi;
+      else
+        l.lo = std::min(l.lo, 0.0);
+      if (!(l.hi > l.lo))
+        l.hi = l.lo + 1e-3;
+      return true;
+    }
 
-    if (face_on) // each surface's two sides, laid flat, one above the other, each in its box
+    /// The gnuplot script's terminal, multiplot and palette. Returns the factor from metres to
+    /// the colour bar's unit (1000: a few micrometres of wear shown in um).
+    double write_script_head(std::ostream &gp, const std::string &directory, const std::string &png, int columns,
+                             int panel, const RenderOptions &options, const Layout &l)
+    {
+      // wear of one cycle is a few micrometres: then the colour bar is in um
+      const bool   categorical = !options.categories.empty();
+      const double unit = l.hi < 0.01 && !options.signed_range && !categorical ? 1000.0 : 1.0;
+      std::string  label = options.label;
+      if (unit != 1.0 && label.size() > 4 && label.compare(label.size() - 4, 4, "[mm]") == 0)
+        label = label.substr(0, label.size() - 4) + "[um]";
+      if (l.face_on)
+        gp << "set terminal pngcairo size 1400," << 2 * columns * panel << " font 'DejaVu Sans,10'\n"
+           << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
+           << "set multiplot\n"
+           << "set view map\nset size ratio -1\nunset tics\nunset border\nunset key\n"
+           << "set colorbox\n"
+           << "set pm3d depthorder corners2color mean\n";
+      else
+        gp << "set terminal pngcairo size " << std::max(700, 400 * columns) << ",860 font 'DejaVu Sans,10'\n"
+           << "set output '" << gnuplot_output_name(directory + "/" + png) << "'\nset termoption noenhanced\n"
+           << "set multiplot layout 2," << columns << " rowsfirst\n"
+           << "set view equal xyz\nunset tics\nunset border\nunset key\nset xyplane 0\n"
+           << "set pm3d depthorder corners2color mean lighting primary 0.5 specular 0.1\n";
+      if (categorical) // one colour per category, named on the colour bar
+        {
+          const std::size_t n = options.categories.size();
+          gp << "set cbrange [-0.5:" << double(n) - 0.5 << "]\nset cblabel '" << label << "'\nset palette maxcolors " << n
+             << "\nset palette defined (";
+          for (std::size_t k = 0; k < n; ++k)
+            gp << (k ? ", " : "") << k << " '" << options.categories[k].second << "'";
+          gp << ")\nset cbtics (";
+          for (std::size_t k = 0; k < n; ++k)
+            gp << (k ? ", " : "") << "'" << quote_free(options.categories[k].first) << "' " << k;
+          gp << ")\n";
+        }
+      else
+        gp << "set cbrange [" << unit * l.lo << ":" << unit * l.hi << "]\nset cblabel '" << label << "'\nset cbtics\n"
+           << (options.signed_range ? "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n"
+                                    : "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n");
+      return unit;
+    }
+
+    /// Face on: each surface's two sides laid flat, one above the other, each in its box of
+    /// @p panel pixels.
+    void write_face_on_panels(std::ostream &gp, const std::string &stem, const std::vector<SurfacePicture> &surfaces,
+                              int panel, double unit)
+    {
+      const int columns = int(surfaces.size());
       for (std::size_t k = 0; k < surfaces.size(); ++k)
         for (int v = 0; v < 2; ++v)
           {
@@ -425,41 +436,80 @@ namespace abrade::report
                << (v == 0 ? " (one side)" : " (the other side)") << "' offset 0,-0.8\nsplot '" << stem << "_" << k
                << (v == 0 ? ".dat" : "_back.dat") << "' using 1:2:3:(column(4)*" << unit << ") with pm3d\n";
           }
-    // two sides of the part: from the front and above, and from the back (a zoom: from the
-    // side its wear faces, to either side of it)
-    std::vector<std::pair<double, double>> views = {{70, 25}, {70, 205}};
-    std::vector<std::string>               sides = {" (front)", " (back)"};
-    if (options.crop.radius > 0 && !surfaces.empty())
+    }
+
+    /// Every surface from two sides (@p views: gnuplot's rot_x, rot_z in degrees, titled with
+    /// @p sides), a row per view, the labels that face the viewer.
+    void write_perspective_views(std::ostream &gp, const std::string &stem, const std::vector<SurfacePicture> &surfaces,
+                                 const std::vector<std::pair<double, double>> &views,
+                                 const std::vector<std::string> &sides, const RenderOptions &options, const Layout &l,
+                                 double unit)
+    {
+      for (int v = 0; v < 2; ++v)
+        for (std::size_t k = 0; k < surfaces.size(); ++k)
+          {
+            // one colour bar per row, beside the last picture
+            // the labels whose normals face this view's viewer (gnuplot's view: turned rot_z
+            // about z, then rot_x about x; the viewer towards (sin x sin z, -sin x cos z, cos x))
+            const double rot_x = views[v].first * M_PI / 180, rot_z = views[v].second * M_PI / 180;
+            const double viewer[3] = {std::sin(rot_x) * std::sin(rot_z), -std::sin(rot_x) * std::cos(rot_z), std::cos(rot_x)};
+            gp << "unset label\n";
+            if (!options.align)
+              for (const auto &lb : options.labels)
+                if (lb.normal[0] * viewer[0] + lb.normal[1] * viewer[1] + lb.normal[2] * viewer[2] > 0.05 ||
+                    lb.normal[0] * lb.normal[0] + lb.normal[1] * lb.normal[1] + lb.normal[2] * lb.normal[2] < 0.25)
+                  gp << "set label '" << quote_free(lb.text) << "' at " << 1000 * lb.at[0] << "," << 1000 * lb.at[1] << ","
+                     << 1000 * lb.at[2]
+                     << (lb.marker ? " front left offset 1.5,0 font ',10' textcolor rgb 'red' point pt 6 ps 3 lw 2 lc rgb 'red'\n"
+                                   : " front center font ',8' textcolor rgb 'black'\n");
+            gp << (k + 1 == surfaces.size() ? "set colorbox\n" : "unset colorbox\n")
+               << "set view " << views[v].first << ", " << views[v].second << ", " << (options.crop.radius > 0 ? 1.45 : 1.1)
+               << "\n"
+               << "set title '" << quote_free(surfaces[k].title) << sides[v] << "' offset 0,1\n"
+               << "splot '" << stem << "_" << k << ".dat' using 1:2:3:(column(4)*" << unit << ") "
+               << (l.as_points[k] ? "with points pointtype 7 pointsize 0.35 palette\n" : "with pm3d\n");
+          }
+    }
+  } // namespace
+
+  bool render_surfaces(const std::string &directory, const std::string &png, const std::vector<SurfacePicture> &surfaces,
+                       const RenderOptions &options, bool *laid_face_on)
+  {
+    std::filesystem::create_directories(directory);
+    const std::string stem = std::filesystem::path(png).stem().string();
+    Layout            l;
+    const bool        written = write_surface_data(directory, stem, surfaces, options, l);
+    if (laid_face_on)
+      *laid_face_on = l.face_on;
+    if (!written)
+      return false;
+
+    std::ofstream gp(directory + "/" + stem + ".gp");
+    // one column per surface, the front view above the back view (face on: a row each, the
+    // panels as wide as the picture and as high as the part's shape asks: the part 1246 px
+    // wide, 0.01 ... 0.9 of the width, its colour bar beside it; each panel with 26 px for its
+    // title)
+    const int    columns = int(surfaces.size());
+    const int    part_px = std::clamp(int(1246 * l.extent[1] / (l.extent[0] > 0 ? l.extent[0] : 1)), 60, 660);
+    const int    panel   = l.face_on ? part_px + 26 : 0; // [px]
+    const double unit    = write_script_head(gp, directory, png, columns, panel, options, l);
+    if (l.face_on)
+      write_face_on_panels(gp, stem, surfaces, panel, unit);
+    else
       {
-        views = zoom_views(surfaces.front().file, surfaces.front().field, options.crop);
-        sides = {" (one side of the worn face)", " (its other side)"};
-        if (views.empty())
-          return false;
+        // two sides of the part: from the front and above, and from the back (a zoom: from the
+        // side its wear faces, to either side of it)
+        std::vector<std::pair<double, double>> views = {{70, 25}, {70, 205}};
+        std::vector<std::string>               sides = {" (front)", " (back)"};
+        if (options.crop.radius > 0)
+          {
+            views = zoom_views(surfaces.front().file, surfaces.front().field, options.crop);
+            sides = {" (one side of the worn face)", " (its other side)"};
+            if (views.empty())
+              return false;
+          }
+        write_perspective_views(gp, stem, surfaces, views, sides, options, l, unit);
       }
-    for (int v = 0; v < 2 && !face_on; ++v)
-      for (std::size_t k = 0; k < surfaces.size(); ++k)
-        {
-          // one colour bar per row, beside the last picture
-          // the labels whose normals face this view's viewer (gnuplot's view: turned rot_z
-          // about z, then rot_x about x; the viewer towards (sin x sin z, -sin x cos z, cos x))
-          const double rot_x = views[v].first * M_PI / 180, rot_z = views[v].second * M_PI / 180;
-          const double viewer[3] = {std::sin(rot_x) * std::sin(rot_z), -std::sin(rot_x) * std::cos(rot_z), std::cos(rot_x)};
-          gp << "unset label\n";
-          if (!options.align)
-            for (const auto &l : options.labels)
-              if (l.normal[0] * viewer[0] + l.normal[1] * viewer[1] + l.normal[2] * viewer[2] > 0.05 ||
-                  l.normal[0] * l.normal[0] + l.normal[1] * l.normal[1] + l.normal[2] * l.normal[2] < 0.25)
-                gp << "set label '" << quote_free(l.text) << "' at " << 1000 * l.at[0] << "," << 1000 * l.at[1] << ","
-                   << 1000 * l.at[2]
-                   << (l.marker ? " front left offset 1.5,0 font ',10' textcolor rgb 'red' point pt 6 ps 3 lw 2 lc rgb 'red'\n"
-                                : " front center font ',8' textcolor rgb 'black'\n");
-          gp << (k + 1 == surfaces.size() ? "set colorbox\n" : "unset colorbox\n")
-             << "set view " << views[v].first << ", " << views[v].second << ", " << (options.crop.radius > 0 ? 1.45 : 1.1)
-             << "\n"
-             << "set title '" << quote_free(surfaces[k].title) << sides[v] << "' offset 0,1\n"
-             << "splot '" << stem << "_" << k << ".dat' using 1:2:3:(column(4)*" << unit << ") "
-             << (as_points[k] ? "with points pointtype 7 pointsize 0.35 palette\n" : "with pm3d\n");
-        }
     gp << "unset multiplot\n";
     gp.close();
     return io::run_gnuplot(directory, stem + ".gp", true) && std::filesystem::exists(directory + "/" + png);
