@@ -1,5 +1,6 @@
 #pragma once
-// The private state of a Simulation (simulation.cc, neighbour_lists.cc, domain_exchange.cc):
+// The private state of a Simulation (simulation.cc, neighbour_lists.cc, pair_forces.cc,
+// wall_forces.cc, domain_exchange.cc):
 // neighbour lists, contact histories, the cell grid, the domain decomposition and its ghost
 // layer, and per-thread scratch space: everything the time loop needs that is not particle
 // state.

@@ -1,5 +1,5 @@
 #pragma once
-// A particle's contacts with the walls (simulation.cc's wall forces; internal to the DEM): the
+// A particle's contacts with the walls (wall_forces.cc; internal to the DEM): the
 // triangles within its radius with the closest point on each, one contact per touching region
 // of a wall, and the slots of the contacts' tangential histories. All inline: the wall-force
 // loop calls them per particle and must not pay a call or an allocation for them.

@@ -1,7 +1,7 @@
 #pragma once
 // Closest point on a triangle to a point, with the feature (face, edge, vertex) it lies on
 // (Ericson, Real-Time Collision Detection, 5.1.5). The feature decides whether a contact that
-// touches several triangles is one contact or several (see wall_contacts in simulation.cc).
+// touches several triangles is one contact or several (see dem/source/dem/wall_contacts.h).
 #include <array>
 #include <cstdint>
 

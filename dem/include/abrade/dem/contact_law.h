@@ -11,7 +11,7 @@
 // (its name, its documentation, the history it keeps per contact, the per-interaction
 // parameters it declares and reads, and evaluate()). The choice is made once per step:
 // with_contact_law() turns the run-time names into a ContactLaw<Rolling, Cohesion> type, and the
-// pair kernel (pair_forces.cc) and the wall contacts (simulation.cc) are compiled for each
+// pair kernel (pair_forces.cc) and the wall contacts (wall_forces.cc) are compiled for each
 // combination, so there is no dispatch per contact and the batched pair loop still vectorises.
 // Pairs and walls call the same ContactLaw::evaluate(): one source for each law.
 //
