@@ -269,19 +269,20 @@ namespace abrade::coupling
       return part_path;
     }
 
-    /// The lifetime case's parameter file, commented for the user who will finish it.
-    std::string case_text(const std::vector<std::string> &args, const Options &o, const PartShape &part,
-                          const Drag &d, const Material &m)
+    /// A number as a case file writes it (4 significant digits unless said).
+    std::string num(double x, int digits = 4) { return io::format_number(x, digits); }
+
+    /// The case file's opening comment: what wrote it, the part, its drag, what is left to set.
+    void write_case_heading(std::ostream &f, const std::vector<std::string> &args, const Options &o,
+                            const PartShape &part, const Drag &d)
     {
-      const double    lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
-      const std::string part_path = part_path_from(o);
-      std::ostringstream f;
-      auto n = [](double x, int digits = 4) { return io::format_number(x, digits); };
+      auto n = [](double x, int digits = 4) { return num(x, digits); };
+      const double lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
       f << "# A lifetime case around " << o.part << ", written by abrade case:\n#   abrade case";
       for (const auto &a : args)
         f << ' ' << (a.find(' ') != std::string::npos ? "\"" + a + "\"" : a);
-      f << "\n#\n# The part (placed: its lowest point at z = 0, the bounding box centred): " << n(lx) << " x " << n(ly)
-        << " x " << n(lz) << " m, " << n(part.volume) << " m^3, surface " << n(part.area)
+      f << "\n#\n# The part (placed: its lowest point at z = 0, the bounding box centred): " << n(lx, 4) << " x " << n(ly, 4)
+        << " x " << n(lz, 4) << " m, " << n(part.volume, 4) << " m^3, surface " << n(part.area, 4)
         << " m^2, plate thickness about 2 V / A = " << n(1000 * d.thickness, 3) << " mm.\n"
         << "# It is dragged as the knife-bed drags its knife: down into the bed by " << n(d.depth, 3)
         << " m, then along +x by " << n(d.travel, 3) << " m, at " << n(o.speed, 3) << " m/s.\n"
@@ -289,8 +290,14 @@ namespace abrade::coupling
         << "# faces), the end of life (Lifetime/Maximum depth, ...), W (calibrate it: abrade calibrate), the\n"
         << "# tonnes per cycle if a payload is measured. See it first:\n"
         << "#   abrade preview " << o.output << " --output preview\n# then run it:\n#   abrade run " << o.output
-        << "\nset Job   = lifetime\nset Walls = container, part\n\n"
-        << "subsection Output\n  set Directory         = output-" << std::filesystem::path(o.part).stem().string()
+        << "\nset Job   = lifetime\nset Walls = container, part\n\n";
+    }
+
+    /// Output and Simulation: the domain around the container, the phases of the drag.
+    void write_case_simulation(std::ostream &f, const Options &o, const Drag &d)
+    {
+      auto n = [](double x, int digits = 4) { return num(x, digits); };
+      f << "subsection Output\n  set Directory         = output-" << std::filesystem::path(o.part).stem().string()
         << "\n  set Snapshot interval = 0\n  set Write particles   = false\nend\n\n"
         << "subsection Simulation\n"
         << "  # the container and " << n(0.05, 2) << " m around it\n"
@@ -304,10 +311,16 @@ namespace abrade::coupling
         << "  # (the knife-bed's: the pour's impacts of coarse-grained particles reach 30 % of a radius; such\n"
         << "  # overlaps are counted per update in trajectory.csv and warned about, not fatal)\n"
         << "  set Maximum overlap fraction = 0.3\n  set On error = continue\n"
-        << "  set Threads    = 0\nend\n\n"
-        << "subsection Particles\n"
+        << "  set Threads    = 0\nend\n\n";
+    }
+
+    /// Particles: the material, its pour, its coarse graining, its settling.
+    void write_case_particles(std::ostream &f, const Options &o, const Drag &d, const Material &m)
+    {
+      auto n = [](double x, int digits = 4) { return num(x, digits); };
+      f << "subsection Particles\n"
         << "  # " << m.source << "\n"
-        << "  subsection Material\n    set Density         = " << n(m.density) << "\n"
+        << "  subsection Material\n    set Density         = " << n(m.density, 4) << "\n"
         << "    set Shear modulus   = 1e8\n    set Poisson's ratio = 0.25\n"
         << "    # rotation-locked spheres stand in for the grains' interlocking (the thesis' choice)\n"
         << "    set Rotation        = false\n  end\n"
@@ -326,8 +339,14 @@ namespace abrade::coupling
         << ": about " << o.particles << " particles in the bed (docs/coarse-graining.md: W holds for the\n"
         << "    # size it was fitted at)\n    set Factor = " << n(d.factor, 3) << "\n  end\n"
         << "  subsection Settling\n    # a fall through the pour region's height and 0.3 s\n"
-        << "    set Kinetic energy threshold = 0\n    set Maximum time             = " << n(d.settle, 3) << "\n  end\nend\n\n"
-        << "subsection Wall container\n  set Geometry = box\n"
+        << "    set Kinetic energy threshold = 0\n    set Maximum time             = " << n(d.settle, 3) << "\n  end\nend\n\n";
+    }
+
+    /// The walls: the container, and the part with its wear law and its drag.
+    void write_case_walls(std::ostream &f, const Options &o, const Drag &d, const Material &m)
+    {
+      auto n = [](double x, int digits = 4) { return num(x, digits); };
+      f << "subsection Wall container\n  set Geometry = box\n"
         << "  set Box min  = " << vec(d.x_min, d.y_min, 0) << "\n  set Box max  = " << vec(-d.x_min, -d.y_min, d.top) << "\n"
         << "  subsection Interaction\n    set Restitution = " << n(m.restitution, 3) << "\n    set Friction    = "
         << n(m.friction, 3) << "\n  end\nend\n\n"
@@ -341,16 +360,30 @@ namespace abrade::coupling
         << "  subsection Motion\n    set Type       = prescribed\n"
         << "    set Velocities = approach: 0, 0, " << n(-d.approach_speed, 3) << "; penetration: 0, 0, " << n(-o.speed, 3)
         << "; travel: " << n(o.speed, 3) << ", 0, 0\n"
-        << "  end\nend\n\n"
-        << "subsection Knife\n  set Geometry  = file\n  set File      = " << part_path << "\n";
+        << "  end\nend\n\n";
+    }
+
+    /// Knife: the part's file, its placing, mesh size and faces.
+    void write_case_knife(std::ostream &f, const Options &o, const PartShape &part, const Drag &d)
+    {
+      auto n = [](double x, int digits = 4) { return num(x, digits); };
+      const double lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
+      f << "subsection Knife\n  set Geometry  = file\n  set File      = " << part_path_from(o) << "\n";
       if (o.file_scale != 1)
         f << "  set File scale = " << n(o.file_scale, 6) << "\n";
       f << "  set Place     = lowest point at z = 0, centred\n"
         << "  # about the plate thickness, at most a tenth of the part (the knife-bed's: 20 mm for 30 mm)\n"
         << "  set Mesh size = " << n(std::clamp(d.thickness, 0.002, 0.1 * std::max({lx, ly, lz})), 2) << "\n"
         << "  # the faces bolted or welded on (none: every face wears); abrade preview shows them\n"
-        << "  set Clamped faces  = " << o.clamped << "\n  set Wearable faces = " << o.wearable << "\nend\n\n"
-        << "subsection Lifetime\n"
+        << "  set Clamped faces  = " << o.clamped << "\n  set Wearable faces = " << o.wearable << "\nend\n\n";
+    }
+
+    /// Lifetime: tonnes per cycle from the swept volume, beds, a first end of life, what to follow.
+    void write_case_lifetime(std::ostream &f, const Options &o, const PartShape &part, const Drag &d)
+    {
+      auto n = [](double x, int digits = 4) { return num(x, digits); };
+      const double ly = part.extent[1];
+      f << "subsection Lifetime\n"
         << "  # the swept volume (the part's width x its depth in the bed x the travel, " << n(ly, 3) << " x "
         << n(d.depth, 3) << " x " << n(d.travel, 3) << " m)\n  # x the bulk density (" << n(d.bulk, 4)
         << " kg/m^3): no payload measured; a measured one replaces it\n"
@@ -368,6 +401,19 @@ namespace abrade::coupling
         f << "; " << vec(part.lowest[0], part.lowest[1], part.lowest[2]);
       f << "\n  # cross-sections at a quarter, the middle and three quarters of the part's length (x)\n"
         << "  set Profile planes   = 0.25, 0.5, 0.75\nend\n";
+    }
+
+    /// The lifetime case's parameter file, commented for the user who will finish it.
+    std::string case_text(const std::vector<std::string> &args, const Options &o, const PartShape &part,
+                          const Drag &d, const Material &m)
+    {
+      std::ostringstream f;
+      write_case_heading(f, args, o, part, d);
+      write_case_simulation(f, o, d);
+      write_case_particles(f, o, d, m);
+      write_case_walls(f, o, d, m);
+      write_case_knife(f, o, part, d);
+      write_case_lifetime(f, o, part, d);
       return f.str();
     }
 

@@ -49,7 +49,103 @@ namespace abrade::fem
     std::unique_ptr<Quadrature<3>>    quadrature;
     DoFHandler<3>                     dofs;
     explicit Impl(const Triangulation<3> &t) : tria(t), dofs(t) {}
+
+    // the steps of solve_with()
+    /// The cells' volumes (by active cell index) and their mean: the reference of the cell-size
+    /// stiffening.
+    std::pair<std::vector<double>, double> cell_volumes() const;
+    /// The constraints of displacement component @p c: hanging nodes, the @p boundary
+    /// functions' component, the listed @p vertices' (if any; not where already constrained).
+    AffineConstraints<double> constraints_of(unsigned c, const IndexSet &relevant,
+                                             const std::map<unsigned, Tensor<1, 3>>                  *vertices,
+                                             const std::map<types::boundary_id, const Function<3> *> &boundary) const;
+    /// -div(k grad u_c) = f_c (@p rhs's component @p c, none: 0) on this process's cells, into
+    /// @p matrix and @p rhs_vector; k = (mean volume / cell volume)^@p stiffening.
+    void assemble(unsigned c, const AffineConstraints<double> &constraints, double stiffening,
+                  const std::vector<double> &volume, double mean_volume, const Function<3> *rhs,
+                  PETScWrappers::MPI::SparseMatrix &matrix, PETScWrappers::MPI::Vector &rhs_vector) const;
   };
+
+  std::pair<std::vector<double>, double> MeshMotion::Impl::cell_volumes() const
+  {
+    std::vector<double> volume(tria.n_active_cells());
+    double              mean = 0;
+    FEValues<3>         fv(*mapping, *fe, *quadrature, update_JxW_values);
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        fv.reinit(cell);
+        double v = 0;
+        for (unsigned q = 0; q < fv.n_quadrature_points; ++q)
+          v += fv.JxW(q);
+        volume[cell->active_cell_index()] = v;
+        mean += v / volume.size();
+      }
+    return {volume, mean};
+  }
+
+  AffineConstraints<double>
+  MeshMotion::Impl::constraints_of(unsigned c, const IndexSet &relevant, const std::map<unsigned, Tensor<1, 3>> *vertices,
+                                   const std::map<types::boundary_id, const Function<3> *> &boundary) const
+  {
+    AffineConstraints<double> constraints(relevant);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    std::vector<std::unique_ptr<ComponentOf>>         parts;
+    std::map<types::boundary_id, const Function<3> *> scalar;
+    for (const auto &[id, f] : boundary)
+      {
+        parts.push_back(std::make_unique<ComponentOf>(*f, c));
+        scalar[id] = parts.back().get();
+      }
+    VectorTools::interpolate_boundary_values(*mapping, dofs, scalar, constraints);
+    if (vertices)
+      for (const auto &cell : dofs.active_cell_iterators())
+        for (const unsigned v : cell->vertex_indices())
+          if (auto it = vertices->find(cell->vertex_index(v)); it != vertices->end())
+            {
+              const auto dof = cell->vertex_dof_index(v, 0);
+              if (relevant.is_element(dof) && !constraints.is_constrained(dof))
+                {
+                  constraints.add_line(dof);
+                  constraints.set_inhomogeneity(dof, it->second[c]);
+                }
+            }
+    constraints.close();
+    return constraints;
+  }
+
+  void MeshMotion::Impl::assemble(unsigned c, const AffineConstraints<double> &constraints, double stiffening,
+                                  const std::vector<double> &volume, double mean_volume, const Function<3> *rhs,
+                                  PETScWrappers::MPI::SparseMatrix &matrix, PETScWrappers::MPI::Vector &rhs_vector) const
+  {
+    FEValues<3> fv(*mapping, *fe, *quadrature,
+                   update_values | update_gradients | update_JxW_values | update_quadrature_points);
+    const unsigned                       n = fe->n_dofs_per_cell();
+    FullMatrix<double>                   local_matrix(n, n);
+    dealii::Vector<double>               local_rhs(n);
+    std::vector<types::global_dof_index> indices(n);
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        fv.reinit(cell);
+        local_matrix = 0, local_rhs = 0;
+        const double k = stiffening == 0 ? 1.0 : std::pow(mean_volume / volume[cell->active_cell_index()], stiffening);
+        for (unsigned q = 0; q < fv.n_quadrature_points; ++q)
+          {
+            const double f = rhs ? rhs->value(fv.quadrature_point(q), c) : 0.0;
+            for (unsigned i = 0; i < n; ++i)
+              {
+                for (unsigned j = 0; j < n; ++j)
+                  local_matrix(i, j) += k * fv.shape_grad(i, q) * fv.shape_grad(j, q) * fv.JxW(q);
+                local_rhs(i) += f * fv.shape_value(i, q) * fv.JxW(q);
+              }
+          }
+        cell->get_dof_indices(indices);
+        constraints.distribute_local_to_global(local_matrix, local_rhs, indices, matrix, rhs_vector);
+      }
+    matrix.compress(VectorOperation::add);
+    rhs_vector.compress(VectorOperation::add);
+  }
 
   MeshMotion::MeshMotion(const Triangulation<3> &tria, const Settings &s)
     : impl(std::make_unique<Impl>(tria)), settings(s)
@@ -100,90 +196,22 @@ namespace abrade::fem
     const IndexSet owned = dofs.locally_owned_dofs();
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
-
-    // the cell-size stiffening needs a reference volume: the mean cell volume
-    std::vector<double> cell_volume(impl->tria.n_active_cells());
-    double              mean_volume = 0;
-    {
-      FEValues<3> fv(*impl->mapping, *impl->fe, *impl->quadrature, update_JxW_values);
-      for (const auto &cell : dofs.active_cell_iterators())
-        {
-          fv.reinit(cell);
-          double v = 0;
-          for (unsigned q = 0; q < fv.n_quadrature_points; ++q)
-            v += fv.JxW(q);
-          cell_volume[cell->active_cell_index()] = v;
-          mean_volume += v / cell_volume.size();
-        }
-    }
+    const auto [cell_volume, mean_volume] = impl->cell_volumes();
 
     iterations = 0;
     for (unsigned c = 0; c < 3; ++c)
       {
-        // constraints: the prescribed displacement component on the listed boundaries
-        AffineConstraints<double> constraints(relevant);
-        DoFTools::make_hanging_node_constraints(dofs, constraints);
-        std::vector<std::unique_ptr<ComponentOf>> parts;
-        std::map<types::boundary_id, const Function<3> *> scalar;
-        for (const auto &[id, f] : boundary)
-          {
-            parts.push_back(std::make_unique<ComponentOf>(*f, c));
-            scalar[id] = parts.back().get();
-          }
-        VectorTools::interpolate_boundary_values(*impl->mapping, dofs, scalar, constraints);
-        if (vertices)
-          for (const auto &cell : dofs.active_cell_iterators())
-            for (const unsigned v : cell->vertex_indices())
-              if (auto it = vertices->find(cell->vertex_index(v)); it != vertices->end())
-                {
-                  const auto dof = cell->vertex_dof_index(v, 0);
-                  if (relevant.is_element(dof) && !constraints.is_constrained(dof))
-                    {
-                      constraints.add_line(dof);
-                      constraints.set_inhomogeneity(dof, it->second[c]);
-                    }
-                }
-        constraints.close();
-
-        DynamicSparsityPattern dsp(relevant);
+        const AffineConstraints<double> constraints = impl->constraints_of(c, relevant, vertices, boundary);
+        DynamicSparsityPattern          dsp(relevant);
         DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
         SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
         PETScWrappers::MPI::SparseMatrix matrix;
         matrix.reinit(owned, owned, dsp, comm);
         PETScWrappers::MPI::Vector rhs_vector(owned, comm), x(owned, comm);
+        impl->assemble(c, constraints, settings.stiffening, cell_volume, mean_volume, rhs, matrix, rhs_vector);
 
-        // assemble -div(k grad u) = f on this process's cells
-        FEValues<3> fv(*impl->mapping, *impl->fe, *impl->quadrature,
-                       update_values | update_gradients | update_JxW_values | update_quadrature_points);
-        const unsigned n = impl->fe->n_dofs_per_cell();
-        FullMatrix<double>                   local_matrix(n, n);
-        dealii::Vector<double>               local_rhs(n);
-        std::vector<types::global_dof_index> indices(n);
-        for (const auto &cell : dofs.active_cell_iterators())
-          {
-            if (!cell->is_locally_owned())
-              continue;
-            fv.reinit(cell);
-            local_matrix = 0, local_rhs = 0;
-            const double k = settings.stiffening == 0
-                               ? 1.0
-                               : std::pow(mean_volume / cell_volume[cell->active_cell_index()], settings.stiffening);
-            for (unsigned q = 0; q < fv.n_quadrature_points; ++q)
-              {
-                const double f = rhs ? rhs->value(fv.quadrature_point(q), c) : 0.0;
-                for (unsigned i = 0; i < n; ++i)
-                  {
-                    for (unsigned j = 0; j < n; ++j)
-                      local_matrix(i, j) += k * fv.shape_grad(i, q) * fv.shape_grad(j, q) * fv.JxW(q);
-                    local_rhs(i) += f * fv.shape_value(i, q) * fv.JxW(q);
-                  }
-              }
-            cell->get_dof_indices(indices);
-            constraints.distribute_local_to_global(local_matrix, local_rhs, indices, matrix, rhs_vector);
-          }
-        matrix.compress(VectorOperation::add);
-        rhs_vector.compress(VectorOperation::add);
-
+        // CG with an algebraic multigrid preconditioner (BoomerAMG), to a tolerance relative
+        // to the right-hand side
         const double rhs_norm = rhs_vector.l2_norm();
         if (rhs_norm > 0)
           {

@@ -127,107 +127,129 @@ namespace abrade::field
       t.block<3, 1>(0, 3) = d;
       return t;
     }
+
+    /// The starts of the registration: the scan as it is, and (@p coarse) its principal axes
+    /// onto the model's, each of the four proper rotations that does that.
+    std::vector<Mat4> starts(const Geometry &scan, const Geometry &model, bool coarse)
+    {
+      std::vector<Mat4> candidates = {Mat4::Identity()};
+      if (!coarse)
+        return candidates;
+      const auto            cs = scan.centroid(), cm = model.centroid();
+      const Eigen::Vector3d c_scan(cs[0], cs[1], cs[2]), c_model(cm[0], cm[1], cm[2]);
+      const Eigen::Matrix3d a_scan = principal_axes(scan, c_scan), a_model = principal_axes(model, c_model);
+      for (const auto &signs : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(-1, 1, -1),
+                                Eigen::Vector3d(1, -1, -1)})
+        {
+          Mat4 r               = Mat4::Identity();
+          r.block<3, 3>(0, 0) = a_model * signs.asDiagonal() * a_scan.transpose();
+          candidates.push_back(translation(c_model) * r * translation(-c_scan));
+        }
+      return candidates;
+    }
+
+    /// The transform from the best of @p candidates after a short ICP from each (at most 2,000
+    /// landmarks, 40 iterations).
+    Mat4 best_start(const Geometry &scan, const Geometry &model, const std::vector<Mat4> &candidates,
+                    const RegistrationSettings &settings)
+    {
+      const std::size_t coarse_points = std::min<std::size_t>(settings.max_points, 2000);
+      Mat4              best          = Mat4::Identity();
+      double            best_rms      = std::numeric_limits<double>::infinity();
+      // Each start is judged where the scan should fit: in the registration region if one is
+      // given (the unworn part), else everywhere. The scan as it is wins unless another start
+      // fits clearly better (by 5 %): a part symmetric under a half turn (a double-bevel knife)
+      // fits its design turned round almost as well, and which of the two a worn scan's noise
+      // preferred flipped a scan already in the model's frame (field/round_trip: registered on
+      // the unworn top, a half turn about z)
+      // (@p src: the scan's landmarks moved by the start, @p m: ICP's transform from there)
+      auto judged = [&](const Mat4 &start, vtkPolyData *src, const Mat4 &m) {
+        if (settings.region)
+          if (auto inside = landmarks(scan, coarse_points, m * start, settings.region); inside->GetNumberOfPoints() >= 10)
+            return rms_distance(inside, model.data);
+        return rms_distance(src, model.data, m);
+      };
+      double as_it_is = std::numeric_limits<double>::infinity();
+      Mat4   kept     = Mat4::Identity();
+      for (const Mat4 &start : candidates)
+        {
+          auto         src = landmarks(scan, coarse_points, start);
+          const Mat4   m   = icp(src, model.data, 40);
+          const double rms = judged(start, src, m);
+          if (&start == &candidates.front())
+            as_it_is = rms, kept = m * start;
+          if (rms < best_rms)
+            best_rms = rms, best = m * start;
+        }
+      return as_it_is <= 1.05 * best_rms ? kept : best;
+    }
+
+    /// The model's triangles with a vertex in @p region.
+    vtkSmartPointer<vtkPolyData> model_in(const Geometry &model, const Box &region)
+    {
+      auto                 part = vtkSmartPointer<vtkPolyData>::New();
+      vtkNew<vtkCellArray> cells;
+      for (vtkIdType t = 0; t < model.data->GetNumberOfCells(); ++t)
+        {
+          vtkIdType        n;
+          const vtkIdType *ids;
+          model.data->GetCellPoints(t, n, ids);
+          bool inside = false;
+          for (vtkIdType k = 0; k < n; ++k)
+            inside = inside || region.contains(model.data->GetPoint(ids[k]));
+          if (inside)
+            cells->InsertNextCell(n, ids);
+        }
+      part->SetPoints(model.data->GetPoints());
+      part->SetPolys(cells);
+      return part;
+    }
+
+    /// Every point of @p scan moved by @p t.
+    void move(Geometry &scan, const Mat4 &t)
+    {
+      vtkPoints *pts = scan.data->GetPoints();
+      for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+        {
+          const double   *p = pts->GetPoint(i);
+          Eigen::Vector4d q = t * Eigen::Vector4d(p[0], p[1], p[2], 1);
+          pts->SetPoint(i, q[0], q[1], q[2]);
+        }
+      pts->Modified();
+      scan.data->Modified();
+    }
   } // namespace
 
   Registration register_scan(Geometry &scan, const Geometry &model, const RegistrationSettings &settings)
   {
+    Registration r;
     if (!settings.enabled) // the scan is in the model's frame already: measured as it is
       {
-        Registration r;
         for (int i = 0; i < 16; ++i)
           r.matrix[i] = i % 5 == 0 ? 1.0 : 0.0;
         r.points_used = std::min<std::size_t>(settings.max_points, std::size_t(scan.data->GetNumberOfPoints()));
         r.rms         = rms_distance(landmarks(scan, settings.max_points, Mat4::Identity()), model.data);
         return r;
       }
-    // candidates: the scan as it is, and principal axes onto the model's (four proper rotations)
-    std::vector<Mat4> candidates = {Mat4::Identity()};
-    if (settings.coarse)
-      {
-        const auto            cs = scan.centroid(), cm = model.centroid();
-        const Eigen::Vector3d c_scan(cs[0], cs[1], cs[2]), c_model(cm[0], cm[1], cm[2]);
-        const Eigen::Matrix3d a_scan = principal_axes(scan, c_scan), a_model = principal_axes(model, c_model);
-        for (const auto &signs : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(-1, 1, -1),
-                                  Eigen::Vector3d(1, -1, -1)})
-          {
-            Mat4 r               = Mat4::Identity();
-            r.block<3, 3>(0, 0) = a_model * signs.asDiagonal() * a_scan.transpose();
-            candidates.push_back(translation(c_model) * r * translation(-c_scan));
-          }
-      }
-    const std::size_t coarse_points = std::min<std::size_t>(settings.max_points, 2000);
-    Mat4              best          = Mat4::Identity();
-    double            best_rms      = std::numeric_limits<double>::infinity();
-    // Each start is judged where the scan should fit: in the registration region if one is
-    // given (the unworn part), else everywhere. The scan as it is wins unless another start
-    // fits clearly better (by 5 %): a part symmetric under a half turn (a double-bevel knife)
-    // fits its design turned round almost as well, and which of the two a worn scan's noise
-    // preferred flipped a scan already in the model's frame (field/round_trip: registered on
-    // the unworn top, a half turn about z)
-    // (@p src: the scan's landmarks moved by the start, @p m: ICP's transform from there)
-    auto judged = [&](const Mat4 &start, vtkPolyData *src, const Mat4 &m) {
-      if (settings.region)
-        if (auto inside = landmarks(scan, coarse_points, m * start, settings.region); inside->GetNumberOfPoints() >= 10)
-          return rms_distance(inside, model.data);
-      return rms_distance(src, model.data, m);
-    };
-    double as_it_is = std::numeric_limits<double>::infinity();
-    Mat4   kept     = Mat4::Identity();
-    for (const Mat4 &start : candidates)
-      {
-        auto         src = landmarks(scan, coarse_points, start);
-        const Mat4   m   = icp(src, model.data, 40);
-        const double rms = judged(start, src, m);
-        if (&start == &candidates.front())
-          as_it_is = rms, kept = m * start;
-        if (rms < best_rms)
-          best_rms = rms, best = m * start;
-      }
-    if (as_it_is <= 1.05 * best_rms)
-      best = kept;
-    // full ICP from the best candidate
+    Mat4 best = best_start(scan, model, starts(scan, model, settings.coarse), settings);
+    // full ICP from the best start
     {
-      auto src     = landmarks(scan, settings.max_points, best);
-      best         = icp(src, model.data, settings.iterations) * best;
+      auto src = landmarks(scan, settings.max_points, best);
+      best     = icp(src, model.data, settings.iterations) * best;
     }
-    Registration r;
+    // then on the registration region only: the scan's points there onto the model's part there
     if (settings.region)
       {
         auto src = landmarks(scan, settings.max_points, best, settings.region);
         if (src->GetNumberOfPoints() < 10)
           throw InputError("--register-on", "fewer than 10 scan points lie in the registration region after the "
                                             "coarse alignment: is the region in model coordinates and on the scan?");
-        // the model's part in the region (triangles with a vertex inside)
-        auto       part  = vtkSmartPointer<vtkPolyData>::New();
-        vtkNew<vtkCellArray> cells;
-        for (vtkIdType t = 0; t < model.data->GetNumberOfCells(); ++t)
-          {
-            vtkIdType        n;
-            const vtkIdType *ids;
-            model.data->GetCellPoints(t, n, ids);
-            bool inside = false;
-            for (vtkIdType k = 0; k < n; ++k)
-              inside = inside || settings.region->contains(model.data->GetPoint(ids[k]));
-            if (inside)
-              cells->InsertNextCell(n, ids);
-          }
-        part->SetPoints(model.data->GetPoints());
-        part->SetPolys(cells);
-        best          = icp(src, part, settings.iterations) * best;
+        best          = icp(src, model_in(model, *settings.region), settings.iterations) * best;
         r.points_used = std::size_t(src->GetNumberOfPoints());
       }
-    // move the scan into the model's frame
-    vtkPoints *pts = scan.data->GetPoints();
-    for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
-      {
-        const double   *p = pts->GetPoint(i);
-        Eigen::Vector4d q = best * Eigen::Vector4d(p[0], p[1], p[2], 1);
-        pts->SetPoint(i, q[0], q[1], q[2]);
-      }
-    pts->Modified();
-    scan.data->Modified();
-    if (!settings.region)
-      r.points_used = std::min<std::size_t>(settings.max_points, std::size_t(pts->GetNumberOfPoints()));
+    else
+      r.points_used = std::min<std::size_t>(settings.max_points, std::size_t(scan.data->GetNumberOfPoints()));
+    move(scan, best); // into the model's frame
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)
         r.matrix[4 * i + j] = best(i, j);
