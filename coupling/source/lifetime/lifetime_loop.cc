@@ -267,79 +267,10 @@ namespace abrade::coupling::lifetime
     if (done <= 0)
       return false;
     const std::string file  = checkpoints->state_file(done);
-    const StateFile   state = StateFile::read(file);
-    if (!state.has("format") || state.text("format") != state_format)
-      throw InputError(file, "a lifetime checkpoint of another abrade version (format '" +
-                               (state.has("format") ? state.text("format") : std::string("1")) + "', this one reads '" +
-                               state_format + "'); start afresh without --resume");
-    // (a checkpoint of an earlier abrade hashed the parameters with the output directory's
-    // name: resumed when made in the directory of this run's name)
-    if (state.text("parameter_hash") != hash &&
-        state.text("parameter_hash") != io::fnv1a_hex(ctx.parameters.canonical_text()))
-      throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
-                               ", now " + hash + "); resume with the same parameter file and --set options" +
-                               (calibration.coefficient > 0 ? " and the same Lifetime/Calibration file content" : ""));
-    if (state.number("update") != double(done))
-      throw InputError(file, "corrupt lifetime checkpoint (it says update " + state.text("update") + ")");
-    update        = done;
-    cycles        = long(state.number("cycles"));
-    tonnes        = state.number("tonnes");
-    wear_total = state.number("wear_total");
-    s.smoothing   = state.number("smoothing_radius");
-    volume0       = state.number("design_volume");
-    deepest       = state.numbers("deepest_point");
-    beds_now      = long(state.number("beds_next"));
-    previous_largest = state.number("previous_largest_rate");
-    if (beds_now < long(s.seeds.size()))
-      throw InputError(file, "corrupt lifetime checkpoint (" + state.text("beds_next") + " beds for the next update)");
-    const auto t  = state.numbers("history_tonnes");
-    if (long(t.size()) != done + 1 || deepest.size() != 3)
-      throw InputError(file, "corrupt lifetime checkpoint (history of " + std::to_string(t.size()) + " points)");
-    if (cycles < 0 || tonnes < 0 || t.front() != 0 || !std::is_sorted(t.begin(), t.end()) || t.back() != tonnes)
-      throw InputError(file, "corrupt lifetime checkpoint (negative or decreasing tonnes or cycles)");
-    history.assign(t.size(), {0.0, std::vector<double>(criteria.size(), 0.0)});
-    for (std::size_t k = 0; k < t.size(); ++k)
-      history[k].tonnes = t[k];
+    const StateFile   state = read_checkpoint(file, done);
+    const auto        t     = take_loop_state(state, file, done);
     for (std::size_t c = 0; c < criteria.size(); ++c)
-      {
-        const std::string key = state_key(*criteria[c]);
-        if (!state.has("history_" + key))
-          throw InputError(file, "the checkpoint has no history of the end-of-life criterion '" + criteria[c]->name() +
-                                   "' (made by an abrade without it); start afresh without --resume");
-        const auto v = state.numbers("history_" + key);
-        if (v.size() != t.size())
-          throw InputError(file, "corrupt lifetime checkpoint (criterion history " + key + ")");
-        for (std::size_t k = 0; k < v.size(); ++k)
-          history[k].values[c] = v[k];
-        const auto beds = state.numbers("record_beds_" + key);
-        const auto var  = state.numbers("record_relative_variance_" + key);
-        if (long(beds.size()) != done || var.size() != beds.size())
-          throw InputError(file, "corrupt lifetime checkpoint (update records of criterion " + key + ")");
-        const auto seeds = state.numbers("record_bed_seeds_" + key);
-        const auto rates = state.numbers("record_bed_rates_" + key);
-        const double all = std::accumulate(beds.begin(), beds.end(), 0.0);
-        if (seeds.size() != rates.size() || double(seeds.size()) != all)
-          throw InputError(file, "corrupt lifetime checkpoint (the beds of criterion " + key + ")");
-        records[c].clear();
-        for (long k = 0, first = 0; k < done; first += long(beds[k]), ++k)
-          records[c].push_back({t[k + 1], v[k + 1], std::size_t(beds[k]), var[k],
-                                std::vector<int>(seeds.begin() + first, seeds.begin() + first + long(beds[k])),
-                                std::vector<double>(rates.begin() + first, rates.begin() + first + long(beds[k]))});
-        try
-          {
-            place_scatter[c].set_numbers(state.numbers("place_scatter_" + key));
-          }
-        catch (const std::invalid_argument &e)
-          {
-            throw InputError(file,
-                             std::string("corrupt lifetime checkpoint (") + e.what() + ")");
-          }
-        place_values[c] = state.numbers("place_values_" + key);
-        place_factor[c] = state.number("place_factor_" + key);
-        if (place_scatter[c].updates() != std::size_t(done) || place_values[c].size() != place_scatter[c].places() ||
-            !(place_factor[c] >= 0 && place_factor[c] <= 1))
-          throw InputError(file, "corrupt lifetime checkpoint (the places of criterion " + key + ")");
-      }
+      take_criterion_state(state, file, c, t, done);
     trajectory_rows.clear();
     for (long k = 1; k <= done; ++k)
       trajectory_rows.push_back(state.text("trajectory_row_" + std::to_string(k)));
@@ -356,6 +287,92 @@ namespace abrade::coupling::lifetime
       }
     ctx.log.line("Resuming after update " + std::to_string(done) + " (" + std::to_string(cycles) + " cycles)");
     return true;
+  }
+
+  StateFile LifetimeLoop::read_checkpoint(const std::string &file, long done) const
+  {
+    StateFile state = StateFile::read(file);
+    if (!state.has("format") || state.text("format") != state_format)
+      throw InputError(file, "a lifetime checkpoint of another abrade version (format '" +
+                               (state.has("format") ? state.text("format") : std::string("1")) + "', this one reads '" +
+                               state_format + "'); start afresh without --resume");
+    // (a checkpoint of an earlier abrade hashed the parameters with the output directory's
+    // name: resumed when made in the directory of this run's name)
+    if (state.text("parameter_hash") != hash &&
+        state.text("parameter_hash") != io::fnv1a_hex(ctx.parameters.canonical_text()))
+      throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
+                               ", now " + hash + "); resume with the same parameter file and --set options" +
+                               (calibration.coefficient > 0 ? " and the same Lifetime/Calibration file content" : ""));
+    if (state.number("update") != double(done))
+      throw InputError(file, "corrupt lifetime checkpoint (it says update " + state.text("update") + ")");
+    return state;
+  }
+
+  std::vector<double> LifetimeLoop::take_loop_state(const StateFile &state, const std::string &file, long done)
+  {
+    update           = done;
+    cycles           = long(state.number("cycles"));
+    tonnes           = state.number("tonnes");
+    wear_total       = state.number("wear_total");
+    s.smoothing      = state.number("smoothing_radius");
+    volume0          = state.number("design_volume");
+    deepest          = state.numbers("deepest_point");
+    beds_now         = long(state.number("beds_next"));
+    previous_largest = state.number("previous_largest_rate");
+    if (beds_now < long(s.seeds.size()))
+      throw InputError(file, "corrupt lifetime checkpoint (" + state.text("beds_next") + " beds for the next update)");
+    const auto t = state.numbers("history_tonnes");
+    if (long(t.size()) != done + 1 || deepest.size() != 3)
+      throw InputError(file, "corrupt lifetime checkpoint (history of " + std::to_string(t.size()) + " points)");
+    if (cycles < 0 || tonnes < 0 || t.front() != 0 || !std::is_sorted(t.begin(), t.end()) || t.back() != tonnes)
+      throw InputError(file, "corrupt lifetime checkpoint (negative or decreasing tonnes or cycles)");
+    history.assign(t.size(), {0.0, std::vector<double>(criteria.size(), 0.0)});
+    for (std::size_t k = 0; k < t.size(); ++k)
+      history[k].tonnes = t[k];
+    return t;
+  }
+
+  void LifetimeLoop::take_criterion_state(const StateFile &state, const std::string &file, std::size_t c,
+                                          const std::vector<double> &t, long done)
+  {
+    const std::string key = state_key(*criteria[c]);
+    if (!state.has("history_" + key))
+      throw InputError(file, "the checkpoint has no history of the end-of-life criterion '" + criteria[c]->name() +
+                               "' (made by an abrade without it); start afresh without --resume");
+    const auto v = state.numbers("history_" + key);
+    if (v.size() != t.size())
+      throw InputError(file, "corrupt lifetime checkpoint (criterion history " + key + ")");
+    for (std::size_t k = 0; k < v.size(); ++k)
+      history[k].values[c] = v[k];
+    // its update records: per update the beds, their seeds and rates, the relative variance
+    const auto beds = state.numbers("record_beds_" + key);
+    const auto var  = state.numbers("record_relative_variance_" + key);
+    if (long(beds.size()) != done || var.size() != beds.size())
+      throw InputError(file, "corrupt lifetime checkpoint (update records of criterion " + key + ")");
+    const auto   seeds = state.numbers("record_bed_seeds_" + key);
+    const auto   rates = state.numbers("record_bed_rates_" + key);
+    const double all   = std::accumulate(beds.begin(), beds.end(), 0.0);
+    if (seeds.size() != rates.size() || double(seeds.size()) != all)
+      throw InputError(file, "corrupt lifetime checkpoint (the beds of criterion " + key + ")");
+    records[c].clear();
+    for (long k = 0, first = 0; k < done; first += long(beds[k]), ++k)
+      records[c].push_back({t[k + 1], v[k + 1], std::size_t(beds[k]), var[k],
+                            std::vector<int>(seeds.begin() + first, seeds.begin() + first + long(beds[k])),
+                            std::vector<double>(rates.begin() + first, rates.begin() + first + long(beds[k]))});
+    // its places' scatter
+    try
+      {
+        place_scatter[c].set_numbers(state.numbers("place_scatter_" + key));
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw InputError(file, std::string("corrupt lifetime checkpoint (") + e.what() + ")");
+      }
+    place_values[c] = state.numbers("place_values_" + key);
+    place_factor[c] = state.number("place_factor_" + key);
+    if (place_scatter[c].updates() != std::size_t(done) || place_values[c].size() != place_scatter[c].places() ||
+        !(place_factor[c] >= 0 && place_factor[c] <= 1))
+      throw InputError(file, "corrupt lifetime checkpoint (the places of criterion " + key + ")");
   }
 
   // ---------------------------------------------------------------------------------------------

@@ -57,6 +57,22 @@ namespace abrade::geometry
 
     const double *at(long v) const { return x.data() + 3 * v; }
 
+    // the steps of the constructor
+    /// The coordinates @p points taken (checked finite, -0 as +0); returns each point's welded
+    /// id: points with identical coordinates are one vertex, so that the edges and vertices
+    /// triangles share are known by these ids.
+    std::vector<long> weld(const std::vector<double> &points);
+    /// The @p triangles of positive area (as welded ids, @p welded), with their unit normals,
+    /// the angle-weighted pseudonormals of their edges and vertices, and the rim (edges of one
+    /// triangle only).
+    void take_triangles(const std::vector<std::array<long, 3>> &triangles, const std::vector<long> &welded);
+    /// The hierarchy: each node's triangles split at the median of their centres along the
+    /// longest side of the centres' box, down to leaves of at most four (a depth of about
+    /// log2(n / 4), far below the query's stack of 128).
+    void build_hierarchy();
+    /// The node of triangles order[first, first + count) and, below it, its children.
+    void build_node(unsigned first, unsigned count, const std::vector<std::array<double, 3>> &centre);
+
     /// The angle-weighted pseudonormal of a feature of searched triangle @p t.
     const V3 &pseudonormal(std::size_t t, Feature f) const
     {
@@ -152,31 +168,38 @@ namespace abrade::geometry
   SurfaceDistance::SurfaceDistance(const std::vector<double> &points, const std::vector<std::array<long, 3>> &triangles)
     : impl(std::make_unique<Impl>())
   {
-    Impl &m   = *impl;
-    m.n_given = triangles.size();
+    impl->n_given = triangles.size();
+    impl->take_triangles(triangles, impl->weld(points));
+    impl->build_hierarchy();
+  }
+
+  std::vector<long> SurfaceDistance::Impl::weld(const std::vector<double> &points)
+  {
     if (points.size() % 3 != 0)
       throw std::invalid_argument("SurfaceDistance: " + std::to_string(points.size()) +
                                   " coordinates are not x,y,z triples");
     const long n_points = long(points.size() / 3);
-    m.x                 = points;
-    for (double &c : m.x)
+    x                   = points;
+    for (double &c : x)
       {
         if (!std::isfinite(c))
           throw std::invalid_argument("SurfaceDistance: a non-finite coordinate");
         c += 0.0; // -0 is +0, for the welding below
       }
-
-    // vertices with identical coordinates are one vertex: the edges and vertices that triangles
-    // share are known by these ids
-    std::vector<long>  weld(n_points);
+    std::vector<long>  welded(n_points);
     std::map<V3, long> first;
     for (long v = 0; v < n_points; ++v)
-      weld[v] = first.emplace(V3{m.x[3 * v], m.x[3 * v + 1], m.x[3 * v + 2]}, v).first->second;
+      welded[v] = first.emplace(V3{x[3 * v], x[3 * v + 1], x[3 * v + 2]}, v).first->second;
+    return welded;
+  }
 
-    // the triangles of positive area, their unit normals and the pseudonormals
+  void SurfaceDistance::Impl::take_triangles(const std::vector<std::array<long, 3>> &triangles,
+                                             const std::vector<long>               &welded)
+  {
+    const long                           n_points = long(welded.size());
     std::map<std::pair<long, long>, V3>  edges; // sum of the unit normals of the faces on each edge
     std::map<std::pair<long, long>, int> faces_on_edge;
-    m.vertex_normal.assign(n_points, V3{0, 0, 0});
+    vertex_normal.assign(n_points, V3{0, 0, 0});
     for (const auto &given : triangles)
       {
         std::array<long, 3> t;
@@ -185,95 +208,99 @@ namespace abrade::geometry
             if (given[k] < 0 || given[k] >= n_points)
               throw std::invalid_argument("SurfaceDistance: vertex index " + std::to_string(given[k]) +
                                           " out of range (" + std::to_string(n_points) + " points)");
-            t[k] = weld[given[k]];
+            t[k] = welded[given[k]];
           }
-        const V3     ab = sub(m.at(t[1]), m.at(t[0])), bc = sub(m.at(t[2]), m.at(t[1])), ca = sub(m.at(t[0]), m.at(t[2]));
-        const V3     n  = cross(ab, sub(m.at(t[2]), m.at(t[0])));
+        const V3     ab = sub(at(t[1]), at(t[0])), bc = sub(at(t[2]), at(t[1])), ca = sub(at(t[0]), at(t[2]));
+        const V3     n  = cross(ab, sub(at(t[2]), at(t[0])));
         const double twice_area = std::sqrt(dot(n, n));
         const double longest2   = std::max({dot(ab, ab), dot(bc, bc), dot(ca, ca)});
         if (!(twice_area > degenerate * longest2))
           continue;
         const V3 unit = {n[0] / twice_area, n[1] / twice_area, n[2] / twice_area};
-        m.searched.push_back(t);
-        m.face_normal.push_back(unit);
+        searched.push_back(t);
+        face_normal.push_back(unit);
         for (int k = 0; k < 3; ++k)
           {
             const long a = t[k], b = t[(k + 1) % 3];
             add(edges[{std::min(a, b), std::max(a, b)}], unit, 1);
             ++faces_on_edge[{std::min(a, b), std::max(a, b)}];
             // the face's angle at corner k, between its two edges there
-            const V3 u = sub(m.at(t[(k + 1) % 3]), m.at(t[k])), w = sub(m.at(t[(k + 2) % 3]), m.at(t[k]));
+            const V3 u = sub(at(t[(k + 1) % 3]), at(t[k])), w = sub(at(t[(k + 2) % 3]), at(t[k]));
             const V3 uw = cross(u, w);
-            add(m.vertex_normal[t[k]], unit, std::atan2(std::sqrt(dot(uw, uw)), dot(u, w)));
+            add(vertex_normal[t[k]], unit, std::atan2(std::sqrt(dot(uw, uw)), dot(u, w)));
           }
       }
-    if (m.searched.empty())
+    if (searched.empty())
       throw std::invalid_argument("SurfaceDistance: no triangle of positive area among " +
                                   std::to_string(triangles.size()));
-    m.edge_normal.resize(m.searched.size());
-    m.edge_on_rim.resize(m.searched.size());
-    m.vertex_on_rim.assign(n_points, false);
-    for (std::size_t i = 0; i < m.searched.size(); ++i)
+    edge_normal.resize(searched.size());
+    edge_on_rim.resize(searched.size());
+    vertex_on_rim.assign(n_points, false);
+    for (std::size_t i = 0; i < searched.size(); ++i)
       for (int k = 0; k < 3; ++k)
         {
-          const long a = m.searched[i][k], b = m.searched[i][(k + 1) % 3];
-          m.edge_normal[i][k] = edges.at({std::min(a, b), std::max(a, b)});
-          m.edge_on_rim[i][k] = faces_on_edge.at({std::min(a, b), std::max(a, b)}) == 1;
-          if (m.edge_on_rim[i][k])
-            m.vertex_on_rim[a] = m.vertex_on_rim[b] = true;
+          const long a = searched[i][k], b = searched[i][(k + 1) % 3];
+          edge_normal[i][k] = edges.at({std::min(a, b), std::max(a, b)});
+          edge_on_rim[i][k] = faces_on_edge.at({std::min(a, b), std::max(a, b)}) == 1;
+          if (edge_on_rim[i][k])
+            vertex_on_rim[a] = vertex_on_rim[b] = true;
         }
+  }
 
-    // the hierarchy: each node's triangles split at the median of their centres along the
-    // longest side of the centres' box, down to leaves of at most four (a depth of about
-    // log2(n / 4), far below the query's stack of 128)
-    m.box.resize(m.searched.size());
-    std::vector<std::array<double, 3>> centre(m.searched.size());
-    for (std::size_t i = 0; i < m.searched.size(); ++i)
+  void SurfaceDistance::Impl::build_hierarchy()
+  {
+    box.resize(searched.size());
+    std::vector<std::array<double, 3>> centre(searched.size());
+    for (std::size_t i = 0; i < searched.size(); ++i)
       {
-        const auto &t = m.searched[i];
-        auto       &b = m.box[i];
+        const auto &t = searched[i];
+        auto       &b = box[i];
         for (int d = 0; d < 3; ++d)
           {
-            b[d]      = std::min({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
-            b[d + 3]  = std::max({m.at(t[0])[d], m.at(t[1])[d], m.at(t[2])[d]});
+            b[d]         = std::min({at(t[0])[d], at(t[1])[d], at(t[2])[d]});
+            b[d + 3]     = std::max({at(t[0])[d], at(t[1])[d], at(t[2])[d]});
             centre[i][d] = 0.5 * (b[d] + b[d + 3]);
           }
       }
-    m.order.resize(m.searched.size());
-    for (unsigned i = 0; i < m.order.size(); ++i)
-      m.order[i] = i;
-    m.nodes.reserve(2 * m.searched.size());
-    auto build = [&](auto &&self, unsigned first, unsigned count) -> void {
-      const unsigned index = unsigned(m.nodes.size());
-      m.nodes.emplace_back();
-      double lo[3], hi[3], clo[3], chi[3];
+    order.resize(searched.size());
+    for (unsigned i = 0; i < order.size(); ++i)
+      order[i] = i;
+    nodes.reserve(2 * searched.size());
+    build_node(0, unsigned(searched.size()), centre);
+  }
+
+  void SurfaceDistance::Impl::build_node(unsigned first, unsigned count, const std::vector<std::array<double, 3>> &centre)
+  {
+    const unsigned index = unsigned(nodes.size());
+    nodes.emplace_back();
+    double lo[3], hi[3], clo[3], chi[3];
+    for (int d = 0; d < 3; ++d)
+      lo[d] = clo[d] = std::numeric_limits<double>::infinity(), hi[d] = chi[d] = -lo[d];
+    for (unsigned e = first; e < first + count; ++e)
       for (int d = 0; d < 3; ++d)
-        lo[d] = clo[d] = std::numeric_limits<double>::infinity(), hi[d] = chi[d] = -lo[d];
-      for (unsigned e = first; e < first + count; ++e)
-        for (int d = 0; d < 3; ++d)
-          {
-            const unsigned t = m.order[e];
-            lo[d] = std::min(lo[d], m.box[t][d]), hi[d] = std::max(hi[d], m.box[t][d + 3]);
-            clo[d] = std::min(clo[d], centre[t][d]), chi[d] = std::max(chi[d], centre[t][d]);
-          }
-      for (int d = 0; d < 3; ++d)
-        m.nodes[index].box[d] = lo[d], m.nodes[index].box[d + 3] = hi[d];
-      if (count <= 4)
         {
-          m.nodes[index].first = first, m.nodes[index].count = count;
-          return;
+          const unsigned t = order[e];
+          lo[d] = std::min(lo[d], box[t][d]), hi[d] = std::max(hi[d], box[t][d + 3]);
+          clo[d] = std::min(clo[d], centre[t][d]), chi[d] = std::max(chi[d], centre[t][d]);
         }
-      const int axis = chi[0] - clo[0] >= chi[1] - clo[1] && chi[0] - clo[0] >= chi[2] - clo[2] ? 0
-                       : chi[1] - clo[1] >= chi[2] - clo[2]                                     ? 1
-                                                                                                 : 2;
-      const unsigned half = count / 2;
-      std::nth_element(m.order.begin() + first, m.order.begin() + first + half, m.order.begin() + first + count,
-                       [&](unsigned a, unsigned b) { return centre[a][axis] < centre[b][axis] || (centre[a][axis] == centre[b][axis] && a < b); });
-      self(self, first, half);
-      m.nodes[index].second = unsigned(m.nodes.size());
-      self(self, first + half, count - half);
-    };
-    build(build, 0, unsigned(m.searched.size()));
+    for (int d = 0; d < 3; ++d)
+      nodes[index].box[d] = lo[d], nodes[index].box[d + 3] = hi[d];
+    if (count <= 4)
+      {
+        nodes[index].first = first, nodes[index].count = count;
+        return;
+      }
+    const int axis = chi[0] - clo[0] >= chi[1] - clo[1] && chi[0] - clo[0] >= chi[2] - clo[2] ? 0
+                     : chi[1] - clo[1] >= chi[2] - clo[2]                                     ? 1
+                                                                                               : 2;
+    const unsigned half = count / 2;
+    std::nth_element(order.begin() + first, order.begin() + first + half, order.begin() + first + count,
+                     [&](unsigned a, unsigned b) {
+                       return centre[a][axis] < centre[b][axis] || (centre[a][axis] == centre[b][axis] && a < b);
+                     });
+    build_node(first, half, centre);
+    nodes[index].second = unsigned(nodes.size());
+    build_node(first + half, count - half, centre);
   }
 
   SurfaceDistance::~SurfaceDistance()                                     = default;

@@ -35,6 +35,7 @@
 #include <abrade/coupling/lifetime/end_of_life_criterion.h>
 #include <abrade/coupling/lifetime/life_interval.h>
 #include <abrade/coupling/lifetime/place_scatter.h>
+#include <abrade/coupling/lifetime/state_file.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_calibration.h>
@@ -128,6 +129,17 @@ namespace abrade::coupling::lifetime
     void read_settings();
     void build_part();
     bool resume();
+    // the parts of resume()
+    /// The checkpoint @p file of update @p done, read and checked: this version's format, this
+    /// run's parameters, its update.
+    StateFile read_checkpoint(const std::string &file, long done) const;
+    /// The loop's own state from @p state (counters, tonnes, the trajectory's tonnes, which it
+    /// returns), checked.
+    std::vector<double> take_loop_state(const StateFile &state, const std::string &file, long done);
+    /// Criterion @p c's history, update records and places from @p state (@p t: the
+    /// trajectory's tonnes), checked.
+    void take_criterion_state(const StateFile &state, const std::string &file, std::size_t c,
+                              const std::vector<double> &t, long done);
     void start_afresh();
     /// This update's record of every criterion's quantity (its value after the update, the
     /// beds' relative variance of its rate at the place that ends life); returns the relative
