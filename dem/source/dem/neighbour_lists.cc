@@ -135,6 +135,36 @@ namespace abrade::dem
     return r_max;
   }
 
+  int Simulation::Impl::candidate_ranges(std::size_t i, const double *X, const double *Y, const double *Z,
+                                         bool any_ghosts, int (&range)[2 * 14]) const
+  {
+    const int *start = cell_start.data(), *ghost_start = ghost_cell_start.data();
+    const long c  = cell_of(X[i], Y[i], Z[i]);
+    const long ci = c % nx, cj = (c / nx) % ny, ck = c / (nx * ny);
+    const long a0 = std::max(0L, ci - 1), a1 = std::min(nx - 1, ci + 1);
+    int        n_ranges = 0;
+    auto       add = [&](const int *first, long c0, long c1) { // cells c0 .. c1 (one row)
+      range[2 * n_ranges] = first[c0], range[2 * n_ranges + 1] = first[c1 + 1], ++n_ranges;
+    };
+    range[0] = int(i) + 1, range[1] = start[(ci + 1 < nx ? c + 1 : c) + 1], n_ranges = 1;
+    if (cj + 1 < ny)
+      add(start, c + nx - ci + a0, c + nx - ci + a1);
+    if (ck + 1 < nz)
+      for (long b = std::max(0L, cj - 1); b <= std::min(ny - 1, cj + 1); ++b)
+        {
+          const long row = ((ck + 1) * ny + b) * nx;
+          add(start, row + a0, row + a1);
+        }
+    if (any_ghosts)
+      for (long d = std::max(0L, ck - 1); d <= std::min(nz - 1, ck + 1); ++d)
+        for (long b = std::max(0L, cj - 1); b <= std::min(ny - 1, cj + 1); ++b)
+          {
+            const long row = (d * ny + b) * nx;
+            add(ghost_start, row + a0, row + a1);
+          }
+    return n_ranges;
+  }
+
   void Simulation::Impl::list_pairs(const ParticleStore &P, double skin)
   {
     // Own cell (j > i) and the 13 forward neighbour cells for owned partners, all 27 cells for
@@ -147,34 +177,6 @@ namespace abrade::dem
     const std::size_t n = P.size();
     const double *X = P.x.data(), *Y = P.y.data(), *Z = P.z.data(), *R = P.radius.data();
     const bool    any_ghosts = P.n_ghost > 0;
-    // the ranges of row i's candidates: begin/end pairs, returns their number
-    auto candidate_ranges = [&](std::size_t i, int (&range)[2 * 14]) {
-      const int *start = cell_start.data(), *ghost_start = ghost_cell_start.data();
-      const long c  = cell_of(X[i], Y[i], Z[i]);
-      const long ci = c % nx, cj = (c / nx) % ny, ck = c / (nx * ny);
-      const long a0 = std::max(0L, ci - 1), a1 = std::min(nx - 1, ci + 1);
-      int        n_ranges = 0;
-      auto       add = [&](const int *first, long c0, long c1) { // cells c0 .. c1 (one row)
-        range[2 * n_ranges] = first[c0], range[2 * n_ranges + 1] = first[c1 + 1], ++n_ranges;
-      };
-      range[0] = int(i) + 1, range[1] = start[(ci + 1 < nx ? c + 1 : c) + 1], n_ranges = 1;
-      if (cj + 1 < ny)
-        add(start, c + nx - ci + a0, c + nx - ci + a1);
-      if (ck + 1 < nz)
-        for (long b = std::max(0L, cj - 1); b <= std::min(ny - 1, cj + 1); ++b)
-          {
-            const long row = ((ck + 1) * ny + b) * nx;
-            add(start, row + a0, row + a1);
-          }
-      if (any_ghosts)
-        for (long d = std::max(0L, ck - 1); d <= std::min(nz - 1, ck + 1); ++d)
-          for (long b = std::max(0L, cj - 1); b <= std::min(ny - 1, cj + 1); ++b)
-            {
-              const long row = (d * ny + b) * nx;
-              add(ghost_start, row + a0, row + a1);
-            }
-      return n_ranges;
-    };
     offsets.assign(n + 1, 0);
     std::vector<std::size_t> block(n_threads + 1, n);
     for (int t = 0; t < n_threads; ++t)
@@ -190,7 +192,7 @@ namespace abrade::dem
         for (std::size_t i = block[t]; i < block[t + 1]; ++i)
           {
             int       range[2 * 14];
-            const int n_ranges = candidate_ranges(i, range);
+            const int n_ranges = candidate_ranges(i, X, Y, Z, any_ghosts, range);
             std::size_t bound    = 0;
             for (int r = 0; r < n_ranges; ++r)
               bound += std::max(0, range[2 * r + 1] - range[2 * r]);

@@ -144,6 +144,13 @@ namespace abrade::dem
     /// sorted by cell, against the owned ones and the ghosts: the pairs within their radii
     /// plus @p skin. Each share lists a block of rows into its own buffer, then copied in place.
     void list_pairs(const ParticleStore &P, double skin);
+    /// The candidates of row @p i (particle positions @p X, @p Y, @p Z) in the list: the
+    /// particles after it in its own cell and the next along x, three cells of the next row,
+    /// three rows of three cells in the layer above (contiguous ranges: the particles are sorted
+    /// by cell, cells numbered x fastest), and with @p any_ghosts the ghosts of all 27 cells;
+    /// their begin/end pairs into @p range; returns their number.
+    int candidate_ranges(std::size_t i, const double *X, const double *Y, const double *Z, bool any_ghosts,
+                         int (&range)[2 * 14]) const;
     /// Each listed pair's tangential history: zero, or the one carried across the rebuild when
     /// the pair had one (@p order: the row each owned particle had before the cell sort).
     void pick_up_pair_histories(const ParticleStore &P, const std::vector<std::size_t> &order);
