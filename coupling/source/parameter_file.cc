@@ -293,9 +293,23 @@ namespace abrade::coupling
     const EntryHint hint = [&l](const std::vector<std::string> &path, const std::string &key) {
       return foreign_entry_hint(l, path, key);
     };
-    parse_into(prm, file, text, false, origin, hint);
-    for (const auto &o : overrides)
-      apply_override(prm, o, false, hint);
+    try
+      {
+        parse_into(prm, file, text, false, origin, hint);
+        for (const auto &o : overrides)
+          apply_override(prm, o, false, hint);
+      }
+    catch (const InputError &e)
+      {
+        // a bad value given by an old spelling: deal.II names the entry by its new name, the
+        // user wrote the old one
+        const std::string what = e.what();
+        for (const auto &note : moved)
+          if (const auto colon = note.find(": ");
+              colon != std::string::npos && what.rfind(note.substr(0, colon + 1), 0) == 0)
+            throw InputError("", what + " (" + note.substr(colon + 2) + ")");
+        throw;
+      }
   }
 
   void ParameterFile::check_wall_list(const DeclarationLists &l, const std::vector<Override> &overrides) const

@@ -119,3 +119,38 @@ TEST(MovedEntries, LaterLinesKeepTheirNumbers)
   EXPECT_EQ(coefficient(f, "Archard"), 4e-14);
   EXPECT_EQ(f.locate({"Wall knife", "Wear", "Archard"}, "Coefficient"), whole + ":4");
 }
+
+// a bad value given by the old spelling: the message names the line and says which entry it is
+// (deal.II's names the new one)
+TEST(MovedEntries, ABadValueUnderTheOldSpellingIsNamedAsWritten)
+{
+  const std::string file = case_file("bad.prm", "subsection Wall knife\n"
+                                                "  subsection Wear\n"
+                                                "    set Archard coefficient = -5e-14\n"
+                                                "  end\n"
+                                                "end\n");
+  try
+    {
+      abrade::coupling::ParameterFile f(file, {});
+      FAIL() << "a negative coefficient was read";
+    }
+  catch (const std::exception &e)
+    {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(file + ":4:", 0), 0u) << what;
+      EXPECT_NE(what.find("Wall knife/Wear/Archard coefficient is read as Wall knife/Wear/Archard/Coefficient"),
+                std::string::npos)
+        << what;
+    }
+  try
+    {
+      abrade::coupling::ParameterFile f(knife_bed, {"Wall knife/Wear/Finnie coefficient=-1"});
+      FAIL() << "a negative coefficient was read";
+    }
+  catch (const std::exception &e)
+    {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("--set 'Wall knife/Wear/Finnie coefficient=-1'"), std::string::npos) << what;
+      EXPECT_NE(what.find("Finnie coefficient is read as"), std::string::npos) << what;
+    }
+}
