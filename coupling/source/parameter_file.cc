@@ -25,15 +25,23 @@ namespace abrade::coupling
   namespace
   {
     // deal.II's parser messages span several lines and start with "Line <N> of file <F>";
-    // turn them into "F:N: message" on one line.
-    std::string one_line(const dealii::ExceptionBase &e)
+    // turn them into "F:N: message" on one line. @p file: the name the text was parsed under,
+    // known exactly (a path may hold ": " or ">"); else the first such name.
+    std::string one_line(const dealii::ExceptionBase &e, const std::string &file = "")
     {
       std::ostringstream s;
       e.print_info(s);
       std::string msg = std::regex_replace(s.str(), std::regex("\\s+"), " ");
       msg             = std::regex_replace(msg, std::regex("^ +| +$"), "");
       std::smatch m;
-      // (deal.II 9.4 omits the '>' after the file name in ExcNoSubsection)
+      if (!file.empty() && std::regex_match(msg, m, std::regex("Line <(\\d+)> of file <(.*)")))
+        {
+          // (deal.II 9.4 omits the '>' after the file name in ExcNoSubsection)
+          const std::string rest = m[2].str();
+          for (const std::string end : {">: ", ": "})
+            if (rest.compare(0, file.size() + end.size(), file + end) == 0)
+              return file + ":" + m[1].str() + ": " + rest.substr(file.size() + end.size());
+        }
       if (std::regex_match(msg, m, std::regex("Line <(\\d+)> of file <(.*?)>?: (.*)")))
         msg = m[2].str() + ":" + m[1].str() + ": " + m[3].str();
       return msg;
@@ -219,7 +227,7 @@ namespace abrade::coupling
         }
       catch (const dealii::ExceptionBase &e)
         {
-          std::string msg = one_line(e);
+          std::string msg = one_line(e, file);
           if (msg.rfind(file + ":", 0) == 0)
             {
               const std::string rest = msg.substr(file.size() + 1);
@@ -264,7 +272,7 @@ namespace abrade::coupling
     for (const auto &s : set)
       overrides.push_back(parse_override(s));
     // entries that moved, read where they are now
-    const std::vector<std::string> moved = read_moved_entries(text, origin, file, overrides);
+    const std::vector<MovedNote> moved = read_moved_entries(text, origin, file, overrides);
 
     // pass 1: the lists that shape the declarations
     dealii::ParameterHandler lists;
@@ -281,7 +289,9 @@ namespace abrade::coupling
     for (const auto &o : overrides)
       apply_override(choices, o, true);
     l.wall_choices = read_wall_choices(choices, l.walls);
-    notes_         = moved;
+    notes_.clear();
+    for (const auto &note : moved)
+      notes_.push_back(note.text());
     for (auto &note : leave_out_replaced_entries(text, origin, file, l, overrides))
       notes_.push_back(note);
     overrides.erase(std::remove_if(overrides.begin(), overrides.end(),
@@ -305,9 +315,8 @@ namespace abrade::coupling
         // user wrote the old one
         const std::string what = e.what();
         for (const auto &note : moved)
-          if (const auto colon = note.find(": ");
-              colon != std::string::npos && what.rfind(note.substr(0, colon + 1), 0) == 0)
-            throw InputError("", what + " (" + note.substr(colon + 2) + ")");
+          if (what.rfind(note.where + ": ", 0) == 0)
+            throw InputError("", what + " (" + note.what + ")");
         throw;
       }
   }

@@ -107,21 +107,22 @@ namespace abrade::coupling
     }
   } // namespace
 
-  std::vector<std::string> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
-                                              const std::string &file, std::vector<Override> &overrides)
+  std::vector<MovedNote> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
+                                            const std::string &file, std::vector<Override> &overrides)
   {
     const std::vector<std::string>           lines   = lines_of(text);
     const auto                               entries = entries_by_line(lines);
     std::vector<std::pair<std::string, int>> from    = origin;
     for (std::size_t n = from.size(); n < lines.size(); ++n) // (no file: the embedded default case)
       from.emplace_back(file, int(n + 1));
-    std::vector<std::string>                 notes, out;
+    std::vector<MovedNote>                   notes;
+    std::vector<std::string>                 out;
     std::vector<std::pair<std::string, int>> out_origin;
     const auto note = [&notes](const std::string &where, const MovedEntry &m, const std::vector<std::string> &path) {
       std::vector<std::string> now = path;
       now.push_back(m.now);
-      notes.push_back(where + ": " + joined(path, m.old_key) + " is read as " + joined(now, m.key) +
-                      " (its place now; the old spelling still works)");
+      notes.push_back({where, joined(path, m.old_key) + " is read as " + joined(now, m.key) +
+                                " (its place now; the old spelling still works)"});
     };
     for (std::size_t n = 0; n < lines.size(); ++n)
       {

@@ -145,3 +145,22 @@ TEST(MovedEntries, ABadValueUnderTheOldSpellingIsNamedAsWritten)
   EXPECT_NE(in_set.find("--set 'Wall knife/Wear/Finnie coefficient=-1'"), std::string::npos) << in_set;
   EXPECT_NE(in_set.find("Finnie coefficient is read as"), std::string::npos) << in_set;
 }
+
+// the note goes only with the error of its own line or --set, also where the file's path or the
+// --set's value holds ": " (the note's place is not found by searching its text)
+TEST(MovedEntries, TheNoteGoesOnlyWithItsOwnError)
+{
+  const std::string file = case_file("run: 2.prm", "subsection Wall knife\n"
+                                                   "  subsection Wear\n"
+                                                   "    set Archard coefficient = 3e-14\n"
+                                                   "    set Lawz = archard\n"
+                                                   "  end\n"
+                                                   "end\n");
+  const std::string other = refusal(file);
+  EXPECT_NE(other.find(file + ":5:"), std::string::npos) << other;
+  EXPECT_EQ(other.find("is read as"), std::string::npos) << other;
+  const std::string in_set = refusal(knife_bed, {"Wall knife/Wear/Archard coefficient=2e-14: x"});
+  EXPECT_NE(in_set.find(" (Wall knife/Wear/Archard coefficient is read as Wall knife/Wear/Archard/Coefficient"),
+            std::string::npos)
+    << in_set;
+}

@@ -46,9 +46,15 @@ namespace abrade::coupling
   /// one (`set Archard coefficient = W` in a wall's Wear) becomes the entry where it is now
   /// (`subsection Archard`, `set Coefficient = W`, `end`), in place, so that the last setting
   /// still wins; @p origin follows the new lines. Each --set of @p overrides with an old path is
-  /// rewritten likewise. Returns a note per old spelling read, saying where it is now.
-  std::vector<std::string> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
-                                              const std::string &file, std::vector<Override> &overrides);
+  /// rewritten likewise. Returns a note per old spelling read: where it was read ("file:line"
+  /// or "--set '...'") and where it is now.
+  struct MovedNote
+  {
+    std::string where, what;
+    std::string text() const { return where + ": " + what; }
+  };
+  std::vector<MovedNote> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
+                                            const std::string &file, std::vector<Override> &overrides);
 
   /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
   /// another geometry or motion than the wall's (@p lists), when they are
