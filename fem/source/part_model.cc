@@ -290,59 +290,68 @@ namespace abrade::fem
     r.quality = timed_quality(timers, *tria);
     if (r.quality.n_inverted > 0 || r.quality.min_scaled_jacobian < quality_threshold ||
         moved_most > 0.5 * settings.mesh_size)
-      {
-        // A remesh after the step would change the volume the update removed (Gmsh's chords
-        // across a rounded region cut up to 3.5 % of a DEM update's volume): with a volume to
-        // remove, the step is undone, the knife meshed anew first and the step taken on the
-        // fresh mesh, the remesh's change part of the volume (not again if that mesh, too,
-        // needs a remesh after its step).
-        const bool fresh = *std::max_element(since_before.begin(), since_before.end()) == 0;
-        if (volume > 0 && fresh && r.quality.n_inverted == 0)
-          {
-            // a fresh mesh that needs remeshing after one step: meshing it anew before the step
-            // would not help; it is meshed anew before the next update's step instead (its
-            // change of the volume then taken off that step), unless its cells turned inside out
-            current_surface = extract_surface(*tria);
-            r.volume        = PartModel::volume();
-            return;
-          }
-        if (volume > 0 && may_mesh_first && !fresh)
-          {
-            auto undo = [&] {
-              tria->clear();
-              tria->copy_triangulation(unmoved);
-              current_surface = before.surface;
-              accumulated     = before.accumulated;
-              displacement    = before.displacement;
-              since_remesh    = since_before;
-            };
-            undo();
-            std::ostringstream why;
-            why << "after the step its mesh would need remeshing (moved " << io::format_number(1e3 * moved_most)
-                << " mm since the last remesh, minimum scaled Jacobian "
-                << io::format_number(r.quality.min_scaled_jacobian) << ")";
-            if (remesh_then_move(before.surface, given_depth, may_rebuild, r, volume, why.str(), false))
-              return;
-            // Gmsh could not: the step on the old mesh again, remeshed after it
-            undo();
-            move_surface(given_depth, may_rebuild, r, volume, false);
-            return;
-          }
-        try
-          {
-            remesh_current(r);
-          }
-        catch (const InputError &e)
-          {
-            // Gmsh can mesh neither the moved surface nor inside its triangles: from the
-            // surface before the update, built so that it cannot fold
-            rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r,
-                           volume);
-            return;
-          }
-      }
+      remesh_after_step(before, unmoved, since_before, given_depth, moved_most, may_rebuild, r, volume, may_mesh_first);
     else
-      current_surface = extract_surface(*tria);
+      {
+        current_surface = extract_surface(*tria);
+        r.volume        = PartModel::volume();
+      }
+  }
+
+  void PartModel::remesh_after_step(const Before &before, const Triangulation<3> &unmoved,
+                                    const std::vector<double> &since_before, const std::vector<double> &given_depth,
+                                    double moved_most, bool may_rebuild, UpdateResult &r, double volume,
+                                    bool may_mesh_first)
+  {
+    // A remesh after the step would change the volume the update removed (Gmsh's chords
+    // across a rounded region cut up to 3.5 % of a DEM update's volume): with a volume to
+    // remove, the step is undone, the knife meshed anew first and the step taken on the
+    // fresh mesh, the remesh's change part of the volume (not again if that mesh, too,
+    // needs a remesh after its step).
+    const bool fresh = *std::max_element(since_before.begin(), since_before.end()) == 0;
+    if (volume > 0 && fresh && r.quality.n_inverted == 0)
+      {
+        // a fresh mesh that needs remeshing after one step: meshing it anew before the step
+        // would not help; it is meshed anew before the next update's step instead (its
+        // change of the volume then taken off that step), unless its cells turned inside out
+        current_surface = extract_surface(*tria);
+        r.volume        = PartModel::volume();
+        return;
+      }
+    if (volume > 0 && may_mesh_first && !fresh)
+      {
+        auto undo = [&] {
+          tria->clear();
+          tria->copy_triangulation(unmoved);
+          current_surface = before.surface;
+          accumulated     = before.accumulated;
+          displacement    = before.displacement;
+          since_remesh    = since_before;
+        };
+        undo();
+        std::ostringstream why;
+        why << "after the step its mesh would need remeshing (moved " << io::format_number(1e3 * moved_most)
+            << " mm since the last remesh, minimum scaled Jacobian "
+            << io::format_number(r.quality.min_scaled_jacobian) << ")";
+        if (remesh_then_move(before.surface, given_depth, may_rebuild, r, volume, why.str(), false))
+          return;
+        // Gmsh could not: the step on the old mesh again, remeshed after it
+        undo();
+        move_surface(given_depth, may_rebuild, r, volume, false);
+        return;
+      }
+    try
+      {
+        remesh_current(r);
+      }
+    catch (const InputError &e)
+      {
+        // Gmsh can mesh neither the moved surface nor inside its triangles: from the
+        // surface before the update, built so that it cannot fold
+        rebuild_eroded(before, std::string("the moved surface could not be remeshed (") + e.what() + ")", r,
+                       volume);
+        return;
+      }
     r.volume = PartModel::volume();
   }
 

@@ -211,6 +211,14 @@ namespace abrade::fem
     /// accumulated recession and displacement updated; returns the largest move of a surface
     /// vertex since the last remesh.
     double move_mesh(const SurfaceMoves &m);
+    /// After a step whose mesh needs remeshing (inverted or poor cells, or moved half a mesh
+    /// size since the last remesh; @p moved_most): with a volume to remove, the step undone and
+    /// taken on a fresh mesh (@p unmoved, @p since_before: the mesh and moves before it; not
+    /// when the mesh was fresh already), else the moved surface meshed anew, or built as a set
+    /// where Gmsh cannot mesh it (@p before); @p r gets the outcome and the volume.
+    void remesh_after_step(const Before &before, const dealii::Triangulation<3> &unmoved,
+                           const std::vector<double> &since_before, const std::vector<double> &given_depth,
+                           double moved_most, bool may_rebuild, UpdateResult &r, double volume, bool may_mesh_first);
     /// apply_wear after its worn-through check: the vertices moved by @p depth, the knife meshed
     /// anew first where they would fold on the mesh as it stands, built as a set where they
     /// fold on a fresh mesh too (if @p may_rebuild).
