@@ -160,20 +160,6 @@ namespace abrade::coupling
 
   namespace
   {
-    /// Entries that moved, with where they are now: appended to deal.II's "No entry with name
-    /// <NAME> was declared" so that an older file says what to write instead.
-    std::string with_rename_hint(std::string msg)
-    {
-      static const std::pair<const char *, const char *> moved[] = {
-        {"Archard coefficient", "subsection Archard, set Coefficient (inside Wear: each wear law has its subsection)"},
-        {"Finnie coefficient", "subsection Finnie, set Coefficient (inside Wear: each wear law has its subsection)"}};
-      for (const auto &[old_name, now] : moved)
-        if (msg.find("<" + std::string(old_name) + ">") != std::string::npos &&
-            (msg.find("was declared") != std::string::npos || msg.find("not yet declared") != std::string::npos))
-          return msg + " '" + old_name + "' moved: " + now + ".";
-      return msg;
-    }
-
     /// Says whose entry @p key of subsection @p path is, when it is not the reader's (an entry of
     /// another wall geometry or motion: foreign_entry_hint), or "".
     using EntryHint = std::function<std::string(const std::vector<std::string> &path, const std::string &key)>;
@@ -188,6 +174,14 @@ namespace abrade::coupling
                                                 msg.find("not yet declared") != std::string::npos))
             return msg.substr(a + start.size(), b - a - start.size());
       return "";
+    }
+
+    /// deal.II's "No entry with name <KEY> was declared", with where KEY is now when it is an
+    /// entry that moved (moved_entry_hint), so that an older file says what to write instead.
+    std::string with_rename_hint(const std::string &msg)
+    {
+      const std::string hint = moved_entry_hint(undeclared_key(msg));
+      return hint.empty() ? msg : msg + " " + hint;
     }
 
     void apply_override(dealii::ParameterHandler &prm, const Override &o, bool lenient, const EntryHint &hint = {})
@@ -381,10 +375,7 @@ namespace abrade::coupling
   void ParameterFile::fail(const std::vector<std::string> &path, const std::string &key,
                            const std::string &message) const
   {
-    std::string full;
-    for (const auto &p : path)
-      full += p + "/";
-    throw InputError(locate(path, key), full + key + ": " + message);
+    throw InputError(locate(path, key), entry_path(path, key) + ": " + message);
   }
 
   std::string ParameterFile::canonical_text()

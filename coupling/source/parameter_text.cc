@@ -98,14 +98,24 @@ namespace abrade::coupling
       return nullptr;
     }
 
-    std::string joined(const std::vector<std::string> &path, const std::string &key)
-    {
-      std::string s;
-      for (const auto &p : path)
-        s += p + "/";
-      return s + key;
-    }
   } // namespace
+
+  std::string entry_path(const std::vector<std::string> &path, const std::string &key)
+  {
+    std::string s;
+    for (const auto &p : path)
+      s += p + "/";
+    return s + key;
+  }
+
+  std::string moved_entry_hint(const std::string &key)
+  {
+    for (const auto &m : moved_entries)
+      if (key == m.old_key)
+        return "'" + key + "' moved: subsection " + m.now + ", set " + m.key + " (inside " + m.in +
+               ": each wear law has its subsection).";
+    return "";
+  }
 
   std::vector<MovedNote> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
                                             const std::string &file, std::vector<Override> &overrides)
@@ -121,7 +131,7 @@ namespace abrade::coupling
     const auto note = [&notes](const std::string &where, const MovedEntry &m, const std::vector<std::string> &path) {
       std::vector<std::string> now = path;
       now.push_back(m.now);
-      notes.push_back({where, joined(path, m.old_key) + " is read as " + joined(now, m.key) +
+      notes.push_back({where, entry_path(path, m.old_key) + " is read as " + entry_path(now, m.key) +
                                 " (its place now; the old spelling still works)"});
     };
     for (std::size_t n = 0; n < lines.size(); ++n)

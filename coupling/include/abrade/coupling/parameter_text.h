@@ -42,6 +42,14 @@ namespace abrade::coupling
   bool is_foreign_default(const DeclarationLists &lists, const std::vector<std::string> &path, const std::string &key,
                           const std::string &value);
 
+  /// "Wall knife/Wear/Archard" + "/" + @p key: an entry's full name, as --set spells it.
+  std::string entry_path(const std::vector<std::string> &path, const std::string &key);
+
+  /// For @p key, an entry that moved ("Archard coefficient"), where it is now ("'Archard
+  /// coefficient' moved: subsection Archard, set Coefficient (inside Wear: ...)."); "" for any
+  /// other key. Said where the old spelling is set outside the subsection it moved from.
+  std::string moved_entry_hint(const std::string &key);
+
   /// Entries that moved keep working under their old spelling: each line of @p text that sets
   /// one (`set Archard coefficient = W` in a wall's Wear) becomes the entry where it is now
   /// (`subsection Archard`, `set Coefficient = W`, `end`), in place, so that the last setting
