@@ -1,4 +1,4 @@
-// A poured heap of non-rotating frictional spheres (the seed's pellet model) stands at a finite
+// A poured heap of non-rotating frictional spheres (the thesis' pellet model, docs/physics.md) stands at a finite
 // angle of repose that does not change once the heap is at rest.
 #include "dem_test_helpers.h"
 

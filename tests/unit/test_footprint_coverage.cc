@@ -13,7 +13,7 @@
 //  - independent noise (the design effect near 1): 97.8 / 97.8 / 95.3 / 96.5 % (r, W, W given r,
 //    joint);
 //  - candidates 1.5x apart with the truth half-way between two (1000 realisations: at 400 the
-//    coverage of r near 99 % passed 99.5 % with half the seeds, referee helper-14): 98.6 /
+//    coverage of r near 99 % passed 99.5 % with half the seeds): 98.6 /
 //    97.8 / 95.1 / 96.2 % (at 2x the interpolation puts r 4 % high and the interval's widening
 //    for it covers 100 %, 3x wider than the scatter: not checked);
 //  - independent noise and the candidates' wear off by a common factor, as the mean of three DEM
@@ -179,9 +179,9 @@ TEST(FootprintCoverage, CorrelatedNoise)
 TEST(FootprintCoverage, WiderSpacing)
 {
   // candidates 1.5x apart, the truth half-way between two on ln r (where a parabola through
-  // the three nearest alone jumped: referee helper-13)
+  // the three nearest alone jumped)
   // (1000 realisations: at 400 the coverage of r near 99 % went over 99.5 % with half the seeds
-  // tried, referee helper-14)
+  // tried)
   expect_covers(simulate(0, 0, 4, 0.01, 1.5, r_true / std::pow(1.5, 3.5), 0, {}, 1000),
                 "independent noise, candidates 1.5x apart");
 }
@@ -208,7 +208,6 @@ TEST(FootprintCoverage, ReplayAmongTheBest)
   // five candidates, the one at 17.1 mm (the truth's 15 mm lies between it and 13.7 mm: it is
   // the best or the best's neighbour) a replay whose profile is 5 % too wide: left out too
   // (wherever a replay sits), else r covered 83 %, W given r 77 % and the joint region 71 %
-  // (referee helper-14)
   // (W's interval, with r's widened interval in it, then covers 100 %: a biased candidate's
   // shift is a bound, not a spread)
   const Coverage c = simulate(0, 0, 6, 0.01, 1.25, 0.0137 / (1.25 * 1.25 * 1.25), 0.05, {4});

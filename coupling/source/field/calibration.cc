@@ -487,8 +487,7 @@ namespace abrade::field
     // squared scores, each in proportion to its share). A worn profile narrower than the
     // measurements puts most of it in a few blocks, and then the cluster-robust variance is about
     // as uncertain as a variance from those few (test_footprint_coverage: W given the footprint
-    // covered 89-91 % with G - 1 = 13 degrees of freedom where 3.9 blocks carry the information;
-    // referee helper-13)
+    // covered 89-91 % with G - 1 = 13 degrees of freedom where 3.9 blocks carry the information)
     double q2 = 0;
     for (const auto &[key, sq] : score)
       if (sq.second > 1e-12 * jj)

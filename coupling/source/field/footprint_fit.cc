@@ -134,8 +134,8 @@ namespace abrade::field
       /// again without each candidate in turn that enters the interpolation from beyond the
       /// best and its neighbours (the best +- 2: leaving out one of those three would measure
       /// the interpolation at twice the spacing, not that candidate), and without each replay
-      /// among them wherever it sits (referee helper-14: a biased replay as the best or its
-      /// neighbour, not left out, took r's coverage to 0-83 %), where the rest still hold a
+      /// among them wherever it sits (a biased replay as the best or its neighbour, not left out,
+      /// took r's coverage to 0-83 % in test_footprint_coverage), where the rest still hold a
       /// minimum between them.
       void leave_out_candidates()
       {

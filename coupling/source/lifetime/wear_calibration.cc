@@ -79,8 +79,8 @@ namespace abrade::coupling::lifetime
         c.footprint_slope_assumed = fnumber("dlnlife_dlnr") == 0;
         const double slope = c.footprint_slope_assumed ? fnumber("dlnw_dlnr") : fnumber("dlnlife_dlnr");
         c.footprint = true, c.smoothing_radius = r, c.coefficient = w;
-        // W's error given the footprint: the fit's at the fitted footprint (calibration.json
-        // of an earlier version has the best-ranked run's only)
+        // W's error given the footprint: the fit's at the fitted footprint (a calibration.json
+        // without log_wear_coefficient_standard_error has the best-ranked run's only)
         if (const auto sd_log_w = fp->get_optional<double>("log_wear_coefficient_standard_error"))
           {
             const double w_dof = fp->get<double>("wear_coefficient_degrees_of_freedom", c.dof);

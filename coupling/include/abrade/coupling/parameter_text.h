@@ -66,10 +66,11 @@ namespace abrade::coupling
 
   /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
   /// another geometry or motion than the wall's (@p lists), when they are
-  ///  - that geometry's or motion's defaults (a parameters.prm written by an earlier version,
-  ///    or `abrade params --format prm`, has every one's), silently, or
+  ///  - that geometry's or motion's defaults (a file that lists every geometry's entries, as
+  ///    `abrade params --format prm` writes them), silently, or
   ///  - the entries of the geometry or motion chosen when they were set (by the same block of
-  ///    the wall's subsection, or before it), which a later choice replaced (an included base case whose wall the including file, or a --set, made another
+  ///    the wall's subsection, or before it), which a later choice replaced (an included base
+  ///    case whose wall the including file, or a --set, made another
   ///    geometry: cases/knife_bed/lifetime.prm turns knife_bed.prm's chisel knife into the solid
   ///    model); each is named in a returned note.
   /// Any other entry of another geometry or motion stays, for the strict reading to refuse.

@@ -80,7 +80,7 @@ namespace abrade::field
   /// W0' at T W0 / W0'), on the union of their outputs. Within [r_j, r_j+1] the blend, linear
   /// from one end to the other, of the parabolas through (j-1, j, j+1) and (j, j+1, j+2):
   /// exact at the candidates and smooth between (a parabola through the three nearest alone
-  /// jumps where they change, and the fit's interval ended at the jump: referee helper-13);
+  /// jumps where they change, and the fit's interval ended at the jump);
   /// one parabola in the end intervals, a line between two runs. Its W0, beds and spread are
   /// the nearest run's.
   RunSeries run_between(const std::vector<const RunSeries *> &runs, double r, bool in_log_r = true);

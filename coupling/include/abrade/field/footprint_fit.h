@@ -124,8 +124,7 @@ namespace abrade::field
   /// too); (r, W) lies in the 95 % region when Q <= chi-square(0.95; 2) = 5.99. It reaches
   /// 1.25 times each interval along its axis (sqrt(5.99) / 1.96): a joint region is wider than
   /// each one's interval. ln r and ln W given r are taken as independent: exact for a linear
-  /// model and independent noise; with correlated noise they were correlated by -0.56 (referee
-  /// helper-13), and the region covered 79 % (test_footprint_coverage).
+  /// model and independent noise; with correlated noise they were correlated by -0.56, and the region covered 79 % (test_footprint_coverage).
   double joint_distance(const FootprintFit &fit, double r, double w);
 
   /// @p points on the joint region's boundary, as (r, W) pairs (an identifiable fit only).

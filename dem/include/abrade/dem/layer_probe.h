@@ -1,6 +1,6 @@
 #pragma once
-// The thesis' "geometry bin" (its Figure 8): a layer that moves with a wall and holds the
-// particles in direct contact with it. Every few steps it counts the particles whose centre is
+// A layer probe (what the thesis, docs/physics.md, calls a "geometry bin"): a layer that moves
+// with a wall and holds the particles in direct contact with it. Every few steps it counts the particles whose centre is
 // within `thickness` of the wall's surface and their mean velocity along an axis, next to the
 // wall's own velocity along that axis: the difference is how fast the contact layer slides
 // along the wall. It also counts the contacts with the wall in that step (a particle that
