@@ -10,19 +10,18 @@
 #   check_rope_grab.sh ABRADE PRM OUTDIR
 set -euo pipefail
 bash "$(dirname "$0")/run_conserving_particles.sh" "$@" # (ABRADE PRM OUTDIR)
-python3 - "$3" <<'PY'
-import csv, json, sys, os
+python3 - "$3" "$(dirname "$0")" <<'PY'
+import csv, sys, os
+sys.path.insert(0, sys.argv[2])
+from rope_grab_run import WEIGHT as weight, CAPACITY as capacity, phases_of
 out = sys.argv[1]
-phases = json.load(open(os.path.join(out, "summary.json")))["results"]["phases"]
-g = {p: v["grab"] for p, v in phases.items()}
-weight = 500 * 9.81
+phases, g = phases_of(out)
 assert g["descent"]["shell_angle_end"] < 0.5, f"the grab closed while lowered open: {g['descent']}"
 assert g["descent"]["hinge_height_end"] < 1.0, "not lowered"
 assert g["sinking"]["hinge_height_end"] < g["sinking"]["hinge_height_start"] - 0.05, "did not sink into the pile"
 assert g["closing"]["shell_angle_end"] > 40, f"did not close: {g['closing']}"
 assert g["closing"]["closing_rope_tension_mean"] < weight, "the closing rope lifted the grab off the material"
 payload = phases["hoisting"]["mass_above_payload_height"]
-capacity = 3.14159265 / 2 * 0.4**2 * 0.6 * 2200
 assert 0.2 * capacity < payload < 1.1 * capacity, f"payload {payload} kg against a capacity of {capacity:.0f} kg"
 assert g["hoisting"]["hinge_height_end"] > g["hoisting"]["hinge_height_start"] + 0.8, "not hoisted"
 assert g["opening"]["shell_angle_end"] < g["opening"]["shell_angle_start"] - 15, f"did not open: {g['opening']}"

@@ -53,6 +53,17 @@ namespace
     w.mesh     = primitives::plate(centre, 2, size, size, size / 4);
     return w;
   }
+
+  /// A steel plate on each part of coarse_rig's walls: the shells (right, left) and the heads
+  /// (head, top).
+  void add_part_plates(Simulation &sim)
+  {
+    const int m = sim.add_material(steel);
+    sim.add_wall(plate_wall("right", m, hinge + Vec3(0.3, 0, -0.3), 0.2));
+    sim.add_wall(plate_wall("left", m, hinge + Vec3(-0.3, 0, -0.3), 0.2));
+    sim.add_wall(plate_wall("head", m, hinge + Vec3(0, 0, 0.1), 0.2));
+    sim.add_wall(plate_wall("top", m, hinge + Vec3(0, 0, 1.2), 0.2));
+  }
 } // namespace
 
 // Plates on the shells and the heads, no particles: closing on the winch, held still a while
@@ -62,11 +73,7 @@ namespace
 TEST(RopeGrabDriver, WallsRideOnTheMechanismsParts)
 {
   Simulation sim(quiet_settings(1e-4, true));
-  const int  m = sim.add_material(steel);
-  sim.add_wall(plate_wall("right", m, hinge + Vec3(0.3, 0, -0.3), 0.2));
-  sim.add_wall(plate_wall("left", m, hinge + Vec3(-0.3, 0, -0.3), 0.2));
-  sim.add_wall(plate_wall("head", m, hinge + Vec3(0, 0, 0.1), 0.2));
-  sim.add_wall(plate_wall("top", m, hinge + Vec3(0, 0, 1.2), 0.2));
+  add_part_plates(sim);
   std::vector<TriangleMesh> reference;
   for (int w = 0; w < 4; ++w)
     reference.push_back(sim.wall(w).mesh);
@@ -110,6 +117,58 @@ TEST(RopeGrabDriver, WallsRideOnTheMechanismsParts)
   sim.run_phase("closing", 0.3);
   EXPECT_GT(q.angle, 0.5);
   check_pose(q.z - sim.dt() * q.z_rate, q.angle - sim.dt() * q.angle_rate, "closing again");
+}
+
+// The trolley carries the grab along x: every wall is where the mechanism's state puts it,
+// moved by the trolley's travel too; the travel is the ramp's, worked by hand (to one step's
+// drift); a held phase stops the trolley with the walls; the closing angle and the hinge's
+// height evolve as without the trolley (the frame's acceleration does no work on them).
+TEST(RopeGrabDriver, TheTrolleyCarriesTheWholeGrab)
+{
+  const auto run = [](bool travel, std::vector<Vec3> &vertices) {
+    Simulation sim(quiet_settings(1e-4, true));
+    add_part_plates(sim);
+    RopeGrabRig rig = coarse_rig({"travel"});
+    rig.closing["travel"] = {1.0, 1e5}; // closing while it travels
+    rig.holding["travel"] = {0, 0};
+    if (travel)
+      rig.trolley["travel"] = 0.5;
+    rig.trolley_acceleration = 2;
+    auto driver = std::make_shared<RopeGrabDriver>(rig, sim);
+    sim.add_driver(driver);
+    sim.setup();
+    sim.run_phase("travel", 0.3);
+    const double dt = sim.dt();
+    // ramp 0.25 s at 2 m/s^2, then 0.05 s at 0.5 m/s: a t1^2 / 2 + v (t - t1)
+    if (travel)
+      {
+        EXPECT_NEAR(driver->trolley_position(), 2 * 0.25 * 0.25 / 2 + 0.5 * 0.05, 0.5 * dt * 1.01);
+        EXPECT_DOUBLE_EQ(driver->trolley_speed(), 0.5);
+        EXPECT_NEAR(driver->phases().back().second.trolley_end, driver->trolley_position(), 1e-15);
+      }
+    const double x = driver->trolley_position() - dt * driver->trolley_speed(); // (the walls: one drift behind)
+    for (int w = 0; w < 4; ++w)
+      EXPECT_DOUBLE_EQ(sim.wall(w).velocity.x(), driver->trolley_speed());
+    sim.run_phase("hold", 0.05);
+    EXPECT_EQ(driver->trolley_speed(), 0);
+    EXPECT_NEAR(driver->trolley_position(), x, 1e-15) << "held: the trolley is where its walls are";
+    vertices.clear();
+    for (int w = 0; w < 4; ++w)
+      for (std::size_t v = 0; v < sim.wall(w).mesh.vertices.size(); ++v)
+        vertices.emplace_back(Vec3(&sim.wall(w).current[3 * v]) - Vec3(x, 0, 0));
+    return std::make_pair(driver->state(), x);
+  };
+  std::vector<Vec3> carried, still;
+  const auto [with, x] = run(true, carried);
+  const auto [without, zero] = run(false, still);
+  EXPECT_GT(x, 0.08);
+  EXPECT_EQ(zero, 0);
+  EXPECT_GT(with.angle, 0.2) << "the shells closed while travelling";
+  EXPECT_DOUBLE_EQ(with.angle, without.angle);
+  EXPECT_DOUBLE_EQ(with.z, without.z);
+  ASSERT_EQ(carried.size(), still.size());
+  for (std::size_t v = 0; v < carried.size(); ++v)
+    EXPECT_NEAR((carried[v] - still[v]).norm(), 0, 1e-9) << "vertex " << v << ": moved by the trolley's travel only";
 }
 
 // A ball resting on the upper head's plate: its weight w reaches the mechanism as (-w, -w d')

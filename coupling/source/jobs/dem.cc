@@ -73,6 +73,10 @@ namespace abrade::coupling
       g["closing_rope_hauled"]   = r.closing_hauled;
       g["holding_rope_hauled"]   = r.holding_hauled;
       g["closed_fraction_of_steps"] = double(r.steps_at_closed_stop) / steps;
+      if (r.steps_at_closed_stop > 0)
+        g["hinge_height_when_closed"] = r.hinge_when_closed;
+      g["trolley_position_start"] = r.trolley_start;
+      g["trolley_position_end"]   = r.trolley_end;
       log.line("Phase " + name + ": hinge " + io::format_number(r.hinge_start, 3) + " -> " +
                io::format_number(r.hinge_end, 3) + " m (lowest " + io::format_number(r.lowest_hinge, 3) +
                " m), shells " + io::format_number(r.angle_start * 180 / M_PI, 3) + " -> " +
@@ -244,7 +248,7 @@ namespace abrade::coupling
       mechanism_table = std::make_unique<io::CsvWriter>(
         ctx.output.file("grab_mechanism.csv"),
         std::vector<std::string>{"phase", "time", "hinge_height", "shell_angle", "head_distance", "hinge_velocity",
-                                 "closing_rope_tension", "holding_rope_tension"});
+                                 "closing_rope_tension", "holding_rope_tension", "trolley_position"});
     if (c.payload_height)
       payload_table = std::make_unique<io::CsvWriter>(ctx.output.file("payload.csv"),
                                                       std::vector<std::string>{"phase", "mass_above_payload_height"});
@@ -276,7 +280,8 @@ namespace abrade::coupling
             const auto &q = m.state();
             mechanism_table->row(name, {s.time(), q.z, q.angle * 180 / M_PI, m.mechanism().head_distance(q.angle),
                                         q.z_rate, m.mechanism().closing_tension(q, m.closing_winch(name)),
-                                        m.mechanism().holding_tension(q, m.holding_winch(name))});
+                                        m.mechanism().holding_tension(q, m.holding_winch(name)),
+                                        m.trolley_position()});
           }
       }
     if (snapshot_every && s.step_number() % snapshot_every == 0)

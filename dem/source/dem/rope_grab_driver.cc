@@ -61,6 +61,8 @@ namespace abrade::dem
         now.angle -= sim.dt() * now.angle_rate;
         now.z_rate = now.angle_rate = now.head_distance_rate = 0;
         now.closing_drum_speed = now.holding_drum_speed = 0;
+        trolley_x -= sim.dt() * trolley_v;
+        trolley_v = 0;
       }
     if (moving)
       {
@@ -68,6 +70,7 @@ namespace abrade::dem
         r.hinge_start = r.hinge_end = now.z;
         r.angle_start = r.angle_end = now.angle;
         r.head_distance_end         = grab.head_distance(now.angle);
+        r.trolley_start = r.trolley_end = trolley_x;
         records.emplace_back(phase, r);
       }
     set_velocities(sim);
@@ -86,6 +89,11 @@ namespace abrade::dem
       loads += grab.load(part, sim.wall(w).force.z(), sim.wall(w).torque.y(), now.angle);
     const double closing_paid = now.closing_paid_out, holding_paid = now.holding_paid_out;
     grab.step(now, dt, loads, g, closing, holding);
+    const auto   target = rig.trolley.find(phase);
+    const double wanted = target == rig.trolley.end() ? 0.0 : target->second;
+    const double change = rig.trolley_acceleration > 0 ? rig.trolley_acceleration * dt : std::abs(wanted - trolley_v);
+    trolley_v += std::clamp(wanted - trolley_v, -change, change);
+    trolley_x += dt * trolley_v;
     set_velocities(sim);
 
     PhaseRecord &r = records.back().second;
@@ -101,9 +109,13 @@ namespace abrade::dem
     r.holding_tension_sum += t_h;
     r.closing_hauled -= now.closing_paid_out - closing_paid;
     r.holding_hauled -= now.holding_paid_out - holding_paid;
+    r.trolley_end       = trolley_x;
     ++r.steps;
     if (now.angle >= rig.design.closed_angle)
-      ++r.steps_at_closed_stop;
+      {
+        if (r.steps_at_closed_stop++ == 0 && r.angle_start < rig.design.closed_angle)
+          r.hinge_when_closed = now.z;
+      }
   }
 
   void RopeGrabDriver::set_velocities(Simulation &sim) const
@@ -111,7 +123,7 @@ namespace abrade::dem
     for (const auto &[w, part] : parts)
       {
         Wall &wall            = sim.wall(w);
-        wall.velocity         = moving ? Vec3(0, 0, grab.vertical_velocity(part, now)) : Vec3::Zero();
+        wall.velocity         = moving ? Vec3(trolley_v, 0, grab.vertical_velocity(part, now)) : Vec3::Zero();
         wall.angular_velocity = moving ? Vec3(0, grab.angular_velocity(part, now), 0) : Vec3::Zero();
       }
   }
@@ -217,6 +229,13 @@ namespace abrade::dem
                    "[N] The closing winch's stall pull per phase, 'phase: pull, ...': beyond it the drum pays "
                    "out. 0: the drum follows the rope at no tension (the rope kept just slack: a grab lowered "
                    "on its holding ropes). A phase not listed: no limit.");
+    p.declare_text("Trolley speeds", "",
+                   "[m/s] The crane trolley's speed along +x per phase, 'phase: speed, ...' (travel to a "
+                   "hopper): the whole grab goes with it, hanging rigidly below it (no swing). A phase not "
+                   "listed: 0 (the trolley stops, at Trolley acceleration).");
+    p.declare_number("Trolley acceleration", 0.5, 0, unbounded,
+                     "[m/s^2] How fast the trolley reaches the speed a phase asks for, and stops; 0: at once. "
+                     "Range: >= 0.");
     p.declare_text("Holding winch speeds", "", "[m/s] The holding winch's, as Closing winch speeds.");
     p.declare_text("Holding winch pulls", "",
                    "[N] The holding winch's, as Closing winch pulls (0 while the grab closes: the holding "
@@ -282,6 +301,8 @@ namespace abrade::dem
     };
     rig.closing = winches("Closing winch speeds", "Closing winch pulls");
     rig.holding = winches("Holding winch speeds", "Holding winch pulls");
+    rig.trolley = phase_values(p, "Trolley speeds", phases, -100, 100);
+    rig.trolley_acceleration = p.number("Trolley acceleration");
     return rig;
   }
 } // namespace abrade::dem

@@ -7,6 +7,11 @@
 //
 // The grab's plane of symmetry is the DEM's x-z plane, its hinge axis along y, gravity along -z.
 // The walls are placed at the design's open pose (angle 0).
+//
+// A crane's trolley can carry the grab along x (travel to a hopper): the whole grab translates
+// with the trolley, hanging rigidly below it (no swing). The frame's acceleration puts equal and
+// opposite moments on the two shells about the hinge, so it does no work on the shells' common
+// angle and the two degrees of freedom are not changed by it.
 #include <abrade/dem/parameter_section.h>
 #include <abrade/dem/rope_grab.h>
 #include <abrade/dem/triangle_mesh.h>
@@ -30,6 +35,10 @@ namespace abrade::dem
     std::vector<std::string> phases;
     /// The winches per phase; a phase not listed: speed 0 (the brake holds), no pull limit.
     std::map<std::string, Winch> closing, holding;
+    /// [m/s] The trolley's speed along +x per phase (a phase not listed: 0), reached at
+    /// trolley_acceleration [m/s^2] (0: at once).
+    std::map<std::string, double> trolley;
+    double                        trolley_acceleration = 0.5;
     /// The walls it moves, by name, with the part each rides on.
     std::vector<std::pair<std::string, RopeGrab::Part>> walls;
   };
@@ -56,6 +65,9 @@ namespace abrade::dem
     /// hinge in the closing sense [N m]).
     const Eigen::Vector2d &particle_loads() const { return loads; }
     const RopeGrab::State &state() const { return now; }
+    /// [m] How far the trolley has carried the grab along x, and its speed [m/s].
+    double trolley_position() const { return trolley_x; }
+    double trolley_speed() const { return trolley_v; }
     /// The winches in @p phase.
     Winch closing_winch(const std::string &phase) const;
     Winch holding_winch(const std::string &phase) const;
@@ -71,6 +83,10 @@ namespace abrade::dem
       double closing_tension_max = 0, holding_tension_max = 0;   ///< [N]
       double closing_tension_sum = 0, holding_tension_sum = 0;   ///< [N] over the steps
       double closing_hauled = 0, holding_hauled = 0;             ///< [m] rope the winches took in (< 0: paid out)
+      double trolley_start = 0, trolley_end = 0; ///< [m] the trolley's position
+      /// [m] The hinge's height at the step the lips closed (NaN: the phase began closed, or
+      /// they did not close in it).
+      double hinge_when_closed = std::numeric_limits<double>::quiet_NaN();
       long   steps = 0;
       long   steps_at_closed_stop = 0; ///< steps that ended with the lips closed
     };
@@ -84,6 +100,7 @@ namespace abrade::dem
     std::vector<std::pair<std::size_t, RopeGrab::Part>> parts; // wall index, part
     double                                         g = 9.81;
     bool                                           moving = false;
+    double                                         trolley_x = 0, trolley_v = 0;
     Eigen::Vector2d                                loads  = Eigen::Vector2d::Zero();
     std::vector<std::pair<std::string, PhaseRecord>> records;
 
