@@ -114,103 +114,157 @@ namespace abrade::dem
       return {bed.size(), "CSV table", -1};
     }
 
-    ImportedBed import_dump(BedColumns &bed, std::vector<long> &lines, const std::string &path, double density,
-                            int material)
+    /// A LIGGGHTS/LAMMPS text dump, read snapshot by snapshot: the last one is the bed. Every
+    /// error names the file and line.
+    class DumpReader
     {
-      std::ifstream in(path, std::ios::binary);
-      if (!in)
-        throw InputError(path, "cannot open the bed to import");
-      std::error_code       size_error;
-      const std::uintmax_t file_size = std::filesystem::file_size(path, size_error);
-      if (size_error)
-        throw InputError(path, "cannot read the size of the bed to import");
-      std::string line;
-      long        no = 0;
-      auto        next = [&](const std::string &wanted) {
+    public:
+      explicit DumpReader(const std::string &path)
+        : path(path)
+        , in(path, std::ios::binary)
+      {
+        if (!in)
+          throw InputError(path, "cannot open the bed to import");
+        std::error_code size_error;
+        file_size = std::filesystem::file_size(path, size_error);
+        if (size_error)
+          throw InputError(path, "cannot read the size of the bed to import");
+      }
+
+      ImportedBed read(BedColumns &bed, std::vector<long> &lines, double density, int material)
+      {
+        ImportedBed result{0, "LIGGGHTS/LAMMPS dump", -1};
+        bool        any = false;
+        while (std::getline(in, line))
+          {
+            ++no;
+            if (!line.empty() && line.back() == '\r')
+              line.pop_back();
+            if (no == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) // a UTF-8 byte order mark
+              line.erase(0, 3);
+            if (line.find_first_not_of(" \t") == std::string::npos)
+              continue;
+            if (line.rfind("ITEM: UNITS", 0) == 0 || (line.rfind("ITEM: TIME", 0) == 0 && line.rfind("ITEM: TIMESTEP", 0) != 0))
+              {
+                next("the value of " + line); // (dump_modify units yes, time yes: before the timestep)
+                continue;
+              }
+            if (line.rfind("ITEM: TIMESTEP", 0) != 0)
+              throw InputError(where(), "expected 'ITEM: TIMESTEP' (a LIGGGHTS/LAMMPS text dump), found '" +
+                                          line.substr(0, 40) + "'");
+            const Snapshot snapshot = read_snapshot_head();
+            result.timestep         = snapshot.timestep;
+            read_atoms(snapshot, bed, lines, density, material);
+            any = true;
+          }
+        if (!any)
+          throw InputError(path, "the dump holds no snapshot");
+        result.particles = bed.size();
+        return result;
+      }
+
+    private:
+      const std::string path;
+      std::ifstream     in;
+      std::uintmax_t    file_size = 0;
+      std::string       line;
+      long              no = 0; ///< the line read last
+
+      /// What a snapshot's head says, from its timestep to its ITEM: ATOMS line.
+      struct Snapshot
+      {
+        long                     timestep = 0, atoms = 0;
+        long                     count_line = 0; ///< where the number of atoms is
+        std::vector<std::string> names;          ///< the columns' names
+        long                     names_line = 0;
+      };
+
+      std::string where() const { return path + ":" + std::to_string(no); }
+
+      /// The next line, which must be there: @p wanted says what it should hold.
+      std::string next(const std::string &wanted)
+      {
         if (!std::getline(in, line))
           throw InputError(path + ":" + std::to_string(no + 1), "the dump ends where " + wanted + " should follow (cut short?)");
         ++no;
         if (!line.empty() && line.back() == '\r')
           line.pop_back();
         return line;
-      };
-      auto whole = [&](const std::string &word, const std::string &what) {
+      }
+
+      long whole(const std::string &word, const std::string &what) const
+      {
         const auto x = io::finite_number(word);
         if (!x || *x != std::floor(*x) || *x < 0 || *x > 9e15)
-          throw InputError(path + ":" + std::to_string(no), "'" + word + "' is not a " + what);
+          throw InputError(where(), "'" + word + "' is not a " + what);
         return long(*x);
-      };
-      ImportedBed result{0, "LIGGGHTS/LAMMPS dump", -1};
-      bool        any = false;
-      while (std::getline(in, line))
-        {
-          ++no;
-          if (!line.empty() && line.back() == '\r')
-            line.pop_back();
-          if (no == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) // a UTF-8 byte order mark
-            line.erase(0, 3);
-          if (line.find_first_not_of(" \t") == std::string::npos)
-            continue;
-          if (line.rfind("ITEM: UNITS", 0) == 0 || (line.rfind("ITEM: TIME", 0) == 0 && line.rfind("ITEM: TIMESTEP", 0) != 0))
-            {
-              next("the value of " + line); // (dump_modify units yes, time yes: before the timestep)
-              continue;
-            }
-          if (line.rfind("ITEM: TIMESTEP", 0) != 0)
-            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: TIMESTEP' (a LIGGGHTS/LAMMPS text dump), "
-                                                               "found '" + line.substr(0, 40) + "'");
-          result.timestep = whole(next("the timestep"), "timestep");
-          if (next("ITEM: NUMBER OF ATOMS").rfind("ITEM: NUMBER OF ATOMS", 0) != 0)
-            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: NUMBER OF ATOMS'");
-          const long n          = whole(next("the number of atoms"), "number of atoms");
-          const long count_line = no;
-          if (next("ITEM: BOX BOUNDS").rfind("ITEM: BOX BOUNDS", 0) != 0)
-            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: BOX BOUNDS'");
-          for (int d = 0; d < 3; ++d)
-            next("the box bounds");
-          const std::string atoms = next("ITEM: ATOMS");
-          if (atoms.rfind("ITEM: ATOMS", 0) != 0)
-            throw InputError(path + ":" + std::to_string(no), "expected 'ITEM: ATOMS' and the column names");
-          std::istringstream       header(atoms.substr(11));
-          std::vector<std::string> given;
-          for (std::string w; header >> w;)
-            given.push_back(w);
-          const std::vector<std::string> names = column_names(given, path + ":" + std::to_string(no));
-          const long      header_line = no;
-          const ColumnMap map(path + ":" + std::to_string(header_line), [&](const std::string &c) {
-            const auto it = std::find(names.begin(), names.end(), c);
-            return it == names.end() ? -1 : int(it - names.begin());
-          }, "the dump's ITEM: ATOMS line");
-          // a row holds at least a character and a separator per column: a count the rest of
-          // the file cannot hold is refused before anything is allocated for it
-          const double at_most = double(file_size - std::min<std::uintmax_t>(file_size, std::uintmax_t(in.tellg()))) /
-                                 (2.0 * double(std::max<std::size_t>(1, names.size())));
-          if (double(n) > at_most)
-            throw InputError(path + ":" + std::to_string(count_line),
-                             "the dump announces " + std::to_string(n) + " atoms; the rest of the file holds at most " +
-                               std::to_string(long(at_most)) + " (cut short, or a wrong count)");
-          bed.resize(std::size_t(n));
-          lines.assign(std::size_t(n), 0);
-          for (long k = 0; k < n; ++k)
-            {
-              next("atom " + std::to_string(k + 1) + " of " + std::to_string(n));
-              lines[std::size_t(k)] = no;
-              std::istringstream       row(line);
-              std::vector<std::string> cells;
-              for (std::string w; row >> w;)
-                cells.push_back(w);
-              if (cells.size() != names.size())
-                throw InputError(path + ":" + std::to_string(no), std::to_string(cells.size()) + " values where the "
-                                 "ITEM: ATOMS line names " + std::to_string(names.size()));
-              map.fill(bed, std::size_t(k), [&](int c) { return number(path, no, cells[c], names[c]); },
-                       path + ":" + std::to_string(no), density, material);
-            }
-          any = true;
-        }
-      if (!any)
-        throw InputError(path, "the dump holds no snapshot");
-      result.particles = bed.size();
-      return result;
+      }
+
+      /// After ITEM: TIMESTEP: the timestep, the number of atoms, the box (skipped) and the
+      /// columns' names.
+      Snapshot read_snapshot_head()
+      {
+        Snapshot s;
+        s.timestep = whole(next("the timestep"), "timestep");
+        if (next("ITEM: NUMBER OF ATOMS").rfind("ITEM: NUMBER OF ATOMS", 0) != 0)
+          throw InputError(where(), "expected 'ITEM: NUMBER OF ATOMS'");
+        s.atoms      = whole(next("the number of atoms"), "number of atoms");
+        s.count_line = no;
+        if (next("ITEM: BOX BOUNDS").rfind("ITEM: BOX BOUNDS", 0) != 0)
+          throw InputError(where(), "expected 'ITEM: BOX BOUNDS'");
+        for (int d = 0; d < 3; ++d)
+          next("the box bounds");
+        const std::string atoms = next("ITEM: ATOMS");
+        if (atoms.rfind("ITEM: ATOMS", 0) != 0)
+          throw InputError(where(), "expected 'ITEM: ATOMS' and the column names");
+        std::istringstream       header(atoms.substr(11));
+        std::vector<std::string> given;
+        for (std::string w; header >> w;)
+          given.push_back(w);
+        s.names      = column_names(given, where());
+        s.names_line = no;
+        return s;
+      }
+
+      /// The snapshot's atoms into @p bed (replacing an earlier snapshot's), each one's line in
+      /// @p lines.
+      void read_atoms(const Snapshot &s, BedColumns &bed, std::vector<long> &lines, double density, int material)
+      {
+        const ColumnMap map(path + ":" + std::to_string(s.names_line), [&](const std::string &c) {
+          const auto it = std::find(s.names.begin(), s.names.end(), c);
+          return it == s.names.end() ? -1 : int(it - s.names.begin());
+        }, "the dump's ITEM: ATOMS line");
+        // a row holds at least a character and a separator per column: a count the rest of the
+        // file cannot hold is refused before anything is allocated for it
+        const double at_most = double(file_size - std::min<std::uintmax_t>(file_size, std::uintmax_t(in.tellg()))) /
+                               (2.0 * double(std::max<std::size_t>(1, s.names.size())));
+        if (double(s.atoms) > at_most)
+          throw InputError(path + ":" + std::to_string(s.count_line),
+                           "the dump announces " + std::to_string(s.atoms) + " atoms; the rest of the file holds at most " +
+                             std::to_string(long(at_most)) + " (cut short, or a wrong count)");
+        bed.resize(std::size_t(s.atoms));
+        lines.assign(std::size_t(s.atoms), 0);
+        for (long k = 0; k < s.atoms; ++k)
+          {
+            next("atom " + std::to_string(k + 1) + " of " + std::to_string(s.atoms));
+            lines[std::size_t(k)] = no;
+            std::istringstream       row(line);
+            std::vector<std::string> cells;
+            for (std::string w; row >> w;)
+              cells.push_back(w);
+            if (cells.size() != s.names.size())
+              throw InputError(where(), std::to_string(cells.size()) + " values where the ITEM: ATOMS line names " +
+                                          std::to_string(s.names.size()));
+            map.fill(bed, std::size_t(k), [&](int c) { return number(path, no, cells[c], s.names[c]); }, where(),
+                     density, material);
+          }
+      }
+    };
+
+    ImportedBed import_dump(BedColumns &bed, std::vector<long> &lines, const std::string &path, double density,
+                            int material)
+    {
+      return DumpReader(path).read(bed, lines, density, material);
     }
   } // namespace
 
