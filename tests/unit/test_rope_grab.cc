@@ -434,17 +434,24 @@ TEST(RopeGrab, DrumsRampUpAtTheWinchsAcceleration)
 
 // A drum that follows its rope (pull 0) is at rest when a powered phase begins: it then
 // speeds up at the winch's acceleration.
-TEST(RopeGrab, AFollowingDrumStartsAgainFromRest)
+// A drum that keeps its rope just slack (pull 0) still turns at its winch's speed, reached at
+// the winch's acceleration; a winch that takes the rope over again ramps from that speed, not
+// from rest (a closing winch paying out as the grab lands is reversed, not stopped at once).
+TEST(RopeGrab, ASlackDrumTurnsAtItsWinchsSpeed)
 {
   const RopeGrabDesign design = coarse_grab();
   RopeGrab             grab(design);
   RopeGrab::State      s = hanging_open(grab);
   const double dt = 1e-5, inf = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 1000; ++i) // the closing drum follows, asked to pay out
+  for (int i = 0; i < 1000; ++i) // the closing drum pays out, its rope slack
     grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{-1.0, 0}, Winch{0, inf});
-  EXPECT_EQ(s.closing_drum_speed, 0);
+  EXPECT_NEAR(s.closing_drum_speed, -design.winch_acceleration * 1000 * dt, 1e-12) << "ramping";
+  EXPECT_EQ(grab.closing_tension(s, Winch{-1.0, 0}), 0) << "slack";
+  for (int i = 0; i < int(1.0 / (design.winch_acceleration * dt)) + 10; ++i) // (past its speed)
+    grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{-1.0, 0}, Winch{0, inf});
+  EXPECT_EQ(s.closing_drum_speed, -1.0);
   grab.step(s, dt, Eigen::Vector2d::Zero(), g, Winch{1.0, inf}, Winch{0, inf});
-  EXPECT_NEAR(s.closing_drum_speed, design.winch_acceleration * dt, 1e-15);
+  EXPECT_NEAR(s.closing_drum_speed, -1.0 + design.winch_acceleration * dt, 1e-15);
 }
 
 TEST(RopeGrab, RefusesALinkageThatCannotWork)

@@ -171,6 +171,78 @@ TEST(RopeGrabDriver, TheTrolleyCarriesTheWholeGrab)
     EXPECT_NEAR((carried[v] - still[v]).norm(), 0, 1e-9) << "vertex " << v << ": moved by the trolley's travel only";
 }
 
+// The trolley over several phases: back along -x after a hold, then braking in a phase that
+// gives it no speed, each phase's travel worked by hand (to one step's drift) and starting where
+// the one before ended; with Trolley acceleration 0 it takes each speed at once.
+TEST(RopeGrabDriver, TheTrolleyRampsAndBrakesPhaseByPhase)
+{
+  const auto travel = [](double acceleration, const std::vector<std::pair<std::string, double>> &phases) {
+    Simulation sim(quiet_settings(1e-4, true));
+    add_part_plates(sim);
+    RopeGrabRig rig = coarse_rig({"travel", "back", "brake"});
+    rig.trolley["travel"]    = 0.5;
+    rig.trolley["back"]      = -0.25;
+    rig.trolley_acceleration = acceleration;
+    auto driver = std::make_shared<RopeGrabDriver>(rig, sim);
+    sim.add_driver(driver);
+    sim.setup();
+    std::vector<std::pair<double, double>> ends; // (position, speed) after each phase
+    for (const auto &[phase, duration] : phases)
+      {
+        sim.run_phase(phase, duration);
+        ends.emplace_back(driver->trolley_position(), driver->trolley_speed());
+        for (int w = 0; w < 4; ++w)
+          EXPECT_DOUBLE_EQ(sim.wall(w).velocity.x(), driver->trolley_speed()) << phase;
+      }
+    const auto &records = driver->phases();
+    for (std::size_t k = 1; k < records.size(); ++k)
+      EXPECT_EQ(records[k].second.trolley_start, records[k - 1].second.trolley_end) << records[k].first;
+    return std::make_pair(ends, sim.dt());
+  };
+  {
+    const auto [ends, dt] = travel(2, {{"travel", 0.3}, {"hold", 0.05}, {"back", 0.2}, {"brake", 0.1}});
+    const double x_travel = 2 * 0.25 * 0.25 / 2 + 0.5 * 0.05;        // ramp 0.25 s, then 0.05 s at 0.5
+    const double x_back   = -(0.25 * 0.25 / (2 * 2) + 0.25 * 0.075); // ramp 0.125 s, then 0.075 s at -0.25
+    const double x_brake  = -(0.25 * 0.1 - 2 * 0.1 * 0.1 / 2);       // braking at 2 m/s^2 for 0.1 s
+    EXPECT_NEAR(ends[0].first, x_travel, 0.5 * dt * 1.01);
+    EXPECT_EQ(ends[1].second, 0) << "held";
+    EXPECT_NEAR(ends[2].first - ends[1].first, x_back, 0.5 * dt * 1.01);
+    EXPECT_DOUBLE_EQ(ends[2].second, -0.25);
+    EXPECT_NEAR(ends[3].second, -0.25 + 2 * 0.1, 2 * dt * 1.01);
+    EXPECT_NEAR(ends[3].first - ends[2].first, x_brake, 0.5 * dt * 1.01);
+  }
+  {
+    const auto [ends, dt] = travel(0, {{"travel", 0.2}, {"brake", 0.1}});
+    EXPECT_NEAR(ends[0].first, 0.5 * 0.2, 0.5 * dt * 1.01) << "at once";
+    EXPECT_EQ(ends[1].second, 0);
+    EXPECT_NEAR(ends[1].first, ends[0].first, 1e-15) << "stopped at once";
+  }
+}
+
+// The hinge's height recorded when the lips close is the mechanism's at the first step that
+// ends at the closing stop; a phase that begins closed records none.
+TEST(RopeGrabDriver, RecordsTheHingeWhereTheLipsClose)
+{
+  Simulation sim(quiet_settings(1e-4, true));
+  add_part_plates(sim);
+  RopeGrabRig rig = coarse_rig({"closing", "closed"});
+  rig.closing["closing"] = {2.0, 1e5};
+  rig.holding["closing"] = {0, 0};
+  auto driver = std::make_shared<RopeGrabDriver>(rig, sim);
+  sim.add_driver(driver);
+  sim.setup();
+  double first = std::numeric_limits<double>::quiet_NaN();
+  for (int k = 0; k < 400 && std::isnan(first); ++k)
+    sim.run_phase("closing", 0.01, [&](const Simulation &) {
+      if (std::isnan(first) && driver->state().angle >= rig.design.closed_angle)
+        first = driver->state().z;
+    });
+  ASSERT_FALSE(std::isnan(first)) << "the shells did not close";
+  EXPECT_EQ(driver->phases().back().second.hinge_when_closed, first);
+  sim.run_phase("closed", 0.01);
+  EXPECT_TRUE(std::isnan(driver->phases().back().second.hinge_when_closed)) << "began closed";
+}
+
 // A ball resting on the upper head's plate: its weight w reaches the mechanism as (-w, -w d')
 // (the upper head rises by d' for a unit turn of the shells).
 TEST(RopeGrabDriver, AWeightOnTheUpperHeadLoadsItThroughTheLinkage)

@@ -73,7 +73,7 @@ namespace abrade::coupling
       g["closing_rope_hauled"]   = r.closing_hauled;
       g["holding_rope_hauled"]   = r.holding_hauled;
       g["closed_fraction_of_steps"] = double(r.steps_at_closed_stop) / steps;
-      if (r.steps_at_closed_stop > 0)
+      if (!std::isnan(r.hinge_when_closed)) // (the lips closed in this phase)
         g["hinge_height_when_closed"] = r.hinge_when_closed;
       g["trolley_position_start"] = r.trolley_start;
       g["trolley_position_end"]   = r.trolley_end;

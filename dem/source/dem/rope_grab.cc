@@ -307,10 +307,12 @@ namespace abrade::dem
   void RopeGrab::step(State &s, double dt, const Eigen::Vector2d &particles, double g, const Winch &closing,
                       const Winch &holding)
   {
-    // the drums' speeds approach the winches' (a drum that follows its rope starts again from rest)
+    // the drums' speeds approach the winches', a drum that keeps its rope just slack (pull 0)
+    // too: its motor turns at the speed it is given (a closing winch paying out as the grab
+    // lands is reversed at the winch's acceleration, not stopped at once)
     const auto drum = [&](double &speed, const Winch &w) {
       const double most = d.winch_acceleration > 0 ? d.winch_acceleration * dt : std::numeric_limits<double>::infinity();
-      speed = w.maximum_pull == 0 ? 0.0 : std::clamp(w.speed, speed - most, speed + most);
+      speed = std::clamp(w.speed, speed - most, speed + most);
     };
     drum(s.closing_drum_speed, closing);
     drum(s.holding_drum_speed, holding);

@@ -2,6 +2,7 @@
 #include <abrade/common/error.h>
 #include <abrade/common/file_extension.h>
 #include <abrade/common/finite_number.h>
+#include <abrade/common/format_number.h>
 #include <abrade/common/list_items.h>
 #include <abrade/dem/rope_grab_driver.h>
 #include <abrade/dem/simulation.h>
@@ -63,6 +64,13 @@ namespace abrade::dem
         now.closing_drum_speed = now.holding_drum_speed = 0;
         trolley_x -= sim.dt() * trolley_v;
         trolley_v = 0;
+        if (!records.empty()) // (the phase ends where its walls are)
+          {
+            PhaseRecord &r = records.back().second;
+            r.hinge_end    = now.z;
+            r.angle_end    = now.angle;
+            r.trolley_end  = trolley_x;
+          }
       }
     if (moving)
       {
@@ -157,8 +165,8 @@ namespace abrade::dem
             section.fail(key, "'" + phase + "' is not one of Simulation/Phases");
           const std::optional<double> v = io::finite_number(value);
           if (!v || *v < lo || *v > hi)
-            section.fail(key, "phase '" + phase + "': '" + value + "' is not a number in [" + std::to_string(lo) +
-                                ", " + std::to_string(hi) + "]");
+            section.fail(key, "phase '" + phase + "': '" + value + "' is not a number in [" + io::format_number(lo) +
+                                ", " + (hi == unbounded ? std::string("inf") : io::format_number(hi)) + "]");
           if (!out.emplace(phase, *v).second)
             section.fail(key, "phase '" + phase + "' is listed twice");
         }
@@ -227,15 +235,17 @@ namespace abrade::dem
                    "< 0. A phase not listed: 0 (the brake holds).");
     p.declare_text("Closing winch pulls", "",
                    "[N] The closing winch's stall pull per phase, 'phase: pull, ...': beyond it the drum pays "
-                   "out. 0: the drum follows the rope at no tension (the rope kept just slack: a grab lowered "
-                   "on its holding ropes). A phase not listed: no limit.");
+                   "out. 0: the rope is kept just slack, at no tension (a grab lowered on its holding ropes), "
+                   "while the drum turns at its speed (the next phase's winch ramps from there). A phase not "
+                   "listed: no limit.");
     p.declare_text("Trolley speeds", "",
-                   "[m/s] The crane trolley's speed along +x per phase, 'phase: speed, ...' (travel to a "
-                   "hopper): the whole grab goes with it, hanging rigidly below it (no swing). A phase not "
-                   "listed: 0 (the trolley stops, at Trolley acceleration).");
+                   "[m/s] The crane trolley's speed along x per phase, 'phase: speed, ...' (travel to a "
+                   "hopper; < 0: along -x): the whole grab goes with it, hanging rigidly below it (no swing: "
+                   "the payload feels the trolley's whole acceleration). A phase not listed: 0 (the trolley "
+                   "stops, at Trolley acceleration).");
     p.declare_number("Trolley acceleration", 0.5, 0, unbounded,
-                     "[m/s^2] How fast the trolley reaches the speed a phase asks for, and stops; 0: at once. "
-                     "Range: >= 0.");
+                     "[m/s^2] How fast the trolley reaches the speed a phase asks for, and stops (a crane's "
+                     "trolley: 0.3-1); 0: at once. Range: >= 0.");
     p.declare_text("Holding winch speeds", "", "[m/s] The holding winch's, as Closing winch speeds.");
     p.declare_text("Holding winch pulls", "",
                    "[N] The holding winch's, as Closing winch pulls (0 while the grab closes: the holding "

@@ -105,8 +105,8 @@ namespace abrade::dem
   struct Winch
   {
     double speed        = 0; ///< [m/s] hauling in (> 0) or paying out (< 0)
-    /// [N] Stall pull. 0: the drum follows the rope at no tension (a rope kept just slack: neither
-    /// pull nor slack length; the speed does not matter).
+    /// [N] Stall pull. 0: the rope is kept just slack (neither pull nor slack length) while the
+    /// drum turns at its speed, from which a later phase's winch ramps.
     double maximum_pull = std::numeric_limits<double>::infinity();
   };
 

@@ -9,9 +9,11 @@
 // The walls are placed at the design's open pose (angle 0).
 //
 // A crane's trolley can carry the grab along x (travel to a hopper): the whole grab translates
-// with the trolley, hanging rigidly below it (no swing). The frame's acceleration puts equal and
-// opposite moments on the two shells about the hinge, so it does no work on the shells' common
-// angle and the two degrees of freedom are not changed by it.
+// with the trolley, hanging rigidly below it (no swing). A uniform acceleration along x does no
+// work on either degree of freedom: raising the grab moves nothing sideways, and closing moves
+// the two shells (and their tie rods) sideways by equal and opposite amounts. The mechanism is
+// therefore not changed by it; the particles feel the walls' whole acceleration (a grab
+// swinging on its ropes would pass them less of it).
 #include <abrade/dem/parameter_section.h>
 #include <abrade/dem/rope_grab.h>
 #include <abrade/dem/triangle_mesh.h>
