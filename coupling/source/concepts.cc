@@ -242,7 +242,7 @@ namespace abrade::coupling
       gp << "set terminal pngcairo size 900,600 noenhanced\nset output 'lifetime.png'\nset datafile separator ','\nset grid\n"
             "set key left top\nset xlabel 'handled material [t]'\nset ylabel 'largest wear depth [mm]'\nplot ";
       for (std::size_t k = 0; k < labels.size(); ++k)
-        gp << (k ? ", " : "") << "'lifetime/" << labels[k] << "/trajectory.csv' using 3:($4*1000) with linespoints title '"
+        gp << (k ? ", " : "") << "'lifetime/" << labels[k] << "/trajectory.csv' using (column('tonnes')):(column('max_depth')*1000) with linespoints title '"
            << labels[k] << "'";
       gp << '\n';
     }

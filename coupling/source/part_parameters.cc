@@ -4,8 +4,8 @@
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameter_section.h>
+#include <abrade/fem/mpi_once.h>
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -310,7 +310,7 @@ namespace abrade::coupling
   {
     if (std::none_of(c.walls.begin(), c.walls.end(), [](const auto &w) { return w.solid_model; }))
       return;
-    init_mpi_once();
+    fem::init_mpi_once();
     const PartParameters   part = read_part_parameters(file);
     const PartMesh         m  = mesh_part(part, file, directory);
     report_part_mesh(part, m, log);
@@ -323,12 +323,4 @@ namespace abrade::coupling
         wc.wall.mesh = place_surface(surface, wc);
   }
 
-  void init_mpi_once()
-  {
-    // PETSc and the FEM need MPI; a single process here
-    static int                                      argc = 1;
-    static char                                     name[] = "abrade", *args[] = {name, nullptr};
-    static char                                   **argv = args;
-    static dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  }
 } // namespace abrade::coupling

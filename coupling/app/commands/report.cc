@@ -1,5 +1,5 @@
 // abrade report: a run's report.html written again (after editing a plot script, or for a run
-// made before reports existed).
+// directory that has none).
 #include "../command.h"
 
 #include <abrade/common/error.h>

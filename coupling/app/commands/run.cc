@@ -12,9 +12,9 @@
 #include <abrade/common/termination.h>
 #include <abrade/common/version.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/dem/parallel.h>
+#include <abrade/fem/mpi_once.h>
 #include <abrade/report/report.h>
 
 #include <chrono>
@@ -85,7 +85,7 @@ namespace abrade::app
       static dem::Parallel ranks_of_the_run()
       {
         if (launch().by_mpirun)
-          coupling::init_mpi_once();
+          fem::init_mpi_once();
         return dem::Parallel::world();
       }
 

@@ -23,6 +23,7 @@
 #include <abrade/coupling/part_parameters.h>
 #include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/mesh_quality.h>
+#include <abrade/fem/mpi_once.h>
 #include <abrade/fem/solid_output.h>
 #include <abrade/fem/solid_surface.h>
 
@@ -256,7 +257,7 @@ namespace abrade::coupling
   void KnifeJob::run(JobContext &ctx) const
   {
     const PartParameters part = read_part_parameters(ctx.parameters);
-    init_mpi_once();
+    fem::init_mpi_once();
     const std::string dir = ctx.output.subdirectory("knife");
     PartMesh          m;
     {

@@ -17,6 +17,7 @@
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/dem/wear.h>
 #include <abrade/dem/parallel.h>
+#include <abrade/fem/mpi_once.h>
 #include <abrade/fem/surface_filter.h>
 
 #include <deal.II/base/utilities.h>
@@ -117,7 +118,7 @@ namespace abrade::coupling::lifetime
   // the resume.
   void LifetimeLoop::set_up()
   {
-    init_mpi_once();
+    fem::init_mpi_once();
     dem_case         = read_dem_case(ctx.parameters);
     report_coarse_graining(dem_case, ctx);
     part_parameters = read_part_parameters(ctx.parameters);
@@ -989,7 +990,7 @@ namespace abrade::coupling::lifetime
 
 
   // 6. Checkpoint: the knife and the loop's state, written aside and then renamed, so that a
-  //    kill never leaves half of one (lifetime_checkpoints.h).
+  //    kill never leaves half of one (lifetime/checkpoints.h).
   void LifetimeLoop::checkpoint()
   {
     part_model->save(checkpoints->knife_file_aside(update));

@@ -74,7 +74,4 @@ namespace abrade::coupling
   /// Meshes the part of subsection Knife (into @p directory) and gives every wall with
   /// Geometry = solid model its surface, placed.
   void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory, io::Log &log);
-
-  /// MPI (for PETSc) in this single process, initialised once.
-  void init_mpi_once();
 } // namespace abrade::coupling

@@ -40,7 +40,7 @@
 #include <abrade/coupling/lifetime/wear_rates.h>
 #include <abrade/coupling/lifetime/wear_calibration.h>
 #include <abrade/coupling/lifetime/wear_source.h>
-#include <abrade/coupling/lifetime_checkpoints.h>
+#include <abrade/coupling/lifetime/checkpoints.h>
 #include <abrade/common/csv_writer.h>
 #include <abrade/fem/part_model.h>
 #include <abrade/fem/solid_output.h>
