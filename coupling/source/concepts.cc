@@ -142,6 +142,16 @@ namespace abrade::coupling
       void reduce_runs();
       /// concepts.csv and concepts.md: a row per concept.
       void write_tables();
+      /// Concept @p k's changes against the baseline, pair by pair on the same beds.
+      struct Changes
+      {
+        Change wear, payload, per_tonne, life;
+      };
+      Changes changes_of(std::size_t k);
+      void    write_csv_head(std::ostream &csv) const;
+      void    write_csv_row(std::ostream &csv, std::size_t k, const Changes &c);
+      void    write_md_head(std::ostream &md) const;
+      void    write_md_row(std::ostream &md, std::size_t k, const Changes &c);
       /// The change of concept @p k's life against the baseline's, paired on the beds both drew
       /// (study_lives.h).
       Change life_change_of(std::size_t k);
@@ -284,10 +294,54 @@ namespace abrade::coupling
       return c;
     }
 
-    void ConceptStudy::write_tables()
+    namespace
     {
-      std::ofstream csv(out->file("concepts.csv"));
-      csv.precision(8);
+      /// "mean +- std" of @p s, scaled by @p scale.
+      std::string plus_minus(const Stat &s, double scale)
+      {
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "%.3g +- %.2g", scale * s.mean, scale * s.std);
+        return buf;
+      }
+
+      /// A change in per cent with its interval and * where significant (a change without an
+      /// interval, one bed: said so).
+      std::string percent(const Change &c)
+      {
+        char buf[128];
+        if (!c.interval)
+          std::snprintf(buf, sizeof buf, "%+.1f %% (no interval: one bed)", 100 * (c.ratio - 1));
+        else
+          std::snprintf(buf, sizeof buf, "%+.1f %% [%+.1f, %+.1f]%s", 100 * (c.ratio - 1), 100 * (c.low - 1),
+                        100 * (c.high - 1), c.significant ? " *" : "");
+        return buf;
+      }
+
+      /// A change's CSV columns: per cent, half the interval, its ends, significant (one bed:
+      /// the interval's cells empty).
+      std::string change_columns(const Change &c)
+      {
+        std::ostringstream text;
+        text.precision(8);
+        text << ',' << 100 * (c.ratio - 1);
+        if (c.interval)
+          text << ',' << 50 * (c.high - c.low) << ',' << 100 * (c.low - 1) << ',' << 100 * (c.high - 1);
+        else
+          text << ",,,";
+        text << ',' << (c.significant ? 1 : 0);
+        return text.str();
+      }
+    } // namespace
+
+    ConceptStudy::Changes ConceptStudy::changes_of(std::size_t k)
+    {
+      return {paired_change(sum[k].total_of_bed, sum[0].total_of_bed),
+              paired_change(sum[k].payload_of_bed, sum[0].payload_of_bed),
+              paired_change(sum[k].per_tonne_of_bed, sum[0].per_tonne_of_bed), life_change_of(k)};
+    }
+
+    void ConceptStudy::write_csv_head(std::ostream &csv) const
+    {
       csv << "concept";
       for (const auto &p : phases)
         csv << ",wear_" << p << ",wear_" << p << "_std";
@@ -299,7 +353,24 @@ namespace abrade::coupling
              "change_wear_per_tonne_low_percent,change_wear_per_tonne_high_percent,change_wear_per_tonne_significant,"
              "predicted_life_tonnes,predicted_life_low,predicted_life_high,change_life_percent,change_life_uncertainty,change_life_low_percent,"
              "change_life_high_percent,change_life_significant\n";
-      std::ofstream md(out->file("concepts.md"));
+    }
+
+    void ConceptStudy::write_csv_row(std::ostream &csv, std::size_t k, const Changes &c)
+    {
+      csv << labels[k];
+      for (const auto &p : phases)
+        csv << ',' << sum[k].wear[p].mean << ',' << sum[k].wear[p].std;
+      csv << ',' << sum[k].wear["total"].mean << ',' << sum[k].wear["total"].std << ',' << sum[k].payload.mean << ','
+          << sum[k].payload.std << ',' << sum[k].per_tonne.mean << ',' << sum[k].per_tonne.std << change_columns(c.wear)
+          << change_columns(c.payload) << change_columns(c.per_tonne) << ',' << (life.count(labels[k]) ? life[labels[k]] : "");
+      if (life_value.count(labels[k]))
+        csv << ',' << life_value[labels[k]].low << ',' << life_value[labels[k]].high << change_columns(c.life) << '\n';
+      else
+        csv << ",,,,,,,\n";
+    }
+
+    void ConceptStudy::write_md_head(std::ostream &md) const
+    {
       md << "# Knife concepts (" << o.seeds.size() << " beds each; baseline: " << labels[0] << ")\n\n"
          << "Knife wear per cycle (Archard volume, mean of the knives) in mm^3, payload in kg per cycle, mean +- "
             "standard deviation over the beds. Changes against the baseline pair by pair on the same beds: the "
@@ -315,65 +386,43 @@ namespace abrade::coupling
       for (std::size_t p = 0; p < phases.size() + 6 + (o.lifetime_updates > 0); ++p)
         md << "---|";
       md << '\n';
-      char buf[128];
-      auto pm = [&](const Stat &s, double scale) {
-        std::snprintf(buf, sizeof buf, "%.3g +- %.2g", scale * s.mean, scale * s.std);
-        return std::string(buf);
-      };
-      // (a change without an interval, one bed: said so, its interval's cells left empty)
-      auto pct = [&](const Change &c) {
-        if (!c.interval)
-          std::snprintf(buf, sizeof buf, "%+.1f %% (no interval: one bed)", 100 * (c.ratio - 1));
-        else
-          std::snprintf(buf, sizeof buf, "%+.1f %% [%+.1f, %+.1f]%s", 100 * (c.ratio - 1), 100 * (c.low - 1),
-                        100 * (c.high - 1), c.significant ? " *" : "");
-        return std::string(buf);
-      };
-      auto columns = [&](const Change &c) {
-        std::ostringstream text;
-        text.precision(8);
-        text << ',' << 100 * (c.ratio - 1);
-        if (c.interval)
-          text << ',' << 50 * (c.high - c.low) << ',' << 100 * (c.low - 1) << ',' << 100 * (c.high - 1);
-        else
-          text << ",,,";
-        text << ',' << (c.significant ? 1 : 0);
-        return text.str();
-      };
+    }
+
+    void ConceptStudy::write_md_row(std::ostream &md, std::size_t k, const Changes &c)
+    {
+      md << "| " << labels[k] << " |";
+      for (const auto &p : phases)
+        md << ' ' << plus_minus(sum[k].wear[p], 1e9) << " |";
+      md << ' ' << plus_minus(sum[k].wear["total"], 1e9) << " | " << plus_minus(sum[k].payload, 1e3) << " | "
+         << plus_minus(sum[k].per_tonne, 1e9) << " | " << (k ? percent(c.wear) : "baseline") << " | "
+         << (k ? percent(c.payload) : "baseline") << " | " << (k ? percent(c.per_tonne) : "baseline") << " |";
+      if (o.lifetime_updates > 0)
+        {
+          const auto &v = life_value[labels[k]];
+          md << ' ' << life[labels[k]];
+          if (v.low > 0)
+            {
+              char buf[128];
+              std::snprintf(buf, sizeof buf, " (%.3g ... %.3g)", v.low, v.high);
+              md << buf;
+            }
+          md << (k ? "; " + percent(c.life) : std::string()) << " |";
+        }
+      md << '\n';
+    }
+
+    void ConceptStudy::write_tables()
+    {
+      std::ofstream csv(out->file("concepts.csv"));
+      csv.precision(8);
+      write_csv_head(csv);
+      std::ofstream md(out->file("concepts.md"));
+      write_md_head(md);
       for (std::size_t k = 0; k < o.files.size(); ++k)
         {
-          const Change cw = paired_change(sum[k].total_of_bed, sum[0].total_of_bed),
-                       cp = paired_change(sum[k].payload_of_bed, sum[0].payload_of_bed),
-                       ct = paired_change(sum[k].per_tonne_of_bed, sum[0].per_tonne_of_bed), cl = life_change_of(k);
-          csv << labels[k];
-          md << "| " << labels[k] << " |";
-          for (const auto &p : phases)
-            {
-              csv << ',' << sum[k].wear[p].mean << ',' << sum[k].wear[p].std;
-              md << ' ' << pm(sum[k].wear[p], 1e9) << " |";
-            }
-          csv << ',' << sum[k].wear["total"].mean << ',' << sum[k].wear["total"].std << ',' << sum[k].payload.mean << ','
-              << sum[k].payload.std << ',' << sum[k].per_tonne.mean << ',' << sum[k].per_tonne.std << columns(cw)
-              << columns(cp) << columns(ct) << ',' << (life.count(labels[k]) ? life[labels[k]] : "");
-          if (life_value.count(labels[k]))
-            csv << ',' << life_value[labels[k]].low << ',' << life_value[labels[k]].high << columns(cl) << '\n';
-          else
-            csv << ",,,,,,,\n";
-          md << ' ' << pm(sum[k].wear["total"], 1e9) << " | " << pm(sum[k].payload, 1e3) << " | "
-             << pm(sum[k].per_tonne, 1e9) << " | " << (k ? pct(cw) : "baseline") << " | " << (k ? pct(cp) : "baseline")
-             << " | " << (k ? pct(ct) : "baseline") << " |";
-          if (o.lifetime_updates > 0)
-            {
-              const auto &v = life_value[labels[k]];
-              md << ' ' << life[labels[k]];
-              if (v.low > 0)
-                {
-                  std::snprintf(buf, sizeof buf, " (%.3g ... %.3g)", v.low, v.high);
-                  md << buf;
-                }
-              md << (k ? "; " + pct(cl) : std::string()) << " |";
-            }
-          md << '\n';
+          const Changes c = changes_of(k);
+          write_csv_row(csv, k, c);
+          write_md_row(md, k, c);
         }
       csv.close(), md.close();
     }

@@ -55,23 +55,25 @@ namespace abrade::coupling
 
     double number(const std::string &text) { return std::stod(text); }
 
-    /// The metrics of one finished run (see the file comment).
-    RunMetrics reduce_run(const std::string &dir, const std::string &wall, const std::vector<std::string> &phases,
-                          double edge_height)
+    /// The wall's wear per phase (Output/Wear field's column) and per metre it travelled.
+    void add_wear(RunMetrics &m, const std::string &dir, const std::string &wall, const std::string &field)
     {
-      RunMetrics m;
-      // the run's wear field (Output/Wear field; Archard's volume by default)
-      const std::string field = io::summary_string(dir + "/summary.json", "wear_field").value_or("archard_volume");
-      const CsvTable    wear  = read_csv_table(dir + "/walls/" + wall + "_wear.csv");
-      const int         vol = wear.column(field), path = wear.column("path_length");
+      const CsvTable wear = read_csv_table(dir + "/walls/" + wall + "_wear.csv");
+      const int      vol = wear.column(field), path = wear.column("path_length");
       for (const auto &r : wear.rows)
         {
           m.value["wear_" + r[0]] = number(r[vol]);
           if (r[0] != "total" && number(r[path]) > 0) // (a wall at rest in a phase has no wear per metre)
             m.value["wear_per_m_" + r[0]] = number(r[vol]) / number(r[path]);
         }
+    }
 
-      // forces: per phase the mean magnitude
+    /// The force on the wall: its magnitude over time, per phase the mean, the first phase's
+    /// peak and the last one's steady mean, over its second half. Returns when that half
+    /// begins [s].
+    double add_forces(RunMetrics &m, const std::string &dir, const std::string &wall,
+                            const std::vector<std::string> &phases)
+    {
       const CsvTable f = read_csv_table(dir + "/walls/" + wall + "_forces.csv");
       const int      t = f.column("time"), fx = f.column("fx"), fy = f.column("fy"), fz = f.column("fz");
       double         t_last_start = 1e300, t_end = 0;
@@ -97,56 +99,79 @@ namespace abrade::coupling
         m.value["mean_force_" + p] = rows[p] ? force_sum[p] / rows[p] : 0.0;
       m.value["peak_force_" + phases.front()]  = peak;
       m.value["steady_force_" + phases.back()] = n_steady ? steady / n_steady : 0.0;
+      return 0.5 * (t_last_start + t_end);
+    }
 
+    /// The wall's layer probe, where it has one: the layer's velocity and slip over the last
+    /// phase's second half (from @p steady_from [s]), the contacts per phase.
+    void add_layer(RunMetrics &m, const std::string &dir, const std::string &wall,
+                   const std::vector<std::string> &phases, double steady_from)
+    {
       const std::string layer_file = dir + "/walls/" + wall + "_layer.csv";
-      if (std::filesystem::exists(layer_file))
+      if (!std::filesystem::exists(layer_file))
+        return;
+      const CsvTable l  = read_csv_table(layer_file);
+      const int      lt = l.column("time"), lv = l.column("mean_velocity"), lw = l.column("wall_velocity"),
+                lc = l.column("contacts");
+      double sum_v = 0, sum_slip = 0;
+      int    n     = 0;
+      std::map<std::string, double> contacts;
+      std::map<std::string, int>    samples;
+      for (const auto &r : l.rows)
         {
-          const CsvTable l  = read_csv_table(layer_file);
-          const int      lt = l.column("time"), lv = l.column("mean_velocity"), lw = l.column("wall_velocity"),
-                    lc = l.column("contacts");
-          double sum_v = 0, sum_slip = 0;
-          int    n     = 0;
-          std::map<std::string, double> contacts;
-          std::map<std::string, int>    samples;
-          for (const auto &r : l.rows)
-            {
-              m.layer_time.push_back(number(r[lt]));
-              m.layer_velocity.push_back(number(r[lv]));
-              contacts[r[0]] += number(r[lc]), ++samples[r[0]];
-              if (r[0] == phases.back() && number(r[lt]) >= 0.5 * (t_last_start + t_end))
-                sum_v += number(r[lv]), sum_slip += number(r[lw]) - number(r[lv]), ++n;
-            }
-          m.value["layer_velocity_" + phases.back()] = n ? sum_v / n : 0.0;
-          m.value["layer_slip_" + phases.back()]     = n ? sum_slip / n : 0.0;
-          for (const auto &p : phases)
-            m.value["contacts_" + p] = samples[p] ? contacts[p] / samples[p] : 0.0;
+          m.layer_time.push_back(number(r[lt]));
+          m.layer_velocity.push_back(number(r[lv]));
+          contacts[r[0]] += number(r[lc]), ++samples[r[0]];
+          if (r[0] == phases.back() && number(r[lt]) >= steady_from)
+            sum_v += number(r[lv]), sum_slip += number(r[lw]) - number(r[lv]), ++n;
         }
+      m.value["layer_velocity_" + phases.back()] = n ? sum_v / n : 0.0;
+      m.value["layer_slip_" + phases.back()]     = n ? sum_slip / n : 0.0;
+      for (const auto &p : phases)
+        m.value["contacts_" + p] = samples[p] ? contacts[p] / samples[p] : 0.0;
+    }
 
+    /// The wear profile, where the run wrote one: the share per height band and below the edge
+    /// height (a band it cuts in proportion), per face, and the filtered peaks.
+    void add_profile(RunMetrics &m, const std::string &dir, const std::string &wall, const std::string &field,
+                     double edge_height)
+    {
       const std::string profile_file = dir + "/walls/" + wall + "_wear_profile.csv";
-      if (std::filesystem::exists(profile_file))
+      if (!std::filesystem::exists(profile_file))
+        return;
+      const CsvTable pr    = read_csv_table(profile_file);
+      const int      label = pr.column("label"), lo = pr.column("lower"), hi = pr.column("upper"),
+                v = pr.column(field), area = pr.column("area");
+      const double total = m.value["wear_total"];
+      double       edge  = 0;
+      for (const auto &r : pr.rows)
         {
-          const CsvTable pr    = read_csv_table(profile_file);
-          const int      label = pr.column("label"), lo = pr.column("lower"), hi = pr.column("upper"),
-                    v = pr.column(field), area = pr.column("area");
-          const double total = m.value["wear_total"];
-          double       edge  = 0;
-          for (const auto &r : pr.rows)
+          const double share = total > 0 ? number(r[v]) / total : 0.0;
+          if (r[0] == "height")
             {
-              const double share = total > 0 ? number(r[v]) / total : 0.0;
-              if (r[0] == "height")
-                {
-                  const double a = number(r[lo]), b = number(r[hi]);
-                  m.height_share.push_back(share), m.band = b - a;
-                  // the bands below the edge height, a band it cuts in proportion
-                  edge += share * std::clamp((edge_height - a) / (b - a), 0.0, 1.0);
-                }
-              else if (r[0] == "face" && number(r[area]) > 0)
-                m.value["share_face_" + r[label]] = share;
-              else if (r[0] == "filtered_peak")
-                m.value["peak_depth_filter_" + r[label]] = number(r[v]);
+              const double a = number(r[lo]), b = number(r[hi]);
+              m.height_share.push_back(share), m.band = b - a;
+              edge += share * std::clamp((edge_height - a) / (b - a), 0.0, 1.0);
             }
-          m.value["edge_share"] = edge;
+          else if (r[0] == "face" && number(r[area]) > 0)
+            m.value["share_face_" + r[label]] = share;
+          else if (r[0] == "filtered_peak")
+            m.value["peak_depth_filter_" + r[label]] = number(r[v]);
         }
+      m.value["edge_share"] = edge;
+    }
+
+    /// The metrics of one finished run (see the file comment).
+    RunMetrics reduce_run(const std::string &dir, const std::string &wall, const std::vector<std::string> &phases,
+                          double edge_height)
+    {
+      RunMetrics m;
+      // the run's wear field (Output/Wear field; Archard's volume by default)
+      const std::string field = io::summary_string(dir + "/summary.json", "wear_field").value_or("archard_volume");
+      add_wear(m, dir, wall, field);
+      const double steady_from = add_forces(m, dir, wall, phases);
+      add_layer(m, dir, wall, phases, steady_from);
+      add_profile(m, dir, wall, field, edge_height);
       return m;
     }
 

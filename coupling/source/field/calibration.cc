@@ -433,92 +433,135 @@ namespace abrade::field
     return {s, sum_of_squares(run, ms, s)};
   }
 
+  namespace
+  {
+    /// The scale of @p run's tonnes that fits @p ms best: a log-spaced scan over six decades,
+    /// then golden sections around the best; refused at the scan's ends.
+    double best_scale(const RunSeries &run, const std::vector<Measurement> &ms)
+    {
+      double best = 1, best_sse = sum_of_squares(run, ms, 1);
+      for (int k = -300; k <= 300; ++k)
+        {
+          const double s = std::pow(10.0, k / 100.0), e = sum_of_squares(run, ms, s);
+          if (e < best_sse)
+            best = s, best_sse = e;
+        }
+      if (best <= 1.0001e-3 || best >= 0.9999e3 || !std::isfinite(best_sse))
+        throw InputError(run.directory, "the best fit lies at the end of the range searched (the run's wear scaled by "
+                                        "1e-3 .. 1e3): the run and the measurements differ by more than a factor of "
+                                        "1000 (depths in mm given as m, tonnes in kg, or no wear measured?)");
+      return least_squares_scale(run, ms, best * std::pow(10.0, -0.01), best * std::pow(10.0, 0.01)).first;
+    }
+
+    /// The fit's sensitivities at scale @p s, J_i = d depth / d s = T_i D'(s T_i), summed per
+    /// spatial block of side @p block (sums of J_i e_i and of J_i^2) for the cluster-robust
+    /// variance, and the depths the fit predicts.
+    struct BlockScores
+    {
+      double                                                   jj = 0; ///< sum of J_i^2
+      std::map<std::array<long, 3>, std::pair<double, double>> score;
+      std::vector<double>                                      predicted;
+    };
+    BlockScores block_scores(const RunSeries &run, const std::vector<Measurement> &ms, double s, double block,
+                             bool &extrapolated)
+    {
+      BlockScores b;
+      b.predicted.resize(ms.size());
+      for (std::size_t i = 0; i < ms.size(); ++i)
+        {
+          const double h = 1e-4 * s;
+          const double j = (run.at(i, (s + h) * ms[i].tonnes) - run.at(i, (s - h) * ms[i].tonnes)) / (2 * h);
+          b.jj += j * j;
+          b.predicted[i] = run.at(i, s * ms[i].tonnes, &extrapolated);
+          std::array<long, 3> key;
+          for (int k = 0; k < 3; ++k)
+            key[k] = long(std::floor(ms[i].point[k] / block));
+          b.score[key].first += j * (b.predicted[i] - ms[i].depth);
+          b.score[key].second += j * j;
+        }
+      return b;
+    }
+
+    /// The fit's standard error from the blocks that carry information on s (J = 0 where nothing
+    /// wears: such blocks would only add degrees of freedom), in the jackknife form of the
+    /// cluster-robust variance (CR3): var = (G-1)/G sum_g (S_g / (sum J^2 - Q_g))^2, S_g =
+    /// sum_g J e, Q_g = sum_g J^2; into @p r with the blocks and the effective blocks.
+    void cluster_robust_error(const BlockScores &b, CalibrationResult &r)
+    {
+      double G = 0, sum = 0;
+      for (const auto &[key, sq] : b.score)
+        if (sq.second > 1e-12 * b.jj)
+          ++G;
+      for (const auto &[key, sq] : b.score)
+        if (sq.second > 1e-12 * b.jj && b.jj - sq.second > 0)
+          sum += (sq.first / (b.jj - sq.second)) * (sq.first / (b.jj - sq.second));
+      r.blocks = long(G);
+      // the fit's degrees of freedom: the blocks its information is spread over (Kish's effective
+      // number from each block's share of sum J^2: Satterthwaite's for the sum of the blocks'
+      // squared scores, each in proportion to its share). A worn profile narrower than the
+      // measurements puts most of it in a few blocks, and then the cluster-robust variance is
+      // about as uncertain as a variance from those few (test_footprint_coverage: W given the
+      // footprint covered 89-91 % with G - 1 = 13 degrees of freedom where 3.9 blocks carry the
+      // information)
+      double q2 = 0;
+      for (const auto &[key, sq] : b.score)
+        if (sq.second > 1e-12 * b.jj)
+          q2 += sq.second * sq.second;
+      r.effective_blocks = q2 > 0 ? std::min(G, b.jj * b.jj / q2) : 0.0;
+      r.se_fit = G > 1 && b.jj > 0 ? std::sqrt((G - 1) / G * sum) : std::numeric_limits<double>::infinity();
+    }
+
+    /// The scale's 95 % interval in @p r: the fit's error and the replicates' (the run's beds)
+    /// combined, at Welch-Satterthwaite's degrees of freedom.
+    void scale_interval(const RunSeries &run, CalibrationResult &r)
+    {
+      const double inf      = std::numeric_limits<double>::infinity();
+      const double dof_fit  = r.effective_blocks;
+      r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;
+      const double dof_rep  = double(run.seeds - 1);
+      const double se       = std::sqrt(r.se_fit * r.se_fit + r.se_replicates * r.se_replicates);
+      const double v_fit = r.se_fit * r.se_fit, v_rep = r.se_replicates * r.se_replicates;
+      r.dof = dof_fit < 1 ? 0.0
+                          : (v_fit + v_rep) * (v_fit + v_rep) / (v_fit * v_fit / dof_fit + (v_rep > 0 ? v_rep * v_rep / dof_rep : 0.0));
+      const double t = r.dof >= 1 ? boost::math::quantile(boost::math::students_t_distribution<double>(r.dof), 0.975) : inf;
+      r.scale_low    = std::max(0.0, r.scale - t * se);
+      r.scale_high   = r.scale + t * se;
+    }
+
+    /// Pearson's correlation between the measured depths and @p predicted.
+    double correlation(const std::vector<Measurement> &ms, const std::vector<double> &predicted)
+    {
+      double mean_m = 0, mean_p = 0;
+      for (std::size_t i = 0; i < ms.size(); ++i)
+        mean_m += ms[i].depth / ms.size(), mean_p += predicted[i] / ms.size();
+      double smm = 0, spp = 0, smp = 0;
+      for (std::size_t i = 0; i < ms.size(); ++i)
+        {
+          smm += (ms[i].depth - mean_m) * (ms[i].depth - mean_m);
+          spp += (predicted[i] - mean_p) * (predicted[i] - mean_p);
+          smp += (ms[i].depth - mean_m) * (predicted[i] - mean_p);
+        }
+      return smm > 0 && spp > 0 ? smp / std::sqrt(smm * spp) : 0.0;
+    }
+  } // namespace
+
   CalibrationResult calibrate(const RunSeries &run, const std::vector<Measurement> &ms, double block)
   {
     CalibrationResult r;
-    r.directory = run.directory;
-    auto sse    = [&](double s) { return sum_of_squares(run, ms, s); };
-    // a log-spaced scan over six decades, then golden sections around the best
-    double best = 1, best_sse = sse(1);
-    for (int k = -300; k <= 300; ++k)
-      {
-        const double s = std::pow(10.0, k / 100.0), e = sse(s);
-        if (e < best_sse)
-          best = s, best_sse = e;
-      }
-    if (best <= 1.0001e-3 || best >= 0.9999e3 || !std::isfinite(best_sse))
-      throw InputError(run.directory, "the best fit lies at the end of the range searched (the run's wear scaled by "
-                                      "1e-3 .. 1e3): the run and the measurements differ by more than a factor of "
-                                      "1000 (depths in mm given as m, tonnes in kg, or no wear measured?)");
-    r.scale = least_squares_scale(run, ms, best * std::pow(10.0, -0.01), best * std::pow(10.0, 0.01)).first;
-    // the interval (calibration.h): J_i = d depth / d s = T_i D'(s T_i), residuals e_i, summed
-    // per spatial block for the cluster-robust variance of the fit
-    double                                     jj = 0, mean_m = 0, mean_p = 0;
-    std::vector<double>                        predicted(ms.size());
-    std::map<std::array<long, 3>, std::pair<double, double>> score; // per block: sums of J_i e_i and J_i^2
-    for (std::size_t i = 0; i < ms.size(); ++i)
-      {
-        const double h = 1e-4 * r.scale;
-        const double j = (run.at(i, (r.scale + h) * ms[i].tonnes) - run.at(i, (r.scale - h) * ms[i].tonnes)) / (2 * h);
-        jj += j * j;
-        predicted[i] = run.at(i, r.scale * ms[i].tonnes, &r.extrapolated);
-        mean_m += ms[i].depth / ms.size(), mean_p += predicted[i] / ms.size();
-        std::array<long, 3> key;
-        for (int k = 0; k < 3; ++k)
-          key[k] = long(std::floor(ms[i].point[k] / block));
-        score[key].first += j * (predicted[i] - ms[i].depth);
-        score[key].second += j * j;
-      }
-    const double sum_sq = sse(r.scale);
-    r.rms_residual      = std::sqrt(sum_sq / ms.size());
-    // the blocks that carry information on s (J = 0 where nothing wears: such blocks would only
-    // add degrees of freedom); the jackknife form of the cluster-robust variance (CR3):
-    // var = (G-1)/G sum_g (S_g / (sum J^2 - Q_g))^2, S_g = sum_g J e, Q_g = sum_g J^2
-    double G = 0, sum = 0;
-    for (const auto &[key, sq] : score)
-      if (sq.second > 1e-12 * jj)
-        ++G;
-    for (const auto &[key, sq] : score)
-      if (sq.second > 1e-12 * jj && jj - sq.second > 0)
-        sum += (sq.first / (jj - sq.second)) * (sq.first / (jj - sq.second));
-    r.blocks              = long(G);
-    // the fit's degrees of freedom: the blocks its information is spread over (Kish's effective
-    // number from each block's share of sum J^2: Satterthwaite's for the sum of the blocks'
-    // squared scores, each in proportion to its share). A worn profile narrower than the
-    // measurements puts most of it in a few blocks, and then the cluster-robust variance is about
-    // as uncertain as a variance from those few (test_footprint_coverage: W given the footprint
-    // covered 89-91 % with G - 1 = 13 degrees of freedom where 3.9 blocks carry the information)
-    double q2 = 0;
-    for (const auto &[key, sq] : score)
-      if (sq.second > 1e-12 * jj)
-        q2 += sq.second * sq.second;
-    r.effective_blocks = q2 > 0 ? std::min(G, jj * jj / q2) : 0.0;
-    const double inf      = std::numeric_limits<double>::infinity();
-    r.se_fit              = G > 1 && jj > 0 ? std::sqrt((G - 1) / G * sum) : inf;
-    const double dof_fit  = r.effective_blocks;
+    r.directory          = run.directory;
+    r.scale              = best_scale(run, ms);
+    const BlockScores b  = block_scores(run, ms, r.scale, block, r.extrapolated);
+    const double sum_sq  = sum_of_squares(run, ms, r.scale);
+    r.rms_residual       = std::sqrt(sum_sq / ms.size());
+    cluster_robust_error(b, r);
     if (sum_sq > 0 && ms.size() > 1 && std::isfinite(r.se_fit))
-      r.design_effect = r.se_fit * r.se_fit * jj * double(ms.size() - 1) / sum_sq;
-    r.smoothing_radius    = run.smoothing_radius;
-    r.particle_radius     = run.particle_radius;
+      r.design_effect = r.se_fit * r.se_fit * b.jj * double(ms.size() - 1) / sum_sq;
+    r.smoothing_radius       = run.smoothing_radius;
+    r.particle_radius        = run.particle_radius;
     r.coarse_graining_factor = run.coarse_graining_factor;
-    r.wear_field          = run.wear_field;
-    r.se_replicates       = run.seeds > 1 ? r.scale * run.replicate_relative_sd / std::sqrt(double(run.seeds)) : 0.0;
-    const double dof_rep  = double(run.seeds - 1);
-    const double se       = std::sqrt(r.se_fit * r.se_fit + r.se_replicates * r.se_replicates);
-    const double v_fit = r.se_fit * r.se_fit, v_rep = r.se_replicates * r.se_replicates;
-    r.dof = dof_fit < 1 ? 0.0
-                        : (v_fit + v_rep) * (v_fit + v_rep) / (v_fit * v_fit / dof_fit + (v_rep > 0 ? v_rep * v_rep / dof_rep : 0.0));
-    const double t = r.dof >= 1 ? boost::math::quantile(boost::math::students_t_distribution<double>(r.dof), 0.975) : inf;
-    r.scale_low    = std::max(0.0, r.scale - t * se);
-    r.scale_high   = r.scale + t * se;
-    double smm = 0, spp = 0, smp = 0;
-    for (std::size_t i = 0; i < ms.size(); ++i)
-      {
-        smm += (ms[i].depth - mean_m) * (ms[i].depth - mean_m);
-        spp += (predicted[i] - mean_p) * (predicted[i] - mean_p);
-        smp += (ms[i].depth - mean_m) * (predicted[i] - mean_p);
-      }
-    r.correlation = smm > 0 && spp > 0 ? smp / std::sqrt(smm * spp) : 0.0;
+    r.wear_field             = run.wear_field;
+    scale_interval(run, r);
+    r.correlation = correlation(ms, b.predicted);
     if (run.archard_coefficient > 0)
       {
         r.archard_coefficient = r.scale * run.archard_coefficient;
