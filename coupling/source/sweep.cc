@@ -517,8 +517,27 @@ namespace abrade::coupling
         return md.str();
       }
 
-      /// study.csv and study.md
+      /// study.csv and study.md: a row per combination of the varied values.
       void write_tables()
+      {
+        std::ofstream            csv(out.file("study.csv"));
+        std::ofstream            md(out.file("study.md"));
+        const std::vector<std::string> header = csv_header();
+        for (std::size_t k = 0; k < header.size(); ++k)
+          csv << (k ? "," : "") << header[k];
+        csv << "\n";
+        csv.precision(10);
+        write_md_head(md);
+        stats.assign(combos.size(), {});
+        for (std::size_t c = 0; c < combos.size(); ++c)
+          write_row(c, csv, md);
+        md << table_notes();
+        md.close();
+        if (!csv)
+          throw RunError("sweep: could not write " + out.file("study.csv"));
+      }
+
+      std::vector<std::string> csv_header() const
       {
         std::vector<std::string> header;
         for (const auto &v : o.varies)
@@ -531,12 +550,11 @@ namespace abrade::coupling
           for (const char *h : {"life", "life_low", "life_high", "life_ratio", "life_ratio_low", "life_ratio_high",
                                 "life_ratio_significant"})
             header.push_back(h);
-        std::ofstream csv(out.file("study.csv"));
-        std::ofstream md(out.file("study.md"));
-        for (std::size_t k = 0; k < header.size(); ++k)
-          csv << (k ? "," : "") << header[k];
-        csv << "\n";
-        csv.precision(10);
+        return header;
+      }
+
+      void write_md_head(std::ostream &md) const
+      {
         md << "Sweep of " << keys << " (" << o.parameter_file << "), wall `" << o.wall
            << "`, mean +- standard deviation over seeds";
         for (int s : o.seeds)
@@ -551,61 +569,67 @@ namespace abrade::coupling
         for (std::size_t k = 0; k < o.varies.size() + metrics.size() + 1 + 2 * (o.lifetime_updates > 0); ++k)
           md << "---|";
         md << "\n";
-        stats.assign(combos.size(), {});
-        for (std::size_t c = 0; c < combos.size(); ++c)
+      }
+
+      /// A paired ratio in the table: with its interval and * where significant (one seed: said
+      /// so).
+      static std::string ratio_text(const PairedChange &q)
+      {
+        char buf[96];
+        if (q.interval)
+          std::snprintf(buf, sizeof buf, " %.4g [%.4g, %.4g]%s |", q.ratio, q.low, q.high, q.significant ? " *" : "");
+        else
+          std::snprintf(buf, sizeof buf, " %.4g (no interval: one seed) |", q.ratio);
+        return buf;
+      }
+
+      /// A paired ratio's CSV cells: ratio, low, high, significant (one seed: the interval's cells
+      /// empty).
+      static std::string ratio_cells(const PairedChange &q)
+      {
+        std::ostringstream o;
+        o.precision(10);
+        o << "," << q.ratio;
+        if (q.interval)
+          o << "," << q.low << "," << q.high;
+        else
+          o << ",,";
+        o << "," << (q.significant ? 1 : 0);
+        return o.str();
+      }
+
+      /// Combination @p c's row: its values, each metric's mean and spread (kept in stats), its
+      /// wear against the first's and its life.
+      void write_row(std::size_t c, std::ostream &csv, std::ostream &md)
+      {
+        md << "|";
+        for (std::size_t i = 0; i < combos[c].size(); ++i)
+          md << " " << combos[c][i] << " |", csv << (i ? "," : "") << combos[c][i];
+        for (const auto &m : metrics)
           {
-            md << "|";
-            for (std::size_t i = 0; i < combos[c].size(); ++i)
-              md << " " << combos[c][i] << " |", csv << (i ? "," : "") << combos[c][i];
-            for (const auto &m : metrics)
-              {
-                std::vector<double> xs;
-                for (const auto &r : by_combo[c])
-                  xs.push_back(r.value.at(m));
-                stats[c][m] = mean_std(xs);
-                char buf[64];
-                std::snprintf(buf, sizeof buf, "%.4g +- %.2g", stats[c][m].first, stats[c][m].second);
-                md << " " << buf << " |";
-                csv << "," << stats[c][m].first << "," << stats[c][m].second;
-              }
-            const PairedChange &p = against_first[c];
-            // (a ratio without an interval, one seed: said so, its interval's cells left empty)
-            char buf[96];
-            auto ratio_text = [&](const PairedChange &q) {
-              if (q.interval)
-                std::snprintf(buf, sizeof buf, " %.4g [%.4g, %.4g]%s |", q.ratio, q.low, q.high, q.significant ? " *" : "");
-              else
-                std::snprintf(buf, sizeof buf, " %.4g (no interval: one seed) |", q.ratio);
-              return std::string(buf);
-            };
-            auto ratio_cells = [&](const PairedChange &q) {
-              std::ostringstream o;
-              o.precision(10);
-              o << "," << q.ratio;
-              if (q.interval)
-                o << "," << q.low << "," << q.high;
-              else
-                o << ",,";
-              o << "," << (q.significant ? 1 : 0);
-              return o.str();
-            };
-            md << (c ? ratio_text(p) : std::string(" 1 (first) |"));
-            csv << ratio_cells(p);
-            if (o.lifetime_updates > 0)
-              {
-                const StudyLife    &l = lives[c];
-                const PairedChange &q = life_against_first[c];
-                csv << "," << l.tonnes << "," << l.low << "," << l.high << ratio_cells(q);
-                std::snprintf(buf, sizeof buf, " %.3g (%.3g ... %.3g) |", l.tonnes, l.low, l.high);
-                md << (l.tonnes > 0 ? std::string(buf) : std::string(" - |"));
-                md << (c ? ratio_text(q) : std::string(" 1 (first) |"));
-              }
-            md << "\n", csv << "\n";
+            std::vector<double> xs;
+            for (const auto &r : by_combo[c])
+              xs.push_back(r.value.at(m));
+            stats[c][m] = mean_std(xs);
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "%.4g +- %.2g", stats[c][m].first, stats[c][m].second);
+            md << " " << buf << " |";
+            csv << "," << stats[c][m].first << "," << stats[c][m].second;
           }
-        md << table_notes();
-        md.close();
-        if (!csv)
-          throw RunError("sweep: could not write " + out.file("study.csv"));
+        const PairedChange &p = against_first[c];
+        md << (c ? ratio_text(p) : std::string(" 1 (first) |"));
+        csv << ratio_cells(p);
+        if (o.lifetime_updates > 0)
+          {
+            const StudyLife    &l = lives[c];
+            const PairedChange &q = life_against_first[c];
+            csv << "," << l.tonnes << "," << l.low << "," << l.high << ratio_cells(q);
+            char buf[96];
+            std::snprintf(buf, sizeof buf, " %.3g (%.3g ... %.3g) |", l.tonnes, l.low, l.high);
+            md << (l.tonnes > 0 ? std::string(buf) : std::string(" - |"));
+            md << (c ? ratio_text(q) : std::string(" 1 (first) |"));
+          }
+        md << "\n", csv << "\n";
       }
 
       void write_plots()
