@@ -253,6 +253,91 @@ namespace abrade::fem
       std::string output, notes, error, log;
     };
 
+    /// The mesher's command line for @p job: the program, its input and output, and the
+    /// settings in the order abrade-mesher reads them.
+    std::vector<std::string> mesher_arguments(const std::string &mesher, const MeshingJob &job)
+    {
+      const auto &s = job.settings;
+      return {mesher,
+              job.input,
+              job.output,
+              number(job.mesh_size),
+              job.again ? "1" : "0",
+              job.keep_triangles ? "1" : "0",
+              number(s.scale),
+              number(s.max_extent),
+              number(s.min_extent),
+              number(s.max_volume),
+              number(s.max_cells),
+              s.solid.empty() ? "-" : s.solid,
+              job.kind,
+              number(s.classify_angle)};
+    }
+
+    /// The same environment for every job (ChildDirectory): the C locale, temporary files in
+    /// its directory, the library path (a deal.II or Gmsh of one's own; empty if none). The
+    /// child is no MPI rank: without the launcher's variables an MPI library it loads does not
+    /// try to join the parent's job.
+    std::vector<std::string> mesher_environment()
+    {
+      const char *libraries = std::getenv("LD_LIBRARY_PATH"); // (set or not: as many variables)
+      return {"LC_ALL=C", "TMPDIR=.", std::string("LD_LIBRARY_PATH=") + (libraries ? libraries : "")};
+    }
+
+    /// @p strings as execve takes them: pointers into them, ended by a null pointer.
+    std::vector<char *> c_strings(std::vector<std::string> &strings)
+    {
+      std::vector<char *> pointers;
+      for (auto &a : strings)
+        pointers.push_back(a.data());
+      pointers.push_back(nullptr);
+      return pointers;
+    }
+
+    /// In the forked child, only async-signal-safe calls: it dies with the run, leads a process
+    /// group of its own, writes to @p log, works in @p directory with nothing of the run's open,
+    /// at fixed addresses where allowed, and becomes the mesher (@p installed where the copy
+    /// beside the output cannot be started).
+    [[noreturn]] void become_mesher(pid_t parent, int log, const std::string &directory, char *const argv[],
+                                    char *const envp[], const std::string &installed)
+    {
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the run, whatever ends it
+      if (::getppid() != parent)
+        ::_exit(127);
+      ::setpgid(0, 0); // a group of its own, which a time-out ends whole
+      for (const int signal : {SIGINT, SIGTERM, SIGHUP}) // not the run's handlers (summary.json)
+        ::signal(signal, SIG_DFL);
+      ::dup2(log, 1);
+      ::dup2(log, 2);
+      auto say = [](const char *text) { [[maybe_unused]] const auto written = ::write(2, text, std::strlen(text)); };
+      if (!directory.empty() && ::chdir(directory.c_str()) != 0)
+        {
+          say("abrade-mesher: cannot enter its directory\n");
+          ::_exit(127);
+        }
+      const int null = ::open("/dev/null", O_RDONLY);
+      if (null >= 0)
+        ::dup2(null, 0);
+      for (int fd = 3; fd < 1024; ++fd) // nothing of the run's (its output pipes) stays open
+        ::close(fd);
+      // the same mesh from the same surface, run after run: Gmsh's HXT mesher orders by memory
+      // addresses (one thread, one STL: another mesh in every run, the same one with the
+      // addresses fixed), so the child's are not randomised. Where that is refused (a
+      // container's seccomp profile: Docker's allows only a few personas) it meshes with
+      // randomised addresses and says so in its log
+      const int persona = ::personality(0xffffffff);
+      if (persona == -1 || ::personality(static_cast<unsigned long>(persona) | ADDR_NO_RANDOMIZE) == -1)
+        say("abrade-mesher: fixed addresses refused (personality): the mesh may differ from run to run\n");
+      ::execve(argv[0], argv, envp);
+      // (a directory that may not hold programs, mounted noexec: the mesher where it is
+      // installed, whose path then reaches its memory)
+      say("abrade-mesher: its copy beside the output cannot be started (a file system mounted noexec?): "
+          "started where it is installed, and its meshes may differ from those of another output directory\n");
+      ::execve(installed.c_str(), argv, envp);
+      say("abrade-mesher: cannot be started\n");
+      ::_exit(127);
+    }
+
     /// @p mesher started on @p job (as the child sees it: ChildDirectory::job_of) in
     /// @p directory, in a process group of its own, its output into @p log_file (@p installed:
     /// the mesher where it is installed, started where @p mesher cannot be); its process id.
@@ -260,35 +345,8 @@ namespace abrade::fem
                        const std::string &log_file, const std::string &installed)
     {
       // everything the child needs, made before fork (after it only async-signal-safe calls)
-      const auto &s = job.settings;
-      std::vector<std::string> args = {mesher,
-                                       job.input,
-                                       job.output,
-                                       number(job.mesh_size),
-                                       job.again ? "1" : "0",
-                                       job.keep_triangles ? "1" : "0",
-                                       number(s.scale),
-                                       number(s.max_extent),
-                                       number(s.min_extent),
-                                       number(s.max_volume),
-                                       number(s.max_cells),
-                                       s.solid.empty() ? "-" : s.solid,
-                                       job.kind,
-                                       number(s.classify_angle)};
-      std::vector<char *> argv;
-      for (auto &a : args)
-        argv.push_back(a.data());
-      argv.push_back(nullptr);
-      // the same environment for every job (ChildDirectory): the C locale, temporary files in
-      // its directory, the library path (a deal.II or Gmsh of one's own; empty if none). The
-      // child is no MPI rank: without the launcher's variables an MPI library it loads does not
-      // try to join the parent's job
-      const char              *libraries = std::getenv("LD_LIBRARY_PATH"); // (set or not: as many variables)
-      std::vector<std::string> env = {"LC_ALL=C", "TMPDIR=.", std::string("LD_LIBRARY_PATH=") + (libraries ? libraries : "")};
-      std::vector<char *> envp;
-      for (auto &v : env)
-        envp.push_back(v.data());
-      envp.push_back(nullptr);
+      std::vector<std::string> args = mesher_arguments(mesher, job), env = mesher_environment();
+      const std::vector<char *> argv = c_strings(args), envp = c_strings(env);
       const int log = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
       if (log < 0)
         throw RunError("cannot write " + log_file);
@@ -304,47 +362,7 @@ namespace abrade::fem
           throw RunError(std::string("cannot start the mesher: ") + std::strerror(errno));
         }
       if (pid == 0)
-        {
-          ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the run, whatever ends it
-          if (::getppid() != parent)
-            ::_exit(127);
-          ::setpgid(0, 0); // a group of its own, which a time-out ends whole
-          for (const int signal : {SIGINT, SIGTERM, SIGHUP}) // not the run's handlers (summary.json)
-            ::signal(signal, SIG_DFL);
-          ::dup2(log, 1);
-          ::dup2(log, 2);
-          auto say = [](const char *text) { [[maybe_unused]] const auto written = ::write(2, text, std::strlen(text)); };
-          if (!directory.empty() && ::chdir(directory.c_str()) != 0)
-            {
-              say("abrade-mesher: cannot enter its directory\n");
-              ::_exit(127);
-            }
-          const int null = ::open("/dev/null", O_RDONLY);
-          if (null >= 0)
-            ::dup2(null, 0);
-          for (int fd = 3; fd < 1024; ++fd) // nothing of the run's (its output pipes) stays open
-            ::close(fd);
-          // the same mesh from the same surface, run after run: Gmsh's HXT mesher orders by
-          // memory addresses (one thread, one STL: another mesh in every run, the same one with
-          // the addresses fixed), so the child's are not randomised. Where that is refused (a
-          // container's seccomp profile: Docker's allows only a few personas) it meshes with
-          // randomised addresses and says so in its log
-          const int persona = ::personality(0xffffffff);
-          if (persona == -1 || ::personality(static_cast<unsigned long>(persona) | ADDR_NO_RANDOMIZE) == -1)
-            {
-              const char refused[] = "abrade-mesher: fixed addresses refused (personality): the mesh may differ "
-                                     "from run to run\n";
-              [[maybe_unused]] const auto written = ::write(2, refused, sizeof refused - 1);
-            }
-          ::execve(argv[0], argv.data(), envp.data());
-          // (a directory that may not hold programs, mounted noexec: the mesher where it is
-          // installed, whose path then reaches its memory)
-          say("abrade-mesher: its copy beside the output cannot be started (a file system mounted noexec?): "
-              "started where it is installed, and its meshes may differ from those of another output directory\n");
-          ::execve(installed.c_str(), argv.data(), envp.data());
-          say("abrade-mesher: cannot be started\n");
-          ::_exit(127);
-        }
+        become_mesher(parent, log, directory, argv.data(), envp.data(), installed);
       ::close(log);
       ::setpgid(pid, pid); // (also here: no race with the child's own call)
       return pid;
