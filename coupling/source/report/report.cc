@@ -690,6 +690,78 @@ namespace abrade::report
     /// two sides with its faces coloured by what the selectors made of them (wears, clamped,
     /// held) and the file's face numbers at their centres; the face table and what each
     /// selector took (summary.json `knife`).
+    /// The part's volume, mass and cells (and a file's wearing and clamped areas).
+    std::string part_headline(const Tree &k, bool from_file)
+    {
+      char         value[40];
+      const double volume = k.get<double>("volume", 0);
+      std::snprintf(value, sizeof value, "%.17g", volume);
+      return "The part: <span id=\"headline-volume\" data-value=\"" + std::string(value) + "\"><b>" +
+             number(1e6 * volume, 4) + " cm^3</b></span>, " + number(k.get<double>("mass", 0), 4) + " kg, " +
+             std::to_string(k.get<long>("cells", 0)) + " cells" +
+             (from_file ? "; wearing " + number(k.get<double>("wearable_area", 0), 4) + " m^2, clamped or held " +
+                            number(k.get<double>("clamped_area", 0), 4) + " m^2"
+                        : std::string());
+    }
+
+    /// A part file's faces: a table row each (with the selectors that took a part of it), and
+    /// the numbers of the larger ones (0.2 % of the area or more, at most 60) at their centres in
+    /// @p o (small faces would hide the part).
+    std::vector<std::vector<std::string>> file_face_rows(const Tree &k, RenderOptions &o)
+    {
+      std::vector<std::vector<std::string>>                rows;
+      std::vector<std::pair<double, RenderOptions::Label>> labels;
+      double                                               total = 0;
+      for (const auto &[key, f] : *k.get_child_optional("file_faces"))
+        total += f.get<double>("area", 0);
+      for (const auto &[key, f] : *k.get_child_optional("file_faces"))
+        {
+          const auto c = numbers_at<3>(f, "centre"), n = numbers_at<3>(f, "normal");
+          const std::string id = text_at(f, "id"), name = text_at(f, "name");
+          const double      area = f.get<double>("area", 0);
+          if (area >= 0.002 * total)
+            labels.push_back({area, {c, id, n}});
+          std::string taken;
+          if (const auto sel = k.get_child_optional("selectors"))
+            for (const auto &[j, t] : *sel)
+              for (const auto &[m, x] : t.get_child("faces"))
+                if (x.get_value<std::string>() == id)
+                  taken += (taken.empty() ? "" : "; ") + text_at(t, "list") + " '" + text_at(t, "selector") + "'";
+          rows.push_back({id, name, text_at(f, "role"), number(area, 4), number(f.get<double>("wearing_area", 0), 4),
+                          number(f.get<double>("clamped_area", 0), 4), number(f.get<double>("held_area", 0), 4),
+                          mm(c[0]) + ", " + mm(c[1]) + ", " + mm(c[2]),
+                          number(n[0], 3) + ", " + number(n[1], 3) + ", " + number(n[2], 3), taken});
+        }
+      std::sort(labels.begin(), labels.end(), [](const auto &a, const auto &b) { return a.first > b.first; });
+      for (std::size_t i = 0; i < labels.size() && i < 60; ++i)
+        o.labels.push_back(labels[i].second);
+      return rows;
+    }
+
+    /// The sections of a part file: its faces (@p rows) and the selectors that chose them.
+    void file_face_sections(HtmlPage &page, const Tree &k, const std::vector<std::vector<std::string>> &rows)
+    {
+      page.heading("Faces");
+      page.paragraph("The file's faces as Gmsh numbers them (Knife/Clamped faces and Wearable faces select them by "
+                     "'group NUMBER', a box of centres or a normal); a face a box or normal selector took in part is "
+                     "'mixed'. Areas in m^2, centres in mm, in the part's own frame (as the face selectors see it).");
+      page.table({"id", "name", "role", "area", "wearing", "clamped", "held", "centre [mm]", "normal", "taken by"}, rows);
+      std::vector<std::vector<std::string>> taken;
+      if (const auto sel = k.get_child_optional("selectors"))
+        for (const auto &[j, t] : *sel)
+          {
+            std::string faces;
+            for (const auto &[m, x] : t.get_child("faces"))
+              faces += (faces.empty() ? "" : ", ") + x.get_value<std::string>();
+            taken.push_back({text_at(t, "list"), text_at(t, "selector"), number(t.get<double>("area", 0), 4), faces});
+          }
+      if (!taken.empty())
+        {
+          page.heading("Selectors");
+          page.table({"list", "selector", "area [m^2]", "faces"}, taken);
+        }
+    }
+
     std::string knife_page(const std::string &dir, const Tree &summary)
     {
       const auto k = summary.get_child_optional("results.knife");
@@ -697,49 +769,11 @@ namespace abrade::report
         throw InputError(dir + "/summary.json", "no results.knife in it (a knife job that did not finish?)");
       const bool from_file = k->get_child_optional("file_faces").has_value();
       HtmlPage   page(from_file ? "Part preview" : "Knife preview");
-      char       value[40];
-      const double volume = k->get<double>("volume", 0);
-      std::snprintf(value, sizeof value, "%.17g", volume);
-      page.headline("The part: <span id=\"headline-volume\" data-value=\"" + std::string(value) + "\"><b>" +
-                    number(1e6 * volume, 4) + " cm^3</b></span>, " + number(k->get<double>("mass", 0), 4) + " kg, " +
-                    std::to_string(k->get<long>("cells", 0)) + " cells" +
-                    (from_file ? "; wearing " + number(k->get<double>("wearable_area", 0), 4) + " m^2, clamped or held " +
-                                   number(k->get<double>("clamped_area", 0), 4) + " m^2"
-                               : std::string()));
-      // the faces' numbers at their centres: the larger ones (small faces would hide the part)
+      page.headline(part_headline(*k, from_file));
       RenderOptions o;
       o.label      = "role";
       o.categories = {{"wears", "#e66101"}, {"clamped", "#5e3c99"}, {"held", "#b2abd2"}};
-      std::vector<std::vector<std::string>> rows;
-      if (from_file)
-        {
-          std::vector<std::pair<double, RenderOptions::Label>> labels;
-          double                                               total = 0;
-          for (const auto &[key, f] : *k->get_child_optional("file_faces"))
-            total += f.get<double>("area", 0);
-          for (const auto &[key, f] : *k->get_child_optional("file_faces"))
-            {
-              const auto c = numbers_at<3>(f, "centre"), n = numbers_at<3>(f, "normal");
-              const std::string id = text_at(f, "id"), name = text_at(f, "name");
-              const double      area = f.get<double>("area", 0);
-              if (area >= 0.002 * total)
-                labels.push_back({area, {c, id, n}});
-              // the selectors that took a part of it
-              std::string taken;
-              if (const auto sel = k->get_child_optional("selectors"))
-                for (const auto &[j, t] : *sel)
-                  for (const auto &[m, x] : t.get_child("faces"))
-                    if (x.get_value<std::string>() == id)
-                      taken += (taken.empty() ? "" : "; ") + text_at(t, "list") + " '" + text_at(t, "selector") + "'";
-              rows.push_back({id, name, text_at(f, "role"), number(area, 4), number(f.get<double>("wearing_area", 0), 4),
-                              number(f.get<double>("clamped_area", 0), 4), number(f.get<double>("held_area", 0), 4),
-                              mm(c[0]) + ", " + mm(c[1]) + ", " + mm(c[2]),
-                              number(n[0], 3) + ", " + number(n[1], 3) + ", " + number(n[2], 3), taken});
-            }
-          std::sort(labels.begin(), labels.end(), [](const auto &a, const auto &b) { return a.first > b.first; });
-          for (std::size_t i = 0; i < labels.size() && i < 60; ++i)
-            o.labels.push_back(labels[i].second);
-        }
+      const std::vector<std::vector<std::string>> rows = from_file ? file_face_rows(*k, o) : std::vector<std::vector<std::string>>{};
       render_surfaces(dir + "/report", "faces.png", {{dir + "/knife/faces.vtp", "role", "the part as placed"}}, o);
       page.png(dir + "/report/faces.png",
                "The part in its own frame (the file's placed by Knife/Rotation and Offset; the case's walls place "
@@ -750,28 +784,7 @@ namespace abrade::report
       if (const auto scene = k->get_child_optional("case"))
         case_setup_section(page, dir, *scene, o.categories);
       if (from_file)
-        {
-          page.heading("Faces");
-          page.paragraph("The file's faces as Gmsh numbers them (Knife/Clamped faces and Wearable faces select them by "
-                         "'group NUMBER', a box of centres or a normal); a face a box or normal selector took in part is "
-                         "'mixed'. Areas in m^2, centres in mm, in the part's own frame (as the face selectors see it).");
-          page.table({"id", "name", "role", "area", "wearing", "clamped", "held", "centre [mm]", "normal", "taken by"},
-                     rows);
-          std::vector<std::vector<std::string>> taken;
-          if (const auto sel = k->get_child_optional("selectors"))
-            for (const auto &[j, t] : *sel)
-              {
-                std::string faces;
-                for (const auto &[m, x] : t.get_child("faces"))
-                  faces += (faces.empty() ? "" : ", ") + x.get_value<std::string>();
-                taken.push_back({text_at(t, "list"), text_at(t, "selector"), number(t.get<double>("area", 0), 4), faces});
-              }
-          if (!taken.empty())
-            {
-              page.heading("Selectors");
-              page.table({"list", "selector", "area [m^2]", "faces"}, taken);
-            }
-        }
+        file_face_sections(page, *k, rows);
       page.heading("Warnings");
       std::vector<std::string> warnings;
       collect_warnings(summary, warnings);
