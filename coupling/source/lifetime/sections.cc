@@ -135,45 +135,86 @@ namespace abrade::coupling::lifetime
     return w;
   }
 
-  bool section_plot(std::ostream &gp, const std::map<long, std::vector<Segment>> &blocks, const SectionWindow &window,
-                    const std::string &png, const std::string &title, const SectionMark &mark, const char *u_name,
-                    const char *v_name)
+  namespace
   {
-    // text inside gnuplot's single quotes: a quote doubled ("the part's")
-    auto quoted = [](const std::string &text) {
+    /// Text inside gnuplot's single quotes: a quote doubled ("the part's").
+    std::string quoted(const std::string &text)
+    {
       std::string q;
       for (const char c : text)
         q += c == '\'' ? std::string("''") : std::string(1, c);
       return q;
-    };
-    if (blocks.empty() || !(window.y1 > window.y0 && window.z1 > window.z0))
-      return false;
-    // the updates drawn: all up to six, else six spread over the run, the first and the last
-    std::vector<long> updates;
-    for (const auto &[u, segments] : blocks)
-      if (u > 0)
-        updates.push_back(u);
-    if (updates.size() > 6)
-      {
-        std::vector<long> some;
-        for (int k = 0; k < 6; ++k)
-          some.push_back(updates[std::size_t(std::lround(k * double(updates.size() - 1) / 5))]);
-        some.erase(std::unique(some.begin(), some.end()), some.end());
-        updates = some;
-      }
-    // a segment is drawn when its box meets the window (gnuplot clips the rest)
-    auto inside = [&](const Segment &s) {
-      return std::max(s.u0, s.u1) >= window.y0 && std::min(s.u0, s.u1) <= window.y1 &&
-             std::max(s.v0, s.v1) >= window.z0 && std::min(s.v0, s.v1) <= window.z1;
-    };
-    auto data = [&](const std::vector<Segment> &segments) {
+    }
+
+    /// The updates drawn: all up to six, else six spread over the run, the first and the last.
+    std::vector<long> updates_drawn(const std::map<long, std::vector<Segment>> &blocks)
+    {
+      std::vector<long> updates;
+      for (const auto &[u, segments] : blocks)
+        if (u > 0)
+          updates.push_back(u);
+      if (updates.size() > 6)
+        {
+          std::vector<long> some;
+          for (int k = 0; k < 6; ++k)
+            some.push_back(updates[std::size_t(std::lround(k * double(updates.size() - 1) / 5))]);
+          some.erase(std::unique(some.begin(), some.end()), some.end());
+          updates = some;
+        }
+      return updates;
+    }
+
+    /// gnuplot's inline vectors (mm) of the @p segments whose box meets @p window (gnuplot clips
+    /// the rest), ended by "e".
+    std::string segment_data(const std::vector<Segment> &segments, const SectionWindow &window)
+    {
       std::ostringstream d;
       d.precision(8);
       for (const auto &s : segments)
-        if (inside(s))
+        if (std::max(s.u0, s.u1) >= window.y0 && std::min(s.u0, s.u1) <= window.y1 &&
+            std::max(s.v0, s.v1) >= window.z0 && std::min(s.v0, s.v1) <= window.z1)
           d << 1000 * s.u0 << ' ' << 1000 * s.v0 << ' ' << 1000 * (s.u1 - s.u0) << ' ' << 1000 * (s.v1 - s.v0) << '\n';
       return d.str() + "e\n";
-    };
+    }
+
+    /// Where the life ended, on the plot: its label, and a height gauge's lines (the design's
+    /// lowest point and the worn outline's, @p design and @p last) or the distance to the design.
+    void mark_the_end(std::ostream &gp, const SectionMark &mark, const std::vector<Segment> *design,
+                      const std::vector<Segment> *last)
+    {
+      const double y = 1000 * mark.at[0], z = 1000 * mark.at[1];
+      gp << "set label 1 '" << quoted(mark.text) << "' at screen 0.5, screen 0.02 center front noenhanced textcolor rgb 'red'\n"
+         << "set bmargin 5\n";
+      if (mark.lowest_points && design && last)
+        {
+          auto lowest = [](const std::vector<Segment> &segments) {
+            double z = std::numeric_limits<double>::infinity();
+            for (const auto &s : segments)
+              z = std::min({z, s.v0, s.v1});
+            return 1000 * z;
+          };
+          const double zd = lowest(*design), zw = lowest(*last);
+          gp << "set arrow 1 from graph 0, first " << zd << " to graph 1, first " << zd
+             << " nohead dt 2 lw 1.5 lc rgb 'black'\nset arrow 2 from graph 0, first " << zw << " to graph 1, first "
+             << zw << " nohead dt 2 lw 1.5 lc rgb 'red'\nset arrow 3 from first " << y << ", first " << zd
+             << " to first " << y << ", first " << zw << " heads lw 2 lc rgb 'red'\n";
+        }
+      if (mark.to_design && design)
+        {
+          const Point2 q = distance_to(*design, mark.at).second;
+          gp << "set arrow 3 from first " << 1000 * q[0] << ", first " << 1000 * q[1] << " to first " << y
+             << ", first " << z << " head lw 2 lc rgb 'red'\n";
+        }
+    }
+  } // namespace
+
+  bool section_plot(std::ostream &gp, const std::map<long, std::vector<Segment>> &blocks, const SectionWindow &window,
+                    const std::string &png, const std::string &title, const SectionMark &mark, const char *u_name,
+                    const char *v_name)
+  {
+    if (blocks.empty() || !(window.y1 > window.y0 && window.z1 > window.z0))
+      return false;
+    const std::vector<long> updates = updates_drawn(blocks);
     gp << "set output '" << quoted(png) << "'\nset title '" << quoted(title) << "' noenhanced\nunset label\nunset arrow\n"
        << "set xlabel '" << u_name << " [mm]'\nset ylabel '" << v_name
        << " [mm]'\nset size ratio -1\nset key rmargin top vertical maxrows auto\n"
@@ -183,41 +224,19 @@ namespace abrade::coupling::lifetime
     const auto         design = blocks.find(0);
     if (design != blocks.end())
       curves << "'-' using 1:2:3:4 with vectors nohead lw 3 lc rgb 'black' title 'design'",
-        inline_data << data(design->second);
+        inline_data << segment_data(design->second, window);
     for (std::size_t k = 0; k < updates.size(); ++k)
       {
         curves << (curves.tellp() > 0 ? ", " : "") << "'-' using 1:2:3:4 with vectors nohead lw 1.5 lc "
                << k + 1 << " title 'update " << updates[k] << "'";
-        inline_data << data(blocks.at(updates[k]));
+        inline_data << segment_data(blocks.at(updates[k]), window);
       }
     if (mark.shown)
       {
-        const double y = 1000 * mark.at[0], z = 1000 * mark.at[1];
-        gp << "set label 1 '" << quoted(mark.text) << "' at screen 0.5, screen 0.02 center front noenhanced textcolor rgb 'red'\n"
-           << "set bmargin 5\n";
-        if (mark.lowest_points && design != blocks.end() && !updates.empty())
-          {
-            // a height gauge on the edge: the design's lowest point and the worn outline's
-            auto lowest = [](const std::vector<Segment> &segments) {
-              double z = std::numeric_limits<double>::infinity();
-              for (const auto &s : segments)
-                z = std::min({z, s.v0, s.v1});
-              return 1000 * z;
-            };
-            const double zd = lowest(design->second), zw = lowest(blocks.rbegin()->second);
-            gp << "set arrow 1 from graph 0, first " << zd << " to graph 1, first " << zd
-               << " nohead dt 2 lw 1.5 lc rgb 'black'\nset arrow 2 from graph 0, first " << zw << " to graph 1, first "
-               << zw << " nohead dt 2 lw 1.5 lc rgb 'red'\nset arrow 3 from first " << y << ", first " << zd
-               << " to first " << y << ", first " << zw << " heads lw 2 lc rgb 'red'\n";
-          }
-        if (mark.to_design && design != blocks.end())
-          {
-            const Point2 q = distance_to(design->second, mark.at).second;
-            gp << "set arrow 3 from first " << 1000 * q[0] << ", first " << 1000 * q[1] << " to first " << y
-               << ", first " << z << " head lw 2 lc rgb 'red'\n";
-          }
+        mark_the_end(gp, mark, design != blocks.end() ? &design->second : nullptr,
+                     updates.empty() ? nullptr : &blocks.rbegin()->second);
         curves << ", '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb 'red' title 'where the life ended'";
-        inline_data << y << ' ' << z << "\ne\n";
+        inline_data << 1000 * mark.at[0] << ' ' << 1000 * mark.at[1] << "\ne\n";
       }
     gp << "plot " << curves.str() << "\n" << inline_data.str() << "set bmargin\n";
     return true;
