@@ -6,6 +6,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -173,6 +174,78 @@ namespace abrade::coupling
     return notes;
   }
 
+  namespace
+  {
+    /// "Geometry" or "Motion/Type" when @p key of subsection @p path is a wall's choice of that
+    /// family, else "".
+    std::string wall_choice_family(const std::vector<std::string> &path, const std::string &key)
+    {
+      if (path.size() == 1 && path[0].rfind("Wall ", 0) == 0 && key == "Geometry")
+        return "Geometry";
+      if (path.size() == 2 && path[0].rfind("Wall ", 0) == 0 && path[1] == "Motion" && key == "Type")
+        return "Motion/Type";
+      return "";
+    }
+
+    using WallFamily = std::pair<std::string, std::string>; // ("Wall NAME", family)
+
+    /// Where each wall's final choice was made: the last line that made it ("file:line", @p where),
+    /// or a --set.
+    std::map<WallFamily, std::string> final_choices(const std::vector<LineEntry> &entries,
+                                                    const std::vector<Override> &overrides,
+                                                    const std::function<std::string(std::size_t)> &where)
+    {
+      std::map<WallFamily, std::string> final_choice;
+      for (std::size_t n = 0; n < entries.size(); ++n)
+        if (const auto family = wall_choice_family(entries[n].path, entries[n].key); !family.empty())
+          final_choice[{entries[n].path[0], family}] = where(n);
+      for (const auto &o : overrides)
+        if (const auto family = wall_choice_family(o.path, o.key); !family.empty())
+          final_choice[{o.path[0], family}] = "--set '" + o.text + "'";
+      return final_choice;
+    }
+
+    /// The blocks of the walls' subsections (from one 'subsection Wall NAME' to its 'end', each
+    /// keyed by its first line) and the choice each makes (its last), in effect for the whole
+    /// block: a file written in alphabetical order (parameters.prm) sets Box min before Geometry.
+    struct WallBlocks
+    {
+      std::vector<std::size_t>                                   block; ///< per line: its block
+      std::map<std::pair<std::size_t, std::string>, std::string> choice; ///< (block, family): value
+    };
+    WallBlocks wall_blocks(const std::vector<LineEntry> &entries)
+    {
+      WallBlocks b;
+      b.block.assign(entries.size(), 0);
+      for (std::size_t n = 0; n < entries.size(); ++n)
+        {
+          const auto &p = entries[n].path;
+          if (p.empty())
+            continue;
+          b.block[n] = n > 0 && !entries[n - 1].path.empty() && entries[n - 1].path[0] == p[0] ? b.block[n - 1] : n;
+          if (const auto family = wall_choice_family(p, entries[n].key); !family.empty())
+            b.choice[{b.block[n], family}] = entries[n].value;
+        }
+      return b;
+    }
+
+    /// A note per replaced choice: the entries left out, as entries of which geometry or motion,
+    /// and what replaced it where.
+    std::vector<std::string> left_out_notes(const std::map<std::vector<std::string>, std::vector<std::string>> &left_out)
+    {
+      std::vector<std::string> notes;
+      for (const auto &[choice, keys] : left_out)
+        {
+          std::string list;
+          for (const auto &k : keys)
+            list += (list.empty() ? "" : ", ") + k;
+          notes.push_back(choice[0] + ": left out, as entries of " + choice[1] + " = " + choice[2] + ", which " +
+                          choice[4] + " replaced by " + choice[3] + ": " + list);
+        }
+      return notes;
+    }
+  } // namespace
+
   std::vector<std::string> leave_out_replaced_entries(std::string &text, std::vector<std::pair<std::string, int>> origin,
                                                       const std::string &file, const DeclarationLists &lists,
                                                       const std::vector<Override> &overrides)
@@ -182,40 +255,11 @@ namespace abrade::coupling
     for (std::size_t n = origin.size(); n < lines.size(); ++n) // (no file: the embedded default case)
       origin.emplace_back(file, int(n + 1));
     const auto where = [&](std::size_t n) { return origin[n].first + ":" + std::to_string(origin[n].second); };
-    /// "Geometry" or "Motion/Type" of the wall of subsection path, when key is that choice
-    const auto choice_in = [](const std::vector<std::string> &path, const std::string &key) -> std::string {
-      if (path.size() == 1 && path[0].rfind("Wall ", 0) == 0 && key == "Geometry")
-        return "Geometry";
-      if (path.size() == 2 && path[0].rfind("Wall ", 0) == 0 && path[1] == "Motion" && key == "Type")
-        return "Motion/Type";
-      return "";
-    };
-    // where each wall's final choice was made (the last line that made it, or a --set)
-    std::map<std::pair<std::string, std::string>, std::string> final_choice;
-    for (std::size_t n = 0; n < lines.size(); ++n)
-      if (const auto family = choice_in(entries[n].path, entries[n].key); !family.empty())
-        final_choice[{entries[n].path[0], family}] = where(n);
-    for (const auto &o : overrides)
-      if (const auto family = choice_in(o.path, o.key); !family.empty())
-        final_choice[{o.path[0], family}] = "--set '" + o.text + "'";
-
-    // the choice each block of a wall's subsection makes (its last; the block: from one
-    // 'subsection Wall NAME' to its 'end', keyed by its first line), in effect for the whole
-    // block: a file written in alphabetical order (parameters.prm) sets Box min before Geometry
-    std::vector<std::size_t>                                   block(lines.size(), 0);
-    std::map<std::pair<std::size_t, std::string>, std::string> block_choice;
-    for (std::size_t n = 0; n < lines.size(); ++n)
-      {
-        const auto &p = entries[n].path;
-        if (p.empty())
-          continue;
-        block[n] = n > 0 && !entries[n - 1].path.empty() && entries[n - 1].path[0] == p[0] ? block[n - 1] : n;
-        if (const auto family = choice_in(p, entries[n].key); !family.empty())
-          block_choice[{block[n], family}] = entries[n].value;
-      }
+    std::map<WallFamily, std::string> final_choice = final_choices(entries, overrides, where);
+    const WallBlocks                  blocks       = wall_blocks(entries);
 
     // the choice in effect at each line, from the wall's default on
-    std::map<std::pair<std::string, std::string>, std::string> current;
+    std::map<WallFamily, std::string> current;
     const auto choice_at = [&](const std::string &wall, const std::string &family) -> std::string & {
       const auto it = current.find({wall, family});
       if (it != current.end())
@@ -230,7 +274,7 @@ namespace abrade::coupling
         const LineEntry &e = entries[n];
         if (e.key.empty() || e.path.empty())
           continue;
-        if (const auto family = choice_in(e.path, e.key); !family.empty())
+        if (const auto family = wall_choice_family(e.path, e.key); !family.empty())
           {
             choice_at(e.path[0], family) = e.value;
             continue;
@@ -239,8 +283,8 @@ namespace abrade::coupling
         if (!f)
           continue; // (the wall's own, or no plugin's)
         const std::string &family     = f->entry.family;
-        const auto         in_block   = block_choice.find({block[n], family});
-        const std::string  then       = in_block != block_choice.end() ? in_block->second : choice_at(e.path[0], family);
+        const auto         in_block   = blocks.choice.find({blocks.block[n], family});
+        const std::string  then       = in_block != blocks.choice.end() ? in_block->second : choice_at(e.path[0], family);
         const bool         is_default = f->at_default(e.value);
         if (!is_default && !f->entry.defaults.count(then))
           continue; // (another's entry, not replaced: the strict reading refuses it)
@@ -253,15 +297,6 @@ namespace abrade::coupling
     text.clear();
     for (const auto &l : lines)
       text += l + "\n";
-    std::vector<std::string> notes;
-    for (const auto &[choice, keys] : left_out)
-      {
-        std::string list;
-        for (const auto &k : keys)
-          list += (list.empty() ? "" : ", ") + k;
-        notes.push_back(choice[0] + ": left out, as entries of " + choice[1] + " = " + choice[2] + ", which " +
-                        choice[4] + " replaced by " + choice[3] + ": " + list);
-      }
-    return notes;
+    return left_out_notes(left_out);
   }
 } // namespace abrade::coupling
