@@ -139,92 +139,124 @@ namespace abrade::coupling
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// Particles/Generation (the handler in Particles): the fill box inside the domain, the
+    /// sizes and their distribution.
+    void read_generation(ParameterFile &f, DemCase &c)
+    {
+      dealii::ParameterHandler &prm = f.handler();
+      const auto               &s   = c.settings; // (Simulation's, read before: the domain)
+      prm.enter_subsection("Generation");
+      const std::vector<std::string> gp = {"Particles", "Generation"};
+      auto &fill                       = c.fill;
+      fill.box_min                     = vector_entry(prm, "Region min");
+      fill.box_max                     = vector_entry(prm, "Region max");
+      c.region_mesh_file               = f.path_beside(prm.get("Region mesh"));
+      const std::string dist           = prm.get("Size distribution");
+      fill.sizes.kind   = get_choice(prm, "Size distribution", size_distributions);
+      fill.sizes.radius = prm.get_double("Radius");
+      fill.sizes.min    = prm.get_double("Minimum radius");
+      fill.sizes.max    = prm.get_double("Maximum radius");
+      fill.sizes.std    = prm.get_double("Standard deviation");
+      fill.count        = prm.get_integer("Count");
+      fill.solid_fraction = prm.get_double("Solid fraction");
+      fill.seed           = prm.get_integer("Seed");
+      fill.velocity       = vector_entry(prm, "Initial velocity");
+      prm.leave_subsection();
+      if (!(fill.box_min.array() < fill.box_max.array()).all())
+        f.fail(gp, "Region max", "must exceed Region min in x, y and z");
+      // particles placed outside the domain are lost at the first step: a fill box outside it
+      // gave a run of 0 particles and exit 0
+      if (!(fill.box_min.array() >= s.domain_min.array()).all() || !(fill.box_max.array() <= s.domain_max.array()).all())
+        f.fail(gp, "Region max", "the fill box (Region min .. Region max) must lie inside Simulation/Domain min .. max");
+      if (dist != "constant" && !(fill.sizes.min > 0 && fill.sizes.max > fill.sizes.min))
+        f.fail(gp, "Maximum radius", "a " + dist + " distribution needs 0 < Minimum radius < Maximum radius");
+      if (dist == "normal" && !(fill.sizes.std > 0))
+        f.fail(gp, "Standard deviation", "must be positive for a normal distribution");
+    }
+
+    /// Particles/Coarse graining (the handler in Particles): the factor, and a fine region split
+    /// off the fill where one is given.
+    void read_fine_region(ParameterFile &f, DemCase &c)
+    {
+      dealii::ParameterHandler &prm  = f.handler();
+      auto                     &fill = c.fill;
+      prm.enter_subsection("Coarse graining");
+      c.coarse_graining = prm.get_double("Factor");
+      const Vec3   fine_lo = vector_entry(prm, "Fine region min"), fine_hi = vector_entry(prm, "Fine region max");
+      const double fine_factor = prm.get_double("Fine region factor");
+      prm.leave_subsection();
+      if (fine_lo == fine_hi)
+        return;
+      const std::vector<std::string> cg = {"Particles", "Coarse graining"};
+      if (!(fine_factor < c.coarse_graining))
+        f.fail(cg, "Fine region factor", "must be smaller than Factor (" + io::format_number(c.coarse_graining) + ")");
+      if (!c.region_mesh_file.empty())
+        f.fail(cg, "Fine region max", "a fine region needs a fill box without Region mesh");
+      if (!(fine_lo.array() < fine_hi.array()).all() || !(fine_lo.array() < fill.box_max.array()).all() ||
+          !(fine_hi.array() > fill.box_min.array()).all())
+        f.fail(cg, "Fine region max", "must exceed Fine region min and overlap the fill box");
+      c.fine_fill         = dem::split_off_region(fill, fine_lo, fine_hi);
+      dem::Settings unused = c.settings; // (the skin follows Factor)
+      dem::coarse_grain(fine_factor, *c.fine_fill, unused);
+      c.warnings.push_back("multi-level coarse graining (a prototype): particles coarse-grained by " +
+                           io::format_number(fine_factor) + " in the fine region, by " +
+                           io::format_number(c.coarse_graining) +
+                           " elsewhere; contact layers and the wear filter follow the largest radius unless set");
+    }
+
+    /// Particles/Settling (the handler in Particles): when a bed has settled, and the bed file
+    /// (another code's bed: an input, next to the parameter file, which must be there).
+    void read_settling(ParameterFile &f, DemCase &c)
+    {
+      dealii::ParameterHandler &prm = f.handler();
+      prm.enter_subsection("Settling");
+      c.settle_ke       = prm.get_double("Kinetic energy threshold");
+      c.settle_max_time = prm.get_double("Maximum time");
+      c.bed_file        = prm.get("Bed file");
+      if (dem::is_imported_bed(c.bed_file))
+        {
+          c.bed_file = f.path_beside(c.bed_file);
+          if (!std::ifstream(c.bed_file))
+            f.fail({"Particles", "Settling"}, "Bed file",
+                   "no bed to import at '" + c.bed_file + "' (a .csv table or a LIGGGHTS/LAMMPS dump is read, never "
+                   "written; abrade's own beds end in .bed)");
+        }
+      prm.leave_subsection();
+    }
+
+    /// A relative bed is the run's own, in its output directory: one that would be written out
+    /// of it ('../x.bed', not there yet) is refused; reading one from anywhere is fine, and a bed
+    /// shared between runs is named by an absolute path, on purpose.
+    void check_bed_stays_in_output(ParameterFile &f, const DemCase &c)
+    {
+      if (dem::is_imported_bed(c.bed_file) || !std::filesystem::path(c.bed_file).is_relative())
+        return;
+      dealii::ParameterHandler &prm = f.handler();
+      prm.enter_subsection("Output");
+      const std::filesystem::path output = prm.get("Directory");
+      prm.leave_subsection();
+      const std::filesystem::path bed(c.bed_file);
+      const bool escapes = std::any_of(bed.begin(), bed.end(), [](const std::filesystem::path &part) { return part == ".."; });
+      if (escapes && !std::filesystem::exists(output / bed))
+        f.fail({"Particles", "Settling"}, "Bed file",
+               "'" + c.bed_file + "' would be written out of the output directory (a relative bed file is the run's "
+               "own, inside it): name a bed shared between runs by its absolute path");
+    }
+  } // namespace
+
   void read_particle_parameters(ParameterFile &f, DemCase &c)
   {
     dealii::ParameterHandler &prm = f.handler();
-    const auto               &s   = c.settings; // (Simulation's, read before: the domain)
     prm.enter_subsection("Particles");
     c.particle_material    = read_material(f, {"Particles"}, "particles");
     c.particle_interaction = read_interaction(f, {"Particles"});
-    prm.enter_subsection("Generation");
-    const std::vector<std::string> gp = {"Particles", "Generation"};
-    auto &fill                       = c.fill;
-    fill.box_min                     = vector_entry(prm, "Region min");
-    fill.box_max                     = vector_entry(prm, "Region max");
-    c.region_mesh_file               = f.path_beside(prm.get("Region mesh"));
-    const std::string dist           = prm.get("Size distribution");
-    fill.sizes.kind   = get_choice(prm, "Size distribution", size_distributions);
-    fill.sizes.radius = prm.get_double("Radius");
-    fill.sizes.min    = prm.get_double("Minimum radius");
-    fill.sizes.max    = prm.get_double("Maximum radius");
-    fill.sizes.std    = prm.get_double("Standard deviation");
-    fill.count        = prm.get_integer("Count");
-    fill.solid_fraction = prm.get_double("Solid fraction");
-    fill.seed           = prm.get_integer("Seed");
-    fill.velocity       = vector_entry(prm, "Initial velocity");
+    read_generation(f, c);
+    read_fine_region(f, c);
+    read_settling(f, c);
     prm.leave_subsection();
-    if (!(fill.box_min.array() < fill.box_max.array()).all())
-      f.fail(gp, "Region max", "must exceed Region min in x, y and z");
-    // particles placed outside the domain are lost at the first step: a fill box outside it
-    // gave a run of 0 particles and exit 0
-    if (!(fill.box_min.array() >= s.domain_min.array()).all() || !(fill.box_max.array() <= s.domain_max.array()).all())
-      f.fail(gp, "Region max", "the fill box (Region min .. Region max) must lie inside Simulation/Domain min .. max");
-    if (dist != "constant" && !(fill.sizes.min > 0 && fill.sizes.max > fill.sizes.min))
-      f.fail(gp, "Maximum radius", "a " + dist + " distribution needs 0 < Minimum radius < Maximum radius");
-    if (dist == "normal" && !(fill.sizes.std > 0))
-      f.fail(gp, "Standard deviation", "must be positive for a normal distribution");
-    prm.enter_subsection("Coarse graining");
-    c.coarse_graining = prm.get_double("Factor");
-    const Vec3   fine_lo = vector_entry(prm, "Fine region min"), fine_hi = vector_entry(prm, "Fine region max");
-    const double fine_factor = prm.get_double("Fine region factor");
-    prm.leave_subsection();
-    if (fine_lo != fine_hi)
-      {
-        const std::vector<std::string> cg = {"Particles", "Coarse graining"};
-        if (!(fine_factor < c.coarse_graining))
-          f.fail(cg, "Fine region factor", "must be smaller than Factor (" + io::format_number(c.coarse_graining) + ")");
-        if (!c.region_mesh_file.empty())
-          f.fail(cg, "Fine region max", "a fine region needs a fill box without Region mesh");
-        if (!(fine_lo.array() < fine_hi.array()).all() || !(fine_lo.array() < fill.box_max.array()).all() ||
-            !(fine_hi.array() > fill.box_min.array()).all())
-          f.fail(cg, "Fine region max", "must exceed Fine region min and overlap the fill box");
-        c.fine_fill         = dem::split_off_region(fill, fine_lo, fine_hi);
-        dem::Settings unused = c.settings; // (the skin follows Factor)
-        dem::coarse_grain(fine_factor, *c.fine_fill, unused);
-        c.warnings.push_back("multi-level coarse graining (a prototype): particles coarse-grained by " +
-                             io::format_number(fine_factor) + " in the fine region, by " +
-                             io::format_number(c.coarse_graining) +
-                             " elsewhere; contact layers and the wear filter follow the largest radius unless set");
-      }
-    prm.enter_subsection("Settling");
-    c.settle_ke       = prm.get_double("Kinetic energy threshold");
-    c.settle_max_time = prm.get_double("Maximum time");
-    c.bed_file        = prm.get("Bed file");
-    if (dem::is_imported_bed(c.bed_file)) // another code's bed: an input, next to the parameter file
-      {
-        c.bed_file = f.path_beside(c.bed_file);
-        if (!std::ifstream(c.bed_file))
-          f.fail({"Particles", "Settling"}, "Bed file",
-                 "no bed to import at '" + c.bed_file + "' (a .csv table or a LIGGGHTS/LAMMPS dump is read, never "
-                 "written; abrade's own beds end in .bed)");
-      }
-    prm.leave_subsection();
-    prm.leave_subsection();
-    if (!dem::is_imported_bed(c.bed_file) && std::filesystem::path(c.bed_file).is_relative())
-      {
-        // a relative bed is the run's own, in its output directory: one that would be written
-        // out of it ('../x.bed', not there yet) is refused; reading one from anywhere is fine,
-        // and a bed shared between runs is named by an absolute path, on purpose
-        prm.enter_subsection("Output");
-        const std::filesystem::path output = prm.get("Directory");
-        prm.leave_subsection();
-        const std::filesystem::path bed(c.bed_file);
-        const bool escapes = std::any_of(bed.begin(), bed.end(), [](const std::filesystem::path &part) { return part == ".."; });
-        if (escapes && !std::filesystem::exists(output / bed))
-          f.fail({"Particles", "Settling"}, "Bed file",
-                 "'" + c.bed_file + "' would be written out of the output directory (a relative bed file is the run's "
-                 "own, inside it): name a bed shared between runs by its absolute path");
-      }
+    check_bed_stays_in_output(f, c);
     apply_coarse_graining(f, c);
   }
 } // namespace abrade::coupling
