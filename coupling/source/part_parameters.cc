@@ -118,6 +118,49 @@ namespace abrade::coupling
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /// The parametric knife of @p part: its geometry, its meshing budget before Gmsh is asked,
+    /// and no entry that only a part from a file has (face selectors, placement).
+    void check_parametric_knife(ParameterFile &file, const PartParameters &part)
+    {
+      const auto &k  = part.geometry;
+      const auto &fs = part.file_settings;
+      try
+        {
+          k.check();
+        }
+      catch (const InputError &e)
+        {
+          // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
+          const std::string what = e.what();
+          throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
+        }
+      // the meshing budget, before Gmsh is asked (the plate's volume is an upper bound)
+      const double cells = fem::estimated_cells(k.length * k.height * k.thickness, part.mesh_size);
+      if (fs.max_cells > 0 && cells > fs.max_cells)
+        {
+          char text[300];
+          std::snprintf(text, sizeof text,
+                        "%.3g m needs about %.3g tetrahedra for this knife, more than Maximum cells = %.3g; a "
+                        "Mesh size of %.3g m needs about half the limit",
+                        part.mesh_size, cells, fs.max_cells, part.mesh_size * std::cbrt(cells / (0.5 * fs.max_cells)));
+          file.fail({"Knife"}, "Mesh size", text);
+        }
+      if (!part.clamped_faces.empty() || !part.wearable_faces.empty())
+        file.fail({"Knife"}, part.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
+                  "the parametric knife's clamped face is its top (bolted to the shell); face selectors are for "
+                  "Geometry = file");
+      // the parametric knife is built in the knife's frame: nothing to place
+      if (fs.rotation_angle != 0)
+        file.fail({"Knife"}, "Rotation angle", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+      if (fs.offset.norm() > 0)
+        file.fail({"Knife"}, "Offset", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+      if (!fs.place.text.empty())
+        file.fail({"Knife"}, "Place", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+    }
+  } // namespace
+
   PartParameters read_part_parameters(ParameterFile &file)
   {
     auto           &prm = file.handler();
@@ -165,41 +208,7 @@ namespace abrade::coupling
     if (part.from_file && part.file.empty())
       file.fail({"Knife"}, "File", "Geometry = file needs a solid file");
     if (!part.from_file)
-      {
-        try
-          {
-            k.check();
-          }
-        catch (const InputError &e)
-          {
-            // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
-            const std::string what = e.what();
-            throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
-          }
-        // the meshing budget, before Gmsh is asked (the plate's volume is an upper bound)
-        const double cells = fem::estimated_cells(k.length * k.height * k.thickness, part.mesh_size);
-        if (part.file_settings.max_cells > 0 && cells > part.file_settings.max_cells)
-          {
-            char text[300];
-            std::snprintf(text, sizeof text,
-                          "%.3g m needs about %.3g tetrahedra for this knife, more than Maximum cells = %.3g; a "
-                          "Mesh size of %.3g m needs about half the limit",
-                          part.mesh_size, cells, part.file_settings.max_cells,
-                          part.mesh_size * std::cbrt(cells / (0.5 * part.file_settings.max_cells)));
-            file.fail({"Knife"}, "Mesh size", text);
-          }
-        if (!part.clamped_faces.empty() || !part.wearable_faces.empty())
-          file.fail({"Knife"}, part.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
-                    "the parametric knife's clamped face is its top (bolted to the shell); face selectors are for "
-                    "Geometry = file");
-        // the parametric knife is built in the knife's frame: nothing to place
-        if (fs.rotation_angle != 0)
-          file.fail({"Knife"}, "Rotation angle", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
-        if (fs.offset.norm() > 0)
-          file.fail({"Knife"}, "Offset", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
-        if (!fs.place.text.empty())
-          file.fail({"Knife"}, "Place", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
-      }
+      check_parametric_knife(file, part);
     else if (!fem::is_cad_file(part.file) && fs.solid != "all" && !fs.solid.empty())
       file.fail({"Knife"}, "Solid", "only a CAD file (STEP/IGES) can hold several solids; " + part.file + " is read whole");
     return part;
