@@ -315,6 +315,63 @@ namespace abrade::fem
     return std::abs(six_v) / 6;
   }
 
+  namespace
+  {
+    /// Gmsh remeshes the surface in @p stl (enclosing @p enclosed) into @p new_tria. Gmsh's
+    /// classification of a worn surface into patches it can reparametrise is erratic: a bolted
+    /// edge's worn surface that it refused at 15 degrees ("Invalid boundary mesh (overlapping
+    /// facets)" inside one patch) meshed at 20, 25, 40 and more, and aborted Gmsh at 30 and 35
+    /// (in its child process). Larger angles are tried in turn, but they merge edges of less
+    /// than the angle into patches that the new triangles cut by chords: the same surface lost
+    /// 6e-4 of its volume at 25 degrees (a whole DEM update's wear) and gained 1e-4 at 20, 4e-5
+    /// at 40. A larger angle's mesh is taken only where it keeps the enclosed volume to 5e-5 (a
+    /// 15-degree remesh of a worn knife changes it by up to 2e-5); a time limit is not tried
+    /// again.
+    void remesh_at_angles(const std::string &stl, double h, Triangulation<3> &new_tria, SolidFileSettings &settings,
+                          double enclosed)
+    {
+      std::string refused;
+      for (const double angle : {15.0, 20.0, 25.0, 40.0})
+        {
+          try
+            {
+              settings.classify_angle = angle;
+              read_solid(stl, h, new_tria, settings);
+              const double change = std::abs(mesh_volume(new_tria) / enclosed - 1);
+              if (angle == 15.0 || change <= 5e-5)
+                return;
+              refused += "; at " + io::format_number(angle) + " degrees its volume changed by " + io::format_number(change);
+            }
+          catch (const InputError &e)
+            {
+              if (std::string(e.what()).find("did not finish meshing") != std::string::npos)
+                throw;
+              if (refused.empty())
+                refused = e.what();
+            }
+          new_tria.clear();
+        }
+      throw InputError(stl, "Gmsh could not remesh it: " + refused);
+    }
+
+    /// Boundary ids from the old boundary triangle (@p ids_from) closest to each new face's
+    /// centre.
+    void take_boundary_ids(Triangulation<3> &new_tria, const SolidSurface &ids_from)
+    {
+      SolidSurface centres;
+      for (const auto &cell : new_tria.active_cell_iterators())
+        for (const unsigned f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            centres.vertices.push_back(cell->face(f)->center());
+      const SurfaceTransfer closest(ids_from, centres);
+      std::size_t           k = 0;
+      for (const auto &cell : new_tria.active_cell_iterators())
+        for (const unsigned f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            cell->face(f)->set_boundary_id(ids_from.boundary_id[closest.triangles_of()[k++]]);
+    }
+  } // namespace
+
   std::string mesh_closed_surface(const io::PolyData &surface, double h, Triangulation<3> &new_tria,
                                   const std::string &dir, const SolidSurface &ids_from, bool own_triangles_first)
   {
@@ -335,40 +392,8 @@ namespace abrade::fem
     // the two ways, in the order asked: Gmsh remeshes the surface (its triangles then need not
     // be good ones, but its reparametrisation can cut sharp edges between its new vertices), or
     // it fills the volume inside the surface's own triangles (exact, and as good as they are)
-    // Gmsh's classification of a worn surface into patches it can reparametrise is erratic: a
-    // bolted edge's worn surface that it refused at 15 degrees ("Invalid boundary mesh
-    // (overlapping facets)" inside one patch) meshed at 20, 25, 40 and more, and aborted Gmsh at
-    // 30 and 35 (in its child process). Larger angles are tried in turn before the surface's
-    // own triangles, but they merge edges of less than the angle into patches that the new
-    // triangles cut by chords: the same surface lost 6e-4 of its volume at 25 degrees (a whole
-    // DEM update's wear) and gained 1e-4 at 20, 4e-5 at 40. A larger angle's mesh is taken
-    // only where it keeps the enclosed volume to 5e-5 (a 15-degree remesh of a worn knife
-    // changes it by up to 2e-5); a time limit is not tried again.
     const double enclosed = enclosed_volume(surface_of(surface)); // (the surface as it went to Gmsh)
-    auto         remeshed = [&] {
-      std::string refused;
-      for (const double angle : {15.0, 20.0, 25.0, 40.0})
-        {
-          try
-            {
-              as_is.classify_angle = angle;
-              read_solid(stl, h, new_tria, as_is);
-              const double change = std::abs(mesh_volume(new_tria) / enclosed - 1);
-              if (angle == 15.0 || change <= 5e-5)
-                return;
-              refused += "; at " + io::format_number(angle) + " degrees its volume changed by " + io::format_number(change);
-            }
-          catch (const InputError &e)
-            {
-              if (std::string(e.what()).find("did not finish meshing") != std::string::npos)
-                throw;
-              if (refused.empty())
-                refused = e.what();
-            }
-          new_tria.clear();
-        }
-      throw InputError(stl, "Gmsh could not remesh it: " + refused);
-    };
+    auto remeshed = [&] { remesh_at_angles(stl, h, new_tria, as_is, enclosed); };
     auto filled   = [&] { read_closed_triangles(stl, h, new_tria, as_is.mesher_time_limit); };
     std::string kept;
     new_tria.clear();
@@ -390,18 +415,7 @@ namespace abrade::fem
                                     "; " + second.what());
           }
       }
-    // boundary ids from the old boundary triangle closest to each new face's centre
-    SolidSurface centres;
-    for (const auto &cell : new_tria.active_cell_iterators())
-      for (const unsigned f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          centres.vertices.push_back(cell->face(f)->center());
-    const SurfaceTransfer closest(ids_from, centres);
-    std::size_t           k = 0;
-    for (const auto &cell : new_tria.active_cell_iterators())
-      for (const unsigned f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          cell->face(f)->set_boundary_id(ids_from.boundary_id[closest.triangles_of()[k++]]);
+    take_boundary_ids(new_tria, ids_from);
     return kept;
   }
 
