@@ -23,6 +23,7 @@
 #include <abrade/coupling/concepts.h>
 #include <abrade/coupling/paired_change.h>
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/simulation_parameters.h>
 #include <abrade/coupling/study_lives.h>
 
 #include <algorithm>
@@ -188,10 +189,7 @@ namespace abrade::coupling
       for (const auto &f : o.files)
         {
           ParameterFile file(f, o.sets);
-          file.handler().enter_subsection("Simulation");
-          const bool payload = !io::trimmed(file.handler().get("Payload height")).empty();
-          file.handler().leave_subsection();
-          if (!payload)
+          if (!read_payload_height(file))
             file.fail({"Simulation"}, "Payload height",
                       "concepts compares the payload as well as the wear: set the height above which the grab's "
                       "load is counted");

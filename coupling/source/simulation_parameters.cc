@@ -163,22 +163,30 @@ namespace abrade::coupling
             f.fail({"Simulation"}, "Phases", "'" + c.phases.back().first + "' is listed twice (names are compared "
                                                                             "ignoring case)");
       }
-    if (const std::string h = prm.get("Payload height"); !h.empty())
-      {
-        try
-          {
-            c.payload_height = std::stod(h);
-          }
-        catch (const std::exception &)
-          {
-            f.fail({"Simulation"}, "Payload height", "'" + h + "' is not a number");
-          }
-      }
     c.max_particle_steps = prm.get_double("Maximum particle-steps");
     prm.leave_subsection();
+    c.payload_height = read_payload_height(f);
     if (!(s.domain_min.array() < s.domain_max.array()).all())
       f.fail({"Simulation"}, "Domain max", "must exceed Domain min in x, y and z");
     if (c.phases.empty())
       f.fail({"Simulation"}, "Phases", "at least one phase is needed");
+  }
+
+  std::optional<double> read_payload_height(ParameterFile &f)
+  {
+    auto &prm = f.handler();
+    prm.enter_subsection("Simulation");
+    const std::string h = prm.get("Payload height");
+    prm.leave_subsection();
+    if (h.empty())
+      return std::nullopt;
+    try
+      {
+        return std::stod(h);
+      }
+    catch (const std::exception &)
+      {
+        f.fail({"Simulation"}, "Payload height", "'" + h + "' is not a number");
+      }
   }
 } // namespace abrade::coupling

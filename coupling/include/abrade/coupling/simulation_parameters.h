@@ -4,10 +4,15 @@
 // read into a DemCase.
 #include <abrade/coupling/parameters.h>
 
+#include <optional>
+
 namespace abrade::coupling
 {
   void declare_simulation_parameters(dealii::ParameterHandler &prm);
   /// Reads and checks subsection Simulation into @p c (its settings, phases, payload height and
   /// run-size limit); errors name the file, line and entry.
   void read_simulation_parameters(ParameterFile &f, DemCase &c);
+
+  /// Simulation/Payload height of @p f [m] (none: the entry is empty), or an error naming it.
+  std::optional<double> read_payload_height(ParameterFile &f);
 } // namespace abrade::coupling
