@@ -73,4 +73,21 @@ namespace abrade::coupling
     c.wear_field          = prm.get("Wear field");
     prm.leave_subsection();
   }
+
+  std::string output_directory(ParameterFile &f)
+  {
+    auto &prm = f.handler();
+    prm.enter_subsection("Output");
+    const std::string directory = prm.get("Directory");
+    prm.leave_subsection();
+    return directory;
+  }
+
+  void set_output_directory(ParameterFile &f, const std::string &directory)
+  {
+    auto &prm = f.handler();
+    prm.enter_subsection("Output");
+    prm.set("Directory", directory);
+    prm.leave_subsection();
+  }
 } // namespace abrade::coupling

@@ -3,6 +3,7 @@
 // bed file.
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/material_parameters.h>
+#include <abrade/coupling/output_parameters.h>
 #include <abrade/coupling/parameter_choices.h>
 #include <abrade/coupling/parameter_section.h>
 #include <abrade/coupling/particle_parameters.h>
@@ -233,10 +234,7 @@ namespace abrade::coupling
     {
       if (dem::is_imported_bed(c.bed_file) || !std::filesystem::path(c.bed_file).is_relative())
         return;
-      dealii::ParameterHandler &prm = f.handler();
-      prm.enter_subsection("Output");
-      const std::filesystem::path output = prm.get("Directory");
-      prm.leave_subsection();
+      const std::filesystem::path output = output_directory(f);
       const std::filesystem::path bed(c.bed_file);
       const bool escapes = std::any_of(bed.begin(), bed.end(), [](const std::filesystem::path &part) { return part == ".."; });
       if (escapes && !std::filesystem::exists(output / bed))

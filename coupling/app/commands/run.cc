@@ -12,6 +12,7 @@
 #include <abrade/common/termination.h>
 #include <abrade/common/version.h>
 #include <abrade/coupling/jobs.h>
+#include <abrade/coupling/output_parameters.h>
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/mpi_once.h>
@@ -94,14 +95,8 @@ namespace abrade::app
       {
         auto &prm = params.handler();
         if (!cl.output.empty())
-          {
-            prm.enter_subsection("Output");
-            prm.set("Directory", cl.output);
-            prm.leave_subsection();
-          }
-        prm.enter_subsection("Output");
-        dir = prm.get("Directory");
-        prm.leave_subsection();
+          coupling::set_output_directory(params, cl.output);
+        dir = coupling::output_directory(params);
         job_name = prm.get("Job");
         root     = ranks.rank() == 0;
         prm.enter_subsection("Simulation");
