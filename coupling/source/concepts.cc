@@ -146,7 +146,7 @@ namespace abrade::coupling
       /// Concept @p k's changes against the baseline, pair by pair on the same beds.
       struct Changes
       {
-        Change wear, payload, per_tonne, life;
+        Change wear, payload, per_tonne, life_change;
       };
       Changes changes_of(std::size_t k);
       void    write_csv_head(std::ostream &csv) const;
@@ -184,8 +184,8 @@ namespace abrade::coupling
           if (std::count(labels.begin(), labels.end(), labels.back()) > 1)
             throw InputError(f, "two concepts named '" + labels.back() + "' (the file names name them)");
         }
-      // the payload is compared: a case without a payload height would fail only after its
-      // runs, on a missing payload.csv
+      // the payload is compared: a case without a payload height (or with one that is not a
+      // number) would fail only after its runs, on a missing payload.csv
       for (const auto &f : o.files)
         {
           ParameterFile file(f, o.sets);
@@ -362,7 +362,7 @@ namespace abrade::coupling
           << sum[k].payload.std << ',' << sum[k].per_tonne.mean << ',' << sum[k].per_tonne.std << change_columns(c.wear)
           << change_columns(c.payload) << change_columns(c.per_tonne) << ',' << (life.count(labels[k]) ? life[labels[k]] : "");
       if (life_value.count(labels[k]))
-        csv << ',' << life_value[labels[k]].low << ',' << life_value[labels[k]].high << change_columns(c.life) << '\n';
+        csv << ',' << life_value[labels[k]].low << ',' << life_value[labels[k]].high << change_columns(c.life_change) << '\n';
       else
         csv << ",,,,,,,\n";
     }
@@ -404,7 +404,7 @@ namespace abrade::coupling
               std::snprintf(buf, sizeof buf, " (%.3g ... %.3g)", v.low, v.high);
               md << buf;
             }
-          md << (k ? "; " + percent(c.life) : std::string()) << " |";
+          md << (k ? "; " + percent(c.life_change) : std::string()) << " |";
         }
       md << '\n';
     }

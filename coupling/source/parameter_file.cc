@@ -385,6 +385,8 @@ namespace abrade::coupling
     return s.str();
   }
 
+  // (the file's own layer, below the subsections' owners: it blanks Output/Directory itself,
+  // as output_parameters.h would, without depending on them)
   std::string ParameterFile::identity_text()
   {
     prm.enter_subsection("Output");

@@ -72,7 +72,7 @@ namespace abrade::coupling
     /// peak and the last one's steady mean, over its second half. Returns when that half
     /// begins [s].
     double add_forces(RunMetrics &m, const std::string &dir, const std::string &wall,
-                            const std::vector<std::string> &phases)
+                      const std::vector<std::string> &phases)
     {
       const CsvTable f = read_csv_table(dir + "/walls/" + wall + "_forces.csv");
       const int      t = f.column("time"), fx = f.column("fx"), fy = f.column("fy"), fz = f.column("fz");
@@ -537,6 +537,8 @@ namespace abrade::coupling
           throw RunError("sweep: could not write " + out.file("study.csv"));
       }
 
+      /// study.csv's columns: the varied keys, each metric's mean and spread, the paired ratio
+      /// to the first combination, and the life's where lifetimes were run.
       std::vector<std::string> csv_header() const
       {
         std::vector<std::string> header;

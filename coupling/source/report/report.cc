@@ -686,10 +686,6 @@ namespace abrade::report
           page.paragraph(n.get_value<std::string>());
     }
 
-    /// The knife job's page: the part's preview. The part as the case places it, drawn from
-    /// two sides with its faces coloured by what the selectors made of them (wears, clamped,
-    /// held) and the file's face numbers at their centres; the face table and what each
-    /// selector took (summary.json `knife`).
     /// The part's volume, mass and cells (and a file's wearing and clamped areas).
     std::string part_headline(const Tree &k, bool from_file)
     {
@@ -762,6 +758,10 @@ namespace abrade::report
         }
     }
 
+    /// The knife job's page: the part's preview. The part as the case places it, drawn from
+    /// two sides with its faces coloured by what the selectors made of them (wears, clamped,
+    /// held) and the file's face numbers at their centres; the face table and what each
+    /// selector took (summary.json `knife`).
     std::string knife_page(const std::string &dir, const Tree &summary)
     {
       const auto k = summary.get_child_optional("results.knife");

@@ -4,7 +4,8 @@
 
 namespace abrade::fem
 {
-  /// Initialises MPI (through deal.II, for PETSc) unless done before; every later call does
-  /// nothing. A process started under mpirun gets its ranks as usual.
+  /// Initialises MPI (through deal.II, for PETSc) on its first call; every later call does
+  /// nothing. A process that started MPI itself must not call it (deal.II refuses a second
+  /// start). A process started under mpirun gets its ranks as usual.
   void init_mpi_once();
 } // namespace abrade::fem
