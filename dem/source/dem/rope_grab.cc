@@ -310,12 +310,8 @@ namespace abrade::dem
     // the drums' speeds approach the winches', a drum that keeps its rope just slack (pull 0)
     // too: its motor turns at the speed it is given (a closing winch paying out as the grab
     // lands is reversed at the winch's acceleration, not stopped at once)
-    const auto drum = [&](double &speed, const Winch &w) {
-      const double most = d.winch_acceleration > 0 ? d.winch_acceleration * dt : std::numeric_limits<double>::infinity();
-      speed = std::clamp(w.speed, speed - most, speed + most);
-    };
-    drum(s.closing_drum_speed, closing);
-    drum(s.holding_drum_speed, holding);
+    s.closing_drum_speed = ramped(s.closing_drum_speed, closing.speed, d.winch_acceleration, dt);
+    s.holding_drum_speed = ramped(s.holding_drum_speed, holding.speed, d.winch_acceleration, dt);
     const double rope_c = closing_rope_length(s.z, s.angle), rope_h = holding_rope_length(s.z, s.angle);
     release(s.closing_paid_out, rope_c, closing, d.closing_rope_stiffness, ledger);
     release(s.holding_paid_out, rope_h, holding, d.holding_rope_stiffness, ledger);

@@ -99,8 +99,7 @@ namespace abrade::dem
     grab.step(now, dt, loads, g, closing, holding);
     const auto   target = rig.trolley.find(phase);
     const double wanted = target == rig.trolley.end() ? 0.0 : target->second;
-    const double change = rig.trolley_acceleration > 0 ? rig.trolley_acceleration * dt : std::abs(wanted - trolley_v);
-    trolley_v += std::clamp(wanted - trolley_v, -change, change);
+    trolley_v           = ramped(trolley_v, wanted, rig.trolley_acceleration, dt);
     trolley_x += dt * trolley_v;
     set_velocities(sim);
 

@@ -52,6 +52,7 @@
 // the step, then positions with the new velocities.
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -100,6 +101,14 @@ namespace abrade::dem
     {}
     std::string parameter;
   };
+
+  /// @p speed one step @p dt closer to @p target at @p acceleration (0: at once): a winch's
+  /// drum, a crane's trolley.
+  inline double ramped(double speed, double target, double acceleration, double dt)
+  {
+    const double most = acceleration > 0 ? acceleration * dt : std::numeric_limits<double>::infinity();
+    return std::clamp(target, speed - most, speed + most);
+  }
 
   /// What a winch does in a phase of the cycle.
   struct Winch
