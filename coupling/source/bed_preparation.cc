@@ -51,9 +51,9 @@ namespace abrade::coupling
       const auto  &d        = c.fill.sizes;
       const bool   constant = d.kind == dem::SizeDistribution::Kind::constant;
       double       want_lo = constant ? d.radius : d.min, want_hi = constant ? d.radius : d.max;
-      const bool   two     = bool(c.fine_fill); // a fine region: its radii too
-      if (two)
-        want_lo = std::min(want_lo, constant ? c.fine_fill->sizes.radius : c.fine_fill->sizes.min);
+      const bool   two     = !c.finer_levels.empty(); // multi-level: their radii too
+      for (const auto &level : c.finer_levels)
+        want_lo = std::min(want_lo, constant ? level.fill.sizes.radius : level.fill.sizes.min);
       const double tol = 1e-9 * want_hi;
       if (lo < want_lo - tol || hi > want_hi + tol || (constant && !two && lo < want_hi - tol))
         throw InputError(bed, "the bed's radii are " + io::format_number(lo) + (hi > lo ? ".." + io::format_number(hi) : std::string()) +
@@ -83,13 +83,15 @@ namespace abrade::coupling
         fill.avoid.push_back(sim.wall(w).current_mesh());
       {
         io::ScopedTimer t(ctx.timers, "generate");
-        if (c.fine_fill) // multi-level coarse graining: the finer particles first, in their box
+        for (const auto &level : c.finer_levels) // multi-level coarse graining: the finest first
           {
-            dem::FillRegion fine = *c.fine_fill;
-            fine.avoid           = fill.avoid;
-            const long n         = dem::fill_region(sim, fine);
-            ctx.log.line("Generated " + std::to_string(n) + " particles of radius " + io::format_number(fine.sizes.largest()) +
-                         " m in the fine region (seed " + std::to_string(fine.seed) + ")");
+            dem::FillRegion part = level.fill;
+            part.avoid           = fill.avoid;
+            const long n         = dem::fill_region(sim, part);
+            ctx.log.line("Generated " + std::to_string(n) + " particles of radius " + io::format_number(part.sizes.largest()) +
+                         " m (coarse-grained by " + io::format_number(level.factor, 4) + ") in the fine region" +
+                         (&level == &c.finer_levels.front() ? std::string() : "'s shell") + " (seed " +
+                         std::to_string(part.seed) + ")");
           }
         const long n = dem::fill_region(sim, fill);
         ctx.log.line("Generated " + std::to_string(n) + " particles (seed " + std::to_string(fill.seed) + ")");
@@ -195,5 +197,15 @@ namespace abrade::coupling
     j["factor"]             = c.coarse_graining;
     j["largest_radius"]     = r;
     j["real_largest_radius"] = r / c.coarse_graining;
+    if (c.finer_levels.empty())
+      return;
+    j["tool_particle_radius"] = c.tool_particle_radius; // the finest level's
+    io::Json &levels          = j["levels"];
+    for (const auto &level : c.finer_levels)
+      {
+        io::Json l;
+        l["factor"] = level.factor, l["largest_radius"] = level.fill.sizes.largest(), l["count"] = double(level.fill.count);
+        levels.push_back(l);
+      }
   }
 } // namespace abrade::coupling

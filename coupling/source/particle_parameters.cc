@@ -61,6 +61,23 @@ namespace abrade::coupling
                              "are coarse-grained: 0 ties the wear filter to the simulated radius");
       prm.leave_subsection();
     }
+
+    /// Multi-level coarse graining: the lengths and energies tied to the particle size follow
+    /// the finest level (the particles the tools meet; a skin of the bulk's would make the
+    /// finer particles' neighbour lists hold f_bulk / f_fine times their reach), the settling
+    /// threshold the mean particle mass of the levels together.
+    void follow_the_finest_level(DemCase &c)
+    {
+      if (c.finer_levels.empty())
+        return;
+      const double g = c.coarse_graining, fine = c.finer_levels.front().factor;
+      c.settings.skin *= fine / g; // coarse_grain scaled it by g
+      double count = double(c.fill.count), mass = count * g * g * g; // in real particles' masses
+      for (const auto &level : c.finer_levels)
+        count += double(level.fill.count), mass += double(level.fill.count) * std::pow(level.factor, 3);
+      if (c.fill.count > 0 && count > 0) // (with a solid fraction the counts are the generator's)
+        c.settle_ke *= mass / count / (g * g * g);
+    }
   } // namespace
 
   void declare_particle_parameters(dealii::ParameterHandler &prm)
@@ -108,14 +125,24 @@ namespace abrade::coupling
                       "Smoothing radius, an imported bed) are named in a warning. What coarse "
                       "graining does to wear: docs/coarse-graining.md. Range: [0.001, 1000].");
     section.declare_vector("Fine region min", {0, 0, 0},
-                   "[m] Multi-level coarse graining (a prototype): a box of the fill region that is "
-                   "filled with particles coarse-grained by Fine region factor instead (its share of "
-                   "the real Count by volume), say around a tool's path. Equal corners: none.");
+                   "[m] Multi-level coarse graining: a box of the fill region that is filled with "
+                   "particles coarse-grained by Fine region factor instead (its share of the real "
+                   "Count by volume), around the tools' paths; layers of intermediate sizes surround "
+                   "it (Fine region step). Equal corners: none. docs/coarse-graining.md.");
     section.declare_vector("Fine region max", {0, 0, 0}, "[m] Upper corner of the fine region.");
     prm.declare_entry("Fine region factor", "1", Double(1e-3, 1e3),
                       "[-] Coarse-graining ratio inside the fine region (smaller than Factor). The time "
-                      "step follows the finer particles; a wall's contact layer and the wear filter "
-                      "follow the largest radius unless set. Range: [0.001, 1000].");
+                      "step, the skin, a wall's contact layer and the wear filter follow these finer "
+                      "particles (the ones the tools meet). Range: [0.001, 1000].");
+    prm.declare_entry("Fine region step", "1.25", Double(0, 1e3),
+                      "[-] Largest ratio between the coarse-graining factors of neighbouring sizes: "
+                      "shells of intermediate sizes around the fine region take the factor from Fine "
+                      "region factor to Factor in equal steps no larger than this, so that no two sizes "
+                      "that meet differ by more (two sizes 3x apart pack 15 % denser where they meet). "
+                      "0: none (the fine particles meet the bulk's). Range: 0 or > 1.");
+    prm.declare_entry("Fine region layer thickness", "1", Double(0.5, 1e3),
+                      "[particle diameters] Thickness of each intermediate shell, in the largest "
+                      "diameter of its particles. Range: [0.5, 1000].");
     prm.leave_subsection();
     prm.enter_subsection("Settling");
     prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, huge),
@@ -185,26 +212,40 @@ namespace abrade::coupling
       auto                     &fill = c.fill;
       prm.enter_subsection("Coarse graining");
       c.coarse_graining = prm.get_double("Factor");
-      const Vec3   fine_lo = vector_entry(prm, "Fine region min"), fine_hi = vector_entry(prm, "Fine region max");
-      const double fine_factor = prm.get_double("Fine region factor");
+      dem::FineRegion region;
+      region.lo = vector_entry(prm, "Fine region min"), region.hi = vector_entry(prm, "Fine region max");
+      region.factor          = prm.get_double("Fine region factor");
+      region.step            = prm.get_double("Fine region step");
+      region.layer_diameters = prm.get_double("Fine region layer thickness");
       prm.leave_subsection();
-      if (fine_lo == fine_hi)
+      if (region.lo == region.hi)
         return;
       const std::vector<std::string> cg = {"Particles", "Coarse graining"};
-      if (!(fine_factor < c.coarse_graining))
+      if (!(region.factor < c.coarse_graining))
         f.fail(cg, "Fine region factor", "must be smaller than Factor (" + io::format_number(c.coarse_graining) + ")");
+      if (region.step != 0 && !(region.step > 1))
+        f.fail(cg, "Fine region step", "must be 0 (no intermediate sizes) or larger than 1");
       if (!c.region_mesh_file.empty())
         f.fail(cg, "Fine region max", "a fine region needs a fill box without Region mesh");
-      if (!(fine_lo.array() < fine_hi.array()).all() || !(fine_lo.array() < fill.box_max.array()).all() ||
-          !(fine_hi.array() > fill.box_min.array()).all())
+      if (!(region.lo.array() < region.hi.array()).all() || !(region.lo.array() < fill.box_max.array()).all() ||
+          !(region.hi.array() > fill.box_min.array()).all())
         f.fail(cg, "Fine region max", "must exceed Fine region min and overlap the fill box");
-      c.fine_fill         = dem::split_off_region(fill, fine_lo, fine_hi);
-      dem::Settings unused = c.settings; // (the skin follows Factor)
-      dem::coarse_grain(fine_factor, *c.fine_fill, unused);
-      c.warnings.push_back("multi-level coarse graining (a prototype): particles coarse-grained by " +
-                           io::format_number(fine_factor) + " in the fine region, by " +
-                           io::format_number(c.coarse_graining) +
-                           " elsewhere; contact layers and the wear filter follow the largest radius unless set");
+      try
+        {
+          c.finer_levels = dem::split_into_levels(fill, region, c.coarse_graining);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          f.fail(cg, "Fine region max", std::string(e.what()) + " (Fine region layer thickness and step set the shells)");
+        }
+      c.tool_particle_radius = c.finer_levels.front().fill.sizes.largest();
+      std::string sizes;
+      for (const auto &level : c.finer_levels)
+        sizes += io::format_number(level.fill.sizes.largest(), 3) + " m (" + std::to_string(level.fill.count) + "), ";
+      c.notes.push_back("multi-level coarse graining: particles of " + sizes + "and " +
+                        io::format_number(fill.sizes.largest() * c.coarse_graining, 3) +
+                        " m elsewhere (largest radius, count); the time step, skin, contact layers and wear filter "
+                        "follow the finest");
     }
 
     /// Particles/Settling (the handler in Particles): when a bed has settled, and the bed file
@@ -256,5 +297,6 @@ namespace abrade::coupling
     prm.leave_subsection();
     check_bed_stays_in_output(f, c);
     apply_coarse_graining(f, c);
+    follow_the_finest_level(c);
   }
 } // namespace abrade::coupling

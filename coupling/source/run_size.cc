@@ -83,20 +83,23 @@ namespace abrade::coupling
     // memory: a run too large to hold is said as such): random placement with a sweep of the
     // free space saturates near a solid fraction of 0.35 in an empty box (generation.cc), less
     // where walls and the part take room
-    for (const dem::FillRegion *fill : {&c.fill, c.fine_fill ? &*c.fine_fill : nullptr})
-      if (fill)
-        {
-          const Eigen::Vector3d extent = fill->box_max - fill->box_min;
-          const double          box    = extent.prod();
-          const double fraction = fill->count > 0 && box > 0 ? double(fill->count) * fill->sizes.mean_volume() / box
-                                                             : fill->solid_fraction;
-          if (fraction > 0.37)
-            file.fail({"Particles", "Generation"}, fill->count > 0 ? "Count" : "Solid fraction",
-                      (fill->count > 0 ? g(double(fill->count)) + " particles of " + g(fill->sizes.mean_volume()) +
-                                           " m^3 each fill " + g(fraction) + " of the Region box (" + g(box) + " m^3)"
-                                       : "a solid fraction of " + g(fraction)) +
-                        ": random placement saturates near 0.35 in an empty box (less where walls and the part take "
-                        "room); lower Count (or Solid fraction) or enlarge the Region");
-        }
+    std::vector<const dem::FillRegion *> fills = {&c.fill}; // and a multi-level bed's finer levels
+    for (const auto &level : c.finer_levels)
+      fills.push_back(&level.fill);
+    for (const dem::FillRegion *fill : fills)
+      {
+        double box = (fill->box_max - fill->box_min).prod();
+        for (const auto &[lo, hi] : fill->exclude) // (a level's region: its box less the finer levels')
+          box -= (hi.cwiseMin(fill->box_max) - lo.cwiseMax(fill->box_min)).cwiseMax(0.0).prod();
+        const double fraction = fill->count > 0 && box > 0 ? double(fill->count) * fill->sizes.mean_volume() / box
+                                                           : fill->solid_fraction;
+        if (fraction > 0.37)
+          file.fail({"Particles", "Generation"}, fill->count > 0 ? "Count" : "Solid fraction",
+                    (fill->count > 0 ? g(double(fill->count)) + " particles of " + g(fill->sizes.mean_volume()) +
+                                         " m^3 each fill " + g(fraction) + " of the Region box (" + g(box) + " m^3)"
+                                     : "a solid fraction of " + g(fraction)) +
+                      ": random placement saturates near 0.35 in an empty box (less where walls and the part take "
+                      "room); lower Count (or Solid fraction) or enlarge the Region");
+      }
   }
 } // namespace abrade::coupling

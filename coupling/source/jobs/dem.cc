@@ -217,7 +217,7 @@ namespace abrade::coupling
       laws.push_back(wc.wear);
     wear = std::make_shared<dem::WearRecorder>(*sim, laws);
     sim->add_hook(wear);
-    const double r_max = sim->largest_radius();
+    const double r_max = c.particle_radius_at_tools(*sim); // (a multi-level bed: the finest)
     for (std::size_t w = 0; w < c.walls.size(); ++w)
       if (c.walls[w].probe)
         {
@@ -358,7 +358,7 @@ namespace abrade::coupling
         if (wear->tracks(w, c.wear_field))
           write_wear_profile(ctx.output.file("walls/" + sim->wall(w).name + "_wear_profile.csv"), sim->wall(w).mesh,
                              c.wear_field, wear->values(w, c.wear_field), wear->vertex_values(w, c.wear_field),
-                             {c.wear_profile_band, c.wear_filter_length, sim->largest_radius()});
+                             {c.wear_profile_band, c.wear_filter_length, c.particle_radius_at_tools(*sim)});
       }
   }
 

@@ -177,7 +177,7 @@ namespace abrade::coupling::lifetime
             if (run.payload_height)
               w.payload = std::max(w.payload, sim.mass_above(*run.payload_height));
           }
-        w.particle_radius = sim.largest_radius();
+        w.particle_radius = run.particle_radius_at_tools(sim); // (the filter follows it)
         w.warnings        = quiet.take_warnings(); // the bed's (generation, settling)
         for (const auto &text : sim.take_warnings()) // the cycle's
           w.warnings.push_back(text);

@@ -298,7 +298,7 @@ namespace abrade::coupling
       for (const auto &law_name : PluginSection(f, path).chosen("Laws"))
         {
           auto law = dem::make_wear_law(law_name); // (the pattern checked the name)
-          if (law->uses_particle_size() && c.fine_fill)
+          if (law->uses_particle_size() && !c.finer_levels.empty())
             f.fail(path, "Laws",
                    "wear law " + law_name + " uses the real particle size, which a multi-level coarse graining "
                    "(Particles/Coarse graining/Fine region) gives two of: not supported");

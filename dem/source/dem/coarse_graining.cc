@@ -21,18 +21,68 @@ namespace abrade::dem
     return count;
   }
 
-  FillRegion split_off_region(FillRegion &fill, const Vec3 &lo, const Vec3 &hi)
+  std::vector<double> level_factors(const double fine, const double bulk, const double step)
   {
-    FillRegion part = fill;
-    part.box_min    = lo.cwiseMax(fill.box_min), part.box_max = hi.cwiseMin(fill.box_max);
-    if (fill.inside || !(part.box_min.array() < part.box_max.array()).all())
+    const int n = step > 1 && bulk / fine > step ? int(std::ceil(std::log(bulk / fine) / std::log(step) - 1e-9)) : 1;
+    std::vector<double> out;
+    for (int k = 0; k < n; ++k)
+      out.push_back(fine * std::pow(bulk / fine, double(k) / n));
+    return out;
+  }
+
+  std::vector<Level> split_into_levels(FillRegion &fill, const FineRegion &region, const double bulk_factor)
+  {
+    const auto box_volume = [](const Vec3 &lo, const Vec3 &hi) { return (hi - lo).cwiseMax(0.0).prod(); };
+    const Vec3 lo = region.lo.cwiseMax(fill.box_min), hi = region.hi.cwiseMin(fill.box_max);
+    if (fill.inside || !(lo.array() < hi.array()).all())
       throw std::invalid_argument("the fine region must overlap the fill box (and the fill have no region mesh)");
-    const double share = (part.box_max - part.box_min).prod() / (fill.box_max - fill.box_min).prod();
-    part.count         = std::lround(double(fill.count) * share);
-    part.seed          = fill.seed + 1000003; // its own draws
-    fill.count -= part.count;
-    fill.exclude.emplace_back(part.box_min, part.box_max);
-    return part;
+    const double per_volume = double(fill.count) / box_volume(fill.box_min, fill.box_max); // real particles
+    std::vector<Level> levels;
+    Vec3               inner_lo = lo, inner_hi = hi; // the box the next level surrounds
+    long               taken    = 0;
+    for (const double f : level_factors(region.factor, bulk_factor, region.step))
+      {
+        Level  level{fill, f};
+        auto  &part   = level.fill;
+        double volume = box_volume(lo, hi);
+        if (levels.empty()) // the finest: whole in its box
+          part.box_min = lo, part.box_max = hi;
+        else // a shell around the finer levels, touching them
+          {
+            const double t = region.layer_diameters * 2 * fill.sizes.largest() * f;
+            const Vec3   shell_lo = (inner_lo.array() - t).matrix().cwiseMax(fill.box_min);
+            const Vec3   shell_hi = (inner_hi.array() + t).matrix().cwiseMin(fill.box_max);
+            // a shell cut by the fill box's face would be too thin to place its particles in:
+            // the levels grow only where the box does not reach that face
+            for (int d = 0; d < 3; ++d)
+              if ((inner_lo[d] > fill.box_min[d] && shell_lo[d] != inner_lo[d] - t) ||
+                  (inner_hi[d] < fill.box_max[d] && shell_hi[d] != inner_hi[d] + t))
+                throw std::invalid_argument("the shell of particles coarse-grained by " + io::format_number(f, 4) + " (" +
+                                            io::format_number(t, 3) + " m thick) reaches a face of the fill box across " +
+                                            std::string(1, char('x' + d)) + ": extend the fine region to that face, or leave "
+                                            "room for its shells and the bulk");
+            part.centres_in       = std::make_pair(shell_lo, shell_hi);
+            part.exclude.emplace_back(inner_lo, inner_hi);
+            volume   = box_volume(shell_lo, shell_hi) - box_volume(inner_lo, inner_hi);
+            inner_lo = shell_lo, inner_hi = shell_hi;
+          }
+        part.count = std::lround(per_volume * volume);
+        part.seed  = fill.seed + 1000003 * (levels.size() + 1); // its own draws
+        taken += part.count;
+        Settings unused; // (the skin is the caller's)
+        coarse_grain(f, part, unused);
+        levels.push_back(level);
+      }
+    // the rest needs room for its particles beside the outermost box, in one direction at least
+    const double d_bulk = 2 * fill.sizes.largest() * bulk_factor;
+    const Vec3   room   = (inner_lo - fill.box_min).cwiseMax(fill.box_max - inner_hi);
+    if (fill.count - taken < 1 || !(room.array() > d_bulk).any())
+      throw std::invalid_argument("the fine region and its shells of intermediate sizes fill the fill box, leaving no room for "
+                                  "the bulk's particles (less than one of their diameters beside the shells): make the fine region or its shells smaller");
+    fill.count -= taken; // the rest: centres out of the outermost box, touching it
+    fill.centres_in = std::make_pair(fill.box_min, fill.box_max);
+    fill.exclude.emplace_back(inner_lo, inner_hi);
+    return levels;
   }
 
   std::vector<std::string> coarse_graining_warnings(const double f, const Settings &settings)

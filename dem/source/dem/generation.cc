@@ -158,8 +158,11 @@ namespace abrade::dem
             return false;
         if (f.inside && !inside_mesh(*f.inside, p))
           return false;
+        const double reach = f.centres_in ? 0.0 : r; // a level's centres, else whole spheres
+        if (f.centres_in && !((p.array() >= f.centres_in->first.array()).all() && (p.array() <= f.centres_in->second.array()).all()))
+          return false;
         for (const auto &[lo, hi] : f.exclude)
-          if ((p.array() > lo.array() - r).all() && (p.array() < hi.array() + r).all())
+          if ((p.array() > lo.array() - reach).all() && (p.array() < hi.array() + reach).all())
             return false;
         const long ci = cell_of(p, 0), cj = cell_of(p, 1), ck = cell_of(p, 2);
         for (long c = std::max(0L, ck - 1); c <= std::min(n[2] - 1, ck + 1); ++c)
@@ -250,10 +253,11 @@ namespace abrade::dem
     /// the box, less the excluded boxes) in particles of the mean volume.
     long wanted_particles(const FillRegion &f)
     {
-      const Vec3 extent        = f.box_max - f.box_min;
-      double     region_volume = f.inside ? std::abs(f.inside->volume()) : extent.prod();
+      const Vec3 lo_box = f.centres_in ? f.centres_in->first.cwiseMax(f.box_min) : f.box_min; // a level's region
+      const Vec3 hi_box = f.centres_in ? f.centres_in->second.cwiseMin(f.box_max) : f.box_max;
+      double     region_volume = f.inside ? std::abs(f.inside->volume()) : (hi_box - lo_box).prod();
       for (const auto &[lo, hi] : f.exclude) // (the solid fraction is of the region left)
-        region_volume -= (hi.cwiseMin(f.box_max) - lo.cwiseMax(f.box_min)).cwiseMax(0.0).prod();
+        region_volume -= (hi.cwiseMin(hi_box) - lo.cwiseMax(lo_box)).cwiseMax(0.0).prod();
       return f.count > 0 ? f.count : std::lround(f.solid_fraction * region_volume / f.sizes.mean_volume());
     }
   } // namespace
@@ -264,13 +268,24 @@ namespace abrade::dem
     const Vec3   extent = f.box_max - f.box_min;
     if (!(r_big > 0) || !(extent.array() > 2 * r_big).all())
       throw InputError("particle generation", "the fill box must be larger than a particle diameter in every direction");
+    auto  &P = sim.particles();
+    double r_grid = r_big; // a level's neighbours include the finer levels' particles
+    if (f.centres_in)
+      for (std::size_t i = 0; i < P.size(); ++i)
+        r_grid = std::max(r_grid, P.radius[i]);
+    // a level draws its positions in its centres' box, else the spheres in the fill box
+    const Vec3 draw_lo = f.centres_in ? f.centres_in->first.cwiseMax(f.box_min) : f.box_min;
+    const Vec3 draw_hi = f.centres_in ? f.centres_in->second.cwiseMin(f.box_max) : f.box_max;
 
     // Random sequential addition: each particle at a uniformly random position that overlaps
     // no particle placed before it (a cell grid finds the neighbours), like LIGGGHTS'
     // insert/pack; near saturation a sweep of the box (Sweep)
     const WallClearance walls(f.avoid, r_big);
     const long          wanted = wanted_particles(f);
-    PlacedParticles     bed(f, r_big, wanted, walls);
+    PlacedParticles     bed(f, r_grid, wanted, walls);
+    const std::size_t   first_new = f.centres_in ? P.size() : 0;
+    for (std::size_t i = 0; i < first_new; ++i)
+      bed.add(Vec3(P.x[i], P.y[i], P.z[i]), P.radius[i]);
     std::mt19937_64     rng(f.seed);
     Sweep               sweep;
     constexpr int       max_attempts = 20000;
@@ -282,7 +297,13 @@ namespace abrade::dem
         for (int attempt = 0; attempt < max_attempts && !ok && !sweep.on; ++attempt)
           {
             for (int d = 0; d < 3; ++d)
-              p[d] = f.box_min[d] + r + (extent[d] - 2 * r) * uniform01(rng);
+              if (f.centres_in)
+                {
+                  const double lo = std::max(draw_lo[d], f.box_min[d] + r), hi = std::min(draw_hi[d], f.box_max[d] - r);
+                  p[d]            = lo + (hi - lo) * uniform01(rng);
+                }
+              else
+                p[d] = f.box_min[d] + r + (extent[d] - 2 * r) * uniform01(rng);
             ok = bed.fits(p, r);
           }
         while (!ok && sweep.next(bed, rng, p))
@@ -298,13 +319,12 @@ namespace abrade::dem
         bed.add(p, r);
       }
 
-    auto        &P       = sim.particles();
     std::int64_t next_id = 0;
     for (auto id : P.id)
       next_id = std::max(next_id, id + 1);
     const double density = sim.materials().at(f.material).density;
     const auto  &placed  = bed.positions();
-    for (std::size_t k = 0; k < placed.size(); ++k)
+    for (std::size_t k = first_new; k < placed.size(); ++k)
       {
         const std::size_t i = P.add(next_id++, placed[k][0], placed[k][1], placed[k][2], bed.radii()[k], density,
                                     f.material);

@@ -5,6 +5,7 @@
 // component, one "Wall NAME" subsection per wall.
 #include <abrade/coupling/parameter_file.h>
 #include <abrade/coupling/walls/wall_geometry.h>
+#include <abrade/dem/coarse_graining.h>
 #include <abrade/dem/generation.h>
 #include <abrade/dem/rope_grab_driver.h>
 #include <abrade/dem/simulation.h>
@@ -59,7 +60,17 @@ namespace abrade::coupling
     double                   settle_ke = 1e-4, settle_max_time = 1;
     double                   max_particle_steps = 1e12; ///< of one run (0: no limit)
     double                   coarse_graining = 1; ///< Particles/Coarse graining/Factor (applied)
-    std::optional<dem::FillRegion> fine_fill; ///< multi-level coarse graining: the fine region's fill
+    /// Multi-level coarse graining: the finer levels' fills, finest first (fill holds the rest).
+    std::vector<dem::Level>  finer_levels;
+    /// The largest radius of the particles the tools meet: the finest level's where there are
+    /// levels, else 0 (the largest in the bed). Lengths tied to the particle size near a wall
+    /// (the contact layer's thickness, the wear filter) follow it.
+    double                   tool_particle_radius = 0;
+    /// tool_particle_radius, or the largest radius in @p sim's bed without levels.
+    double particle_radius_at_tools(const dem::Simulation &sim) const
+    {
+      return tool_particle_radius > 0 ? tool_particle_radius : sim.largest_radius();
+    }
     double                   wear_profile_band = 0.01, wear_filter_length = 0.0275; ///< Output/...
     std::string              wear_field = "archard_volume"; ///< Output/Wear field
     std::vector<std::string> warnings;            ///< parameters that do not follow it, ...

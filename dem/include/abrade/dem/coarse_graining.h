@@ -32,11 +32,46 @@ namespace abrade::dem
   /// particles is the caller's to refuse). Throws std::invalid_argument for f <= 0.
   double coarse_grain(double f, FillRegion &fill, Settings &settings);
 
-  /// Multi-level coarse graining (a prototype): the part of @p fill (described with the real
-  /// particles, a fill box without a region mesh) inside the box [@p lo, @p hi] becomes a fill
-  /// of its own, which the caller coarse-grains by a smaller factor; @p fill keeps the rest
-  /// (it excludes the box). The real count is split by volume. Returns the box's fill.
-  FillRegion split_off_region(FillRegion &fill, const Vec3 &lo, const Vec3 &hi);
+  /// Multi-level coarse graining: finer particles in a box (around a tool's path), the bulk's
+  /// coarser ones elsewhere, and between them layers of intermediate sizes, each a shell around
+  /// the box (docs/coarse-graining.md). Two sizes that meet directly pack denser where they
+  /// mix (the finer fill the coarser ones' boundary voids) and looser just inside the finer side
+  /// (a wall of large spheres); sizes graded by geometric steps (Pogulis and Servin 2025, "Local
+  /// particle refinement in terramechanical simulations", J. Terramechanics 120, 101083, their
+  /// layers d_n = r d_(n-1)) meet as a nearly monodisperse bed at every interface.
+  struct FineRegion
+  {
+    Vec3   lo = Vec3::Zero(), hi = Vec3::Zero(); ///< the finest particles' box
+    double factor = 1;                           ///< their coarse-graining ratio
+    /// Largest ratio between the factors of neighbouring levels (> 1); 0: no layer between
+    /// (the finest particles meet the bulk's).
+    double step = 1.25;
+    /// Thickness of each transition layer in its particles' largest diameters.
+    double layer_diameters = 1;
+  };
+
+  /// One level of a multi-level bed: its fill, coarse-grained by its factor.
+  struct Level
+  {
+    FillRegion fill;
+    double     factor;
+  };
+
+  /// The factors of the levels from @p fine (the finest) to @p bulk (not included): @p fine and
+  /// the intermediate ones, in equal ratios no larger than @p step (none for step 0 or >= bulk /
+  /// fine).
+  std::vector<double> level_factors(double fine, double bulk, double step);
+
+  /// Splits @p fill (described with the real particles; a fill box without region mesh) into the
+  /// finer levels of @p region, finest first, each coarse-grained by its factor: the box, then a
+  /// shell per intermediate factor around it (its thickness region.layer_diameters of its
+  /// particles' largest diameter, clipped to the fill box). @p fill keeps the rest (it excludes
+  /// the outermost box), described with the real particles, for the caller to coarse-grain by
+  /// the bulk's factor. The real count (or the solid fraction) is split by volume; each level
+  /// draws its own random numbers. Throws std::invalid_argument when the box misses the fill
+  /// box, the fill has a region mesh, or the levels leave the bulk no room (less than one of
+  /// its diameters beside the outermost shell in every direction).
+  std::vector<Level> split_into_levels(FillRegion &fill, const FineRegion &region, double bulk_factor);
 
   /// An energy per particle (the settling threshold) for particles coarse-grained by @p f:
   /// x f^3, as the particle's mass.

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <random>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,14 @@ namespace abrade::dem
     const TriangleMesh *inside  = nullptr; ///< optional closed mesh: keep sites inside it
     /// Meshes (walls) the particles must not touch.
     std::vector<TriangleMesh> avoid;
-    /// Boxes (lower, upper corner) the particles stay out of, whole (another fill's region).
+    /// Boxes (lower, upper corner) the particles stay out of, whole (another fill's region);
+    /// with centres_in, their centres.
     std::vector<std::pair<Vec3, Vec3>> exclude;
+    /// A level of a multi-level bed around finer ones (coarse_graining.h): the centres lie in
+    /// this box (and out of the excluded ones), the spheres whole in the fill box and clear of
+    /// the particles already in the simulation (the finer levels'), so that the levels touch
+    /// where they meet. Unset: the particles stay whole in the box, apart from the others.
+    std::optional<std::pair<Vec3, Vec3>> centres_in;
     SizeDistribution    sizes;
     long                count          = 0;   ///< particles to place; 0: use solid_fraction
     double              solid_fraction = 0.3; ///< of the region volume
