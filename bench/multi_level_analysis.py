@@ -58,8 +58,15 @@ def main():
         factor, path = arg.split("=", 1)
         ml = [r for r in csv.DictReader(open(path)) if abs(float(r.get(FRICTION, 0.4)) - 0.4) < 1e-9][0]
         same = [r for r in uniform if abs(float(r[FACTOR]) - float(factor)) < 1e-3 and abs(float(r[FRICTION]) - 0.4) < 1e-9]
-        if not same:
-            sys.exit(f"{args[0]}: no uniform bed of factor {factor} at knife friction 0.4")
+        if not same:  # (the real size: no uniform bed to compare with)
+            print(f"### Fine ratio {factor} (knife friction 0.4; {n} beds; no uniform bed of that size)\n")
+            print("| quantity | multi-level |")
+            print("|---|---|")
+            for key, name in QUANTITIES:
+                if key + "_mean" in ml:
+                    print(f"| {name} | {float(ml[key + '_mean']):.4g} ± {float(ml[key + '_std']):.2g} |")
+            print()
+            continue
         u = same[0]
         print(f"### Fine ratio {factor} (knife friction 0.4; {n} beds each)\n")
         print("| quantity | uniform | multi-level | ratio | difference, 95 % interval |")

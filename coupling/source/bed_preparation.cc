@@ -55,7 +55,9 @@ namespace abrade::coupling
       for (const auto &level : c.finer_levels)
         want_lo = std::min(want_lo, constant ? level.fill.sizes.radius : level.fill.sizes.min);
       const double tol = 1e-9 * want_hi;
-      if (lo < want_lo - tol || hi > want_hi + tol || (constant && !two && lo < want_hi - tol))
+      // a multi-level bed holds the finest level's particles (a uniform bed of the bulk's does not)
+      const bool finest_missing = two && lo > c.finer_levels.front().fill.sizes.largest() + tol;
+      if (lo < want_lo - tol || hi > want_hi + tol || (constant && !two && lo < want_hi - tol) || finest_missing)
         throw InputError(bed, "the bed's radii are " + io::format_number(lo) + (hi > lo ? ".." + io::format_number(hi) : std::string()) +
                                 " m, the parameters give " + io::format_number(want_lo) +
                                 (want_hi > want_lo ? ".." + io::format_number(want_hi) : std::string()) +

@@ -72,10 +72,20 @@ namespace abrade::coupling
         return;
       const double g = c.coarse_graining, fine = c.finer_levels.front().factor;
       c.settings.skin *= fine / g; // coarse_grain scaled it by g
-      double count = double(c.fill.count), mass = count * g * g * g; // in real particles' masses
+      // the levels' counts (with Count 0 those the solid fraction gives, as the generator counts)
+      const auto expected = [](const dem::FillRegion &fill, double volume) {
+        return fill.count > 0 ? double(fill.count) : fill.solid_fraction * volume / fill.sizes.mean_volume();
+      };
+      double rest_volume = (c.fill.box_max - c.fill.box_min).prod();
       for (const auto &level : c.finer_levels)
-        count += double(level.fill.count), mass += double(level.fill.count) * std::pow(level.factor, 3);
-      if (c.fill.count > 0 && count > 0) // (with a solid fraction the counts are the generator's)
+        rest_volume -= level.volume;
+      double count = expected(c.fill, rest_volume), mass = count * g * g * g; // in real particles' masses
+      for (const auto &level : c.finer_levels)
+        {
+          const double n = expected(level.fill, level.volume);
+          count += n, mass += n * std::pow(level.factor, 3);
+        }
+      if (count > 0) // the mean kinetic energy per particle scales as the mean mass
         c.settle_ke *= mass / count / (g * g * g);
     }
   } // namespace
@@ -138,8 +148,9 @@ namespace abrade::coupling
                       "[-] Largest ratio between the coarse-graining factors of neighbouring sizes: "
                       "shells of intermediate sizes around the fine region take the factor from Fine "
                       "region factor to Factor in equal steps no larger than this, so that no two sizes "
-                      "that meet differ by more (two sizes 3x apart pack 15 % denser where they meet). "
-                      "0: none (the fine particles meet the bulk's). Range: 0 or > 1.");
+                      "that meet differ by more (two sizes 2x apart pack 11 % denser where they meet; "
+                      "docs/coarse-graining.md). 0: none (the fine particles meet the bulk's). Range: 0 "
+                      "or >= 1.05.");
     prm.declare_entry("Fine region layer thickness", "1", Double(0.5, 1e3),
                       "[particle diameters] Thickness of each intermediate shell, in the largest "
                       "diameter of its particles. Range: [0.5, 1000].");
@@ -223,8 +234,8 @@ namespace abrade::coupling
       const std::vector<std::string> cg = {"Particles", "Coarse graining"};
       if (!(region.factor < c.coarse_graining))
         f.fail(cg, "Fine region factor", "must be smaller than Factor (" + io::format_number(c.coarse_graining) + ")");
-      if (region.step != 0 && !(region.step > 1))
-        f.fail(cg, "Fine region step", "must be 0 (no intermediate sizes) or larger than 1");
+      if (region.step != 0 && !(region.step >= 1.05))
+        f.fail(cg, "Fine region step", "must be 0 (no intermediate sizes) or at least 1.05 (smaller steps make thousands of sizes)");
       if (!c.region_mesh_file.empty())
         f.fail(cg, "Fine region max", "a fine region needs a fill box without Region mesh");
       if (!(region.lo.array() < region.hi.array()).all() || !(region.lo.array() < fill.box_max.array()).all() ||
@@ -245,7 +256,7 @@ namespace abrade::coupling
       c.notes.push_back("multi-level coarse graining: particles of " + sizes + "and " +
                         io::format_number(fill.sizes.largest() * c.coarse_graining, 3) +
                         " m elsewhere (largest radius, count); the time step, skin, contact layers and wear filter "
-                        "follow the finest");
+                        "follow the finest, the settling threshold the mean particle mass");
     }
 
     /// Particles/Settling (the handler in Particles): when a bed has settled, and the bed file

@@ -27,10 +27,16 @@ namespace abrade::coupling
   {
     RunSize      r;
     const auto  &fill  = c.fill;
-    const double box   = (fill.box_max - fill.box_min).prod();
-    r.particles        = fill.count > 0 ? double(fill.count)
-                                        : fill.solid_fraction * box / std::max(fill.sizes.mean_volume(), 1e-300);
-    const auto  &sizes = fill.sizes;
+    double       rest  = (fill.box_max - fill.box_min).prod(); // a multi-level bed's bulk: less the levels
+    for (const auto &level : c.finer_levels)
+      rest -= level.volume;
+    const auto count = [](const dem::FillRegion &f, double volume) {
+      return f.count > 0 ? double(f.count) : f.solid_fraction * volume / std::max(f.sizes.mean_volume(), 1e-300);
+    };
+    r.particles = count(fill, rest);
+    for (const auto &level : c.finer_levels)
+      r.particles += count(level.fill, level.volume);
+    const auto  &sizes = c.finer_levels.empty() ? fill.sizes : c.finer_levels.front().fill.sizes; // the smallest
     const double r_min = sizes.kind == dem::SizeDistribution::Kind::constant || !(sizes.min > 0) ? sizes.radius : sizes.min;
     const auto  &m     = c.particle_material;
     const double rayleigh =

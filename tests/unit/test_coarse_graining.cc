@@ -189,13 +189,61 @@ TEST(CoarseGraining, FineRegionHoldsTheFinerParticles)
   sim.add_material(pellet);
   EXPECT_EQ(fill_region(sim, fine), std::lround(5000 / 3.375));
   EXPECT_EQ(fill_region(sim, coarse), std::lround(15000 / 27.0));
-  const auto &P = sim.particles(); // the fine ones whole in their box, the others' centres out of it
+  const auto &P = sim.particles(); // the fine ones' centres in their box, the others' out of it
   for (std::size_t i = 0; i < P.size(); ++i)
     if (P.radius[i] <= fine.sizes.max)
-      EXPECT_TRUE(P.x[i] >= 0.1 + P.radius[i] - 1e-12 && P.x[i] <= 0.2 - P.radius[i] + 1e-12) << P.x[i];
+      EXPECT_TRUE(P.x[i] >= 0.1 && P.x[i] <= 0.2) << P.x[i];
     else
       EXPECT_TRUE(P.x[i] <= 0.1 || P.x[i] >= 0.2) << P.x[i];
   EXPECT_EQ(overlapping_pairs(P), 0);
+}
+
+TEST(CoarseGraining, LevelsNestInThreeDimensionsAndKeepTheSolidFraction)
+{
+  // a fine box strictly inside the fill box: shells on all six sides; with Count 0 every level
+  // fills its own region to the solid fraction, so the bed's solid fraction is the same in each
+  FillRegion bulk = real_particles(Vec3(0, 0, 0), Vec3(0.5, 0.5, 0.5), 0);
+  bulk.solid_fraction = 0.25;
+  FineRegion region;
+  region.lo = Vec3(0.2, 0.2, 0.2), region.hi = Vec3(0.3, 0.3, 0.3), region.factor = 2, region.step = 1.5;
+  const auto levels = split_into_levels(bulk, region, 4);
+  ASSERT_EQ(levels.size(), 2u); // 2 -> 4 in two steps of 1.41
+  const auto &shell = *levels[1].fill.centres_in;
+  const double t    = 2 * 0.00385 * levels[1].factor;
+  EXPECT_NEAR((shell.second - shell.first - Vec3::Constant(0.1 + 2 * t)).norm(), 0, 1e-12); // one diameter each side
+  EXPECT_NEAR(levels[1].volume, std::pow(0.1 + 2 * t, 3) - 1e-3, 1e-12);
+  Settings s;
+  coarse_grain(4, bulk, s);
+  Simulation sim(s);
+  sim.add_material(pellet);
+  std::vector<double> solid;
+  for (const auto &l : levels)
+    {
+      const long n = fill_region(sim, l.fill);
+      solid.push_back(double(n) * l.fill.sizes.mean_volume() / l.volume);
+    }
+  const long n = fill_region(sim, bulk);
+  solid.push_back(double(n) * bulk.sizes.mean_volume() / (0.125 - levels[0].volume - levels[1].volume));
+  for (double v : solid)
+    EXPECT_NEAR(v, 0.25, 0.01);
+  EXPECT_EQ(overlapping_pairs(sim.particles()), 0);
+}
+
+TEST(CoarseGraining, LevelsThatLeaveTheBulkNoRoomAreRefused)
+{
+  FillRegion bulk = real_particles(Vec3(0, 0, 0), Vec3(1, 0.2, 0.2), 1000);
+  FineRegion region;
+  region.factor = 1.5, region.step = 0;
+  region.lo = Vec3(0, -1, -1), region.hi = Vec3(0.99, 1, 1); // a 10 mm gap: narrower than a bulk particle
+  FillRegion copy = bulk;
+  EXPECT_THROW(split_into_levels(copy, region, 3), std::invalid_argument);
+  region.hi = Vec3(0.9, 1, 1); // a 0.1 m gap: room
+  copy = bulk;
+  EXPECT_NO_THROW(split_into_levels(copy, region, 3));
+  region.step = 1.25, region.layer_diameters = 20; // a shell 0.1 m and more thick reaches the far face
+  copy = bulk;
+  EXPECT_THROW(split_into_levels(copy, region, 3), std::invalid_argument);
+  EXPECT_THROW(level_factors(1, 2, 1.01), std::invalid_argument); // thousands of levels
 }
 
 TEST(CoarseGraining, LevelsStepFromTheFineFactorToTheBulksInEqualRatios)
@@ -217,9 +265,7 @@ TEST(CoarseGraining, LevelsStepFromTheFineFactorToTheBulksInEqualRatios)
   region.layer_diameters = 2;
   const auto levels = split_into_levels(bulk, region, 3);
   ASSERT_EQ(levels.size(), 4u);
-  const auto region_of = [&](std::size_t k) { // the finest's box, a shell's centres' box
-    return k == 0 ? std::make_pair(levels[0].fill.box_min, levels[0].fill.box_max) : *levels[k].fill.centres_in;
-  };
+  const auto region_of = [&](std::size_t k) { return *levels[k].fill.centres_in; }; // the centres' box
   double lo = 0.25, hi = 0.35;
   long   real = 0;
   for (std::size_t k = 0; k < levels.size(); ++k)
@@ -251,11 +297,8 @@ TEST(CoarseGraining, LevelsStepFromTheFineFactorToTheBulksInEqualRatios)
         ++k;
       const double in_lo = k == 0 ? -1 : region_of(k - 1).first.x(), in_hi = k == 0 ? -1 : region_of(k - 1).second.x();
       const double out_lo = k < levels.size() ? region_of(k).first.x() : -1, out_hi = k < levels.size() ? region_of(k).second.x() : 1;
-      const double x = P.x[i], r = P.radius[i]; // the finest whole in its box, the others' centres in their shells
-      if (k == 0)
-        EXPECT_TRUE(x - r >= out_lo - 1e-12 && x + r <= out_hi + 1e-12) << x;
-      else
-        EXPECT_TRUE(x >= out_lo && x <= out_hi && (x <= in_lo || x >= in_hi)) << k << " " << x;
+      const double x = P.x[i]; // the centres in their level's region
+      EXPECT_TRUE(x >= out_lo && x <= out_hi && (k == 0 || x <= in_lo || x >= in_hi)) << k << " " << x;
     }
   EXPECT_EQ(overlapping_pairs(P), 0); // the levels touch without overlapping
 }

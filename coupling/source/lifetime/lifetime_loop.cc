@@ -454,7 +454,7 @@ namespace abrade::coupling::lifetime
     stored.wear_coefficient = source->wear_coefficient();
     stored.removes_volume   = source->removes_volume();
     stored.phases           = source->phases();
-    stored.coarse_graining_factor = dem_case.coarse_graining;
+    stored.coarse_graining_factor = dem_case.factor_at_tools(); // (with its particle radius)
     write_stored_wear(stored_wear_file(ctx.output.root(), stored.update), stored);
   }
 
@@ -524,16 +524,16 @@ namespace abrade::coupling::lifetime
     if (!smoothing_checked && calibration.coefficient > 0)
       {
         const bool other_factor = calibration.coarse_graining_factor > 0 &&
-                                  std::abs(dem_case.coarse_graining / calibration.coarse_graining_factor - 1) > 0.01;
+                                  std::abs(dem_case.factor_at_tools() / calibration.coarse_graining_factor - 1) > 0.01;
         const bool other_size = calibration.particle_radius > 0 && particle_radius > 0 &&
                                 std::abs(particle_radius / calibration.particle_radius - 1) > 0.01;
         if (other_factor || other_size)
           {
             warnings.push_back(
-              "Lifetime/Calibration was fitted with particles of largest radius " +
+              "Lifetime/Calibration was fitted with particles of largest radius (at the tools) " +
               io::format_number(calibration.particle_radius, 4) + " m (coarse-graining factor " +
               io::format_number(calibration.coarse_graining_factor, 4) + "), this run's are " +
-              io::format_number(particle_radius, 4) + " m (factor " + io::format_number(dem_case.coarse_graining, 4) +
+              io::format_number(particle_radius, 4) + " m (factor " + io::format_number(dem_case.factor_at_tools(), 4) +
               "): W and the footprint hold for the particle size they were fitted at (the knife-bed's total wear "
               "falls 1.88x from 27.5 to 9.2 mm pellets, docs/coarse-graining.md); run at the calibrated size");
             ctx.log.warning(warnings.back());
@@ -1159,7 +1159,7 @@ namespace abrade::coupling::lifetime
     r["part"]             = part_parameters.from_file ? "part" : "knife"; // (what the report calls it)
     if (particle_radius > 0) // (the size W and the footprint hold for: docs/coarse-graining.md)
       r["particle_radius"] = particle_radius;
-    r["coarse_graining_factor"] = dem_case.coarse_graining;
+    r["coarse_graining_factor"] = dem_case.factor_at_tools(); // (a multi-level bed: the finest level's)
     r["wear_source"]      = source_choice->name();
     source_choice->add_results(r);
     r["wear_field"] = dem_case.wear_field;

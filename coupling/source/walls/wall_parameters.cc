@@ -358,8 +358,9 @@ namespace abrade::coupling
     /// What coarse graining leaves unresolved or in absolute units on this wall.
     void warn_of_coarse_graining(const std::string &name, DemCase &c, const DemCase::WallCase &wc)
     {
-      if (c.coarse_graining == 1)
+      if (c.coarse_graining == 1 && c.finer_levels.empty())
         return;
+      const double radius = c.tool_particle_radius > 0 ? c.tool_particle_radius : c.fill.sizes.largest(); // the tools'
       if (!wc.wear.empty())
         {
           // a wear pattern is resolved by the triangles: they should stay smaller than a particle
@@ -368,10 +369,10 @@ namespace abrade::coupling
           for (const auto &t : mesh.triangles)
             for (int k = 0; k < 3; ++k)
               longest = std::max(longest, (mesh.vertices[t[k]] - mesh.vertices[t[(k + 1) % 3]]).norm());
-          if (longest > c.fill.sizes.largest())
+          if (longest > radius)
             c.warnings.push_back("Wall " + name + ": its triangles (edges up to " + io::format_number(longest) +
                                  " m) are larger than the coarse-grained particles (radius " +
-                                 io::format_number(c.fill.sizes.largest()) +
+                                 io::format_number(radius) +
                                  " m): the wear pattern is resolved only to the triangles (Maximum edge length)");
         }
       if (wc.probe && wc.probe_thickness > 0)

@@ -23,6 +23,8 @@ namespace abrade::dem
 
   std::vector<double> level_factors(const double fine, const double bulk, const double step)
   {
+    if (step > 0 && step < 1.05)
+      throw std::invalid_argument("a step between the levels' factors below 1.05 makes thousands of levels");
     const int n = step > 1 && bulk / fine > step ? int(std::ceil(std::log(bulk / fine) / std::log(step) - 1e-9)) : 1;
     std::vector<double> out;
     for (int k = 0; k < n; ++k)
@@ -38,15 +40,14 @@ namespace abrade::dem
       throw std::invalid_argument("the fine region must overlap the fill box (and the fill have no region mesh)");
     const double per_volume = double(fill.count) / box_volume(fill.box_min, fill.box_max); // real particles
     std::vector<Level> levels;
-    Vec3               inner_lo = lo, inner_hi = hi; // the box the next level surrounds
+    Vec3               inner_lo = lo, inner_hi = hi; // the region the next level surrounds
     long               taken    = 0;
     for (const double f : level_factors(region.factor, bulk_factor, region.step))
       {
-        Level  level{fill, f};
-        auto  &part   = level.fill;
-        double volume = box_volume(lo, hi);
-        if (levels.empty()) // the finest: whole in its box
-          part.box_min = lo, part.box_max = hi;
+        Level level{fill, f, box_volume(lo, hi)};
+        auto &part = level.fill; // whole in the fill box, the centres in the level's region
+        if (levels.empty())
+          part.centres_in = std::make_pair(lo, hi);
         else // a shell around the finer levels, touching them
           {
             const double t = region.layer_diameters * 2 * fill.sizes.largest() * f;
@@ -61,25 +62,36 @@ namespace abrade::dem
                                             io::format_number(t, 3) + " m thick) reaches a face of the fill box across " +
                                             std::string(1, char('x' + d)) + ": extend the fine region to that face, or leave "
                                             "room for its shells and the bulk");
-            part.centres_in       = std::make_pair(shell_lo, shell_hi);
+            part.centres_in = std::make_pair(shell_lo, shell_hi);
             part.exclude.emplace_back(inner_lo, inner_hi);
-            volume   = box_volume(shell_lo, shell_hi) - box_volume(inner_lo, inner_hi);
+            level.volume = box_volume(shell_lo, shell_hi) - box_volume(inner_lo, inner_hi);
             inner_lo = shell_lo, inner_hi = shell_hi;
           }
-        part.count = std::lround(per_volume * volume);
+        part.count = fill.count > 0 ? std::max(1L, std::lround(per_volume * level.volume)) : 0; // 0: the solid fraction
         part.seed  = fill.seed + 1000003 * (levels.size() + 1); // its own draws
         taken += part.count;
         Settings unused; // (the skin is the caller's)
         coarse_grain(f, part, unused);
         levels.push_back(level);
       }
-    // the rest needs room for its particles beside the outermost box, in one direction at least
+    // the rest: its centres out of the outermost box, touching it; a gap to a face of the fill
+    // box narrower than its particles' diameter would stay empty (no centre fits in it)
     const double d_bulk = 2 * fill.sizes.largest() * bulk_factor;
-    const Vec3   room   = (inner_lo - fill.box_min).cwiseMax(fill.box_max - inner_hi);
-    if (fill.count - taken < 1 || !(room.array() > d_bulk).any())
-      throw std::invalid_argument("the fine region and its shells of intermediate sizes fill the fill box, leaving no room for "
-                                  "the bulk's particles (less than one of their diameters beside the shells): make the fine region or its shells smaller");
-    fill.count -= taken; // the rest: centres out of the outermost box, touching it
+    bool         room   = false;
+    for (int d = 0; d < 3; ++d)
+      for (const double gap : {inner_lo[d] - fill.box_min[d], fill.box_max[d] - inner_hi[d]})
+        {
+          if (gap > 0 && gap < d_bulk)
+            throw std::invalid_argument("the fine region and its shells leave a gap of " + io::format_number(gap, 3) +
+                                        " m to a face of the fill box across " + std::string(1, char('x' + d)) +
+                                        ", narrower than a bulk particle (" + io::format_number(d_bulk, 3) +
+                                        " m): extend the fine region to that face or leave a bulk particle's room");
+          room = room || gap > 0;
+        }
+    if (!room || (fill.count > 0 && fill.count - taken < 1))
+      throw std::invalid_argument("the fine region and its shells fill the fill box in every direction, leaving no "
+                                  "room for the bulk's particles: make the fine region or its shells smaller");
+    fill.count -= taken;
     fill.centres_in = std::make_pair(fill.box_min, fill.box_max);
     fill.exclude.emplace_back(inner_lo, inner_hi);
     return levels;

@@ -71,6 +71,9 @@ namespace abrade::coupling
     {
       return tool_particle_radius > 0 ? tool_particle_radius : sim.largest_radius();
     }
+    /// The coarse-graining factor of the particles the tools meet (the finest level's, else
+    /// Factor): the one that goes with particle_radius_at_tools.
+    double factor_at_tools() const { return finer_levels.empty() ? coarse_graining : finer_levels.front().factor; }
     double                   wear_profile_band = 0.01, wear_filter_length = 0.0275; ///< Output/...
     std::string              wear_field = "archard_volume"; ///< Output/Wear field
     std::vector<std::string> warnings;            ///< parameters that do not follow it, ...

@@ -50,27 +50,32 @@ namespace abrade::dem
     double layer_diameters = 1;
   };
 
-  /// One level of a multi-level bed: its fill, coarse-grained by its factor.
+  /// One level of a multi-level bed: its fill, coarse-grained by its factor, and the volume of
+  /// its region (its box less the finer levels' box) [m^3].
   struct Level
   {
     FillRegion fill;
     double     factor;
+    double     volume;
   };
 
   /// The factors of the levels from @p fine (the finest) to @p bulk (not included): @p fine and
   /// the intermediate ones, in equal ratios no larger than @p step (none for step 0 or >= bulk /
-  /// fine).
+  /// fine). Throws std::invalid_argument for a step in (0, 1.05) (thousands of levels).
   std::vector<double> level_factors(double fine, double bulk, double step);
 
   /// Splits @p fill (described with the real particles; a fill box without region mesh) into the
   /// finer levels of @p region, finest first, each coarse-grained by its factor: the box, then a
   /// shell per intermediate factor around it (its thickness region.layer_diameters of its
-  /// particles' largest diameter, clipped to the fill box). @p fill keeps the rest (it excludes
-  /// the outermost box), described with the real particles, for the caller to coarse-grain by
-  /// the bulk's factor. The real count (or the solid fraction) is split by volume; each level
-  /// draws its own random numbers. Throws std::invalid_argument when the box misses the fill
-  /// box, the fill has a region mesh, or the levels leave the bulk no room (less than one of
-  /// its diameters beside the outermost shell in every direction).
+  /// particles' largest diameter). Every level places its particles' centres in its region,
+  /// whole in the fill box and clear of the finer levels' particles. @p fill keeps the rest
+  /// (its centres out of the outermost box), described with the real particles, for the caller
+  /// to coarse-grain by the bulk's factor. The real count is split by volume (with Count 0 every
+  /// level keeps the solid fraction); each level draws its own random numbers. Throws
+  /// std::invalid_argument when the box misses the fill box, the fill has a region mesh, a
+  /// shell would be cut by a face of the fill box, or the outermost shell leaves a gap to a
+  /// face narrower than a bulk particle's diameter (which no bulk centre could fill) or no
+  /// room for the bulk at all.
   std::vector<Level> split_into_levels(FillRegion &fill, const FineRegion &region, double bulk_factor);
 
   /// An energy per particle (the settling threshold) for particles coarse-grained by @p f:
