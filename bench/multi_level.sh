@@ -6,8 +6,8 @@
 # against the uniform bed of the fine size (the coarse-graining study's sweep, or DIR/uniform
 # with --uniform) with the 95 % interval of the difference.
 #
-#   bench/multi_level.sh [--factors "2,1.333"] [--half-width 0.24] [--step 1.25] [--seeds 1,2,3]
-#                        [--uniform] [--output DIR]
+#   bench/multi_level.sh [--factors "2,1.333"] [--half-width 0.24] [--step 1.25] [--layers 1]
+#                        [--seeds 1,2,3] [--uniform] [--output DIR]
 #
 # --uniform also runs the uniform beds (otherwise docs/coarse-graining/study.csv, made by
 # bench/coarse_graining.sh with the same seeds). About 5 minutes for ratio 2 and 40 for 1.333 on
@@ -15,16 +15,17 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 abrade=${ABRADE:-$root/build/abrade}
-factors="2,1.333" half=0.24 step=1.25 seeds="1,2,3" uniform=0 out=""
+factors="2,1.333" half=0.24 step=1.25 layers=1 seeds="1,2,3" uniform=0 out=""
 while (($#)); do
   case $1 in
     --factors) factors=$2; shift 2 ;;
     --half-width) half=$2; shift 2 ;;
     --step) step=$2; shift 2 ;;
+    --layers) layers=$2; shift 2 ;;
     --seeds) seeds=$2; shift 2 ;;
     --uniform) uniform=1; shift ;;
     --output) out=$2; shift 2 ;;
-    *) echo "usage: $0 [--factors \"2,1.333\"] [--half-width M] [--step S] [--seeds 1,2,3] [--uniform] [--output DIR]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--factors \"2,1.333\"] [--half-width M] [--step S] [--layers N] [--seeds 1,2,3] [--uniform] [--output DIR]" >&2; exit 2 ;;
   esac
 done
 [[ -x $abrade ]] || { echo "build abrade first: scripts/setup.sh" >&2; exit 2; }
@@ -46,7 +47,7 @@ for f in ${factors//,/ }; do
   start=$(date +%s)
   "$abrade" sweep "$case_file" --set "Particles/Coarse graining/Fine region min=-0.97, -$half, 0.03" \
     --set "Particles/Coarse graining/Fine region max=0.97, $half, 0.85" --set "Particles/Coarse graining/Fine region factor=$f" \
-    --set "Particles/Coarse graining/Fine region step=$step" --vary "Wall knife/Interaction/Friction=0.4" \
+    --set "Particles/Coarse graining/Fine region step=$step" --set "Particles/Coarse graining/Fine region layer thickness=$layers" --vary "Wall knife/Interaction/Friction=0.4" \
     --seeds "$seeds" --jobs 1 --output "$out/multi-level-f$f" --quiet
   echo "| multi-level, fine ratio $f | $(( $(date +%s) - start )) |" >> "$out/runtimes.md"
   runs+=("$f=$out/multi-level-f$f/study.csv")
