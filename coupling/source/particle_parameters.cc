@@ -148,7 +148,7 @@ namespace abrade::coupling
                       "[-] Largest ratio between the coarse-graining factors of neighbouring sizes: "
                       "shells of intermediate sizes around the fine region take the factor from Fine "
                       "region factor to Factor in equal steps no larger than this, so that no two sizes "
-                      "that meet differ by more (two sizes 2x apart pack 11 % denser where they meet; "
+                      "that meet differ by more (two sizes 2x apart pack up to 12 % denser where they meet; "
                       "docs/coarse-graining.md). 0: none (the fine particles meet the bulk's). Range: 0 "
                       "or >= 1.05.");
     prm.declare_entry("Fine region layer thickness", "1", Double(0.5, 1e3),

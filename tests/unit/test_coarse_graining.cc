@@ -375,11 +375,12 @@ TEST(CoarseGraining, AGradedInterfaceKeepsTheUniformBedsDensity)
   // default levels between (steps of at most 1.25, shells one diameter thick): across the
   // interface, in slabs of 20 mm (about three fine diameters) over |x| < 0.1 m, the settled
   // bed's solid fraction (the mean of three beds) is the uniform 6 mm bed's within 3 %
-  // (measured: 2.6 % and 2.2 % with two sets of three beds). The two sizes meeting directly
-  // (Fine region step 0) put 11 % more solid in the first slab on the coarse side, where the fine
-  // particles fill the coarse ones' boundary voids, and 4 % less in the last slab on the fine
-  // side (a wall of large spheres); the default step 1.25 with shells two diameters thick left
-  // 3.6 % at one shell's boundary.
+  // (measured: 2.6 %; with three other beds, the finest level then placed whole in its box,
+  // 2.6 % too). The two sizes meeting directly
+  // (Fine region step 0) put 12 % more solid in the first slab on the coarse side, where the fine
+  // particles fill the coarse ones' boundary voids, 6 % less in the next and 4 % less in the
+  // last slab on the fine side (a wall of large spheres); steps of 1.25 with shells two
+  // diameters thick left 3.7 % at one shell's boundary.
   const double w = 0.02, ff = 12.0 / 7;
   const int    n = 10;
   FineRegion   defaults;
