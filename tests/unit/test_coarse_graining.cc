@@ -37,18 +37,25 @@ namespace
     return f;
   }
 
-  /// A simulation of the real particles coarse-grained by @p f, with walls @p walls.
-  std::unique_ptr<Simulation> coarse_grained(double f, FillRegion fill, const TriangleMesh &walls)
+  /// An empty simulation of the pellets (two threads) with walls @p walls.
+  std::unique_ptr<Simulation> pellet_simulation(const Settings &s, const TriangleMesh &walls)
   {
-    Settings s;
-    s.threads = 2;
-    coarse_grain(f, fill, s);
     auto      sim = std::make_unique<Simulation>(s);
     const int m   = sim->add_material(pellet);
     sim->set_interaction(m, m, {0.5, 0.5, 0.0});
     Wall w;
     w.name = "walls", w.mesh = walls, w.material = m;
     sim->add_wall(w);
+    return sim;
+  }
+
+  /// A simulation of the real particles coarse-grained by @p f, with walls @p walls.
+  std::unique_ptr<Simulation> coarse_grained(double f, FillRegion fill, const TriangleMesh &walls)
+  {
+    Settings s;
+    s.threads = 2;
+    coarse_grain(f, fill, s);
+    auto sim = pellet_simulation(s, walls);
     fill.avoid.push_back(walls);
     fill_region(*sim, fill);
     sim->setup();
@@ -327,15 +334,11 @@ namespace
     Settings s;
     s.threads = 2;
     coarse_grain(bulk, rest, s);
-    auto      sim = std::make_unique<Simulation>(s);
-    const int m   = sim->add_material(pellet);
-    sim->set_interaction(m, m, {0.5, 0.5, 0.0});
-    Wall wall;
-    wall.name = "walls", wall.mesh = primitives::box_container(Vec3(-L, -L / 2, 0), Vec3(L, L / 2, 0.5)), wall.material = m;
-    sim->add_wall(wall);
+    const TriangleMesh box = primitives::box_container(Vec3(-L, -L / 2, 0), Vec3(L, L / 2, 0.5));
+    auto               sim = pellet_simulation(s, box);
     for (auto &level : levels)
-      level.fill.avoid.push_back(wall.mesh), fill_region(*sim, level.fill);
-    rest.avoid.push_back(wall.mesh), fill_region(*sim, rest);
+      level.fill.avoid.push_back(box), fill_region(*sim, level.fill);
+    rest.avoid.push_back(box), fill_region(*sim, rest);
     sim->setup();
     sim->run_phase("settle", 1.2);
     const auto &P    = sim->particles();
