@@ -2,6 +2,7 @@
 #include <abrade/coupling/case_scene.h>
 #include <abrade/coupling/part_parameters.h>
 #include <abrade/coupling/parameters.h>
+#include <abrade/coupling/walls/wall_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -51,15 +52,7 @@ namespace abrade::coupling
     CaseScene scene;
     // a part on its own (no wall holds it) has no case around it: its file's DEM keys are
     // defaults, and reading them would check a bed nobody asked for
-    auto &prm   = file.handler();
-    bool  holds = false;
-    for (const auto &name : dealii::Utilities::split_string_list(prm.get("Walls")))
-      {
-        prm.enter_subsection("Wall " + name);
-        holds = holds || prm.get("Geometry") == "solid model";
-        prm.leave_subsection();
-      }
-    if (!holds || part.vertices.empty())
+    if (!a_wall_is_the_part(file) || part.vertices.empty())
       return scene;
     DemCase c = read_dem_case(file);
     scene.present = true;

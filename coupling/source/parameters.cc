@@ -104,7 +104,7 @@ namespace abrade::coupling
 
     for (const auto &name : get_list(prm, "Walls"))
       c.walls.push_back(read_wall(f, name, c));
-    mount_knives(f, c);
+    mount_knives(f, c, read_part_length(f));
     read_grab_mechanism(f, c);
     return c;
   }

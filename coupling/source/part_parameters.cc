@@ -161,6 +161,15 @@ namespace abrade::coupling
     }
   } // namespace
 
+  double read_part_length(ParameterFile &file)
+  {
+    auto &prm = file.handler();
+    prm.enter_subsection("Knife");
+    const double length = prm.get_double("Length");
+    prm.leave_subsection();
+    return length;
+  }
+
   PartParameters read_part_parameters(ParameterFile &file)
   {
     auto           &prm = file.handler();

@@ -9,6 +9,7 @@
 #include <abrade/coupling/particle_parameters.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/coarse_graining.h>
+#include <abrade/dem/generation.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -54,12 +55,6 @@ namespace abrade::coupling
       if (dem::is_imported_bed(c.bed_file))
         c.warnings.push_back("the imported bed " + c.bed_file + " is used as it is: its radii are not scaled by "
                              "Particles/Coarse graining/Factor");
-      auto &prm = f.handler();
-      prm.enter_subsection("Lifetime");
-      if (const double r = prm.get_double("Smoothing radius"); r > 0)
-        c.warnings.push_back("Lifetime/Smoothing radius is fixed (" + io::format_number(r) + " m) while the particles "
-                             "are coarse-grained: 0 ties the wear filter to the simulated radius");
-      prm.leave_subsection();
     }
 
     /// Multi-level coarse graining: the lengths and energies tied to the particle size follow
@@ -73,16 +68,10 @@ namespace abrade::coupling
       const double g = c.coarse_graining, fine = c.finer_levels.front().factor;
       c.settings.skin *= fine / g; // coarse_grain scaled it by g
       // the levels' counts (with Count 0 those the solid fraction gives, as the generator counts)
-      const auto expected = [](const dem::FillRegion &fill, double volume) {
-        return fill.count > 0 ? double(fill.count) : fill.solid_fraction * volume / fill.sizes.mean_volume();
-      };
-      double rest_volume = (c.fill.box_max - c.fill.box_min).prod();
-      for (const auto &level : c.finer_levels)
-        rest_volume -= level.volume;
-      double count = expected(c.fill, rest_volume), mass = count * g * g * g; // in real particles' masses
+      double count = dem::expected_particles(c.fill), mass = count * g * g * g; // in real particles' masses
       for (const auto &level : c.finer_levels)
         {
-          const double n = expected(level.fill, level.volume);
+          const double n = dem::expected_particles(level.fill);
           count += n, mass += n * std::pow(level.factor, 3);
         }
       if (count > 0) // the mean kinetic energy per particle scales as the mean mass

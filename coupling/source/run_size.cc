@@ -2,6 +2,7 @@
 // refused for it (run_size.h).
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/run_size.h>
+#include <abrade/dem/generation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,15 +28,9 @@ namespace abrade::coupling
   {
     RunSize      r;
     const auto  &fill  = c.fill;
-    double       rest  = (fill.box_max - fill.box_min).prod(); // a multi-level bed's bulk: less the levels
+    r.particles        = dem::expected_particles(fill); // a multi-level bed's bulk: less the levels
     for (const auto &level : c.finer_levels)
-      rest -= level.volume;
-    const auto count = [](const dem::FillRegion &f, double volume) {
-      return f.count > 0 ? double(f.count) : f.solid_fraction * volume / std::max(f.sizes.mean_volume(), 1e-300);
-    };
-    r.particles = count(fill, rest);
-    for (const auto &level : c.finer_levels)
-      r.particles += count(level.fill, level.volume);
+      r.particles += dem::expected_particles(level.fill);
     const auto  &sizes = c.finer_levels.empty() ? fill.sizes : c.finer_levels.front().fill.sizes; // the smallest
     const double r_min = sizes.kind == dem::SizeDistribution::Kind::constant || !(sizes.min > 0) ? sizes.radius : sizes.min;
     const auto  &m     = c.particle_material;

@@ -172,6 +172,15 @@ namespace abrade::coupling
       f.fail({"Simulation"}, "Phases", "at least one phase is needed");
   }
 
+  int read_thread_count(ParameterFile &f, const dem::Parallel &ranks)
+  {
+    auto &prm = f.handler();
+    prm.enter_subsection("Simulation");
+    const int threads = prm.get_integer("Threads");
+    prm.leave_subsection();
+    return threads > 0 ? threads : dem::default_thread_count(ranks);
+  }
+
   std::optional<double> read_payload_height(ParameterFile &f)
   {
     auto &prm = f.handler();

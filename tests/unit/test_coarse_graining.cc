@@ -75,6 +75,30 @@ namespace
     return n;
   }
 
+  /// The settled bed's measuring band: its height from the centre of mass (twice its height,
+  /// for a bed of uniform density) and the layer from a quarter to three quarters of it, away
+  /// from the floor and the top.
+  struct Band
+  {
+    double height, z0, z1;
+  };
+  Band measuring_band(const ParticleStore &P)
+  {
+    double mass = 0, mz = 0;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      mass += P.mass[i], mz += P.mass[i] * P.z[i];
+    const double height = 2 * mz / mass;
+    return {height, 0.25 * height, 0.75 * height};
+  }
+
+  /// The volume of a sphere of radius @p r centred at @p c between the planes @p a and @p b
+  /// (a < b) across one axis: pi int (r^2 - (z - c)^2) dz.
+  double sphere_between(double r, double c, double a, double b)
+  {
+    const double lo = std::clamp(a - c, -r, r), hi = std::clamp(b - c, -r, r);
+    return M_PI * (r * r * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3);
+  }
+
   struct Bed
   {
     double height, bulk_density, particles;
@@ -91,22 +115,14 @@ namespace
     auto         sim = coarse_grained(f, real_particles(Vec3(-0.115, -0.115, 0.01), Vec3(0.115, 0.115, 0.4), 28212),
                                       primitives::box_container(Vec3(-L / 2, -L / 2, 0), Vec3(L / 2, L / 2, 0.5)));
     sim->run_phase("settle", 1.2);
-    const auto &P    = sim->particles();
-    double      mass = 0, mz = 0;
-    for (std::size_t i = 0; i < P.size(); ++i)
-      mass += P.mass[i], mz += P.mass[i] * P.z[i];
-    const double height = 2 * mz / mass, z0 = 0.25 * height, z1 = 0.75 * height, a = 0.08;
+    const auto  &P = sim->particles();
+    const Band   band = measuring_band(P);
+    const double a    = 0.08;
     double       inside = 0;
     for (std::size_t i = 0; i < P.size(); ++i)
-      {
-        if (std::abs(P.x[i]) > a || std::abs(P.y[i]) > a)
-          continue;
-        // the volume of the sphere between z0 and z1: pi int (r^2 - (z - zc)^2) dz
-        const double r = P.radius[i], lo = std::clamp(z0 - P.z[i], -r, r), hi = std::clamp(z1 - P.z[i], -r, r);
-        const double v = M_PI * (r * r * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3);
-        inside += v * pellet.density;
-      }
-    return {height, inside / (4 * a * a * (z1 - z0)), double(P.size())};
+      if (std::abs(P.x[i]) <= a && std::abs(P.y[i]) <= a)
+        inside += sphere_between(P.radius[i], P.z[i], band.z0, band.z1) * pellet.density;
+    return {band.height, inside / (4 * a * a * (band.z1 - band.z0)), double(P.size())};
   }
 
   /// The slope of a heap from its moments: a cone of base radius R and height h has its
@@ -341,19 +357,16 @@ namespace
     rest.avoid.push_back(box), fill_region(*sim, rest);
     sim->setup();
     sim->run_phase("settle", 1.2);
-    const auto &P    = sim->particles();
-    double      mass = 0, mz = 0;
-    for (std::size_t i = 0; i < P.size(); ++i)
-      mass += P.mass[i], mz += P.mass[i] * P.z[i];
-    const double height = 2 * mz / mass, z0 = 0.25 * height, z1 = 0.75 * height, a = 0.08;
+    const auto  &P = sim->particles();
+    const Band   band = measuring_band(P);
+    const double a    = 0.08;
     std::vector<double> phi(n, 0.0);
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (std::abs(P.y[i]) <= a && P.z[i] >= z0 && P.z[i] <= z1)
+      if (std::abs(P.y[i]) <= a && P.z[i] >= band.z0 && P.z[i] <= band.z1)
         for (int b = 0; b < n; ++b)
           {
-            const double x0 = (b - n / 2.0) * w, r = P.radius[i];
-            const double lo = std::clamp(x0 - P.x[i], -r, r), hi = std::clamp(x0 + w - P.x[i], -r, r);
-            phi[b] += M_PI * (r * r * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3) / (w * 2 * a * (z1 - z0));
+            const double x0 = (b - n / 2.0) * w;
+            phi[b] += sphere_between(P.radius[i], P.x[i], x0, x0 + w) / (w * 2 * a * (band.z1 - band.z0));
           }
     return phi;
   }

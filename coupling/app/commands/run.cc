@@ -14,6 +14,7 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/output_parameters.h>
 #include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/simulation_parameters.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/mpi_once.h>
 #include <abrade/report/report.h>
@@ -22,6 +23,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -98,10 +100,9 @@ namespace abrade::app
           coupling::set_output_directory(params, cl.output);
         dir = coupling::output_directory(params);
         job_name = prm.get("Job");
+        job      = coupling::make_job(job_name); // (the pattern of Job checked the name)
         root     = ranks.rank() == 0;
-        prm.enter_subsection("Simulation");
-        threads = prm.get_integer("Threads") > 0 ? prm.get_integer("Threads") : dem::default_thread_count(ranks);
-        prm.leave_subsection();
+        threads  = coupling::read_thread_count(params, ranks);
         canonical = params.canonical_text();
       }
 
@@ -165,13 +166,13 @@ namespace abrade::app
         coupling::JobContext ctx{params, *out, summary["results"], timers, log, cl.resume};
         try
           {
-            coupling::make_job(job_name)->run(ctx); // (the pattern of Job checked the name)
+            job->run(ctx);
           }
         catch (const std::exception &e)
           {
             finish(std::string("failed: ") + e.what());
             log.file_only(std::string("error: ") + e.what());
-            if (root && job_name == "lifetime")
+            if (root && job->report().after_a_failure)
               try
                 {
                   log.file_only("Report: " + report::write_report(dir));
@@ -193,17 +194,18 @@ namespace abrade::app
         summary.write(out->file("summary.json"));
       }
 
-      /// The report of a lifetime or knife job (rank 0). It is one of the run's declared
-      /// outputs: a write that fails (a full disk) fails the run (exit 3); a report that cannot
-      /// be made of what the run wrote is a warning. Returns what is missing ("": nothing).
+      /// The report of a job that asks for one (Job::report(), rank 0). It is one of the run's
+      /// declared outputs: a write that fails (a full disk) fails the run (exit 3); a report
+      /// that cannot be made of what the run wrote is a warning. Returns what is missing ("":
+      /// nothing).
       std::string write_the_report()
       {
         std::string not_done;
-        if (!root || (job_name != "lifetime" && job_name != "knife"))
+        if (!root || !job->report().page)
           return not_done;
         try
           {
-            if (job_name == "lifetime")
+            if (job->report().paraview_script)
               report::write_paraview_script(dir);
             std::vector<std::string> missing;
             log.line("Report: " + report::write_report(dir, &missing));
@@ -245,6 +247,7 @@ namespace abrade::app
       const dem::Parallel                                ranks = ranks_of_the_run(); // (after params)
       bool                                               root  = true;
       std::string                                        dir, job_name, canonical;
+      std::unique_ptr<coupling::Job>                     job;
       long                                               threads = 1;
       std::optional<io::OutputDirectory>                 out;
       io::Log                                            log;

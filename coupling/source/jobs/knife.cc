@@ -150,7 +150,8 @@ namespace abrade::coupling
       {
         return "build the knife's solid model (subsection Knife), check its mesh and write it (VTU, STL) with its volume and mass";
       }
-      void run(JobContext &ctx) const override;
+      void   run(JobContext &ctx) const override;
+      Report report() const override { return {true, false, false}; }
     };
   } // namespace
 

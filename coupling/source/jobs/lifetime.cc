@@ -14,7 +14,8 @@ namespace abrade::coupling
       {
         return "alternate DEM cycles (on the knife's solid model) and geometry updates until end of life (subsection Lifetime)";
       }
-      void run(JobContext &ctx) const override;
+      void   run(JobContext &ctx) const override;
+      Report report() const override { return {true, true, true}; }
     };
   } // namespace
 

@@ -2,6 +2,7 @@
 // the gauges, the wear source and the end-of-life criteria (each declaring its own entries), the
 // interval asked for and a calibration; declared here and read and checked by the loop that
 // uses them (LifetimeLoop::read_settings()).
+#include <abrade/common/format_number.h>
 #include <abrade/coupling/lifetime/lifetime_loop.h>
 #include <abrade/coupling/lifetime/lifetime_settings.h>
 #include <abrade/dem/wear.h>
@@ -132,6 +133,12 @@ namespace abrade::coupling::lifetime
                               "seed " + std::to_string(s.seeds[a]) +
                                 " is given twice: the same bed twice is no replicate (its interval would be zero)");
     const bool particles = source_choice->from_particles();
+    if (particles && s.smoothing > 0 && dem_case.coarse_graining != 1)
+      {
+        warnings.push_back("Lifetime/Smoothing radius is fixed (" + io::format_number(s.smoothing) + " m) while the "
+                           "particles are coarse-grained: 0 ties the wear filter to the simulated radius");
+        ctx.log.warning(warnings.back());
+      }
     if (particles && s.tonnes_per_cycle == 0 && !dem_case.payload_height)
       ctx.parameters.fail({"Lifetime"}, "Tonnes per cycle",
                           "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");

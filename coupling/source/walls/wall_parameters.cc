@@ -360,7 +360,7 @@ namespace abrade::coupling
     {
       if (c.coarse_graining == 1 && c.finer_levels.empty())
         return;
-      const double radius = c.tool_particle_radius > 0 ? c.tool_particle_radius : c.fill.sizes.largest(); // the tools'
+      const double radius = c.particle_radius_at_tools(c.fill.sizes.largest()); // (before the bed exists)
       if (!wc.wear.empty())
         {
           // a wear pattern is resolved by the triangles: they should stay smaller than a particle
@@ -446,12 +446,8 @@ namespace abrade::coupling
   /// the edge up; on the shell: x along the hinge (y; -y on a -x shell), z along the shell's
   /// bottom from the lip inwards, +y towards the shell's inside (the hinge), the edge 'Knife
   /// protrusion' beyond the lip.
-  void mount_knives(ParameterFile &f, DemCase &c)
+  void mount_knives(ParameterFile &f, DemCase &c, const double length)
   {
-    auto &prm = f.handler();
-    prm.enter_subsection("Knife");
-    const double length = prm.get_double("Length");
-    prm.leave_subsection();
     c.mounted_knife_length = length;
     for (auto &wc : c.walls)
       {
@@ -575,5 +571,18 @@ namespace abrade::coupling
     const std::string &family = f->entry.family, theirs = f->entry.defaults.begin()->first;
     return " '" + key + "' is an entry of " + family + " = " + theirs + ", and wall " + f->wall + "'s " + family +
            " is " + f->ours + ": set " + family + " = " + theirs + ", or leave it out.";
+  }
+
+  bool a_wall_is_the_part(ParameterFile &f)
+  {
+    auto &prm   = f.handler();
+    bool  holds = false;
+    for (const auto &name : split_string_list(prm.get("Walls")))
+      {
+        prm.enter_subsection("Wall " + name);
+        holds = holds || prm.get("Geometry") == "solid model";
+        prm.leave_subsection();
+      }
+    return holds;
   }
 } // namespace abrade::coupling

@@ -249,18 +249,19 @@ namespace abrade::dem
       }
     };
 
-    /// The particles wanted: Count, or Solid fraction of the region (its mesh's volume, else
-    /// the box, less the excluded boxes) in particles of the mean volume.
-    long wanted_particles(const FillRegion &f)
-    {
-      const Vec3 lo_box = f.centres_in ? f.centres_in->first.cwiseMax(f.box_min) : f.box_min; // a level's region
-      const Vec3 hi_box = f.centres_in ? f.centres_in->second.cwiseMin(f.box_max) : f.box_max;
-      double     region_volume = f.inside ? std::abs(f.inside->volume()) : (hi_box - lo_box).prod();
-      for (const auto &[lo, hi] : f.exclude) // (the solid fraction is of the region left)
-        region_volume -= (hi.cwiseMin(hi_box) - lo.cwiseMax(lo_box)).cwiseMax(0.0).prod();
-      return f.count > 0 ? f.count : std::lround(f.solid_fraction * region_volume / f.sizes.mean_volume());
-    }
   } // namespace
+
+  double expected_particles(const FillRegion &f)
+  {
+    if (f.count > 0)
+      return double(f.count);
+    const Vec3 lo_box = f.centres_in ? f.centres_in->first.cwiseMax(f.box_min) : f.box_min; // a level's region
+    const Vec3 hi_box = f.centres_in ? f.centres_in->second.cwiseMin(f.box_max) : f.box_max;
+    double     region_volume = f.inside ? std::abs(f.inside->volume()) : (hi_box - lo_box).prod();
+    for (const auto &[lo, hi] : f.exclude) // (the solid fraction is of the region left)
+      region_volume -= (hi.cwiseMin(hi_box) - lo.cwiseMax(lo_box)).cwiseMax(0.0).prod();
+    return f.solid_fraction * region_volume / std::max(f.sizes.mean_volume(), 1e-300);
+  }
 
   long fill_region(Simulation &sim, const FillRegion &f)
   {
@@ -281,7 +282,7 @@ namespace abrade::dem
     // no particle placed before it (a cell grid finds the neighbours), like LIGGGHTS'
     // insert/pack; near saturation a sweep of the box (Sweep)
     const WallClearance walls(f.avoid, r_big);
-    const long          wanted = wanted_particles(f);
+    const long          wanted = std::lround(expected_particles(f));
     PlacedParticles     bed(f, r_grid, wanted, walls);
     const std::size_t   first_new = f.centres_in ? P.size() : 0;
     for (std::size_t i = 0; i < first_new; ++i)

@@ -1,4 +1,5 @@
-// The registry of wear laws (wear_law.h): one factory per line of wear_laws/registered.h.
+// The registry of wear laws (wear_law.h). The laws themselves are in wear_laws/, a library of
+// their own linked whole.
 #include <abrade/common/error.h>
 #include <abrade/common/wear_field_names.h>
 #include <abrade/dem/wear_law.h>
@@ -8,21 +9,9 @@
 
 namespace abrade::dem
 {
-  namespace wear_laws
-  {
-#define ABRADE_WEAR_LAW(Class) std::unique_ptr<WearLaw> make_##Class();
-#include "wear_laws/registered.h"
-#undef ABRADE_WEAR_LAW
-  } // namespace wear_laws
-
   namespace
   {
-    using Factory = std::unique_ptr<WearLaw> (*)();
-    const std::vector<Factory> factories = {
-#define ABRADE_WEAR_LAW(Class) &wear_laws::make_##Class,
-#include "wear_laws/registered.h"
-#undef ABRADE_WEAR_LAW
-    };
+    using Registry = io::PluginRegistry<WearLaw>;
 
     /// A law's subsection held in a map (defaults, then the values given).
     class MapSection : public ParameterSection
@@ -62,14 +51,11 @@ namespace abrade::dem
 
   std::string WearField::depth_name() const { return io::wear_depth_name(name); }
 
+  WearLawRegistration::WearLawRegistration(std::unique_ptr<WearLaw> (*make)()) { Registry::add(make, "wear law"); }
+
   const std::vector<std::unique_ptr<WearLaw>> &registered_wear_laws()
   {
-    static const std::vector<std::unique_ptr<WearLaw>> laws = [] {
-      std::vector<std::unique_ptr<WearLaw>> v;
-      for (Factory f : factories)
-        v.push_back(f());
-      return v;
-    }();
+    static const std::vector<std::unique_ptr<WearLaw>> laws = Registry::make_all();
     return laws;
   }
 
@@ -83,10 +69,8 @@ namespace abrade::dem
 
   std::unique_ptr<WearLaw> make_wear_law(const std::string &name)
   {
-    const auto &laws = registered_wear_laws();
-    for (std::size_t k = 0; k < laws.size(); ++k)
-      if (laws[k]->name() == name)
-        return factories[k]();
+    if (auto law = Registry::make(name))
+      return law;
     throw InputError("", "unknown wear law '" + name + "': the wear laws are " + wear_law_names());
   }
 

@@ -39,6 +39,16 @@ namespace abrade::coupling
     virtual std::string documentation() const = 0;
     /// Reads its parameters from @p ctx, writes its files and fills the results.
     virtual void run(JobContext &ctx) const = 0;
+
+    /// What `abrade run` makes of the job's files after it, on rank 0 (report/report.h).
+    struct Report
+    {
+      bool page            = false; ///< report.html
+      bool paraview_script = false; ///< a ParaView script of the worn states
+      bool after_a_failure = false; ///< the page also of what a failed run wrote before it
+    };
+    /// None unless the job says otherwise.
+    virtual Report report() const { return {}; }
   };
 
   using JobFactory = std::unique_ptr<Job> (*)();

@@ -66,10 +66,15 @@ namespace abrade::coupling
     /// levels, else 0 (the largest in the bed). Lengths tied to the particle size near a wall
     /// (the contact layer's thickness, the wear filter) follow it.
     double                   tool_particle_radius = 0;
-    /// tool_particle_radius, or the largest radius in @p sim's bed without levels.
+    /// tool_particle_radius, or without levels @p bed_radius (the bed's largest radius).
+    double particle_radius_at_tools(double bed_radius) const
+    {
+      return tool_particle_radius > 0 ? tool_particle_radius : bed_radius;
+    }
+    /// The same for the bed of @p sim.
     double particle_radius_at_tools(const dem::Simulation &sim) const
     {
-      return tool_particle_radius > 0 ? tool_particle_radius : sim.largest_radius();
+      return particle_radius_at_tools(sim.largest_radius());
     }
     /// The coarse-graining factor of the particles the tools meet (the finest level's, else
     /// Factor): the one that goes with particle_radius_at_tools.

@@ -38,6 +38,8 @@ namespace abrade::coupling
   void declare_part_parameters(dealii::ParameterHandler &prm);
   /// Reads and checks subsection Knife; errors name the file.
   PartParameters read_part_parameters(ParameterFile &file);
+  /// Knife/Length [m] alone: the walls that mount the part read it before it is meshed.
+  double read_part_length(ParameterFile &file);
 
   /// The part's volume mesh as subsection Knife describes it, with what was found on the way.
   struct PartMesh

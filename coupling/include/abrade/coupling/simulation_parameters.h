@@ -3,6 +3,7 @@
 // domain, what an error does, the operating cycle's phases and the payload height, declared and
 // read into a DemCase.
 #include <abrade/coupling/parameters.h>
+#include <abrade/dem/parallel.h>
 
 #include <optional>
 
@@ -15,4 +16,8 @@ namespace abrade::coupling
 
   /// Simulation/Payload height of @p f [m] (none: the entry is empty), or an error naming it.
   std::optional<double> read_payload_height(ParameterFile &f);
+
+  /// The threads per rank of a run of @p f: Simulation/Threads, or with 0 the machine's cores
+  /// shared among @p ranks on it.
+  int read_thread_count(ParameterFile &f, const dem::Parallel &ranks);
 } // namespace abrade::coupling

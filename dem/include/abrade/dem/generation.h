@@ -57,6 +57,11 @@ namespace abrade::dem
     Vec3                velocity       = Vec3::Zero();
   };
 
+  /// The particles @p region asks for: its count, else its solid fraction of its region (its
+  /// mesh's volume, else the box or the level's centres' box, less the excluded boxes) in
+  /// particles of the mean volume. fill_region places this many (rounded).
+  double expected_particles(const FillRegion &region);
+
   /// Adds the particles to the simulation (ids continue from the largest existing id); returns
   /// how many were added. Throws InputError when the region cannot hold them.
   long fill_region(Simulation &sim, const FillRegion &region);

@@ -8,14 +8,21 @@
 //    no parameter-file library), and
 //  - what one step's wall contacts add to its fields (record()),
 //
-// and is registered by one line in dem/source/dem/wear_laws/registered.h. The names a user may
+// and registers itself there with one line,
+//
+//   ABRADE_REGISTER_WEAR_LAW(Archard);
+//
+// on the registry every plugin family shares (common/plugin_registry.h). The names a user may
 // write in "Wall NAME/Wear/Laws", the subsections `abrade params` documents and the fields the
 // outputs carry all come from that registry, so a law's name is spelled once
-// (docs/developer-guide.md, "Add a wear law").
+// (docs/developer-guide.md, "Add a wear law"). The laws are a library of their own, linked
+// whole into every program (abrade_dem_program in dem/CMakeLists.txt): nothing names a law's
+// file, so a linker would otherwise leave it out.
 //
 // A law is called once per step with the whole contact log (no virtual call per contact); it
 // hands each contact's increments to a WearDeposit, which splits them over the triangles that
 // share the contact point and keeps them per phase (WearRecorder, wear.h).
+#include <abrade/common/plugin_registry.h>
 #include <abrade/dem/contact_log.h>
 #include <abrade/dem/parameter_section.h>
 
@@ -101,10 +108,10 @@ namespace abrade::dem
     virtual void record(const Simulation &sim, const ContactLog &log, WearDeposit &deposit) const = 0;
   };
 
-  /// The registered laws (registered.h), in registration order: one instance each, with default
+  /// The registered laws in the order of their names: one instance each, with default
   /// parameters, to ask for names, fields and documentation.
   const std::vector<std::unique_ptr<WearLaw>> &registered_wear_laws();
-  /// The names of the registered laws, "archard, relative, ..." (@p separator between them).
+  /// The names of the registered laws, "archard, finnie, ..." (@p separator between them).
   std::string wear_law_names(const std::string &separator = ", ");
   /// A new law of that name; an InputError naming the allowed names if there is none.
   std::unique_ptr<WearLaw> make_wear_law(const std::string &name);
@@ -115,4 +122,14 @@ namespace abrade::dem
                                          const WearContext &context = {});
   /// The law that records field @p field (nullptr: none).
   const WearLaw *wear_law_of_field(const std::string &field);
+
+  /// Adds a law (ABRADE_REGISTER_WEAR_LAW); a name registered twice is a bug.
+  struct WearLawRegistration
+  {
+    explicit WearLawRegistration(std::unique_ptr<WearLaw> (*make)());
+  };
 } // namespace abrade::dem
+
+/// One line in a law's file registers it (at namespace scope).
+#define ABRADE_REGISTER_WEAR_LAW(Class)                                                                    \
+  ABRADE_REGISTER_PLUGIN(::abrade::dem::WearLawRegistration, ::abrade::dem::WearLaw, Class)

@@ -47,5 +47,5 @@ namespace abrade::dem::wear_laws
     double w = 2e-14;
   };
 
-  ABRADE_WEAR_LAW_FACTORY(Archard)
+  ABRADE_REGISTER_WEAR_LAW(Archard);
 } // namespace abrade::dem::wear_laws

@@ -58,5 +58,5 @@ namespace abrade::dem::wear_laws
     double k = 1;
   };
 
-  ABRADE_WEAR_LAW_FACTORY(Finnie)
+  ABRADE_REGISTER_WEAR_LAW(Finnie);
 } // namespace abrade::dem::wear_laws

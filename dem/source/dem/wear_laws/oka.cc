@@ -92,5 +92,5 @@ namespace abrade::dem::wear_laws
     double coarse_graining = 1;
   };
 
-  ABRADE_WEAR_LAW_FACTORY(Oka)
+  ABRADE_REGISTER_WEAR_LAW(Oka);
 } // namespace abrade::dem::wear_laws

@@ -1,16 +1,12 @@
 #pragma once
-// What a wear law's file needs (wear_law.h): the interface, the simulation it reads and the
-// macro that makes its factory, which registered.h names.
+// What a wear law's file needs (wear_law.h): the interface with its registration line, the
+// simulation it reads and two helpers.
 #include <abrade/dem/simulation.h>
 #include <abrade/dem/wear_law.h>
 
 #include <cmath>
 #include <limits>
 #include <memory>
-
-/// Defines the factory of wear law @p Class (in namespace abrade::dem::wear_laws).
-#define ABRADE_WEAR_LAW_FACTORY(Class)                                                                                \
-  std::unique_ptr<::abrade::dem::WearLaw> make_##Class() { return std::make_unique<Class>(); }
 
 namespace abrade::dem::wear_laws
 {

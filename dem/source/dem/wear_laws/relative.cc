@@ -34,5 +34,5 @@ namespace abrade::dem::wear_laws
     }
   };
 
-  ABRADE_WEAR_LAW_FACTORY(Relative)
+  ABRADE_REGISTER_WEAR_LAW(Relative);
 } // namespace abrade::dem::wear_laws

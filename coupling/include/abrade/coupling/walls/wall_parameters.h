@@ -33,8 +33,13 @@ namespace abrade::coupling
   /// read), adding its warnings and input files to @p c.
   DemCase::WallCase read_wall(ParameterFile &f, const std::string &name, DemCase &c);
 
-  /// Places every mounted part on its shell's lip and gives it the shell's motion.
-  void mount_knives(ParameterFile &f, DemCase &c);
+  /// Places every mounted part (@p knife_length long, Knife/Length: part_parameters.h) on its
+  /// shell's lip and gives it the shell's motion.
+  void mount_knives(ParameterFile &f, DemCase &c, double knife_length);
+
+  /// Whether a wall of Walls is the part's surface (Geometry = solid model). A file that
+  /// describes a part alone has none: no case around the part.
+  bool a_wall_is_the_part(ParameterFile &f);
 
   /// The defaults of a wall's entries that depend on its name. They are the default case's
   /// (Walls = container, knife): a wall named "knife" is that case's knife, worn by Archard's
