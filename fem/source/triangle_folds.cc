@@ -2,6 +2,7 @@
 #include <abrade/fem/triangle_folds.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -27,23 +28,60 @@ namespace abrade::fem::folds
     return u > inside && v > inside && u + v < 1 - inside && t > inside && t < 1 - inside;
   }
 
+  namespace
+  {
+    using Box = std::array<double, 6>; ///< lower x, y, z, upper x, y, z
+
+    /// Each triangle's bounding box.
+    std::vector<Box> bounding_boxes(const io::PolyData &s)
+    {
+      std::vector<Box> box(s.triangles.size());
+      for (std::size_t k = 0; k < s.triangles.size(); ++k)
+        {
+          auto &b = box[k];
+          for (int c = 0; c < 3; ++c)
+            b[c] = std::numeric_limits<double>::infinity(), b[c + 3] = -b[c];
+          for (const long v : s.triangles[k])
+            for (int c = 0; c < 3; ++c)
+              b[c] = std::min(b[c], s.points[3 * v + c]), b[c + 3] = std::max(b[c + 3], s.points[3 * v + c]);
+        }
+      return box;
+    }
+
+    /// Whether triangles @p i and @p j of @p s cross: an edge of one passes through the other.
+    /// Neighbours across an edge, and triangles facing the same way (a thin fan of slivers that
+    /// overlap each other by round-off, which Gmsh fills), are not a crossing of the part's two
+    /// sides.
+    bool cross_each_other(const io::PolyData &s, const std::vector<Box> &box, std::size_t i, std::size_t j)
+    {
+      auto        point = [&](long v) { return &s.points[3 * v]; };
+      const auto &ti = s.triangles[i], &tj = s.triangles[j];
+      int         shared = 0;
+      for (const long v : ti)
+        shared += std::count(tj.begin(), tj.end(), v);
+      bool apart = false;
+      for (int c = 0; c < 3; ++c)
+        apart = apart || box[i][c] > box[j][c + 3] || box[j][c] > box[i][c + 3];
+      const auto ni = normal_of(point(ti[0]), point(ti[1]), point(ti[2]));
+      const auto nj = normal_of(point(tj[0]), point(tj[1]), point(tj[2]));
+      if (shared >= 2 || apart || dot(ni, nj) >= 0)
+        return false;
+      for (int e = 0; e < 3; ++e)
+        if (segment_crosses(point(ti[e]), point(ti[(e + 1) % 3]), point(tj[0]), point(tj[1]), point(tj[2])) ||
+            segment_crosses(point(tj[e]), point(tj[(e + 1) % 3]), point(ti[0]), point(ti[1]), point(ti[2])))
+          return true;
+      return false;
+    }
+  } // namespace
+
   std::vector<std::size_t> crossing_triangles(const io::PolyData &s)
   {
     if (s.triangles.empty())
       return {};
-    auto point = [&](long v) { return &s.points[3 * v]; };
-    std::vector<std::array<double, 6>> box(s.triangles.size());
-    std::vector<double>                size(s.triangles.size());
-    for (std::size_t k = 0; k < s.triangles.size(); ++k)
-      {
-        auto &b = box[k];
-        for (int c = 0; c < 3; ++c)
-          b[c] = std::numeric_limits<double>::infinity(), b[c + 3] = -b[c];
-        for (const long v : s.triangles[k])
-          for (int c = 0; c < 3; ++c)
-            b[c] = std::min(b[c], point(v)[c]), b[c + 3] = std::max(b[c + 3], point(v)[c]);
-        size[k] = std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
-      }
+    const std::vector<Box> box = bounding_boxes(s);
+    std::vector<double>    size(box.size());
+    for (std::size_t k = 0; k < box.size(); ++k)
+      size[k] = std::max({box[k][3] - box[k][0], box[k][4] - box[k][1], box[k][5] - box[k][2]});
     // cells of twice the median triangle's box: a few triangles each, whatever their size
     std::nth_element(size.begin(), size.begin() + size.size() / 2, size.end());
     const double cell = 2 * size[size.size() / 2];
@@ -64,7 +102,6 @@ namespace abrade::fem::folds
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::size_t i = 0; i < s.triangles.size(); ++i)
       {
-        const auto              &ti = s.triangles[i];
         std::vector<std::size_t> candidates;
         cells_of(i, [&](long long c) {
           for (const std::size_t j : grid.at(c))
@@ -74,32 +111,12 @@ namespace abrade::fem::folds
         std::sort(candidates.begin(), candidates.end());
         candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
         for (const std::size_t j : candidates)
-          {
-              const auto &tj = s.triangles[j];
-              int         shared = 0;
-              for (const long v : ti)
-                shared += std::count(tj.begin(), tj.end(), v);
-              bool apart = false;
-              for (int c = 0; c < 3; ++c)
-                apart = apart || box[i][c] > box[j][c + 3] || box[j][c] > box[i][c + 3];
-              // (neighbours across an edge, and triangles facing the same way: a thin fan of
-              // slivers that overlap each other by round-off, which Gmsh fills, is not a crossing
-              // of the part's two sides)
-              const auto ni = normal_of(point(ti[0]), point(ti[1]), point(ti[2]));
-              const auto nj = normal_of(point(tj[0]), point(tj[1]), point(tj[2]));
-              if (shared >= 2 || apart || dot(ni, nj) >= 0)
-                continue;
-              bool cross = false;
-              for (int e = 0; e < 3 && !cross; ++e)
-                cross = segment_crosses(point(ti[e]), point(ti[(e + 1) % 3]), point(tj[0]), point(tj[1]), point(tj[2])) ||
-                        segment_crosses(point(tj[e]), point(tj[(e + 1) % 3]), point(ti[0]), point(ti[1]), point(ti[2]));
-              if (cross)
-                {
+          if (cross_each_other(s, box, i, j))
+            {
 #pragma omp atomic write
-                  crossing[i] = 1;
+              crossing[i] = 1;
 #pragma omp atomic write
-                  crossing[j] = 1;
-                }
+              crossing[j] = 1;
             }
       }
     std::vector<std::size_t> list;

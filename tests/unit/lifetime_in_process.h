@@ -7,7 +7,7 @@
 #include <abrade/common/output_directory.h>
 #include <abrade/common/timer.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters/parameter_file.h>
 
 #include <filesystem>
 #include <string>

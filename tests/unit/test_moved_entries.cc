@@ -3,7 +3,7 @@
 // `Wear/Archard/Coefficient`, where it is now, in the file and in --set, with a note naming
 // where it was read; the last setting still wins whichever spelling gives it, and every later
 // line of the file keeps its number in messages.
-#include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters/parameter_file.h>
 
 #include <gtest/gtest.h>
 

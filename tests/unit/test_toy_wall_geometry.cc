@@ -7,8 +7,8 @@
 // The truth: four equilateral triangles of edge a, total area sqrt(3) a^2, their vertices at
 // R p + Offset for the tetrahedron's own p (Rotation axis and angle, Offset: the wall's).
 #include <abrade/common/error.h>
-#include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/parameters.h>
 #include <abrade/coupling/walls/wall_geometry.h>
 
 #include <gtest/gtest.h>

@@ -9,8 +9,8 @@
 // (dt^2 / 24) (v'(0) - v'(t)) = (w dt)^2 / 24 A sin(w t) (the midpoint rule's error, to dt^4): so
 // A sin(w t) (1 + (w dt)^2 / 24), 5.1e-10 m above A at a quarter period (velocities taken at the
 // steps' starts would be A w dt / 2 = 7.9e-6 m off; the sums' round-off over a period stays below 1e-13 m).
-#include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/parameters.h>
 #include <abrade/dem/wall_motion_model.h>
 
 #include <gtest/gtest.h>

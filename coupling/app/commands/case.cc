@@ -1,8 +1,8 @@
-// abrade case: a commented lifetime case written around the user's part (coupling/case_command.h
-// parses its options).
+// abrade case: a commented lifetime case written around the user's part
+// (coupling/case_setup/case_command.h parses its options).
 #include "../command.h"
 
-#include <abrade/coupling/case_command.h>
+#include <abrade/coupling/case_setup/case_command.h>
 
 namespace abrade::app
 {

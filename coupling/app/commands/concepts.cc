@@ -1,12 +1,12 @@
 // abrade concepts: knife concepts against a baseline on the same beds, with the changes'
-// uncertainties (coupling/concepts.h).
+// uncertainties (coupling/studies/concepts.h).
 #include "../command.h"
 #include "../command_line.h"
 
 #include <abrade/common/error.h>
 #include <abrade/common/progress.h>
-#include <abrade/coupling/concepts.h>
-#include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/studies/concepts.h>
+#include <abrade/coupling/parameters/parameter_file.h>
 
 #include <filesystem>
 #include <sstream>

@@ -5,9 +5,9 @@
 #include <abrade/common/error.h>
 #include <abrade/common/log.h>
 #include <abrade/common/output_directory.h>
-#include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/part_parameters.h>
-#include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/part_parameters.h>
+#include <abrade/coupling/parameters/parameters.h>
 #include <abrade/dem/mesh_io.h>
 
 #include <filesystem>

@@ -3,7 +3,7 @@
 #include "../command_line.h"
 
 #include <abrade/common/error.h>
-#include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters/parameter_file.h>
 
 #include <iostream>
 

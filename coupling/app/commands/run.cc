@@ -12,9 +12,9 @@
 #include <abrade/common/termination.h>
 #include <abrade/common/version.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/output_parameters.h>
-#include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/simulation_parameters.h>
+#include <abrade/coupling/parameters/output_parameters.h>
+#include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/simulation_parameters.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/mpi_once.h>
 #include <abrade/report/report.h>

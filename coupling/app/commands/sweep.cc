@@ -1,12 +1,12 @@
 // abrade sweep: the case for every value of the varied parameters and every seed, side by
-// side, with the study's tables, plots and surfaces (coupling/sweep.h).
+// side, with the study's tables, plots and surfaces (coupling/studies/sweep.h).
 #include "../command.h"
 #include "../command_line.h"
 
 #include <abrade/common/error.h>
 #include <abrade/common/progress.h>
-#include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/sweep.h>
+#include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/studies/sweep.h>
 
 #include <filesystem>
 

@@ -5,10 +5,10 @@
 //
 //   abrade run cases/knife_bed/knife_bed.prm --set Job=bed --set "Particles/Settling/Bed file=$PWD/bed.bed"
 #include <abrade/common/error.h>
-#include <abrade/coupling/bed_preparation.h>
+#include <abrade/coupling/dem_run/bed_preparation.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/part_parameters.h>
-#include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameters/part_parameters.h>
+#include <abrade/coupling/parameters/parameters.h>
 
 namespace abrade::coupling
 {

@@ -11,12 +11,12 @@
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/progress.h>
-#include <abrade/coupling/bed_preparation.h>
+#include <abrade/coupling/dem_run/bed_preparation.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/part_parameters.h>
-#include <abrade/coupling/parameters.h>
-#include <abrade/coupling/wear_profile.h>
-#include <abrade/coupling/wear_tables.h>
+#include <abrade/coupling/parameters/part_parameters.h>
+#include <abrade/coupling/parameters/parameters.h>
+#include <abrade/coupling/dem_run/wear_profile.h>
+#include <abrade/coupling/dem_run/wear_tables.h>
 #include <abrade/common/csv_writer.h>
 #include <abrade/dem/bed_import.h>
 #include <abrade/dem/generation.h>

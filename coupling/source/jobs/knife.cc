@@ -18,9 +18,9 @@
 //    (summary.json results.knife.case).
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_output.h>
-#include <abrade/coupling/case_scene.h>
+#include <abrade/coupling/case_setup/case_scene.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/part_parameters.h>
+#include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/fem/parametric_knife.h>
 #include <abrade/fem/mesh_quality.h>
 #include <abrade/fem/mpi_once.h>

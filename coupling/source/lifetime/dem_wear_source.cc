@@ -1,8 +1,8 @@
 // The DEM wear source: one operating cycle per bed seed on the knife's current surface; under
 // mpirun the beds run side by side on groups of the ranks (Lifetime/Ranks per bed).
 #include <abrade/common/timer.h>
-#include <abrade/coupling/bed_preparation.h>
-#include <abrade/coupling/part_parameters.h>
+#include <abrade/coupling/dem_run/bed_preparation.h>
+#include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/dem/ensemble.h>
 #include <abrade/dem/thread_governor.h>

@@ -7,7 +7,7 @@
 #include <abrade/common/input_file.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/timer.h>
-#include <abrade/coupling/bed_preparation.h>
+#include <abrade/coupling/dem_run/bed_preparation.h>
 #include <abrade/coupling/lifetime/lifetime_loop.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/coupling/lifetime/paired_life.h>

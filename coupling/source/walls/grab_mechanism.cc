@@ -1,5 +1,5 @@
 // The subsection "Grab mechanism" (walls/grab_mechanism.h).
-#include <abrade/coupling/parameter_section.h>
+#include <abrade/coupling/parameters/parameter_section.h>
 #include <abrade/coupling/walls/grab_mechanism.h>
 #include <abrade/dem/rope_grab_driver.h>
 

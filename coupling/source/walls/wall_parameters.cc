@@ -1,8 +1,8 @@
 // The subsection "Wall NAME": declared with the entries of the wall's own geometry and motion,
 // read into the DEM's wall, and the mounted parts placed on their shells (wall_parameters.h).
 #include <abrade/common/format_number.h>
-#include <abrade/coupling/material_parameters.h>
-#include <abrade/coupling/parameter_section.h>
+#include <abrade/coupling/parameters/material_parameters.h>
+#include <abrade/coupling/parameters/parameter_section.h>
 #include <abrade/coupling/walls/wall_parameters.h>
 #include <abrade/dem/wall_motion_model.h>
 

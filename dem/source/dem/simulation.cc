@@ -291,6 +291,34 @@ namespace abrade::dem
 
   void Simulation::setup()
   {
+    check_rigid_body_masses();
+    if (mats.empty())
+      throw InputError("", "no materials defined");
+    distribute_new_particles();
+    tabulate_pair_coefficients();
+    set_rotational_inertia();
+    double r_min = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < store.size(); ++i)
+      r_min = std::min(r_min, store.radius[i]);
+    r_min = impl->parallel.min(r_min);
+    if (!std::isfinite(r_min)) // no particles
+      r_min = 1;
+    choose_time_step(r_min);
+
+    skin = config.skin > 0 ? config.skin : 0.2 * r_min;
+    impl->buffers.assign(impl->n_threads, {});
+    impl->wall_loads.assign(impl->n_threads, std::vector<double>(6 * walls.size()));
+    impl->log.per_thread.assign(impl->n_threads, {});
+    for (auto &l : impl->log.per_thread)
+      l.reserve(1024);
+    impl->force_rebuild = true;
+    build_neighbour_lists(); // sizes the wall histories too
+    compute_forces();
+    is_set_up = true;
+  }
+
+  void Simulation::check_rigid_body_masses() const
+  {
     for (const Wall &w : walls) // a body's walls may carry no mass of their own, the body must
       if (w.motion.kind == WallMotion::Kind::rigid_body && !w.motion.body.empty())
         {
@@ -301,16 +329,20 @@ namespace abrade::dem
           if (!(mass > 0))
             throw InputError("wall '" + w.name + "'", "the rigid body '" + w.motion.body + "' has no mass");
         }
+  }
+
+  void Simulation::tabulate_pair_coefficients()
+  {
     const std::size_t nm = mats.size();
-    if (nm == 0)
-      throw InputError("", "no materials defined");
-    distribute_new_particles();
     coefficients.assign(nm * nm, PairCoefficients());
     for (std::size_t a = 0; a < nm; ++a)
       for (std::size_t b = 0; b < nm; ++b)
         coefficients[a * nm + b] =
           make_pair_coefficients(mats[a], mats[b], interactions[a * nm + b], config.damping);
+  }
 
+  void Simulation::set_rotational_inertia()
+  {
     // Non-rotating materials: zero inverse inertia keeps the angular velocity at 0.
     any_rotation = false;
     for (std::size_t i = 0; i < store.size(); ++i)
@@ -321,20 +353,18 @@ namespace abrade::dem
           store.wx[i] = store.wy[i] = store.wz[i] = 0;
         any_rotation |= rot;
       }
+  }
 
-    // Time step: explicit, or a fraction of the Rayleigh time step of the smallest particle.
-    double r_min = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < store.size(); ++i)
-      r_min = std::min(r_min, store.radius[i]);
-    r_min = impl->parallel.min(r_min);
-    if (!std::isfinite(r_min)) // no particles
-      r_min = 1;
+  void Simulation::choose_time_step(const double r_min)
+  {
+    // explicit, or a fraction of the Rayleigh time step of the smallest particle
     time_step = config.time_step > 0 ? config.time_step : config.rayleigh_fraction * rayleigh_time_step();
     if (!(time_step > 0) || !std::isfinite(time_step))
       throw InputError("", "cannot choose a time step: set one explicitly, or add particles");
 
     // Warn when dt exceeds a tenth of the shortest Hertz contact time at the characteristic
     // speed (smallest particle against each material, walls as infinitely heavy).
+    const std::size_t nm = mats.size();
     for (std::size_t i = 0; i < store.size(); ++i)
       if (store.radius[i] == r_min)
         {
@@ -358,17 +388,6 @@ namespace abrade::dem
             }
           break;
         }
-
-    skin = config.skin > 0 ? config.skin : 0.2 * r_min;
-    impl->buffers.assign(impl->n_threads, {});
-    impl->wall_loads.assign(impl->n_threads, std::vector<double>(6 * walls.size()));
-    impl->log.per_thread.assign(impl->n_threads, {});
-    for (auto &l : impl->log.per_thread)
-      l.reserve(1024);
-    impl->force_rebuild = true;
-    build_neighbour_lists(); // sizes the wall histories too
-    compute_forces();
-    is_set_up = true;
   }
 
   // ---------------------------------------------------------------------------------------------
@@ -419,33 +438,7 @@ namespace abrade::dem
       w.advance(dt);
     t += dt;
     ++stats.steps;
-    // one reduction for the rebuild criterion and the problems of all ranks
-    {
-      std::vector<double> flags{max_d2, bad != std::numeric_limits<long>::max() ? 1.0 : 0.0,
-                                m.force_rebuild ? 1.0 : 0.0};
-      m.parallel.max(flags);
-      m.max_displacement = std::sqrt(flags[0]);
-      m.force_rebuild    = flags[2] > 0;
-      if (flags[1] > 0)
-        {
-          std::ostringstream s;
-          bool               nan = false;
-          if (bad != std::numeric_limits<long>::max())
-            {
-              nan = !std::isfinite(P.x[bad] + P.y[bad] + P.z[bad]);
-              s << (nan ? "NaN position" : "particle left the domain") << ": particle id " << P.id[bad]
-                << " at step " << stats.steps << " (t = " << t << " s), position (" << P.x[bad] << ", "
-                << P.y[bad] << ", " << P.z[bad] << ")";
-            }
-          const int   holder = m.parallel.max_location(s.str().empty() ? 0.0 : 1.0 + nan).second;
-          std::string text   = m.parallel.broadcast(s.str(), holder);
-          nan                = text.rfind("NaN", 0) == 0;
-          if (nan || config.stop_on_error)
-            throw RunError(text);
-          warn(text + "; removed");
-          m.force_rebuild = true;
-        }
-    }
+    agree_on_the_step(max_d2, bad);
 
     if (needs_rebuild())
       build_neighbour_lists();
@@ -464,25 +457,64 @@ namespace abrade::dem
       driver->drive(*this, dt);
 
     // built-in per-triangle impulses, then the plug-ins
-    m.log.for_each([&](const WallContactRecord &r) {
+    add_triangle_impulses(dt);
+    for (auto &hook : hooks)
+      hook->after_step(*this, m.log);
+    check_step();
+    count_the_step(start, n2);
+  }
+
+  void Simulation::agree_on_the_step(const double max_d2, const long bad)
+  {
+    Impl                &m = *impl;
+    const ParticleStore &P = store;
+    // one reduction for the rebuild criterion and the problems of all ranks
+    std::vector<double> flags{max_d2, bad != std::numeric_limits<long>::max() ? 1.0 : 0.0, m.force_rebuild ? 1.0 : 0.0};
+    m.parallel.max(flags);
+    m.max_displacement = std::sqrt(flags[0]);
+    m.force_rebuild    = flags[2] > 0;
+    if (!(flags[1] > 0))
+      return;
+    std::ostringstream s;
+    bool               nan = false;
+    if (bad != std::numeric_limits<long>::max())
+      {
+        nan = !std::isfinite(P.x[bad] + P.y[bad] + P.z[bad]);
+        s << (nan ? "NaN position" : "particle left the domain") << ": particle id " << P.id[bad] << " at step "
+          << stats.steps << " (t = " << t << " s), position (" << P.x[bad] << ", " << P.y[bad] << ", " << P.z[bad]
+          << ")";
+      }
+    const int   holder = m.parallel.max_location(s.str().empty() ? 0.0 : 1.0 + nan).second;
+    std::string text   = m.parallel.broadcast(s.str(), holder);
+    nan                = text.rfind("NaN", 0) == 0;
+    if (nan || config.stop_on_error)
+      throw RunError(text);
+    warn(text + "; removed");
+    m.force_rebuild = true;
+  }
+
+  void Simulation::add_triangle_impulses(const double dt)
+  {
+    impl->log.for_each([&](const WallContactRecord &r) {
       Wall &w = walls[r.wall];
       w.normal_impulse[r.triangle] += std::abs(r.normal_force) * dt;
       w.tangential_impulse[r.triangle] +=
         std::sqrt(r.tangential_force[0] * r.tangential_force[0] + r.tangential_force[1] * r.tangential_force[1] +
                   r.tangential_force[2] * r.tangential_force[2]) * dt;
     });
-    for (auto &hook : hooks)
-      hook->after_step(*this, m.log);
-    check_step();
+  }
 
+  void Simulation::count_the_step(const std::chrono::steady_clock::time_point start, const std::size_t particles)
+  {
+    Impl        &m       = *impl;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats.loop_seconds += seconds;
     stats.thread_steps += m.team();
     const long kept_before = m.governor->changes();
     m.governor->record_step(seconds);
     stats.team_changes += m.governor->changes() - kept_before;
-    stats.particle_steps += static_cast<long>(n2);
-    stats.ghost_steps += static_cast<long>(P.n_ghost);
+    stats.particle_steps += static_cast<long>(particles);
+    stats.ghost_steps += static_cast<long>(store.n_ghost);
   }
 
   void Simulation::check_step()

@@ -8,7 +8,7 @@
 #include <abrade/common/log.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/common/timer.h>
-#include <abrade/coupling/parameter_file.h>
+#include <abrade/coupling/parameters/parameter_file.h>
 #include <abrade/dem/simulation.h>
 
 #include <memory>

@@ -1,7 +1,7 @@
 // Geometry = file: a surface mesh (STL, OBJ, PLY, VTK, VTP) or a CAD file whose surfaces Gmsh
 // meshes, optionally with a lip a part can be mounted on (wall_geometry.h).
 #include <abrade/common/error.h>
-#include <abrade/coupling/part_parameters.h>
+#include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/walls/wall_geometry.h>
 #include <abrade/dem/mesh_io.h>
 #include <abrade/fem/solid_file.h>

@@ -1,7 +1,8 @@
 #pragma once
 // A subsection of the parameter file as the DEM's plugins (wear laws, contact sub-models, wall
-// motions; the coupling's wall geometries) see it, so that they declare, read and check their own parameters while the DEM library knows no
-// parameter-file library (coupling/parameter_section.h maps it onto deal.II's ParameterHandler).
+// motions; the coupling's wall geometries) see it, so that they declare, read and check their
+// own parameters while the DEM library knows no parameter-file library
+// (coupling/parameters/parameter_section.h maps it onto deal.II's ParameterHandler).
 #include <array>
 #include <stdexcept>
 #include <string>

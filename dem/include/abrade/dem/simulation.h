@@ -31,6 +31,7 @@
 #include <abrade/dem/particles.h>
 #include <abrade/dem/wall.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -228,5 +229,24 @@ namespace abrade::dem
     void wall_forces_with();
     void check_step();
     void warn(const std::string &w);
+    // set-up (simulation.cc)
+    /// Refuses a rigid body whose walls carry no mass.
+    void check_rigid_body_masses() const;
+    /// The pair coefficients of every pair of materials.
+    void tabulate_pair_coefficients();
+    /// Inverse inertias; a non-rotating material's particles get none (and no spin).
+    void set_rotational_inertia();
+    /// The time step (Settings, or a fraction of the Rayleigh step), with a warning where it
+    /// exceeds a tenth of the Hertz contact time of the smallest particle (radius @p r_min).
+    void choose_time_step(double r_min);
+    // the time step's parts (simulation.cc)
+    /// The rebuild criterion and a lost or NaN particle (@p bad, else the largest long) agreed
+    /// by all ranks: a NaN stops the run, a particle out of the domain is removed with a warning
+    /// (or stops it with Settings::stop_on_error).
+    void agree_on_the_step(double max_d2, long bad);
+    /// Each wall triangle's normal and tangential impulse from this step's contacts.
+    void add_triangle_impulses(double dt);
+    /// The step's time and particle counts, and the thread governor's measurement.
+    void count_the_step(std::chrono::steady_clock::time_point start, std::size_t particles);
   };
 } // namespace abrade::dem

@@ -28,7 +28,7 @@
 // and all of them count in the interval; Lifetime/Target interval adds beds to the updates
 // until the life's interval is as narrow as asked.
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/part_parameters.h>
+#include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/lifetime/edge_gauge.h>
 #include <abrade/coupling/lifetime/wear_field_columns.h>
 #include <abrade/coupling/lifetime/end_of_life.h>

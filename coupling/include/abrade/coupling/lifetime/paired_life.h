@@ -32,7 +32,7 @@
 // (H held, F free elasticities). Without shared beds it is the two runs' own variances added.
 // The interval is (L_A / L_B) exp(+-t s), t at the smallest of the pools' degrees of freedom
 // (conservative: the sum of several has more).
-#include <abrade/coupling/paired_change.h>
+#include <abrade/coupling/studies/paired_change.h>
 
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@
 // wear at the chisel's tip stays on the tip's vertices.
 #include <abrade/common/plugin_registry.h>
 #include <abrade/coupling/jobs.h>
-#include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameters/parameters.h>
 #include <abrade/fem/solid_surface.h>
 
 #include <deal.II/base/parameter_handler.h>

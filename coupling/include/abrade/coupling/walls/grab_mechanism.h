@@ -1,8 +1,8 @@
 #pragma once
 // The subsection "Grab mechanism" of a case: the mechanism that moves a grab's walls (Type =
 // rope: a rope grab, dem/rope_grab_driver.h), declared, read and checked against the walls.
-#include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/parameters.h>
 
 namespace abrade::coupling
 {

@@ -8,8 +8,8 @@
 // declared and the file read strictly. An entry of another geometry or motion set on a wall is
 // then an error that says whose entry it is (foreign_entry_hint()), unless it is that plugin's
 // default or a replaced choice's (ParameterFile leaves those out: plugin_entry()).
-#include <abrade/coupling/parameter_file.h>
-#include <abrade/coupling/parameters.h>
+#include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/parameters.h>
 
 #include <map>
 #include <optional>

@@ -1,0 +1,213 @@
+// The particle bed a DEM run starts from: generated, poured and settled, or loaded from a saved
+// bed, or imported from another code's file (bed_preparation.h); shared by the dem and bed jobs
+// and the lifetime loop's cycles.
+#include <abrade/common/error.h>
+#include <abrade/common/format_number.h>
+#include <abrade/common/progress.h>
+#include <abrade/coupling/dem_run/bed_preparation.h>
+#include <abrade/dem/bed_import.h>
+#include <abrade/dem/generation.h>
+#include <abrade/dem/mesh_io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <limits>
+
+namespace abrade::coupling
+{
+  void flush_warnings(dem::Simulation &sim, io::Log &log)
+  {
+    for (const auto &w : sim.take_warnings())
+      log.warning(w);
+  }
+
+  namespace
+  {
+    /// The bed's top: the highest particle's top [m].
+    double bed_top(const dem::Simulation &sim) // collective
+    {
+      const auto &P   = sim.particles();
+      double      top = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < P.size(); ++i)
+        top = std::max(top, P.z[i] + P.radius[i]);
+      return sim.parallel().max(top);
+    }
+  } // namespace
+
+  namespace
+  {
+    /// A saved bed must hold the particles the parameters describe: a bed made at another
+    /// radius or coarse-graining factor (the same Bed file, rerun with another Factor) would
+    /// otherwise run silently with the old particles.
+    void check_bed_sizes(const DemCase &c, const dem::Simulation &sim, const std::string &bed) // collective
+    {
+      const auto &P  = sim.particles();
+      double      lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (std::size_t i = 0; i < P.size(); ++i)
+        lo = std::min(lo, P.radius[i]), hi = std::max(hi, P.radius[i]);
+      lo = -sim.parallel().max(-lo), hi = sim.parallel().max(hi);
+      const auto  &d        = c.fill.sizes;
+      const bool   constant = d.kind == dem::SizeDistribution::Kind::constant;
+      double       want_lo = constant ? d.radius : d.min, want_hi = constant ? d.radius : d.max;
+      const bool   two     = !c.finer_levels.empty(); // multi-level: their radii too
+      for (const auto &level : c.finer_levels)
+        want_lo = std::min(want_lo, constant ? level.fill.sizes.radius : level.fill.sizes.min);
+      const double tol = 1e-9 * want_hi;
+      // a multi-level bed holds the finest level's particles (a uniform bed of the bulk's does not)
+      const bool finest_missing = two && lo > c.finer_levels.front().fill.sizes.largest() + tol;
+      if (lo < want_lo - tol || hi > want_hi + tol || (constant && !two && lo < want_hi - tol) || finest_missing)
+        throw InputError(bed, "the bed's radii are " + io::format_number(lo) + (hi > lo ? ".." + io::format_number(hi) : std::string()) +
+                                " m, the parameters give " + io::format_number(want_lo) +
+                                (want_hi > want_lo ? ".." + io::format_number(want_hi) : std::string()) +
+                                " m (Particles/Generation, x Particles/Coarse graining/Factor " +
+                                io::format_number(c.coarse_graining) +
+                                "): it was made for other particles; name another Particles/Settling/Bed file or "
+                                "delete this one");
+    }
+  } // namespace
+
+  namespace
+  {
+    /// Generates the particles of @p c into @p sim (the fine region first, if any) and lets
+    /// them settle.
+    void generate_and_settle(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
+    {
+      dem::FillRegion   fill = c.fill;
+      dem::TriangleMesh region;
+      if (!c.region_mesh_file.empty())
+        {
+          region      = dem::read_surface_mesh(c.region_mesh_file);
+          fill.inside = &region;
+        }
+      for (std::size_t w = 0; w < sim.n_walls(); ++w)
+        fill.avoid.push_back(sim.wall(w).current_mesh());
+      {
+        io::ScopedTimer t(ctx.timers, "generate");
+        for (const auto &level : c.finer_levels) // multi-level coarse graining: the finest first
+          {
+            dem::FillRegion part = level.fill;
+            part.avoid           = fill.avoid;
+            const long n         = dem::fill_region(sim, part);
+            ctx.log.line("Generated " + std::to_string(n) + " particles of radius " + io::format_number(part.sizes.largest()) +
+                         " m (coarse-grained by " + io::format_number(level.factor, 4) + ") in the fine region" +
+                         (&level == &c.finer_levels.front() ? std::string() : "'s shell") + " (seed " +
+                         std::to_string(part.seed) + ")");
+          }
+        const long n = dem::fill_region(sim, fill);
+        ctx.log.line("Generated " + std::to_string(n) + " particles (seed " + std::to_string(fill.seed) + ")");
+      }
+      sim.setup();
+      flush_warnings(sim, ctx.log);
+      {
+        io::ScopedTimer  t(ctx.timers, "settle");
+        io::ProgressLine progress("settling", c.settle_max_time);
+        const double     t0 = sim.time();
+        sim.settle(c.settle_ke, c.settle_max_time, [&](const dem::Simulation &s) {
+          const double ke = s.kinetic_energy() / std::max<std::size_t>(1, s.n_particles());
+          progress.update(s.time() - t0, "kinetic energy " + io::format_number(ke, 3) + " J per particle");
+        });
+      }
+      const double ke = sim.kinetic_energy() / std::max<std::size_t>(1, sim.n_particles());
+      ctx.log.line("Settled for " + io::format_number(sim.time()) + " s: kinetic energy " + io::format_number(ke) + " J per particle, top at z = " +
+                   io::format_number(bed_top(sim), 4) + " m");
+      if (c.settle_ke > 0 && ke > c.settle_ke)
+        ctx.log.warning("the bed did not settle below " + io::format_number(c.settle_ke) +
+                        " J per particle within Particles/Settling/Maximum time");
+    }
+  } // namespace
+
+  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
+  {
+    if (dem::is_imported_bed(bed)) // another code's bed, as it is (read_dem_case checked it is there)
+      {
+        io::ScopedTimer t(ctx.timers, "import bed");
+        const auto      imported = dem::import_bed(sim, bed, c.fill.material);
+        sim.setup();
+        ctx.log.line("Imported the bed " + bed + " (" + imported.format +
+                     (imported.timestep >= 0 ? ", timestep " + std::to_string(imported.timestep) : std::string()) +
+                     "): " + std::to_string(sim.n_particles()) + " particles, top at z = " + io::format_number(bed_top(sim), 4) +
+                     " m");
+        return true;
+      }
+    if (bed.empty()) // no bed file: generated for this run alone
+      {
+        generate_and_settle(c, sim, ctx);
+        return false;
+      }
+    if (std::filesystem::path(bed).is_relative())
+      bed = ctx.output.shared_file(bed);
+    // rank 0 writes the beds: its view decides (a rank must not look while rank 0 writes; the
+    // reduction is also what makes the others wait for a bed rank 0 has just saved)
+    const auto saved = [&] {
+      const bool here = std::filesystem::exists(bed);
+      return sim.parallel().max(sim.parallel().rank() == 0 && here ? 1.0 : 0.0) > 0;
+    };
+    const bool made = !saved();
+    if (made)
+      {
+        // The bed is made in a simulation of its own and the run goes on from the file, as a
+        // later run, a resumed one and every cycle of a lifetime run do: the settling leaves
+        // contact histories and wall states that the file does not hold (a lifetime run killed
+        // before its first update once resumed to a life of 1.4e7 t against 5.0e6 t
+        // uninterrupted: its first cycle had gone on from the settled simulation)
+        dem::Simulation settling(c.settings);
+        build_simulation(c, settling);
+        generate_and_settle(c, settling, ctx);
+        flush_warnings(settling, ctx.log);
+        // rank 0 writes it alone: a failed write (a full disk) is every rank's, or the others
+        // would wait for rank 0 in the check below for ever
+        std::exception_ptr failure;
+        try
+          {
+            dem::save_bed(settling, bed);
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
+        sim.parallel().fail_together(failure);
+        ctx.log.line("Saved the settled bed to " + bed);
+        if (!saved())
+          throw RunError("the settled bed " + bed + " was saved but is not there");
+      }
+    {
+      io::ScopedTimer t(ctx.timers, "load bed");
+      dem::load_bed(sim, bed);
+      check_bed_sizes(c, sim, bed);
+      sim.setup();
+    }
+    if (!made)
+      ctx.log.line("Loaded settled bed " + bed + ": " + std::to_string(sim.n_particles()) + " particles, top at z = " +
+                   io::format_number(bed_top(sim), 4) + " m");
+    return !made;
+  }
+
+  void report_coarse_graining(const DemCase &c, JobContext &ctx)
+  {
+    for (const auto &n : c.notes)
+      ctx.log.line(n);
+    for (const auto &w : c.warnings)
+      ctx.log.warning(w);
+    if (c.coarse_graining == 1)
+      return;
+    const double r = c.fill.sizes.largest();
+    ctx.log.line("Coarse graining: the particles are " + io::format_number(c.coarse_graining) + " times the real ones (largest radius " +
+                 io::format_number(r) + " m for " + io::format_number(r / c.coarse_graining) + " m)");
+    io::Json &j             = ctx.results["coarse_graining"];
+    j["factor"]             = c.coarse_graining;
+    j["largest_radius"]     = r;
+    j["real_largest_radius"] = r / c.coarse_graining;
+    if (c.finer_levels.empty())
+      return;
+    j["tool_particle_radius"] = c.tool_particle_radius; // the finest level's
+    io::Json &levels          = j["levels"];
+    for (const auto &level : c.finer_levels)
+      {
+        io::Json l;
+        l["factor"] = level.factor, l["largest_radius"] = level.fill.sizes.largest(), l["count"] = double(level.fill.count);
+        levels.push_back(l);
+      }
+  }
+} // namespace abrade::coupling
