@@ -286,7 +286,7 @@ namespace abrade::fem
               gmsh::model::occ::fragment(volumes, {}, out, map);
               gmsh::model::occ::synchronize();
               report.notes.push_back(std::to_string(volumes.size()) + " solids (" + list +
-                                     "), all taken as one part (Knife/Solid = NUMBER takes one)");
+                                     "), all taken as one part (Part/Solid = NUMBER takes one)");
             }
           return;
         }
@@ -303,7 +303,7 @@ namespace abrade::fem
       const bool known = used == choice.size() && std::any_of(volumes.begin(), volumes.end(),
                                                                   [&](const auto &v) { return v.second == tag; });
       if (!known)
-        throw InputError(path, "Knife/Solid = '" + choice + "' is not one of its solids: " +
+        throw InputError(path, "Part/Solid = '" + choice + "' is not one of its solids: " +
                                  (list.empty() ? std::string("it holds none") : list) + " (or 'all')");
       gmsh::vectorpair others;
       for (const auto &v : volumes)
@@ -332,10 +332,10 @@ namespace abrade::fem
       // a CAD file's unit is converted on import: its File scale (s.scale) multiplies on top
       const double      now = has_units ? s.scale : scale;
       const std::string fix =
-        has_units ? (s.scale != 1 ? "the file declares its unit, which is converted: is Knife/File scale = " +
+        has_units ? (s.scale != 1 ? "the file declares its unit, which is converted: is Part/File scale = " +
                                       format_number(s.scale) + " meant? (1 reads it as declared); or set it"
-                                  : "check the unit the file declares, or set Knife/File scale")
-                  : "set Knife/File scale (the file has no unit)";
+                                  : "check the unit the file declares, or set Part/File scale")
+                  : "set Part/File scale (the file has no unit)";
       // a box a million times larger than its smallest side is no part in another unit: a point
       // far from the rest (a corrupt coordinate)
       const double smallest = std::min({extent[0], extent[1], extent[2]});
@@ -357,14 +357,14 @@ namespace abrade::fem
       if (s.max_volume > 0 && volume > s.max_volume)
         throw InputError(path, "the part's volume is " + format_number(volume) + " m^3, more than " +
                                  format_number(s.max_volume) +
-                                 " m^3 (the mass limit at its density): is it in millimetres? set Knife/File scale");
+                                 " m^3 (the mass limit at its density): is it in millimetres? set Part/File scale");
       if (s.max_cells <= 0 || h <= 0)
         return;
       const double cells = estimated_cells(volume, h);
       if (cells > s.max_cells)
-        throw InputError(path, "meshing the part (" + format_number(volume) + " m^3) with Knife/Mesh size " +
+        throw InputError(path, "meshing the part (" + format_number(volume) + " m^3) with Part/Mesh size " +
                                  format_number(h) + " m needs about " + format_number(cells) +
-                                 " tetrahedra, more than Knife/Maximum cells = " + format_number(s.max_cells) +
+                                 " tetrahedra, more than Part/Maximum cells = " + format_number(s.max_cells) +
                                  "; a Mesh size of " + format_number(h * std::cbrt(cells / (0.5 * s.max_cells))) +
                                  " m needs about half the limit");
     }
@@ -411,7 +411,7 @@ namespace abrade::fem
       choose_solid(path, settings.solid, report);
       if (settings.scale != 1)
         {
-          report.warnings.push_back("Knife/File scale = " + format_number(settings.scale) +
+          report.warnings.push_back("Part/File scale = " + format_number(settings.scale) +
                                     " multiplies the part on top of the unit the file declares (converted to metres "
                                     "on import): 1 reads it as declared");
           gmsh::vectorpair volumes;
@@ -679,7 +679,7 @@ namespace abrade::fem
   namespace
   {
     /// A user's volume mesh must be one solid: no cell given twice (a tetrahedron three times
-    /// over was blamed on Knife/Clamped faces), no pieces that share no face (two disjoint
+    /// over was blamed on Part/Clamped faces), no pieces that share no face (two disjoint
     /// tetrahedra were taken as one part).
     std::string format_point(const Point<3> &p)
     {
@@ -909,7 +909,7 @@ namespace abrade::fem
     }
 
     /// The part into place: rotated about the origin, its bounding box centred and its lowest
-    /// point at a height as Knife/Place says, then moved by Offset.
+    /// point at a height as Part/Place says, then moved by Offset.
     void place_part(const std::string &path, const SolidFileSettings &settings, Triangulation<3> &tria,
                     SolidFileReport &report)
     {
@@ -925,7 +925,7 @@ namespace abrade::fem
       }();
       if (settings.rotation_angle != 0)
         GridTools::transform([&](const Point<3> &p) { return Point<3>(r * p); }, tria);
-      // Knife/Place: the rotated part's bounding box centred, its lowest point at a height
+      // Part/Place: the rotated part's bounding box centred, its lowest point at a height
       Tensor<1, 3> move = settings.offset;
       {
         const auto &pl = settings.place;
@@ -937,7 +937,7 @@ namespace abrade::fem
                 move[d] -= 0.5 * (box.lower_bound(d) + box.upper_bound(d));
             if (pl.lowest)
               move[2] += pl.lowest_z - box.lower_bound(2);
-            report.notes.push_back("Knife/Place '" + pl.text + "' moved the part by " + format_number(move[0] - settings.offset[0]) +
+            report.notes.push_back("Part/Place '" + pl.text + "' moved the part by " + format_number(move[0] - settings.offset[0]) +
                                    ", " + format_number(move[1] - settings.offset[1]) + ", " +
                                    format_number(move[2] - settings.offset[2]) + " m (before Offset)");
           }
@@ -984,11 +984,11 @@ namespace abrade::fem
           s << "; "
             << (ext == ".msh" ? "improve the mesh in Gmsh (Mesh > Optimize 3D), or give the CAD file"
                 : !slivers.empty()
-                  ? "face(s) " + slivers + " hold only a few elements (below 2 Knife/Mesh size^2): a smaller mesh "
+                  ? "face(s) " + slivers + " hold only a few elements (below 2 Part/Mesh size^2): a smaller mesh "
                       "size only moves the poor cell; remove or merge them in the CAD tool (a face that continues "
                       "its neighbour, a short edge where two solids were fused), or select them with the others "
                       "(group " + slivers.substr(0, slivers.find(',')) + ") if the warning can stand"
-                  : "a smaller Knife/Mesh size there, or a cleaned CAD face there (slivers, short edges), helps");
+                  : "a smaller Part/Mesh size there, or a cleaned CAD face there (slivers, short edges), helps");
           report.warnings.push_back(s.str());
         }
     }

@@ -38,18 +38,18 @@ $expect 2 "refine.prm:5: Wall w/Maximum edge length: refining the wall's 10 tria
   -- timeout 20 "$abrade" run refine.prm --output o_refine
 # solids: a .msh of garbage, one whose cell names a missing node, one with no volume elements,
 # an STL with a coordinate that is not a number (Gmsh looped forever)
-knife=("$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Knife/Geometry=file
-       --set "Knife/File scale=0.001")
+knife=("$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Part/Geometry=file
+       --set "Part/File scale=0.001")
 printf 'garbage\n' > garbage.msh
-$expect 2 "garbage.msh: Gmsh could not read it: .*line 1: syntax error" -- "${knife[@]}" --output o_garbage.msh --set "Knife/File=$out/garbage.msh"
+$expect 2 "garbage.msh: Gmsh could not read it: .*line 1: syntax error" -- "${knife[@]}" --output o_garbage.msh --set "Part/File=$out/garbage.msh"
 nodes='$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n'
 printf "$nodes"'$Elements\n1\n1 4 2 1 1 1 2 3 9\n$EndElements\n' > missing_node.msh
-$expect 2 "missing_node.msh: Gmsh could not read it: Wrong node index 9" -- "${knife[@]}" --output o_missing_node.msh --set "Knife/File=$out/missing_node.msh"
+$expect 2 "missing_node.msh: Gmsh could not read it: Wrong node index 9" -- "${knife[@]}" --output o_missing_node.msh --set "Part/File=$out/missing_node.msh"
 printf "$nodes"'$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n' > surface_only.msh
-$expect 2 "surface_only.msh: the mesh holds no volume elements" -- "${knife[@]}" --output o_surface_only.msh --set "Knife/File=$out/surface_only.msh"
+$expect 2 "surface_only.msh: the mesh holds no volume elements" -- "${knife[@]}" --output o_surface_only.msh --set "Part/File=$out/surface_only.msh"
 sed 's/vertex 0.0 -15.0 0.0/vertex nan -15.0 0.0/' "$src/tests/cli/knife_mm.stl" > nan.stl
 $expect 2 "nan.stl: point [0-9]+ \(nan, -15, 0\) has a coordinate that is not a finite number" -- timeout 30 "${knife[@]}" \
-  --output o_nan --set "Knife/File=$out/nan.stl"
+  --output o_nan --set "Part/File=$out/nan.stl"
 prm=$src/tests/lifetime/analytic_uniform.prm
 "$abrade" run "$prm" --output life --quiet --set "Lifetime/Maximum updates=2" > /dev/null
 python3 -c "
@@ -90,8 +90,8 @@ tri = lambda *p: "facet normal 0 0 0\n outer loop\n" + "".join("  vertex %g %g %
 open("sliver.stl", "w").write("solid b\n" + "".join(tri(*(v[i] for i in f)) for f in faces) +
                               tri(v[0], v[1], (0.05, 0, 0)) + tri(v[1], v[0], (0.05, 1e-10, 0)) + "endsolid b\n")
 PY
-$expect 0 "sliver.stl: 2 triangle\(s\) of zero area removed" -- "${knife[@]}" --output o_sliver --set "Knife/File=$out/sliver.stl" \
-  --set "Knife/Clamped faces=normal 0, 0, 1" --set "Knife/File scale=1"
+$expect 0 "sliver.stl: 2 triangle\(s\) of zero area removed" -- "${knife[@]}" --output o_sliver --set "Part/File=$out/sliver.stl" \
+  --set "Part/Clamped faces=normal 0, 0, 1" --set "Part/File scale=1"
 # a STEP file with an entity of a misspelt type, or an entity defined twice (OpenCASCADE crashed
 # after Gmsh imported it): the entity named
 printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.geo
@@ -100,12 +100,12 @@ printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.
 if ls block.step.* > /dev/null 2>&1; then echo "left beside block.step: $(ls block.step.*)"; exit 1; fi
 sed '0,/= DIRECTION(/s//= DIRUCTION(/' block.step > misspelt.step
 $expect 2 "misspelt.step: [0-9]+ entit(y|ies) failed to read \(entity #[0-9]+" -- "${knife[@]}" --output o_misspelt \
-  --set "Knife/File=$out/misspelt.step" --set "Knife/Clamped faces=normal 0, 0, 1"
+  --set "Part/File=$out/misspelt.step" --set "Part/Clamped faces=normal 0, 0, 1"
 awk '/= DIRECTION\(/ && !done { print; done = 1 } { print }' block.step > twice.step
 $expect 2 "twice.step: [0-9]+ entit(y|ies) failed to read \(Ident defined SEVERAL TIMES : #[0-9]+" -- "${knife[@]}" \
-  --output o_twice --set "Knife/File=$out/twice.step" --set "Knife/Clamped faces=normal 0, 0, 1"
+  --output o_twice --set "Part/File=$out/twice.step" --set "Part/Clamped faces=normal 0, 0, 1"
 # a STEP point at 1e30 (Gmsh's search tree asserted: abort; at 1e18 it looped)
 sed "0,/CARTESIAN_POINT('',(\([^,]*\),/s//CARTESIAN_POINT('',(1.E30,/" block.step > far.step
-$expect 2 "far.step: coordinates up to 1e\+30 mm" -- "${knife[@]}" --output o_far --set "Knife/File=$out/far.step" \
-  --set "Knife/Clamped faces=normal 0, 0, 1"
+$expect 2 "far.step: coordinates up to 1e\+30 mm" -- "${knife[@]}" --output o_far --set "Part/File=$out/far.step" \
+  --set "Part/Clamped faces=normal 0, 0, 1"
 echo "hostile inputs: all refused"

@@ -67,8 +67,8 @@ if command -v strace > /dev/null; then
   printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.geo
   "$abrade" convert block.geo --output block.step > /dev/null
   strace -f -qq -e trace=%file -o trace.txt "$abrade" run --quiet --output knife_job \
-    --set Job=knife --set Knife/Geometry=file --set "Knife/File=$PWD/block.step" \
-    --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
+    --set Job=knife --set Part/Geometry=file --set "Part/File=$PWD/block.step" \
+    --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
   # files opened for writing (O_WRONLY, O_RDWR, O_CREAT), made, moved, linked, cut or removed:
   # inside knife_job/ only (/dev/null and the terminal aside, and Open MPI's run time: its
   # session directory ompi.* in the temporary folder and its shared memory /dev/shm/open_mpi.*,

@@ -71,8 +71,8 @@ printf '\xef\xbb\xbfset Job = knife\n' > bom.prm
 $expect 0 "job 'knife' from bom.prm" -- timeout 60 "$abrade" run bom.prm --output o_bom
 
 # knife parts that are not one solid: Gmsh said "No elements in volume 1", or took them
-knife=(timeout 60 "$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Knife/Geometry=file
-       --set "Knife/File scale=1" --set "Knife/Clamped faces=normal 0, 0, -1")
+knife=(timeout 60 "$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Part/Geometry=file
+       --set "Part/File scale=1" --set "Part/Clamped faces=normal 0, 0, -1")
 python3 - <<'PY'
 def box(x0, y0, z0, x1, y1, z1):
     v = [(x0, y0, z0), (x1, y0, z0), (x1, y1, z0), (x0, y1, z0), (x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)]
@@ -91,25 +91,25 @@ stl("two.stl", box(0, 0, 0, 0.1, 0.06, 0.02) + box(0.2, 0, 0, 0.3, 0.06, 0.02))
 stl("edge.stl", box(0, 0, 0, 0.1, 0.06, 0.02) + box(0.1, 0.06, 0, 0.2, 0.12, 0.02))
 PY
 $expect 2 "hole.stl: the surface is not closed: 3 edge\(s\) belong to one triangle only" -- "${knife[@]}" --output o_hole \
-  --set "Knife/File=$out/hole.stl"
+  --set "Part/File=$out/hole.stl"
 $expect 2 "two.stl: the surface is 2 separate closed pieces: a part is one solid" -- "${knife[@]}" --output o_two \
-  --set "Knife/File=$out/two.stl"
+  --set "Part/File=$out/two.stl"
 $expect 2 "edge.stl: 1 edge\(s\) are shared by more than two triangles, the first between \(0.1, 0.06, 0\) and \(0.1, 0.06, 0.02\)" \
-  -- "${knife[@]}" --output o_edge --set "Knife/File=$out/edge.stl"
+  -- "${knife[@]}" --output o_edge --set "Part/File=$out/edge.stl"
 # a knife STL with a coordinate Gmsh cannot read: it dropped the file ("holds no triangles")
 sed 's/vertex 0.0 -15.0 0.0/vertex inf -15.0 0.0/' "$src/tests/cli/knife_mm.stl" > knife_inf.stl
 $expect 2 "knife_inf.stl: point 0 \(inf, -15, 0\) has a coordinate that is not a finite number" -- "${knife[@]}" --output o_kinf \
-  --set "Knife/File=$out/knife_inf.stl" --set "Knife/File scale=0.001"
+  --set "Part/File=$out/knife_inf.stl" --set "Part/File scale=0.001"
 sed 's/vertex 0.0 -15.0 0.0/vertex 1e30 -15.0 0.0/' "$src/tests/cli/knife_mm.stl" > knife_far.stl
 $expect 2 "knife_far.stl: the part's bounding box is 1e\+27 x 0.03 x 0.5 m: a point lies far from the others" -- \
-  "${knife[@]}" --output o_kfar --set "Knife/File=$out/knife_far.stl" --set "Knife/File scale=0.001"
+  "${knife[@]}" --output o_kfar --set "Part/File=$out/knife_far.stl" --set "Part/File scale=0.001"
 nodes='$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 5 0 0\n6 6 0 0\n7 5 1 0\n8 5 0 1\n$EndNodes\n'
 printf "$nodes"'$Elements\n2\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 5 6 7 8\n$EndElements\n' > disjoint.msh
 $expect 2 "disjoint.msh: the mesh is in separate pieces: 1 of 2 cells share no face with cell 0" -- "${knife[@]}" \
-  --output o_disjoint --set "Knife/File=$out/disjoint.msh" --set "Knife/Clamped faces=normal 0, 0, -1"
+  --output o_disjoint --set "Part/File=$out/disjoint.msh" --set "Part/Clamped faces=normal 0, 0, -1"
 printf "$nodes"'$Elements\n3\n1 4 2 1 1 1 2 3 4\n2 4 2 1 1 1 2 3 4\n3 4 2 1 1 1 2 3 4\n$EndElements\n' > thrice.msh
 $expect 2 "thrice.msh: cell 1 \(at \(0.25, 0.25, 0.25\)\) repeats cell 0" -- "${knife[@]}" --output o_thrice \
-  --set "Knife/File=$out/thrice.msh"
+  --set "Part/File=$out/thrice.msh"
 
 life=("$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --quiet)
 $expect 2 "Tonnes per cycle=1e300.*Double 0...1e\+06" -- timeout 20 "${life[@]}" --output o_t --set "Lifetime/Tonnes per cycle=1e300"

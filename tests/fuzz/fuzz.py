@@ -328,8 +328,8 @@ def command(abrade, target, path, work, fixtures):
         return [abrade, "run", os.path.join(fixtures.source, "tests/cli/small_bed.prm"), "--quiet", "--output",
                 os.path.join(work, "o"), "--set", f"Particles/Settling/Bed file={path}"]
     clamped = "group bolted" if target == "msh" else "normal 0, 0, -1" if target == "knife.stl" else "normal 0, 0, 1"
-    return [abrade, "run", "--output", work, "--quiet", "--set", "Job=knife", "--set", "Knife/Geometry=file",
-            "--set", f"Knife/File={path}", "--set", f"Knife/Clamped faces={clamped}"]
+    return [abrade, "run", "--output", work, "--quiet", "--set", "Job=knife", "--set", "Part/Geometry=file",
+            "--set", f"Part/File={path}", "--set", f"Part/Clamped faces={clamped}"]
 
 
 def main():

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A user's part through the lifetime loop.
 #  1. The parametric knife of analytic_uniform.prm, written as STEP in millimetres by the knife
-#     job and read back as Knife/Geometry = file (its top clamped by its normal), gives the
+#     job and read back as Part/Geometry = file (its top clamped by its normal), gives the
 #     parametric knife's trajectory under the same analytic wear (1 um/t to 6 mm): the same
 #     volume to 1e-6, the predicted life to 1e-3, the largest depth at every update's tonnes to
 #     2e-5 m and the worn volume to 1e-2 (the two meshes differ: Gmsh meshes the STEP's faces as
@@ -16,7 +16,7 @@
 #     wearing, clamped and held areas) against the part's geometry: the holes' box takes the
 #     four faces of a hole's area, the top is clamped whole, the back is mixed, its clamped part
 #     the area above 0.3 m less the holes' openings (5e-3).
-#  3. A part mounted on a grab shell: the grab's knife as STEP, moved by Knife/Offset, sits on
+#  3. A part mounted on a grab shell: the grab's knife as STEP, moved by Part/Offset, sits on
 #     the lip where the parametric knife sits (bounding boxes to 1e-5 m: single-precision STL).
 #  4. A file wall turned by Rotation axis / Rotation angle and moved by Offset lies where R p + o
 #     puts it.
@@ -33,29 +33,29 @@ prm=$src/tests/lifetime/analytic_uniform.prm
 step=$out/knife/knife/knife.step
 common=(--quiet --set "Lifetime/Maximum depth=0.006")
 "$abrade" run "$prm" --output "$out/parametric" "${common[@]}" > /dev/null
-"$abrade" run "$prm" --output "$out/file" "${common[@]}" --set "Knife/Geometry=file" --set "Knife/File=$step" \
-  --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
-"$abrade" run "$prm" --set Job=knife --output "$out/file_knife" --quiet --set "Knife/Geometry=file" \
-  --set "Knife/File=$step" --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
+"$abrade" run "$prm" --output "$out/file" "${common[@]}" --set "Part/Geometry=file" --set "Part/File=$step" \
+  --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
+"$abrade" run "$prm" --set Job=knife --output "$out/file_knife" --quiet --set "Part/Geometry=file" \
+  --set "Part/File=$step" --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
 
 # 2. the worked example
 example=$src/cases/bolted_edge
 "$abrade" convert "$example/edge.geo" --output "$out/edge.step" > /dev/null
 "$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/edge_committed" --quiet > /dev/null
 "$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/edge_made" --quiet \
-  --set "Knife/File=$out/edge.step" > /dev/null
+  --set "Part/File=$out/edge.step" > /dev/null
 "$abrade" run "$example/lifetime.prm" --output "$out/edge_life" --quiet --set "Lifetime/Wear source=analytic" \
   --set "Lifetime/Analytic wear rate=1e-6*exp(-z/0.05)" --set "Lifetime/Smoothing radius=0.02" \
   --set "Lifetime/Seeds=1" --set "Lifetime/Maximum depth=0.004" --set "Lifetime/Maximum recession=0" \
   --set "Lifetime/Depth increment fraction=0.1" > /dev/null
 
 # 3. a part mounted on a grab shell's lip: the grab's parametric knife as STEP, moved away by
-#    Knife/Offset, is centred on the lip by its bounding box: the same wall as the parametric knife
+#    Part/Offset, is centred on the lip by its bounding box: the same wall as the parametric knife
 grab=$src/cases/grab/grab_coarse.prm
 "$abrade" run "$grab" --set Job=knife --output "$out/grab_knife" --quiet > /dev/null
 "$abrade" export-walls "$grab" --output "$out/grab_parametric" > /dev/null
-"$abrade" export-walls "$grab" --output "$out/grab_file" --set "Knife/Geometry=file" \
-  --set "Knife/File=$out/grab_knife/knife/knife.step" --set "Knife/Offset=1, 0, 3" > /dev/null
+"$abrade" export-walls "$grab" --output "$out/grab_file" --set "Part/Geometry=file" \
+  --set "Part/File=$out/grab_knife/knife/knife.step" --set "Part/Offset=1, 0, 3" > /dev/null
 
 # 4. a wall from a file, turned 90 degrees about z and moved: the knife STL in millimetres
 #    (x 0..400, y -15..15, z 0..500) lies at x 1 -+ 0.015, y 2 .. 2.4, z 3 .. 3.5
@@ -76,8 +76,8 @@ PRM
 # 5. IGES: the block (400 x 30 x 500 mm) as an IGES surface model in millimetres (six bounded
 #    planes, written by iges_block.py: Gmsh cannot write IGES), sewn into a solid
 python3 "$src/tests/lifetime/iges_block.py" "$out/block.igs"
-"$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/iges" --quiet --set "Knife/File=$out/block.igs" \
-  --set "Knife/Rotation angle=0" --set "Knife/Offset=0, 0, 0" --set "Knife/Clamped faces=normal 0, 0, 1" > /dev/null
+"$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/iges" --quiet --set "Part/File=$out/block.igs" \
+  --set "Part/Rotation angle=0" --set "Part/Offset=0, 0, 0" --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
 
 # 6. the field loop on the part: its run's last worn surface compared as a scan (no registration)
 #    and calibrated gives the run's own wear scale back

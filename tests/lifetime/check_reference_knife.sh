@@ -38,8 +38,8 @@
 set -euo pipefail
 abrade=$1 dir=$2 out=$3 long=${4:-}
 rm -rf "$out"
-knife=(--set Knife/Thickness=0.03 --set "Knife/Bevel height=0.04" --set "Knife/Mesh size=0.02"
-       --set Knife/Length=0.4 --set Knife/Height=0.5 --set "Lifetime/Maximum updates=60")
+knife=(--set Part/Thickness=0.03 --set "Part/Bevel height=0.04" --set "Part/Mesh size=0.02"
+       --set Part/Length=0.4 --set Part/Height=0.5 --set "Lifetime/Maximum updates=60")
 "$abrade" run "$dir/analytic_uniform.prm" "${knife[@]}" --output "$out/uniform" --quiet > /dev/null
 cases=uniform:12000
 "$abrade" run "$dir/analytic_uniform.prm" "${knife[@]}" --set "Lifetime/Analytic wear is=volume" \

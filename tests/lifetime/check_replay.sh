@@ -131,8 +131,8 @@ refused "no directory given" "Replay run" --set "Lifetime/Wear source=replay" --
 refused "missing directory" "$out/none" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/none"
 mkdir -p "$out/empty"
 refused "no stored wear" "holds no stored wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/empty"
-refused "another knife" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Knife/Height=0.3"
-refused "another bevel" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Knife/Bevel height=0.08"
+refused "another knife" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Part/Height=0.3"
+refused "another bevel" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Part/Bevel height=0.08"
 refused "other particles" "Coarse graining/Factor" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" \
   --set "Particles/Coarse graining/Factor=1.5"
 set +e

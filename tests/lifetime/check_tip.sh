@@ -44,7 +44,7 @@ for r in 0.01 0.005; do
 done
 "$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Smoothing radius=0.004" \
   --set "Lifetime/Maximum updates=1" --output "$out/narrow" --quiet > /dev/null || true
-grep -q "Smoothing radius (0.004 m) is below half the Knife/Mesh size" "$out/narrow/log.txt" ||
+grep -q "Smoothing radius (0.004 m) is below half the Part/Mesh size" "$out/narrow/log.txt" ||
   { echo "narrow: no warning about a smoothing radius below half the mesh size"; exit 1; }
 for band in "z < 0.003" "z < zlow + 0.003"; do
   "$abrade" run "$dir/analytic_tip.prm" --set "Lifetime/Analytic wear rate=1e-6*($band)" \

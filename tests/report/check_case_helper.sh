@@ -19,7 +19,7 @@ abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 cp "$src/cases/bucket/bucket.step" "$out/"
 cd "$out"
-pin="cylinder -0.245, 0, 0.77, 0, 1, 0, 0.0225" # (the bore's axis after Knife/Place: x -120 - 125, z 420 + 350 mm)
+pin="cylinder -0.245, 0, 0.77, 0, 1, 0, 0.0225" # (the bore's axis after Part/Place: x -120 - 125, z 420 + 350 mm)
 "$abrade" case bucket.step --output bucket.prm --clamped "$pin" --particles 2000 --beds 1 --updates 1 > case.log 2>&1 ||
   { cat case.log; exit 1; }
 # a second time: the file is not overwritten

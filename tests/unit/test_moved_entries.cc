@@ -164,3 +164,41 @@ TEST(MovedEntries, TheNoteGoesOnlyWithItsOwnError)
             std::string::npos)
     << in_set;
 }
+
+namespace
+{
+  double part_length(abrade::coupling::ParameterFile &f)
+  {
+    auto &prm = f.handler();
+    prm.enter_subsection("Part");
+    const double l = prm.get_double("Length");
+    prm.leave_subsection();
+    return l;
+  }
+} // namespace
+
+// subsection Knife, renamed Part (the part that wears need not be a knife), in a file and in a
+// --set, with a note naming where it was read; the last setting wins whichever name gives it
+TEST(MovedEntries, TheKnifeSubsectionIsReadAsThePart)
+{
+  const std::string old_name = case_file("knife.prm", "subsection Knife   # an older file\n"
+                                                      "  set Length = 0.3\n"
+                                                      "end\n");
+  abrade::coupling::ParameterFile a(old_name, {});
+  EXPECT_EQ(part_length(a), 0.3);
+  EXPECT_TRUE(has_note(a, old_name + ":2: subsection Knife is read as subsection Part"));
+
+  abrade::coupling::ParameterFile b(knife_bed, {"Knife/Length=0.25"});
+  EXPECT_EQ(part_length(b), 0.25);
+  EXPECT_TRUE(has_note(b, "--set 'Knife/Length=0.25': subsection Knife is read as subsection Part"));
+
+  const std::string both = case_file("both.prm", "subsection Part\n  set Length = 0.2\nend\n"
+                                                 "subsection Knife\n  set Length = 0.3\nend\n"
+                                                 "subsection Part\n  set Height = 0.6\nend\n");
+  abrade::coupling::ParameterFile c(both, {});
+  EXPECT_EQ(part_length(c), 0.3);
+  // a bad value under the old name is named by its file and line
+  const std::string bad   = case_file("bad_length.prm", "subsection Knife\n  set Length = -1\nend\n");
+  const std::string error = refusal(bad);
+  EXPECT_EQ(error.rfind(bad + ":3:", 0), 0u) << error;
+}

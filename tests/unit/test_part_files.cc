@@ -345,7 +345,7 @@ TEST(PartFiles, PlacementMovesTheBoundingBox)
   // the rotation is right-handed: +x goes to +y
   const Tensor<2, 3> r = rotation_matrix(Tensor<1, 3>({0, 0, 1}), 90);
   EXPECT_NEAR((r * Tensor<1, 3>({1, 0, 0}))[1], 1, 1e-15);
-  // Knife/Place by the rotated box, then Offset: centred in x and y, the lowest point at z = 0.1;
+  // Part/Place by the rotated box, then Offset: centred in x and y, the lowest point at z = 0.1;
   // the block (x 0 ... 0.4, y -0.015 ... 0.015, z 0 ... 0.5 in its file) turned 90 degrees about
   // z lies along y: centred, x -0.015 ... 0.015 and y -0.2 ... 0.2, then moved by (1, 2, 3)
   parse_part_placement("lowest point at z=0.1 , centred", s);
@@ -360,7 +360,7 @@ TEST(PartFiles, PlacementMovesTheBoundingBox)
   EXPECT_NEAR(p.lower_bound(2), 3.1, 1e-9);
   EXPECT_NEAR(p.upper_bound(2), 3.6, 1e-9);
   EXPECT_TRUE(std::any_of(report.notes.begin(), report.notes.end(),
-                          [](const std::string &n) { return n.find("Knife/Place") != std::string::npos; }));
+                          [](const std::string &n) { return n.find("Part/Place") != std::string::npos; }));
   for (const std::string bad : {"lowest point at z = x", "centred in w", "on the floor", "lowest point at z ="})
     EXPECT_THROW(parse_part_placement(bad, s), std::invalid_argument) << bad;
   parse_part_placement("centred in z", s);

@@ -1,6 +1,6 @@
 // `abrade case`: a lifetime case written around a user's part (case_command.h).
 //
-// 1. Read the part as the case will (File scale; Knife/Place = lowest point at z = 0, centred)
+// 1. Read the part as the case will (File scale; Part/Place = lowest point at z = 0, centred)
 //    on a coarse mesh: its bounding box, volume and surface; its plate thickness about
 //    2 volume / surface (a plate's two faces).
 // 2. Size the drag: the part comes down quickly (4 m/s) from its start above the poured
@@ -51,7 +51,7 @@ namespace abrade::coupling
       (default twice its length, at least 1 m) at V m/s (1.5); the bed, container, domain,
       particle size (coarse-grained to about N particles, default 15000), settling, phases and
       tonnes per cycle chosen from the part; N beds (seeds, default 3) per update, at most N
-      updates (default 20). Selectors as Knife/Clamped faces takes them (abrade preview shows
+      updates (default 20). Selectors as Part/Clamped faces takes them (abrade preview shows
       the faces).)";
 
     /// A bulk material: its particles and their contacts (the knife-bed's pellets as the thesis
@@ -286,7 +286,7 @@ namespace abrade::coupling
         << " m^2, plate thickness about 2 V / A = " << n(1000 * d.thickness, 3) << " mm.\n"
         << "# It is dragged as the knife-bed drags its knife: down into the bed by " << n(d.depth, 3)
         << " m, then along +x by " << n(d.travel, 3) << " m, at " << n(o.speed, 3) << " m/s.\n"
-        << "# What it cannot know, set before a life is booked: which faces are clamped (Knife/Clamped\n"
+        << "# What it cannot know, set before a life is booked: which faces are clamped (Part/Clamped\n"
         << "# faces), the end of life (Lifetime/Maximum depth, ...), W (calibrate it: abrade calibrate), the\n"
         << "# tonnes per cycle if a payload is measured. See it first:\n"
         << "#   abrade preview " << o.output << " --output preview\n# then run it:\n#   abrade run " << o.output
@@ -350,7 +350,7 @@ namespace abrade::coupling
         << "  set Box min  = " << vec(d.x_min, d.y_min, 0) << "\n  set Box max  = " << vec(-d.x_min, -d.y_min, d.top) << "\n"
         << "  subsection Interaction\n    set Restitution = " << n(m.restitution, 3) << "\n    set Friction    = "
         << n(m.friction, 3) << "\n  end\nend\n\n"
-        << "subsection Wall part\n  # the part (subsection Knife) placed at its start, above the bed\n"
+        << "subsection Wall part\n  # the part (subsection Part) placed at its start, above the bed\n"
         << "  set Geometry = solid model\n  set Offset   = " << vec(d.start_x, 0, d.start_z) << "\n"
         << "  subsection Interaction\n    set Restitution = " << n(m.restitution, 3) << "\n    set Friction    = "
         << n(m.wall_friction, 3) << "\n  end\n"
@@ -368,7 +368,7 @@ namespace abrade::coupling
     {
       auto n = [](double x, int digits = 4) { return num(x, digits); };
       const double lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
-      f << "subsection Knife\n  set Geometry  = file\n  set File      = " << part_path_from(o) << "\n";
+      f << "subsection Part\n  set Geometry  = file\n  set File      = " << part_path_from(o) << "\n";
       if (o.file_scale != 1)
         f << "  set File scale = " << n(o.file_scale, 6) << "\n";
       f << "  set Place     = lowest point at z = 0, centred\n"
@@ -395,7 +395,7 @@ namespace abrade::coupling
         << "  set Maximum depth    = " << n(d.limit, 3) << "\n"
         << "  set Maximum updates  = " << o.updates << "\n"
         << "  # the recession the trajectory follows (point_recession, point_recession_2): the part's leading\n"
-        << "  # point (the furthest along x) and its lowest, in the part's frame after Knife/Place\n"
+        << "  # point (the furthest along x) and its lowest, in the part's frame after Part/Place\n"
         << "  set Recession points = " << vec(part.leading[0], part.leading[1], part.leading[2]);
       if (part.leading.distance(part.lowest) > 0.01)
         f << "; " << vec(part.lowest[0], part.lowest[1], part.lowest[2]);

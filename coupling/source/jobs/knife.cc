@@ -148,7 +148,7 @@ namespace abrade::coupling
       std::string name() const override { return "knife"; }
       std::string documentation() const override
       {
-        return "build the knife's solid model (subsection Knife), check its mesh and write it (VTU, STL) with its volume and mass";
+        return "build the knife's solid model (subsection Part), check its mesh and write it (VTU, STL) with its volume and mass";
       }
       void   run(JobContext &ctx) const override;
       Report report() const override { return {true, false, false}; }

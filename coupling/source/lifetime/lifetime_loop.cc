@@ -543,7 +543,7 @@ namespace abrade::coupling::lifetime
       s.smoothing = wear.particle_radius;
     if (!smoothing_checked && s.smoothing > 0 && s.smoothing < 0.5 * part_parameters.mesh_size)
       ctx.log.warning("Lifetime/Smoothing radius (" + io::format_number(s.smoothing) + " m) is below half the "
-                      "Knife/Mesh size (" + io::format_number(part_parameters.mesh_size) + " m): wear narrower "
+                      "Part/Mesh size (" + io::format_number(part_parameters.mesh_size) + " m): wear narrower "
                       "than a cell is carried by single vertices, which can fold the worn surface where it "
                       "concentrates (an edge, a tip)");
     if (!smoothing_checked && calibration.smoothing_radius > 0 &&
@@ -608,7 +608,7 @@ namespace abrade::coupling::lifetime
                                  : std::string()) +
                        " (" + error +
                        "; it folds where the wear is deepest; a larger Lifetime/Smoothing radius or a finer "
-                       "Knife/Mesh size helps)";
+                       "Part/Mesh size helps)";
             return st;
           }
         n = std::max(1L, n / 2);

@@ -60,7 +60,7 @@ namespace abrade::coupling::lifetime
     prm.declare_entry("Gauge stations", "41", Integer(2, 10000),
                       "Stations along the part's length (its x axis) where the edge recession and the plate "
                       "thickness are gauged, evenly spaced from end to end of the part as it is (the end ones "
-                      "one Knife/Mesh size inside its ends: the corners as far as the mesh resolves them). "
+                      "one Part/Mesh size inside its ends: the corners as far as the mesh resolves them). "
                       "Range: [2, 10000].");
     lifetime::declare_wear_sources(prm); // (Wear source and each source's own: lifetime/wear_sources/)
     lifetime::declare_end_of_life_criteria(prm); // (Maximum depth, ...: each criterion's own, lifetime/criteria/)

@@ -47,7 +47,7 @@ subsection Particles
     set Kinetic energy threshold = 1e-3
   end
 end
-subsection Knife
+subsection Part
   set Length       = 0.15
   set Height       = 0.25
   set Thickness    = 0.03

@@ -91,6 +91,27 @@ namespace abrade::coupling
     constexpr MovedEntry moved_entries[] = {{"Wear", "Archard coefficient", "Archard", "Coefficient"},
                                             {"Wear", "Finnie coefficient", "Finnie", "Coefficient"}};
 
+    /// A top-level subsection that was renamed: @p old_name is now @p name.
+    struct RenamedSubsection
+    {
+      const char *old_name, *name;
+    };
+    // the part that wears need not be a knife (a liner, a bucket's lip)
+    constexpr RenamedSubsection renamed_subsections[] = {{"Knife", "Part"}};
+
+    /// The renamed subsection a top-level line `subsection NAME` of an old name opens (nullptr:
+    /// none). @p entry is the line's entry (its path: where the line stands).
+    const RenamedSubsection *renamed_subsection(const std::string &line, const LineEntry &entry)
+    {
+      const std::string l = trim(as_read(line).substr(0, as_read(line).find('#')));
+      if (!entry.path.empty() || !starts_with_keyword(l, "subsection"))
+        return nullptr;
+      for (const auto &r : renamed_subsections)
+        if (trim(l.substr(11)) == r.old_name)
+          return &r;
+      return nullptr;
+    }
+
     const MovedEntry *moved_entry(const std::vector<std::string> &path, const std::string &key)
     {
       for (const auto &m : moved_entries)
@@ -135,8 +156,19 @@ namespace abrade::coupling
       notes.push_back({where, entry_path(path, m.old_key) + " is read as " + entry_path(now, m.key) +
                                 " (its place now; the old spelling still works)"});
     };
+    const auto renamed_note = [&notes](const std::string &where, const RenamedSubsection &r) {
+      notes.push_back({where, std::string("subsection ") + r.old_name + " is read as subsection " + r.name +
+                                " (its name now; the old one still works)"});
+    };
     for (std::size_t n = 0; n < lines.size(); ++n)
       {
+        if (const RenamedSubsection *r = renamed_subsection(lines[n], entries[n]))
+          {
+            renamed_note(from[n].first + ":" + std::to_string(from[n].second), *r);
+            out.push_back(lines[n].substr(0, lines[n].find_first_not_of(" \t")) + "subsection " + r->name);
+            out_origin.push_back(from[n]);
+            continue;
+          }
         const MovedEntry *m = moved_entry(entries[n].path, entries[n].key);
         if (!m)
           {
@@ -158,6 +190,13 @@ namespace abrade::coupling
           }
         n = entries[n].last;
       }
+    for (auto &o : overrides)
+      for (const auto &r : renamed_subsections)
+        if (!o.path.empty() && o.path.front() == r.old_name)
+          {
+            renamed_note("--set '" + o.text + "'", r);
+            o.path.front() = r.name;
+          }
     for (auto &o : overrides)
       if (const MovedEntry *m = moved_entry(o.path, o.key))
         {

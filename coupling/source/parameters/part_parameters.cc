@@ -37,7 +37,7 @@ namespace abrade::coupling
       catch (const std::invalid_argument &e)
         {
           prm.leave_subsection();
-          file.fail({"Knife"}, name, e.what());
+          file.fail({"Part"}, name, e.what());
         }
     }
 
@@ -49,7 +49,7 @@ namespace abrade::coupling
     using dealii::Patterns::Double;
     using dealii::Patterns::Selection;
     PluginSection section(prm);
-    prm.enter_subsection("Knife");
+    prm.enter_subsection("Part");
     prm.declare_entry("Geometry", "parametric", Selection("parametric|file"),
                       "parametric: the grab knife below; file: a solid from File (.msh, .step/.stp, "
                       ".iges/.igs, or a closed .stl).");
@@ -145,26 +145,26 @@ namespace abrade::coupling
                         "%.3g m needs about %.3g tetrahedra for this knife, more than Maximum cells = %.3g; a "
                         "Mesh size of %.3g m needs about half the limit",
                         part.mesh_size, cells, fs.max_cells, part.mesh_size * std::cbrt(cells / (0.5 * fs.max_cells)));
-          file.fail({"Knife"}, "Mesh size", text);
+          file.fail({"Part"}, "Mesh size", text);
         }
       if (!part.clamped_faces.empty() || !part.wearable_faces.empty())
-        file.fail({"Knife"}, part.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
+        file.fail({"Part"}, part.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
                   "the parametric knife's clamped face is its top (bolted to the shell); face selectors are for "
                   "Geometry = file");
       // the parametric knife is built in the knife's frame: nothing to place
       if (fs.rotation_angle != 0)
-        file.fail({"Knife"}, "Rotation angle", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        file.fail({"Part"}, "Rotation angle", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
       if (fs.offset.norm() > 0)
-        file.fail({"Knife"}, "Offset", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        file.fail({"Part"}, "Offset", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
       if (!fs.place.text.empty())
-        file.fail({"Knife"}, "Place", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        file.fail({"Part"}, "Place", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
     }
   } // namespace
 
   double read_part_length(ParameterFile &file)
   {
     auto &prm = file.handler();
-    prm.enter_subsection("Knife");
+    prm.enter_subsection("Part");
     const double length = prm.get_double("Length");
     prm.leave_subsection();
     return length;
@@ -175,7 +175,7 @@ namespace abrade::coupling
     auto           &prm = file.handler();
     PartParameters  part;
     auto           &k = part.geometry;
-    prm.enter_subsection("Knife");
+    prm.enter_subsection("Part");
     k.length     = prm.get_double("Length");
     k.height     = prm.get_double("Height");
     k.thickness  = prm.get_double("Thickness");
@@ -205,21 +205,21 @@ namespace abrade::coupling
     catch (const std::invalid_argument &e)
       {
         prm.leave_subsection();
-        file.fail({"Knife"}, "Place", e.what());
+        file.fail({"Part"}, "Place", e.what());
       }
     part.clamped_faces  = get_selectors(file, prm, "Clamped faces");
     part.wearable_faces = get_selectors(file, prm, "Wearable faces");
     prm.leave_subsection();
     if (part.from_file && fs.rotation_angle != 0 && !(fs.rotation_axis.norm() > 0))
-      file.fail({"Knife"}, "Rotation axis", "must not be zero");
+      file.fail({"Part"}, "Rotation axis", "must not be zero");
     if (part.from_file)
       part.file = file.path_beside(part.file);
     if (part.from_file && part.file.empty())
-      file.fail({"Knife"}, "File", "Geometry = file needs a solid file");
+      file.fail({"Part"}, "File", "Geometry = file needs a solid file");
     if (!part.from_file)
       check_parametric_knife(file, part);
     else if (!fem::is_cad_file(part.file) && fs.solid != "all" && !fs.solid.empty())
-      file.fail({"Knife"}, "Solid", "only a CAD file (STEP/IGES) can hold several solids; " + part.file + " is read whole");
+      file.fail({"Part"}, "Solid", "only a CAD file (STEP/IGES) can hold several solids; " + part.file + " is read whole");
     return part;
   }
 
@@ -249,7 +249,7 @@ namespace abrade::coupling
             faces += (faces.empty() ? "" : "; ") + std::to_string(f.id) + (f.name.empty() ? "" : " '" + f.name + "'") +
                      " at (" + io::format_number(f.centre[0]) + ", " + io::format_number(f.centre[1]) + ", " + io::format_number(f.centre[2]) + ")";
         const std::string what = e.what();
-        file.fail({"Knife"}, what.rfind("Wearable faces:", 0) == 0 ? "Wearable faces" : "Clamped faces",
+        file.fail({"Part"}, what.rfind("Wearable faces:", 0) == 0 ? "Wearable faces" : "Clamped faces",
                   (what.rfind("Wearable faces: ", 0) == 0 || what.rfind("Clamped faces: ", 0) == 0
                      ? what.substr(what.find(':') + 2)
                      : what) +
@@ -320,7 +320,7 @@ namespace abrade::coupling
     if (mounted && !(y0 < 0 && y1 > 0))
       return "the mounted part lies at y = " + io::format_number(y0) + " ... " + io::format_number(y1) +
              " m in the knife's frame: its y = 0 plane is put on the lip's line (the middle of the plate "
-             "should be there); Knife/Offset moves it";
+             "should be there); Part/Offset moves it";
     return {};
   }
 

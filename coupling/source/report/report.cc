@@ -738,7 +738,7 @@ namespace abrade::report
     void file_face_sections(HtmlPage &page, const Tree &k, const std::vector<std::vector<std::string>> &rows)
     {
       page.heading("Faces");
-      page.paragraph("The file's faces as Gmsh numbers them (Knife/Clamped faces and Wearable faces select them by "
+      page.paragraph("The file's faces as Gmsh numbers them (Part/Clamped faces and Wearable faces select them by "
                      "'group NUMBER', a box of centres or a normal); a face a box or normal selector took in part is "
                      "'mixed'. Areas in m^2, centres in mm, in the part's own frame (as the face selectors see it).");
       page.table({"id", "name", "role", "area", "wearing", "clamped", "held", "centre [mm]", "normal", "taken by"}, rows);
@@ -776,7 +776,7 @@ namespace abrade::report
       const std::vector<std::vector<std::string>> rows = from_file ? file_face_rows(*k, o) : std::vector<std::vector<std::string>>{};
       render_surfaces(dir + "/report", "faces.png", {{dir + "/knife/faces.vtp", "role", "the part as placed"}}, o);
       page.png(dir + "/report/faces.png",
-               "The part in its own frame (the file's placed by Knife/Rotation and Offset; the case's walls place "
+               "The part in its own frame (the file's placed by Part/Rotation and Offset; the case's walls place "
                "it in the case: below), in mm, from the front and from the back: each face coloured by what "
                "Clamped faces / Wearable faces made of it" +
                  std::string(from_file ? ", the file's face numbers at the larger faces' centres." : "."),

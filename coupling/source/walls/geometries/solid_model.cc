@@ -1,4 +1,4 @@
-// Geometry = solid model: the surface of the FEM part of subsection Knife, which a lifetime run
+// Geometry = solid model: the surface of the FEM part of subsection Part, which a lifetime run
 // moves with its wear; the job fills the triangles in. It can be mounted on a shell's lip
 // (wall_geometry.h).
 #include <abrade/coupling/walls/wall_geometry.h>
@@ -15,14 +15,14 @@ namespace abrade::coupling
       std::string name() const override { return "solid model"; }
       std::string documentation() const override
       {
-        return "the surface of the FEM knife of subsection Knife; lifetime runs move it with its wear";
+        return "the surface of the FEM part of subsection Part; lifetime runs move it with its wear";
       }
 
       void declare_parameters(dem::ParameterSection &prm) const override
       {
         prm.declare_text("Knife mount", "",
                          "Solid model: the name of a shell wall whose lip carries this knife (a "
-                         "clamshell shell, or a file with 'Lip centre' set). The knife (subsection Knife) lies "
+                         "clamshell shell, or a file with 'Lip centre' set). The knife (subsection Part) lies "
                          "along the shell's width, its edge "
                          "'Knife protrusion' beyond the lip, its height along the shell's bottom, and "
                          "it moves with the shell (the shell's Motion is used; this wall's own Motion "

@@ -24,7 +24,7 @@ namespace abrade::fem
 {
   /// How a solid file is read: units, limits, which solid, placement (a user's part, not a
   /// generated one).
-  /// Parses Knife/Place: ','-separated 'centred' (in x and y), 'centred in x' (y, z), 'lowest
+  /// Parses Part/Place: ','-separated 'centred' (in x and y), 'centred in x' (y, z), 'lowest
   /// point at z = V' [m]; empty: none. Throws std::invalid_argument naming the item.
   struct SolidFileSettings;
   void parse_part_placement(const std::string &text, SolidFileSettings &settings);

@@ -68,7 +68,7 @@ namespace abrade::coupling::lifetime
     const std::vector<int>  &seeds;            ///< Lifetime/Seeds
     double                   tonnes_per_cycle; ///< Lifetime/Tonnes per cycle (0: the DEM's payload)
     const fem::SolidSurface &design;           ///< the part's design surface
-    double                   mesh_size;        ///< Knife/Mesh size [m]
+    double                   mesh_size;        ///< Part/Mesh size [m]
   };
 
   /// A choice of Lifetime/Wear source, as a plugin: a class in a file of its own in

@@ -50,12 +50,14 @@ namespace abrade::coupling
   /// other key. Said where the old spelling is set outside the subsection it moved from.
   std::string moved_entry_hint(const std::string &key);
 
-  /// Entries that moved keep working under their old spelling: each line of @p text that sets
-  /// one (`set Archard coefficient = W` in a wall's Wear) becomes the entry where it is now
-  /// (`subsection Archard`, `set Coefficient = W`, `end`), in place, so that the last setting
-  /// still wins; @p origin follows the new lines. Each --set of @p overrides with an old path is
-  /// rewritten likewise. Returns a note per old spelling read: where it was read ("file:line"
-  /// or "--set '...'") and where it is now.
+  /// Entries and subsections that moved keep working under their old spelling. A top-level
+  /// subsection of an old name (`subsection Knife`, now `subsection Part`) is read under its
+  /// name now, its line rewritten in place, and a --set of it likewise. Each line of @p text
+  /// that sets an entry that moved (`set Archard coefficient = W` in a wall's Wear) becomes the
+  /// entry where it is now (`subsection Archard`, `set Coefficient = W`, `end`), in place, so
+  /// that the last setting still wins; @p origin follows the new lines. Each --set of
+  /// @p overrides with an old path is rewritten likewise. Returns a note per old spelling read:
+  /// where it was read ("file:line" or "--set '...'") and where it is now.
   struct MovedNote
   {
     std::string where, what;

@@ -1,5 +1,5 @@
 #pragma once
-// The part that wears as the parameter file describes it (subsection Knife: the parametric knife,
+// The part that wears as the parameter file describes it (subsection Part: the parametric knife,
 // or a part from a file with its placement and faces), its mesh, and its surface placed as walls;
 // shared by the knife and lifetime jobs.
 #include <abrade/common/log.h>
@@ -17,7 +17,7 @@
 
 namespace abrade::coupling
 {
-  /// Knife/Bevel side.
+  /// Part/Bevel side.
   inline const Choices<fem::ParametricKnife::BevelSide> bevel_sides = {{"both", fem::ParametricKnife::BevelSide::both},
                                                                      {"plus", fem::ParametricKnife::BevelSide::plus},
                                                                      {"minus", fem::ParametricKnife::BevelSide::minus}};
@@ -33,15 +33,15 @@ namespace abrade::coupling
     std::vector<fem::FaceSelector> clamped_faces, wearable_faces;
   };
 
-  /// Declares subsection Knife: the parametric knife's shape, or a part from a file with its
+  /// Declares subsection Part: the parametric knife's shape, or a part from a file with its
   /// placement and faces, and the mesh.
   void declare_part_parameters(dealii::ParameterHandler &prm);
-  /// Reads and checks subsection Knife; errors name the file.
+  /// Reads and checks subsection Part; errors name the file.
   PartParameters read_part_parameters(ParameterFile &file);
-  /// Knife/Length [m] alone: the walls that mount the part read it before it is meshed.
+  /// Part/Length [m] alone: the walls that mount the part read it before it is meshed.
   double read_part_length(ParameterFile &file);
 
-  /// The part's volume mesh as subsection Knife describes it, with what was found on the way.
+  /// The part's volume mesh as subsection Part describes it, with what was found on the way.
   struct PartMesh
   {
     std::unique_ptr<dealii::Triangulation<3>> tria;
@@ -73,7 +73,7 @@ namespace abrade::coupling
   /// does not straddle y = 0 (empty otherwise).
   std::string fit_mounted_knives(DemCase &c, const fem::SolidSurface &design);
 
-  /// Meshes the part of subsection Knife (into @p directory) and gives every wall with
+  /// Meshes the part of subsection Part (into @p directory) and gives every wall with
   /// Geometry = solid model its surface, placed.
   void fill_solid_model_walls(DemCase &c, ParameterFile &file, const std::string &directory, io::Log &log);
 } // namespace abrade::coupling

@@ -1,7 +1,7 @@
 #pragma once
 // Knife concepts compared on one operating cycle (`abrade concepts BASELINE.prm OTHER.prm ...`):
 // every concept file (a complete case, typically including a common grab case and changing
-// subsection Knife) runs once per bed seed, all from the same settled beds; the knives' wear per
+// subsection Part) runs once per bed seed, all from the same settled beds; the knives' wear per
 // phase and the payload per cycle are reduced to mean and spread over the seeds, and every
 // concept is compared with the first (the baseline). Optionally each concept's knife life is
 // predicted too (the lifetime job on the same case, a few updates).

@@ -33,7 +33,7 @@ namespace abrade::coupling
   /// read), adding its warnings and input files to @p c.
   DemCase::WallCase read_wall(ParameterFile &f, const std::string &name, DemCase &c);
 
-  /// Places every mounted part (@p knife_length long, Knife/Length: part_parameters.h) on its
+  /// Places every mounted part (@p knife_length long, Part/Length: part_parameters.h) on its
   /// shell's lip and gives it the shell's motion.
   void mount_knives(ParameterFile &f, DemCase &c, double knife_length);
 
