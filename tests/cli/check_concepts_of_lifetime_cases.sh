@@ -9,7 +9,7 @@ set -euo pipefail
 abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 printf 'include %s/cases/lifetime/small.prm\n' "$src" > "$out/base.prm"
-printf 'include %s/cases/lifetime/small.prm\nsubsection Knife\n  set Bevel height = 0.03\nend\n' "$src" > "$out/blunt.prm"
+printf 'include %s/cases/lifetime/small.prm\nsubsection Part\n  set Bevel height = 0.03\nend\n' "$src" > "$out/blunt.prm"
 set +e
 "$abrade" concepts "$out/base.prm" "$out/blunt.prm" --knives knife --seeds 1 --quiet --output "$out/refused" 2> "$out/refused.err"
 code=$?

@@ -19,7 +19,7 @@ wall "$src/tests/cli/bad_index.obj" obj.prm
 $expect 2 "bad_index.obj:5: vertex index 2147483647 out of range \(3 vertices" -- "$abrade" run obj.prm --output o1
 wall "$src/tests/cli/truncated.ply" ply.prm
 $expect 2 "truncated.ply: the header announces 8 vertex elements, the file ends at vertex 4" -- "$abrade" run ply.prm --output o2
-python3 -c "open('long.prm','w').write('set Job = knife\nsubsection Knife\n  set Length = ' + '1' * 5000000 + '\nend\n')"
+python3 -c "open('long.prm','w').write('set Job = knife\nsubsection Part\n  set Length = ' + '1' * 5000000 + '\nend\n')"
 $expect 2 "long.prm:3: a line of 5000015 characters, more than 20000" -- timeout 20 "$abrade" run long.prm --output o3
 python3 -c "open('walls.prm','w').write('set Job = dem\nset Walls = ' + ','.join('w%d' % i for i in range(3000)) + '\n')"
 $expect 2 "Walls: 3000 walls listed, more than 1000" -- timeout 20 "$abrade" run walls.prm --output o4

@@ -32,7 +32,7 @@ def key(name, section=None):
     body = text if section is None else re.search(r"subsection %s\n(.*?)\nend\n" % re.escape(section), text, re.S).group(1)
     return re.search(r"^\s*set %s\s*=\s*(.*)$" % re.escape(name), body, re.M).group(1).strip()
 nums = lambda s: [float(x) for x in re.split(r"[,;]", s)]
-assert key("File", "Knife") == "bucket.step" and key("Place", "Knife") == "lowest point at z = 0, centred"
+assert key("File", "Part") == "bucket.step" and key("Place", "Part") == "lowest point at z = 0, centred"
 assert "0.9499 x 0.64 x 0.82 m" in text or "0.95 x 0.64 x 0.82 m" in text, text[:600]
 depth, travel = 0.41, 1.9
 phases = dict((p.split(":")[0].strip(), float(p.split(":")[1])) for p in key("Phases").split(","))

@@ -363,7 +363,7 @@ namespace abrade::coupling
         << "  end\nend\n\n";
     }
 
-    /// Knife: the part's file, its placing, mesh size and faces.
+    /// Part: the part's file, its placing, mesh size and faces.
     void write_case_knife(std::ostream &f, const Options &o, const PartShape &part, const Drag &d)
     {
       auto n = [](double x, int digits = 4) { return num(x, digits); };

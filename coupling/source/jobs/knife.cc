@@ -163,7 +163,7 @@ namespace abrade::coupling
     {
       const fem::MeshQuality q = fem::mesh_quality(tria);
       std::ostringstream     s;
-      s << "Knife: " << tria.n_active_cells() << " cells, volume " << volume << " m^3, mass " << volume * density
+      s << "Part: " << tria.n_active_cells() << " cells, volume " << volume << " m^3, mass " << volume * density
         << " kg; min scaled Jacobian " << q.min_scaled_jacobian << ", max aspect ratio " << q.max_aspect_ratio;
       log.line(s.str());
       if (q.n_inverted > 0)

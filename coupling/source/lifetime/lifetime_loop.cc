@@ -15,6 +15,7 @@
 #include <abrade/coupling/lifetime/stored_wear.h>
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
+#include <abrade/coupling/parameters/parameter_text.h>
 #include <abrade/dem/wear.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/mpi_once.h>
@@ -136,11 +137,14 @@ namespace abrade::coupling::lifetime
     checkpoints       = std::make_unique<LifetimeCheckpoints>(ctx.output.subdirectory("checkpoint"));
     // (a calibration's numbers too: a resume with another calibration.json behind the same name
     // would mix two coefficients)
-    hash = io::fnv1a_hex(ctx.parameters.identity_text() + (calibration.coefficient > 0 ? "\ncalibration " +
-                                                              io::format_number(calibration.coefficient, 17) + " " +
-                                                              io::format_number(calibration.relative_sd, 17) + " " +
-                                                              io::format_number(calibration.smoothing_radius, 17)
-                                                                                        : std::string()));
+    const std::string calibrated = calibration.coefficient > 0 ? "\ncalibration " +
+                                                                   io::format_number(calibration.coefficient, 17) + " " +
+                                                                   io::format_number(calibration.relative_sd, 17) + " " +
+                                                                   io::format_number(calibration.smoothing_radius, 17)
+                                                                 : std::string();
+    hash = io::fnv1a_hex(ctx.parameters.identity_text() + calibrated);
+    // (a checkpoint of an abrade before subsection Knife became Part hashed that spelling)
+    hash_before_renames = io::fnv1a_hex(with_old_subsection_names(ctx.parameters.identity_text()) + calibrated);
     volume0           = part_model->volume();
     const std::size_t n_criteria = criteria.size();
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
@@ -299,7 +303,7 @@ namespace abrade::coupling::lifetime
                                state_format + "'); start afresh without --resume");
     // (a checkpoint of an earlier abrade hashed the parameters with the output directory's
     // name: resumed when made in the directory of this run's name)
-    if (state.text("parameter_hash") != hash &&
+    if (state.text("parameter_hash") != hash && state.text("parameter_hash") != hash_before_renames &&
         state.text("parameter_hash") != io::fnv1a_hex(ctx.parameters.canonical_text()))
       throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
                                ", now " + hash + "); resume with the same parameter file and --set options" +

@@ -139,6 +139,35 @@ namespace abrade::coupling
     return "";
   }
 
+  std::string with_old_subsection_names(const std::string &printed)
+  {
+    // the top-level entries, then one block per top-level subsection (from its line to its
+    // "end" in the first column), sorted by name as deal.II prints them
+    const std::vector<std::string>                   lines = lines_of(printed);
+    std::string                                      head;
+    std::vector<std::pair<std::string, std::string>> blocks; // (name, text)
+    for (std::size_t n = 0; n < lines.size(); ++n)
+      {
+        if (lines[n].rfind("subsection ", 0) != 0)
+          {
+            head += lines[n] + "\n";
+            continue;
+          }
+        std::string name = lines[n].substr(11), text;
+        for (const auto &r : renamed_subsections)
+          if (name == r.name)
+            name = r.old_name;
+        text = "subsection " + name + "\n";
+        while (++n < lines.size() && lines[n] != "end")
+          text += lines[n] + "\n";
+        blocks.emplace_back(name, text + "end\n");
+      }
+    std::stable_sort(blocks.begin(), blocks.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
+    for (const auto &b : blocks)
+      head += b.second;
+    return head;
+  }
+
   std::vector<MovedNote> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
                                             const std::string &file, std::vector<Override> &overrides)
   {

@@ -1,5 +1,5 @@
 // The parameters of a case composed from their owners (parameters.h): the top-level lists and
-// the Job, then each subsection declared and read by the file of what it configures (Knife:
+// the Job, then each subsection declared and read by the file of what it configures (Part:
 // part_parameters.cc; Lifetime: lifetime/lifetime_settings.cc; Output, Simulation, Particles:
 // their *_parameters.cc; Wall NAME: walls/wall_parameters.cc; Grab mechanism:
 // walls/grab_mechanism.cc), in the order their checks run; and the DEM simulation built from

@@ -1,4 +1,4 @@
-// Subsection Knife: the parametric knife or a user's part (part_parameters.h), meshed, its faces
+// Subsection Part: the parametric knife or a user's part (part_parameters.h), meshed, its faces
 // chosen, and placed as the DEM's walls.
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
@@ -132,9 +132,9 @@ namespace abrade::coupling
         }
       catch (const InputError &e)
         {
-          // "knife geometry: <problem>" -> "FILE: Knife: <problem>"
+          // "knife geometry: <problem>" -> "FILE: Part: <problem>"
           const std::string what = e.what();
-          throw InputError(file.file_name(), "Knife: " + what.substr(what.find(": ") + 2));
+          throw InputError(file.file_name(), "Part: " + what.substr(what.find(": ") + 2));
         }
       // the meshing budget, before Gmsh is asked (the plate's volume is an upper bound)
       const double cells = fem::estimated_cells(k.length * k.height * k.thickness, part.mesh_size);
@@ -263,9 +263,9 @@ namespace abrade::coupling
     if (!part.from_file)
       return;
     for (const auto &n : m.report.notes)
-      log.line("Knife: " + part.file + ": " + n);
+      log.line("Part: " + part.file + ": " + n);
     std::ostringstream faces;
-    faces << "Knife: " << m.file_faces.size() << " faces in the file; wearable " << m.faces.wearable_area
+    faces << "Part: " << m.file_faces.size() << " faces in the file; wearable " << m.faces.wearable_area
           << " m^2, clamped " << m.faces.clamped_area << " m^2"
           << (part.clamped_faces.empty() && part.wearable_faces.empty() ? " (no Clamped faces given: every face wears)" : "");
     log.line(faces.str());
@@ -274,12 +274,12 @@ namespace abrade::coupling
         std::string ids;
         for (const auto id : t.faces)
           ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-        log.line("Knife: " + t.list + " '" + t.selector + "' took " + io::format_number(t.area) + " m^2 of face(s) " +
+        log.line("Part: " + t.list + " '" + t.selector + "' took " + io::format_number(t.area) + " m^2 of face(s) " +
                  ids);
       }
     for (const auto &w : m.report.warnings)
       {
-        log.warning("Knife: " + part.file + ": " + w);
+        log.warning("Part: " + part.file + ": " + w);
         if (warnings)
           warnings->push_back(part.file + ": " + w);
       }

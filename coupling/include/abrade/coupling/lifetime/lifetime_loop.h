@@ -198,6 +198,7 @@ namespace abrade::coupling::lifetime
     std::unique_ptr<LifetimeCheckpoints>  checkpoints;
     io::CsvWriter                         trajectory;
     std::string                           hash;
+    std::string                           hash_before_renames; ///< (of a checkpoint of an earlier abrade)
 
     WearFieldColumns             field_columns; ///< the Wear field's outputs' names (trajectory.csv, summary.json)
 

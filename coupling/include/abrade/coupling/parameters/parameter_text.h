@@ -58,6 +58,12 @@ namespace abrade::coupling
   /// that the last setting still wins; @p origin follows the new lines. Each --set of
   /// @p overrides with an old path is rewritten likewise. Returns a note per old spelling read:
   /// where it was read ("file:line" or "--set '...'") and where it is now.
+  /// @p printed (ParameterHandler's ShortPRM text, as ParameterFile::canonical_text() gives
+  /// it) as an abrade before the renames printed it: each renamed top-level subsection under
+  /// its old name, in its sorted place (`subsection Knife` before `subsection Lifetime`). A
+  /// lifetime checkpoint of an earlier abrade hashed that text.
+  std::string with_old_subsection_names(const std::string &printed);
+
   struct MovedNote
   {
     std::string where, what;
