@@ -50,7 +50,6 @@ namespace abrade::coupling
   CaseScene case_scene(ParameterFile &file, const fem::SolidSurface &part)
   {
     CaseScene scene;
-    scene.notes = file.notes(); // (what the reading left out or read under an old name)
     // a part on its own (no wall holds it) has no case around it: its file's DEM keys are
     // defaults, and reading them would check a bed nobody asked for
     if (!a_wall_is_the_part(file) || part.vertices.empty())

@@ -134,7 +134,7 @@ namespace abrade::coupling
         }
       c["notes"] = std::vector<double>{};
       for (const auto &n : scene.notes)
-        c["notes"].push_back(n), ctx.log.line("preview: " + n);
+        c["notes"].push_back(n); // (logged by run(), with the part alone too)
       if (!walls || !path)
         throw RunError("could not write " + dir + "/scene_walls.dat and scene_path.dat");
     }
@@ -257,6 +257,8 @@ namespace abrade::coupling
 
   void KnifeJob::run(JobContext &ctx) const
   {
+    for (const auto &n : ctx.parameters.notes()) // (what the reading left out or read under an old name)
+      ctx.log.line(n);
     const PartParameters part = read_part_parameters(ctx.parameters);
     fem::init_mpi_once();
     const std::string dir = ctx.output.subdirectory("knife");
