@@ -72,8 +72,8 @@ for u in 8 12; do
   python3 "$root/scripts/make-synthetic-field-data.py" "$out/truth" $u "$out/scan$u" --noise 0.0003 --angle 3 \
     --shift 0.03,-0.02,0.05 --seed $u > /dev/null
   t=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[$u - 1]['tonnes'])" "$out/truth/trajectory.csv")
-  "$abrade" compare --predicted "$out/candidate/knife/knife_00003.stl" --scan "$out/scan$u/scan_mm.ply" \
-    --reference "$out/candidate/knife/knife_00000.stl" --register-on -1,-1,0.3,1,1,1 --tonnes "$t" \
+  "$abrade" compare --predicted "$out/candidate/part/part_00003.stl" --scan "$out/scan$u/scan_mm.ply" \
+    --reference "$out/candidate/part/part_00000.stl" --register-on -1,-1,0.3,1,1,1 --tonnes "$t" \
     --output "$out/compare$u" > "$out/compare$u.log" 2>&1
 done
 (cat "$out/compare8/measured_depths.csv"; tail -n +2 "$out/compare12/measured_depths.csv") > "$out/both_scans.csv"

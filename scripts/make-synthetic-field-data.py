@@ -53,7 +53,9 @@ R = [[c + ux * ux * (1 - c), ux * uy * (1 - c) - uz * s, ux * uz * (1 - c) + uy 
      [uz * ux * (1 - c) - uy * s, uz * uy * (1 - c) + ux * s, c + uz * uz * (1 - c)]]
 shift = [float(x) for x in args.shift.split(",")]
 
-tris = read_stl(os.path.join(run, "knife", f"knife_{update:05d}.stl"))
+# the part's folder: part/part_NNNNN.stl, or knife/knife_NNNNN.stl in an earlier abrade's run
+part = "part" if os.path.isdir(os.path.join(run, "part")) or not os.path.isdir(os.path.join(run, "knife")) else "knife"
+tris = read_stl(os.path.join(run, part, f"{part}_{update:05d}.stl"))
 areas = [area(*t) for t in tris]
 total = sum(areas)
 points = []

@@ -12,7 +12,7 @@ set xlabel 'y [mm] (across the plate)'
 set ylabel 'z [mm] (up from the design edge)'
 set key outside right top
 set grid
-f = run.'/knife/profile_0.50.csv'
+f = run.'/part/profile_0.50.csv'
 stats f nooutput
 last = STATS_blocks - 2  # (the file ends with the blank lines of a block)
 # the last update's section: its lowest point and its width at the gauge height (70 mm)

@@ -10,7 +10,7 @@
 // FLTK's own (ELF symbol interposition), as no-ops. They are named by their mangled names since
 // FLTK's headers are not installed (only its run-time library, as libgmsh's dependency). This
 // file is linked into `abrade` and `abrade-mesher` only, never into a library; the strace
-// check of cli/output_directory shows that a knife job opens no preference file for writing.
+// check of cli/output_directory shows that a part job opens no preference file for writing.
 extern "C"
 {
   /// static bool Fl::option(Fl::Fl_Option): every option off

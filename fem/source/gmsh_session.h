@@ -2,7 +2,7 @@
 // Gmsh started for abrade: without its configuration files. With them (the API's default)
 // gmsh::initialize reads ~/.gmshrc and ~/.gmsh-options, which let a user's own Gmsh settings
 // change abrade's meshes, and its FLTK start-up rewrites FLTK's preference files in /etc/fltk
-// and ~/.fltk: writes outside the run's output directory, on every knife job.
+// and ~/.fltk: writes outside the run's output directory, on every part job.
 #include <gmsh.h>
 
 namespace abrade::fem

@@ -244,7 +244,7 @@ namespace abrade::fem
         if (hits[k] == 0)
           throw std::invalid_argument(std::string(which) + " '" + list[k].text +
                                       "' takes no face of the part (boxes are in metres, in the part's frame after "
-                                      "its scale and placement; the knife job lists the faces)");
+                                      "its scale and placement; the part job lists the faces)");
     };
     for (auto &t : r.taken)
       std::sort(t.faces.begin(), t.faces.end());

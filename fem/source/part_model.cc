@@ -31,7 +31,7 @@ namespace abrade::fem
     if (settings.work_directory.empty())
       settings.work_directory = io::private_temporary_directory();
     std::filesystem::create_directories(settings.work_directory);
-    geometry.mesh(*tria, settings.mesh_size, settings.work_directory + "/knife.msh");
+    geometry.mesh(*tria, settings.mesh_size, settings.work_directory + "/part.msh");
     if (settings.plate_thickness <= 0)
       settings.plate_thickness = geometry.thickness;
     start();

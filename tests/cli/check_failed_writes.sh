@@ -25,8 +25,8 @@ mkdir -p csv && full csv/trajectory.csv
 $expect 3 "run failed: cannot write csv/trajectory.csv \(disk full" -- "${run[@]}" --output csv
 status csv/summary.json
 
-mkdir -p vtu/knife && full vtu/knife/knife_00000.vtu.tmp
-$expect 3 "run failed: cannot write vtu/knife/knife_00000.vtu \(disk full" -- "${run[@]}" --output vtu
+mkdir -p vtu/part && full vtu/part/part_00000.vtu.tmp
+$expect 3 "run failed: cannot write vtu/part/part_00000.vtu \(disk full" -- "${run[@]}" --output vtu
 status vtu/summary.json
 # a disk that fills up at the end of the run (a file system that holds the run's data but not
 # its report, sized from the same run on the real disk): the run either writes every declared
@@ -41,7 +41,7 @@ rc=$?
 set -e
 if [[ $rc -eq 0 ]]; then
   missing=""
-  for f in report.html trajectory.png knife/profile_0.50.png summary.json; do [[ -s small/run/$f ]] || missing+=" $f"; done
+  for f in report.html trajectory.png part/profile_0.50.png summary.json; do [[ -s small/run/$f ]] || missing+=" $f"; done
   echo "the run completed on a disk too small for its report (${missing:+without$missing}):"; echo "$out_text"; exit 1
 else
   [[ $rc -eq 3 ]] || { echo "a full disk ended the run with exit $rc:"; echo "$out_text"; exit 1; }

@@ -19,7 +19,7 @@ wall "$src/tests/cli/bad_index.obj" obj.prm
 $expect 2 "bad_index.obj:5: vertex index 2147483647 out of range \(3 vertices" -- "$abrade" run obj.prm --output o1
 wall "$src/tests/cli/truncated.ply" ply.prm
 $expect 2 "truncated.ply: the header announces 8 vertex elements, the file ends at vertex 4" -- "$abrade" run ply.prm --output o2
-python3 -c "open('long.prm','w').write('set Job = knife\nsubsection Part\n  set Length = ' + '1' * 5000000 + '\nend\n')"
+python3 -c "open('long.prm','w').write('set Job = part\nsubsection Part\n  set Length = ' + '1' * 5000000 + '\nend\n')"
 $expect 2 "long.prm:3: a line of 5000015 characters, more than 20000" -- timeout 20 "$abrade" run long.prm --output o3
 python3 -c "open('walls.prm','w').write('set Job = dem\nset Walls = ' + ','.join('w%d' % i for i in range(3000)) + '\n')"
 $expect 2 "Walls: 3000 walls listed, more than 1000" -- timeout 20 "$abrade" run walls.prm --output o4
@@ -38,7 +38,7 @@ $expect 2 "refine.prm:5: Wall w/Maximum edge length: refining the wall's 10 tria
   -- timeout 20 "$abrade" run refine.prm --output o_refine
 # solids: a .msh of garbage, one whose cell names a missing node, one with no volume elements,
 # an STL with a coordinate that is not a number (Gmsh looped forever)
-knife=("$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Part/Geometry=file
+knife=("$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=part --set Part/Geometry=file
        --set "Part/File scale=0.001")
 printf 'garbage\n' > garbage.msh
 $expect 2 "garbage.msh: Gmsh could not read it: .*line 1: syntax error" -- "${knife[@]}" --output o_garbage.msh --set "Part/File=$out/garbage.msh"
@@ -68,13 +68,13 @@ resume whole > /dev/null
 resume edited > /dev/null
 rm edited/checkpoint/*-3.*
 printf 'update,garbage\n1,%%%%,x\n' > edited/trajectory.csv
-echo "12 0.1" >> edited/knife/profile_0.50.csv # an append cut by a crash: dropped
+echo "12 0.1" >> edited/part/profile_0.50.csv # an append cut by a crash: dropped
 resume edited --resume > /dev/null
 cmp whole/trajectory.csv edited/trajectory.csv
-cmp whole/knife/profile_0.50.csv edited/knife/profile_0.50.csv
+cmp whole/part/profile_0.50.csv edited/part/profile_0.50.csv
 rm edited/checkpoint/*-3.*
-sed -i '3s/.*/zz 1 2 3 4/' edited/knife/profile_0.50.csv
-$expect 2 "edited/knife/profile_0.50.csv:3: not a profile line" -- "$abrade" run "$prm" --output edited --quiet --set "Lifetime/Maximum updates=3" --resume
+sed -i '3s/.*/zz 1 2 3 4/' edited/part/profile_0.50.csv
+$expect 2 "edited/part/profile_0.50.csv:3: not a profile line" -- "$abrade" run "$prm" --output edited --quiet --set "Lifetime/Maximum updates=3" --resume
 sed -i 's/^tonnes = .*/tonnes = 2999.5/' edited/checkpoint/loop-2.txt
 $expect 2 "edited/checkpoint/loop-2.txt: corrupt state file \(its checksum does not match" -- "$abrade" run "$prm" --output edited --quiet --set "Lifetime/Maximum updates=3" --resume
 "$abrade" run "$src/tests/cli/small_bed.prm" --output bed --quiet > /dev/null

@@ -27,7 +27,7 @@ wait $first || { echo "the first run failed beside the refused second"; exit 1; 
 "${life[@]}" --output busy --set "Lifetime/Maximum updates=1" > /dev/null
 
 # links inside: refused, their targets untouched
-for name in trajectory.csv log.txt parameters.prm knife; do
+for name in trajectory.csv log.txt parameters.prm part knife; do
   mkdir -p "links_$name" && echo keep > "target_$name"
   ln -s "$PWD/target_$name" "links_$name/$name"
   $expect 2 "links_$name/$name: a symbolic link \(to .*target_$name\) inside the output directory" -- \
@@ -67,7 +67,7 @@ if command -v strace > /dev/null; then
   printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.geo
   "$abrade" convert block.geo --output block.step > /dev/null
   strace -f -qq -e trace=%file -o trace.txt "$abrade" run --quiet --output knife_job \
-    --set Job=knife --set Part/Geometry=file --set "Part/File=$PWD/block.step" \
+    --set Job=part --set Part/Geometry=file --set "Part/File=$PWD/block.step" \
     --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
   # files opened for writing (O_WRONLY, O_RDWR, O_CREAT), made, moved, linked, cut or removed:
   # inside knife_job/ only (/dev/null and the terminal aside, and Open MPI's run time: its

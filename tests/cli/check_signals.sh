@@ -16,7 +16,7 @@ interrupted() {
 # a block meshed at 2 mm (about 1e5 tetrahedra: several seconds in Gmsh)
 printf 'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n' > block.geo
 "$abrade" convert block.geo --output block.step > /dev/null
-"$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Part/Geometry=file \
+"$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=part --set Part/Geometry=file \
   --set "Part/File=$out/block.step" --set "Part/Clamped faces=normal 0, 0, 1" --set "Part/Mesh size=0.002" \
   --output mesh > mesh.out 2>&1 &
 pid=$!

@@ -67,11 +67,11 @@ echo "set Job = dem" > i0.prm
 for k in $(seq 1 22); do printf 'include i%d.prm\ninclude i%d.prm\n' $((k - 1)) $((k - 1)) > i$k.prm; done
 $expect 2 "more than 1000 files included in all" -- timeout 20 "$abrade" run i22.prm --output o_bomb
 # a byte order mark (a Windows editor's) is no part of the first key
-printf '\xef\xbb\xbfset Job = knife\n' > bom.prm
-$expect 0 "job 'knife' from bom.prm" -- timeout 60 "$abrade" run bom.prm --output o_bom
+printf '\xef\xbb\xbfset Job = knife\n' > bom.prm # (knife: the part job's old name)
+$expect 0 "job 'part' from bom.prm" -- timeout 60 "$abrade" run bom.prm --output o_bom
 
 # knife parts that are not one solid: Gmsh said "No elements in volume 1", or took them
-knife=(timeout 60 "$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=knife --set Part/Geometry=file
+knife=(timeout 60 "$abrade" run "$src/cases/knife/lip_knife.prm" --quiet --set Job=part --set Part/Geometry=file
        --set "Part/File scale=1" --set "Part/Clamped faces=normal 0, 0, -1")
 python3 - <<'PY'
 def box(x0, y0, z0, x1, y1, z1):
@@ -136,5 +136,8 @@ $expect 2 "--seeds: a seed is 0 or more, got -1" -- "${sweep[@]}" --vary "Wall k
 $expect 2 "--seeds: seed 1 is given twice" -- "${sweep[@]}" --vary "Wall knife/Interaction/Friction=0,0.1" --seeds 1,1
 $expect 2 "--jobs must be 0 \(one per core\) or more, got -3" -- "${sweep[@]}" --vary "Wall knife/Interaction/Friction=0,0.1" --jobs -3
 $expect 2 "--wall nope: no such wall in the case" -- "${sweep[@]}" --vary "Wall knife/Interaction/Friction=0,0.1" --wall nope
+$expect 2 "--vary 'Part/Length' is given twice \\(as 'Knife/Length'\\)" -- "${sweep[@]}" --vary "Knife/Length=0.3,0.4" --vary "Part/Length=0.5,0.6"
+$expect 2 "--vary 'Wall knife/Wear/Archard/Coefficient' is given twice" -- "${sweep[@]}" \
+  --vary "Wall knife/Wear/Archard coefficient=1e-12,2e-12" --vary "Wall knife/Wear/Archard/Coefficient=3e-12"
 [[ ! -e o_sweep/runs ]] || { echo "a sweep with bad input started runs"; exit 1; }
 echo "untrusted files: all refused or read right"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # abrade calibrate reads what spreadsheets write (a byte order mark, quotes, CRLF) and refuses
 # what it cannot fit, with the file and line, instead of reporting a W: both depth columns,
-# a knife.pvd whose time is not a number or does not increase, a measurement row with a cell
+# a part.pvd whose time is not a number or does not increase, a measurement row with a cell
 # missing, a location defined twice, a row copied twice, every measurement at 0 t, a point
 # 10 m from the knife, tonnes in kg (the fit runs to the end of its range), 1e300 tonnes.
 #   check_bad_inputs.sh ABRADE SOURCE_DIR OUTDIR
@@ -51,14 +51,14 @@ cal "short_row.csv:5: 4 cells, the header has 5" short_row.csv
 cal "copied.csv:5: the same measurement as copied.csv:3" copied.csv
 $expect 2 "locations.csv:3: location 'tip' is defined twice \(first on line 2\)" -- \
   "$abrade" calibrate --run run --measurements by_name.csv --locations locations.csv --output cal_bad
-cp -r run text_time && sed -i '0,/timestep="0"/s//timestep="abc"/' text_time/knife/knife.pvd
-cal "text_time/knife/knife.pvd:[0-9]+: timestep \"abc\" is not a number of tonnes" good.csv text_time
-cp -r run back_in_time && python3 - back_in_time/knife/knife.pvd <<'PY' # the third time step (after 1500 t) back to 1000 t
+cp -r run text_time && sed -i '0,/timestep="0"/s//timestep="abc"/' text_time/part/part.pvd
+cal "text_time/part/part.pvd:[0-9]+: timestep \"abc\" is not a number of tonnes" good.csv text_time
+cp -r run back_in_time && python3 - back_in_time/part/part.pvd <<'PY' # the third time step (after 1500 t) back to 1000 t
 import re, sys
 text = open(sys.argv[1]).read()
 steps = re.findall(r'timestep="[^"]*"', text)
 i = text.index(steps[2], text.index(steps[1]) + len(steps[1]))
 open(sys.argv[1], "w").write(text[:i] + 'timestep="1000"' + text[i + len(steps[2]):])
 PY
-cal "back_in_time/knife/knife.pvd:[0-9]+: timestep 1000 t does not follow 1500" good.csv back_in_time
+cal "back_in_time/part/part.pvd:[0-9]+: timestep 1000 t does not follow 1500" good.csv back_in_time
 echo "calibrate inputs: all refused with their file and line"

@@ -33,8 +33,8 @@ subsection Lifetime
 end
 PRM
 "$abrade" run "$out/band.prm" --quiet --output "$out/truth" > /dev/null
-"$abrade" compare --predicted "$out/truth/knife/knife_00002.stl" --scan "$out/truth/knife/knife_00002.stl" \
-  --reference "$out/truth/knife/knife_00000.stl" --tonnes 3000 --no-registration --output "$out/scan" > /dev/null 2>&1
+"$abrade" compare --predicted "$out/truth/part/part_00002.stl" --scan "$out/truth/part/part_00002.stl" \
+  --reference "$out/truth/part/part_00000.stl" --tonnes 3000 --no-registration --output "$out/scan" > /dev/null 2>&1
 for r in 0.005 0.01 0.02 0.04; do
   "$abrade" run "$out/band.prm" --quiet --output "$out/r$r" --set "Lifetime/Smoothing radius=$r" \
     --set "Lifetime/Analytic wear rate=2e-6*(z < zlow + 0.004)" --set "Lifetime/Cycles per update=2250" > /dev/null &

@@ -25,9 +25,9 @@ round_trip() { # run, label, registration options...
   local tonnes
   tonnes=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/$run/trajectory.csv")
   local last
-  last=$(printf "knife_%05d.stl" "$(( $(wc -l < "$out/$run/trajectory.csv") - 1 ))")
-  "$abrade" compare --predicted "$out/$run/knife/$last" --scan "$out/$run/knife/$last" \
-    --reference "$out/$run/knife/knife_00000.stl" --tonnes "$tonnes" --output "$out/compare_$label" "$@" > /dev/null 2>&1
+  last=$(printf "part_%05d.stl" "$(( $(wc -l < "$out/$run/trajectory.csv") - 1 ))")
+  "$abrade" compare --predicted "$out/$run/part/$last" --scan "$out/$run/part/$last" \
+    --reference "$out/$run/part/part_00000.stl" --tonnes "$tonnes" --output "$out/compare_$label" "$@" > /dev/null 2>&1
   "$abrade" calibrate --run "$out/$run" --measurements "$out/compare_$label/measured_depths.csv" \
     --output "$out/calibrate_$label" > /dev/null
 }

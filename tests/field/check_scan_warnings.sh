@@ -23,22 +23,22 @@ def write(path, tris):
         f.write(struct.pack("<I", len(tris)))
         for t in tris:
             f.write(struct.pack("<12fH", *t))
-design = read(os.path.join(out, "run", "knife", "knife_00000.stl"))
+design = read(os.path.join(out, "run", "part", "part_00000.stl"))
 # inward: the second and third corners swapped, the normal turned round
 write(os.path.join(out, "design_inward.stl"),
       [(-t[0], -t[1], -t[2], *t[3:6], *t[9:12], *t[6:9], t[12]) for t in design])
 # a partial scan: the worn knife's lower part (z < 0.15 m), the worn edge in it
-worn = read(os.path.join(out, "run", "knife", "knife_00002.stl"))
+worn = read(os.path.join(out, "run", "part", "part_00002.stl"))
 write(os.path.join(out, "partial_scan.stl"), [t for t in worn if max(t[5], t[8], t[11]) < 0.15])
 PY
-d="$out/run/knife"
-"$abrade" compare --predicted "$d/knife_00002.stl" --scan "$d/knife_00002.stl" --reference "$d/knife_00000.stl" \
+d="$out/run/part"
+"$abrade" compare --predicted "$d/part_00002.stl" --scan "$d/part_00002.stl" --reference "$d/part_00000.stl" \
   --no-registration --output "$out/right" > /dev/null 2> "$out/right.err"
-"$abrade" compare --predicted "$d/knife_00002.stl" --scan "$d/knife_00002.stl" --reference "$out/design_inward.stl" \
+"$abrade" compare --predicted "$d/part_00002.stl" --scan "$d/part_00002.stl" --reference "$out/design_inward.stl" \
   --no-registration --output "$out/inward" > /dev/null 2> "$out/inward.err"
-"$abrade" compare --predicted "$d/knife_00002.stl" --scan "$out/partial_scan.stl" --reference "$d/knife_00000.stl" \
+"$abrade" compare --predicted "$d/part_00002.stl" --scan "$out/partial_scan.stl" --reference "$d/part_00000.stl" \
   --output "$out/no_region" > /dev/null 2> "$out/no_region.err"
-"$abrade" compare --predicted "$d/knife_00002.stl" --scan "$d/knife_00002.stl" --reference "$d/knife_00000.stl" \
+"$abrade" compare --predicted "$d/part_00002.stl" --scan "$d/part_00002.stl" --reference "$d/part_00000.stl" \
   --register-on -1,-1,0.2,1,1,1 --output "$out/region" > /dev/null 2> "$out/region.err"
 grep -q "face inward" "$out/inward.err" || { echo "no warning for the inward design"; cat "$out/inward.err"; exit 1; }
 ! grep -q "face inward" "$out/right.err" || { echo "a warning for the outward design"; exit 1; }

@@ -12,7 +12,7 @@ set -euo pipefail
 abrade=$(realpath "$1") src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 "$abrade" run "$src/cases/lifetime/small.prm" --quiet --output "$out/prediction" --set "Lifetime/Maximum updates=6" > /dev/null
-"$abrade" compare --predicted "$out/prediction/knife/knife_00002.stl" --scan "$src/cases/field/scan_mm.ply" \
+"$abrade" compare --predicted "$out/prediction/part/part_00002.stl" --scan "$src/cases/field/scan_mm.ply" \
   --reference "$src/cases/field/design.stl" --register-on -1,-1,0.1,1,1,1 --profile-planes 0.075 --tonnes 882069 \
   --output "$out/compare" 2> "$out/compare.err"
 "$abrade" calibrate --run "$out/prediction" --measurements "$src/cases/field/measurements.csv" \

@@ -10,15 +10,15 @@ Each target is a small valid input and the cheapest command that reads it:
   obj   a wall's OBJ                                             abrade export-walls
   ply   a wall's PLY (ASCII)                                     abrade export-walls
   vtk   a wall's legacy VTK polydata (ASCII)                     abrade export-walls
-  msh   the knife as a Gmsh .msh volume mesh (two tetrahedra)    abrade run (Job = knife)
-  step  the knife as a STEP block in mm (abrade convert)         abrade run (Job = knife)
+  msh   the knife as a Gmsh .msh volume mesh (two tetrahedra)    abrade run (Job = part)
+  step  the knife as a STEP block in mm (abrade convert)         abrade run (Job = part)
   xyz   a point-cloud scan                                       abrade compare
   vtp   a surface scan (VTK XML, ASCII)                          abrade compare
   scan.stl, scan.ply, scan.obj: surface scans                    abrade compare
   wall.vtp, wall.vtu: a wall's VTK XML surface / volume          abrade export-walls
-  knife.stl: the knife as a closed STL box (Gmsh meshes it)      abrade run (Job = knife)
+  knife.stl: the knife as a closed STL box (Gmsh meshes it)      abrade run (Job = part)
   csv   a measurement table                                      abrade calibrate
-  pvd   a lifetime run's knife.pvd                               abrade calibrate
+  pvd   a lifetime run's part.pvd                                abrade calibrate
   bed   a settled bed (binary, with its checksum)                abrade run (Job = dem)
 The targets that need a lifetime run (xyz, vtp, csv, pvd) share one small analytic run, made
 first (a few seconds).
@@ -238,7 +238,7 @@ MADE = ("step", "xyz", "vtp", "scan.stl", "scan.ply", "scan.obj", "csv", "pvd", 
 
 class Fixtures:
     """What the targets that are not plain text share: a small analytic lifetime run (its worn
-    knife, its knife.pvd, a measurement table from its trajectory), a STEP block, a bed."""
+    knife, its part.pvd, a measurement table from its trajectory), a STEP block, a bed."""
 
     def __init__(self, abrade, out, source):
         self.abrade, self.dir, self.source = abrade, os.path.join(out, "fixtures"), source
@@ -255,7 +255,7 @@ class Fixtures:
         self.run = os.path.join(d, "run")
         run("run", os.path.join(self.source, "tests/lifetime/analytic_uniform.prm"), "--quiet", "--output", self.run,
             "--set", "Lifetime/Maximum updates=2")
-        self.worn = os.path.join(self.run, "knife", "knife_00002.stl")
+        self.worn = os.path.join(self.run, "part", "part_00002.stl")
         rows = open(os.path.join(self.run, "trajectory.csv")).read().splitlines()
         header = rows[0].split(",")
         t, dep = header.index("tonnes"), header.index("point_depth")
@@ -263,7 +263,7 @@ class Fixtures:
             "0.075,0.015,0.06,%s,%s\n" % (r.split(",")[t], r.split(",")[dep]) for r in rows[1:])
         self.table = os.path.join(d, "measurements.csv")
         open(self.table, "w").write(CORPUS["csv"])
-        CORPUS["pvd"] = open(os.path.join(self.run, "knife", "knife.pvd")).read()
+        CORPUS["pvd"] = open(os.path.join(self.run, "part", "part.pvd")).read()
         geo = os.path.join(d, "block.geo")
         open(geo, "w").write('SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 100, 60, 20};\n')
         run("convert", geo, "--output", os.path.join(d, "block.step"))
@@ -315,20 +315,20 @@ def command(abrade, target, path, work, fixtures):
         return [abrade, "compare", "--predicted", fixtures.worn, "--scan", path, "--output", os.path.join(work, "c")]
     if target == "csv":
         return [abrade, "calibrate", "--run", fixtures.run, "--measurements", path, "--output", os.path.join(work, "c")]
-    if target == "pvd":  # the run's knife outputs, under a mutated knife.pvd
+    if target == "pvd":  # the run's part outputs, under a mutated part.pvd
         run = os.path.join(work, "run")
-        os.makedirs(os.path.join(run, "knife"))
-        for name in os.listdir(os.path.join(fixtures.run, "knife")):
+        os.makedirs(os.path.join(run, "part"))
+        for name in os.listdir(os.path.join(fixtures.run, "part")):
             if name.endswith(".vtu"):
-                os.symlink(os.path.join(fixtures.run, "knife", name), os.path.join(run, "knife", name))
+                os.symlink(os.path.join(fixtures.run, "part", name), os.path.join(run, "part", name))
         shutil.copy(os.path.join(fixtures.run, "summary.json"), run)
-        shutil.copy(path, os.path.join(run, "knife", "knife.pvd"))
+        shutil.copy(path, os.path.join(run, "part", "part.pvd"))
         return [abrade, "calibrate", "--run", run, "--measurements", fixtures.table, "--output", os.path.join(work, "c")]
     if target in ("bed", "dump", "bed.csv"):
         return [abrade, "run", os.path.join(fixtures.source, "tests/cli/small_bed.prm"), "--quiet", "--output",
                 os.path.join(work, "o"), "--set", f"Particles/Settling/Bed file={path}"]
     clamped = "group bolted" if target == "msh" else "normal 0, 0, -1" if target == "knife.stl" else "normal 0, 0, 1"
-    return [abrade, "run", "--output", work, "--quiet", "--set", "Job=knife", "--set", "Part/Geometry=file",
+    return [abrade, "run", "--output", work, "--quiet", "--set", "Job=part", "--set", "Part/Geometry=file",
             "--set", f"Part/File={path}", "--set", f"Part/Clamped faces={clamped}"]
 
 

@@ -37,7 +37,7 @@
 # rim moves within its plane (held still, it took 1 % more: 0.969); edge: within 3 % of the
 # Archard volume.
 #  edge_gauged, edge_mass: the edge run (its rate x (1 + 10 x)) to 20 mm of gauged edge
-#            recession: its section through the gauge's station (knife/section_worst.csv) reads
+#            recession: its section through the gauge's station (part/section_worst.csv) reads
 #            the gauge's edge recession (2e-6 m); and to 50 g of worn mass: the section through
 #            the deepest point holds it.
 #   check_analytic.sh ABRADE TESTDIR OUTDIR

@@ -34,8 +34,8 @@ updates=1
 source "$(dirname "$0")/small_case_runs.sh"
 run truth --set "Wall knife/Wear/Archard/Coefficient=3e-14"
 tonnes=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/truth/trajectory.csv")
-"$abrade" compare --predicted "$out/truth/knife/knife_00001.stl" --scan "$out/truth/knife/knife_00001.stl" \
-  --reference "$out/truth/knife/knife_00000.stl" --tonnes "$tonnes" --no-registration --output "$out/scan" > /dev/null 2>&1
+"$abrade" compare --predicted "$out/truth/part/part_00001.stl" --scan "$out/truth/part/part_00001.stl" \
+  --reference "$out/truth/part/part_00000.stl" --tonnes "$tonnes" --no-registration --output "$out/scan" > /dev/null 2>&1
 run candidate
 "$abrade" calibrate --run "$out/candidate" --measurements "$out/scan/measured_depths.csv" --output "$out/calibration" > /dev/null
 run calibrated --set "Lifetime/Calibration=$out/calibration/calibration.json"

@@ -29,20 +29,20 @@ set -euo pipefail
 abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 prm=$src/tests/lifetime/analytic_uniform.prm
-"$abrade" run "$prm" --set Job=knife --output "$out/knife" --quiet > /dev/null
-step=$out/knife/knife/knife.step
+"$abrade" run "$prm" --set Job=part --output "$out/knife" --quiet > /dev/null
+step=$out/knife/part/part.step
 common=(--quiet --set "Lifetime/Maximum depth=0.006")
 "$abrade" run "$prm" --output "$out/parametric" "${common[@]}" > /dev/null
 "$abrade" run "$prm" --output "$out/file" "${common[@]}" --set "Part/Geometry=file" --set "Part/File=$step" \
   --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
-"$abrade" run "$prm" --set Job=knife --output "$out/file_knife" --quiet --set "Part/Geometry=file" \
+"$abrade" run "$prm" --set Job=part --output "$out/file_knife" --quiet --set "Part/Geometry=file" \
   --set "Part/File=$step" --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
 
 # 2. the worked example
 example=$src/cases/bolted_edge
 "$abrade" convert "$example/edge.geo" --output "$out/edge.step" > /dev/null
-"$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/edge_committed" --quiet > /dev/null
-"$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/edge_made" --quiet \
+"$abrade" run "$example/lifetime.prm" --set Job=part --output "$out/edge_committed" --quiet > /dev/null
+"$abrade" run "$example/lifetime.prm" --set Job=part --output "$out/edge_made" --quiet \
   --set "Part/File=$out/edge.step" > /dev/null
 "$abrade" run "$example/lifetime.prm" --output "$out/edge_life" --quiet --set "Lifetime/Wear source=analytic" \
   --set "Lifetime/Analytic wear rate=1e-6*exp(-z/0.05)" --set "Lifetime/Smoothing radius=0.02" \
@@ -52,10 +52,10 @@ example=$src/cases/bolted_edge
 # 3. a part mounted on a grab shell's lip: the grab's parametric knife as STEP, moved away by
 #    Part/Offset, is centred on the lip by its bounding box: the same wall as the parametric knife
 grab=$src/cases/grab/grab_coarse.prm
-"$abrade" run "$grab" --set Job=knife --output "$out/grab_knife" --quiet > /dev/null
+"$abrade" run "$grab" --set Job=part --output "$out/grab_knife" --quiet > /dev/null
 "$abrade" export-walls "$grab" --output "$out/grab_parametric" > /dev/null
 "$abrade" export-walls "$grab" --output "$out/grab_file" --set "Part/Geometry=file" \
-  --set "Part/File=$out/grab_knife/knife/knife.step" --set "Part/Offset=1, 0, 3" > /dev/null
+  --set "Part/File=$out/grab_knife/part/part.step" --set "Part/Offset=1, 0, 3" > /dev/null
 
 # 4. a wall from a file, turned 90 degrees about z and moved: the knife STL in millimetres
 #    (x 0..400, y -15..15, z 0..500) lies at x 1 -+ 0.015, y 2 .. 2.4, z 3 .. 3.5
@@ -76,16 +76,16 @@ PRM
 # 5. IGES: the block (400 x 30 x 500 mm) as an IGES surface model in millimetres (six bounded
 #    planes, written by iges_block.py: Gmsh cannot write IGES), sewn into a solid
 python3 "$src/tests/lifetime/iges_block.py" "$out/block.igs"
-"$abrade" run "$example/lifetime.prm" --set Job=knife --output "$out/iges" --quiet --set "Part/File=$out/block.igs" \
+"$abrade" run "$example/lifetime.prm" --set Job=part --output "$out/iges" --quiet --set "Part/File=$out/block.igs" \
   --set "Part/Rotation angle=0" --set "Part/Offset=0, 0, 0" --set "Part/Clamped faces=normal 0, 0, 1" > /dev/null
 
 # 6. the field loop on the part: its run's last worn surface compared as a scan (no registration)
 #    and calibrated gives the run's own wear scale back
 rows=$(( $(wc -l < "$out/edge_life/trajectory.csv") - 1 ))
-last=$(printf "knife_%05d.stl" "$rows")
+last=$(printf "part_%05d.stl" "$rows")
 tonnes=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/edge_life/trajectory.csv")
-"$abrade" compare --predicted "$out/edge_life/knife/$last" --scan "$out/edge_life/knife/$last" \
-  --reference "$out/edge_life/knife/knife_00000.stl" --tonnes "$tonnes" --output "$out/edge_compare" \
+"$abrade" compare --predicted "$out/edge_life/part/$last" --scan "$out/edge_life/part/$last" \
+  --reference "$out/edge_life/part/part_00000.stl" --tonnes "$tonnes" --output "$out/edge_compare" \
   --no-registration > /dev/null 2>&1
 "$abrade" calibrate --run "$out/edge_life" --measurements "$out/edge_compare/measured_depths.csv" \
   --output "$out/edge_calibrate" > /dev/null
@@ -103,7 +103,7 @@ def check(ok, what):
     if not ok:
         fails.append(what)
 
-k, f = results("knife")["knife"], results("file_knife")["knife"]
+k, f = results("knife")["part"], results("file_knife")["part"]
 check(abs(f["volume"] / k["analytic_volume"] - 1) < 1e-6, f"STEP in mm read back: volume {f['volume']} vs {k['analytic_volume']}")
 check(abs(f["clamped_area"] - 0.15 * 0.06) < 1e-12, f"clamped top by its normal: {f['clamped_area']} m^2")
 p, q = results("parametric")["lifetime"], results("file")["lifetime"]
@@ -130,7 +130,7 @@ for b in rq:
     dv = abs(v / float(b["worn_volume"]) - 1)
     check(dd < 2e-5 and dv < 1e-2, f"{t:.0f} t: depth {d} / {b['max_depth']}, worn volume {v} / {b['worn_volume']}")
 
-c, m = results("edge_committed")["knife"], results("edge_made")["knife"]
+c, m = results("edge_committed")["part"], results("edge_made")["part"]
 check(abs(c["volume"] / m["volume"] - 1) < 1e-9 and len(c["file_faces"]) == len(m["file_faces"]) == 11,
       f"edge.step is what edge.geo makes: {c['volume']} / {m['volume']} m^3, {len(c['file_faces'])} faces")
 box = c["bounding_box"]
@@ -183,7 +183,7 @@ def stl_box(path):
 for knife in ("right_knife", "left_knife"):
     a, b = stl_box(f"{out}/grab_parametric/{knife}.stl"), stl_box(f"{out}/grab_file/{knife}.stl")
     check(all(abs(x - y) < 1e-5 for x, y in zip(a, b)), f"{knife} mounted from a file: {b} vs parametric {a}")
-i = results("iges")["knife"]
+i = results("iges")["part"]
 check(abs(i["volume"] / 0.006 - 1) < 1e-9 and abs(i["clamped_area"] - 0.012) < 1e-12,
       f"IGES block in mm: volume {i['volume']} m^3, top {i['clamped_area']} m^2")
 cal = json.load(open(f"{out}/edge_calibrate/calibration.json"))["runs"][0]

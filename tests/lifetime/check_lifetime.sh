@@ -21,7 +21,7 @@ assert all(float(r["min_scaled_jacobian"]) > 0 for r in rows)
 s = json.load(open(os.path.join(out, "summary.json")))
 life = s["results"]["lifetime"]
 assert s["status"] == "completed" and life["predicted_tonnes_to_end_of_life"] > life["tonnes"] > 0, life
-for f in ("knife/knife.pvd", "knife/knife_00003.vtu", "knife/knife_00003.stl"):
+for f in ("part/part.pvd", "part/part_00003.vtu", "part/part_00003.stl"):
     assert os.path.getsize(os.path.join(out, f)) > 0, f
 print(f"ok: 3 updates, {life['tonnes']:.4g} t, max depth {life['max_depth']:.3g} m, swept/Archard {ratios}, "
       f"predicted life {life['predicted_tonnes_to_end_of_life']:.4g} t")

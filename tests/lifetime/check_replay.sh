@@ -106,8 +106,8 @@ replay replay_r10 --set "Lifetime/Smoothing radius=0.01"
 replay replay_r8 --set "Lifetime/Smoothing radius=0.008"
 replay replay_r55 --set "Lifetime/Smoothing radius=0.055"
 t=$(python3 -c "import csv,sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]['tonnes'])" "$out/dem_r15/trajectory.csv")
-"$abrade" compare --predicted "$out/dem_r15/knife/knife_0000$updates.stl" --scan "$out/dem_r15/knife/knife_0000$updates.stl" \
-  --reference "$out/dem_r15/knife/knife_00000.stl" --tonnes "$t" --no-registration --output "$out/scan" > /dev/null 2>&1
+"$abrade" compare --predicted "$out/dem_r15/part/part_0000$updates.stl" --scan "$out/dem_r15/part/part_0000$updates.stl" \
+  --reference "$out/dem_r15/part/part_00000.stl" --tonnes "$t" --no-registration --output "$out/scan" > /dev/null 2>&1
 for set in replays:replay_r15:same:replay_r10 dem:dem_r15:stored:replay_r8; do
   IFS=: read -r name r15 r27 small <<< "$set"
   "$abrade" calibrate --run "$out/$r27" --run "$out/$small" --run "$out/$r15" --run "$out/replay_r55" \

@@ -62,7 +62,7 @@ fi
 run "$prm" --output "$out/killed" --quiet --resume "${sets[@]}" > /dev/null
 (( $(grep -c "Resuming after update $killed_at" "$out/killed/log.txt") >= 1 )) || { echo "did not resume"; exit 1; }
 cmp "$out/whole/trajectory.csv" "$out/killed/trajectory.csv" || { diff "$out/whole/trajectory.csv" "$out/killed/trajectory.csv"; exit 1; }
-cmp "$out/whole/knife/profile_0.50.csv" "$out/killed/knife/profile_0.50.csv" || { echo "profiles differ"; exit 1; }
+cmp "$out/whole/part/profile_0.50.csv" "$out/killed/part/profile_0.50.csv" || { echo "profiles differ"; exit 1; }
 p1=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results']['lifetime']['predicted_tonnes_to_end_of_life'])" "$out/whole/summary.json")
 p2=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results']['lifetime']['predicted_tonnes_to_end_of_life'])" "$out/killed/summary.json")
 [[ "$p1" == "$p2" ]] || { echo "predictions differ: $p1 vs $p2"; exit 1; }

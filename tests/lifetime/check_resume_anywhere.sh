@@ -21,7 +21,7 @@ grep -q "remeshed" "$out/whole/log.txt" || { echo "the case does not remesh: no 
 
 kill_run() { # every process of the run in $1 (the run, its mesher), until none is left
   pkill -KILL -f -- "--output $1( |$)" 2>/dev/null || true
-  pkill -KILL -f -- "$1/knife/work" 2>/dev/null || true
+  pkill -KILL -f -- "$1/part/work" 2>/dev/null || true
   wait "$2" 2>/dev/null || true
   for _ in $(seq 1 300); do pgrep -f -- "$1(/| |$)" > /dev/null || return 0; sleep 0.1; done
   echo "the killed run in $1 is still going after 30 s"; exit 1
@@ -31,7 +31,7 @@ check() { # resume $1 to the end, compare with the whole run
   run "$d" --resume > /dev/null
   cmp "$out/whole/trajectory.csv" "$d/trajectory.csv" ||
     { echo "killed $what: trajectory differs"; diff "$out/whole/trajectory.csv" "$d/trajectory.csv" | head; exit 1; }
-  cmp "$out/whole/knife/profile_0.50.csv" "$d/knife/profile_0.50.csv" || { echo "killed $what: profiles differ"; exit 1; }
+  cmp "$out/whole/part/profile_0.50.csv" "$d/part/profile_0.50.csv" || { echo "killed $what: profiles differ"; exit 1; }
   [[ $(prediction "$d/summary.json") == "$p_whole" ]] ||
     { echo "killed $what: prediction $(prediction "$d/summary.json") t, uninterrupted $p_whole t"; exit 1; }
   echo "ok: killed $what, resumed: identical (prediction $p_whole t)"
@@ -49,7 +49,7 @@ at_event() {
   echo "the run in $d ended before $what"; exit 1
 }
 bed_exists() { compgen -G "$1/beds/*.bed" > /dev/null || compgen -G "$1/*.bed" > /dev/null; }
-meshing() { compgen -G "$1/knife/work/abrade-mesher-*" > /dev/null; } # (the mesher's own directory)
+meshing() { compgen -G "$1/part/work/abrade-mesher-*" > /dev/null; } # (the mesher's own directory)
 if grep -q "Wear source *= *analytic" "$prm" 2>/dev/null; then :; else
   at_event "at the first bed file (before the first update)" bed_exists "$out/bed"
 fi

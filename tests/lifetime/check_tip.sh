@@ -87,7 +87,7 @@ for name in ("edge_line", "lowest", "band_ahead_0.01", "band_ahead_0.005"):
     recession = [float(row["point_recession"]) for row in rows]
     assert all(b >= a for a, b in zip(recession, recession[1:])), f"{case}: the recession went back: {recession}"
     assert recession[-1] >= 0.03, f"{case}: the last update's recession {recession[-1]}"
-    last = sorted(glob.glob(os.path.join(case, "knife", "knife_*.stl")))[-1]
+    last = sorted(glob.glob(os.path.join(case, "part", "part_*.stl")))[-1]
     # the gauge's largest edge recession, at its station, is the cut's lowest point there (the
     # followed point's recession also counts its sideways motion: 74 um more on adaptive updates)
     gauge, station = float(rows[-1]["edge_recession"]), float(rows[-1]["edge_recession_x"])

@@ -7,10 +7,10 @@ tonnes is { T < t }, where T is the arrival time of the front, the viscosity sol
 eikonal equation |grad T| F = 1 with T = 0 on the design's boundary. Far from the knife's ends
 the section at mid-length is two-dimensional, so T is solved on a fine grid of the y-z section
 (spacing 0.2 mm) by the fast marching method (Sethian 1996; first order, upwind), with no part
-of abrade's geometry code: the design section is cut from the run's own knife_00000.stl, the
+of abrade's geometry code: the design section is cut from the run's own part_00000.stl, the
 rate parsed from its parameters.prm.
 
-It then takes the run's worn surface after an update (knife_NNNNN.stl), cuts it at mid-length and
+It then takes the run's worn surface after an update (part_NNNNN.stl), cuts it at mid-length and
 measures every point p of that section against the front: the front lies F(p) |T(p) - t| away
 along the normal (|grad T| = 1 / F); every point of the front (T = t, interpolated along the
 grid lines) against the section (its distance to the nearest segment); and the edge's lowest
@@ -175,8 +175,8 @@ def main():
     rows = list(csv.DictReader(open(os.path.join(a.run, "trajectory.csv"))))
     update = a.update or len(rows)
     tonnes = float(rows[update - 1]["tonnes"])
-    design_tris = read_stl(os.path.join(a.run, "knife", "knife_00000.stl"))
-    worn_tris = read_stl(os.path.join(a.run, "knife", f"knife_{update:05d}.stl"))
+    design_tris = read_stl(os.path.join(a.run, "part", "part_00000.stl"))
+    worn_tris = read_stl(os.path.join(a.run, "part", f"part_{update:05d}.stl"))
     xs = [p[0] for t in design_tris for p in t]
     x_mid = 0.5 * (min(xs) + max(xs)) + 1e-7  # (off the mesh's own vertices)
     design = section(design_tris, x_mid)

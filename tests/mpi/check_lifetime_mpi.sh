@@ -16,7 +16,7 @@ mpirun -np 2 --oversubscribe "$abrade" run "$prm" --output "$out/np2" "${sets[@]
 status() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['status'])" "$1"; }
 [[ $(status "$out/np2/summary.json") == completed ]] || { echo "2 ranks: not completed"; exit 1; }
 [[ -f "$out/np2/.rank-1/summary.json" ]] || { echo "rank 1 wrote nothing"; exit 1; }
-[[ -f "$out/np2/knife/knife.pvd" ]] || { echo "no knife series from rank 0"; exit 1; }
+[[ -f "$out/np2/part/part.pvd" ]] || { echo "no knife series from rank 0"; exit 1; }
 python3 - "$out/np1/trajectory.csv" "$out/np2/trajectory.csv" <<'PY'
 import csv, sys
 a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:3])

@@ -54,7 +54,7 @@ PY
 "$abrade" preview bucket.prm --quiet --output preview > preview.log 2>&1 || { cat preview.log; exit 1; }
 python3 - preview/summary.json <<'PY'
 import json, math, sys
-k = json.load(open(sys.argv[1]))["results"]["knife"]
+k = json.load(open(sys.argv[1]))["results"]["part"]
 clamped = [f for f in k["file_faces"] if f["role"] != "wears"]
 assert all(f["role"] == "clamped" for f in clamped), clamped
 bore = 2 * 2 * math.pi * 0.0225 * 0.03

@@ -17,19 +17,19 @@ rm -rf "$out" && mkdir -p "$out"
 python3 - "$out/run" <<'PY'
 import struct, sys
 run = sys.argv[1]
-with open(run + "/knife/knife_00000.stl", "rb") as f:
+with open(run + "/part/part_00000.stl", "rb") as f:
     stl = struct.unpack("<I", f.read(84)[80:84])[0]
-with open(run + "/report/knife_wear_0.dat") as f:
+with open(run + "/report/part_wear_0.dat") as f:
     drawn = f.read().count("\n\n\n")  # a triangle: a 2 x 2 pm3d patch and a blank line
 print(f"triangles drawn {drawn}, the STL surface's {stl}")
 sys.exit(0 if drawn == stl else 1)
 PY
 # the design and the last update, each from two sides: four panels
-python3 "$src/tests/report/panel_fill.py" "$out/run/report/knife_wear.png" 4 --min 0.5
+python3 "$src/tests/report/panel_fill.py" "$out/run/report/part_wear.png" 4 --min 0.5
 # the cross-sections: closed outlines with the design's; the one through the deepest point meets
 # it where the run's surface has it, zoomed (under half the plate's 0.3 m)
 python3 "$src/tests/report/check_sections.py" "$out/run" --part-height 0.3
 # the zoom on the worst region: the part covers a tenth of each of its two panels or more (0.16
 # and 0.18 with the zoom; the whole plate drawn there covers 0.02)
 python3 "$src/tests/report/panel_fill.py" "$out/run/report/worst_region.png" 2 --min 0.1
-python3 "$src/tests/report/check_report.py" "$out/run" --expect-figures trajectory,knife,worst,section-worst
+python3 "$src/tests/report/check_report.py" "$out/run" --expect-figures trajectory,part,worst,section-worst

@@ -13,8 +13,8 @@ abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 "$abrade" preview "$src/cases/bolted_edge/lifetime.prm" --quiet --output "$out/preview" > "$out/preview.log" 2>&1 ||
   { cat "$out/preview.log"; exit 1; }
-[ -s "$out/preview/knife/faces.vtp" ] || { echo "no knife/faces.vtp"; exit 1; }
-grep -q '"job": "knife"' "$out/preview/summary.json" || { echo "the preview is not the knife job"; exit 1; }
+[ -s "$out/preview/part/faces.vtp" ] || { echo "no part/faces.vtp"; exit 1; }
+grep -q '"job": "part"' "$out/preview/summary.json" || { echo "the preview is not the part job"; exit 1; }
 grep -q '^set Job *= *lifetime' "$src/cases/knife_bed/lifetime.prm" || { echo "the case is not a lifetime case"; exit 1; }
 grep -q "^Done: " "$out/preview.log" || { echo "no Done line"; cat "$out/preview.log"; exit 1; }
 # a picture that cannot be drawn (a gnuplot that fails): the results kept, the page saying so
@@ -34,7 +34,7 @@ python3 "$src/tests/report/check_report.py" "$out/preview" --expect-figures face
 # (-0.9, 0, 0.6) moves the part's lowest point (z 0 in the part's frame) to z = 0.6
 python3 - "$out/preview/summary.json" <<'PY'
 import json, sys
-k = json.load(open(sys.argv[1]))["results"]["knife"]
+k = json.load(open(sys.argv[1]))["results"]["part"]
 c = k["case"]
 near = lambda a, b, tol=1e-6: all(abs(x - y) <= tol for x, y in zip(a, b)) and len(a) == len(b)
 assert near(c["fill_region"], [-0.97, -0.97, 0.03, 0.97, 0.97, 0.85]), c["fill_region"]
@@ -50,5 +50,5 @@ assert near(legs["travel"]["end"], [p0[0] + 1.5 * 0.8, p0[1], p0[2] - 1.5 * 0.26
 print("ok: the case around the part: fill region, domain, the path", [round(x, 4) for x in legs["travel"]["end"]])
 PY
 for f in scene_part.vtp scene_walls.dat scene_path.dat; do
-  [ -s "$out/preview/knife/$f" ] || { echo "no knife/$f"; exit 1; }
+  [ -s "$out/preview/part/$f" ] || { echo "no part/$f"; exit 1; }
 done

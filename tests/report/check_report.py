@@ -5,7 +5,7 @@
     no files beside it: every picture is inlined);
   - every image is inlined (data: URI), decodes at the size the page says it has (data-width,
     data-height) and is not blank (its pixels vary); the figures a report of its kind must
-    have are there (--expect-figures: trajectory, knife, profile for a lifetime run);
+    have are there (--expect-figures: trajectory, part, profile for a lifetime run);
   - the browser loaded nothing but the page (no resource requests);
   - the headline number (span#headline-tonnes, #headline-w, #headline-scale or #headline-rms, its data-value)
     equals the run's own number in summary.json, calibration.json or comparison.json, and the
@@ -169,7 +169,7 @@ def main():
             fail("headline scale %s differs from calibration.json's %r" % (head["value"], expected))
         print("ok: headline scale = calibration.json's (%r)" % expected)
     elif head["id"] == "headline-volume": # a part's preview (the knife job)
-        expected = json.load(open(os.path.join(a.run, "summary.json")))["results"]["knife"]["volume"]
+        expected = json.load(open(os.path.join(a.run, "summary.json")))["results"]["part"]["volume"]
         if abs(float(head["value"]) - expected) > 1e-9 * abs(expected):
             fail("headline volume %s differs from summary.json's %r" % (head["value"], expected))
         print("ok: headline volume = summary.json's (%r)" % expected)
@@ -203,7 +203,7 @@ def main():
         print("ok: headline %s" % head["text"])
 
     if a.expect_face_table: # a part's preview: the face table is summary.json's, face by face
-        faces = json.load(open(os.path.join(a.run, "summary.json")))["results"]["knife"]["file_faces"]
+        faces = json.load(open(os.path.join(a.run, "summary.json")))["results"]["part"]["file_faces"]
         html = open(os.path.join(a.run, "report.html")).read()
         table = html[html.find(">Faces<"):]
         table = table[:table.find("</table>")]

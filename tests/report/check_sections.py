@@ -3,7 +3,7 @@
 
   check_sections.py RUN_DIR [--part-height METRES]
 
-- every outline of knife/profile_*.csv and knife/section_worst.csv (the design as update 0,
+- every outline of part/profile_*.csv and part/section_worst.csv (the design as update 0,
   then each update) is closed: each segment end is the end of exactly one other segment (a cut
   that misses the triangles whose corners lie on the plane leaves it open -- the middle of a
   regular mesh);
@@ -47,10 +47,10 @@ ap = argparse.ArgumentParser()
 ap.add_argument("run")
 ap.add_argument("--part-height", type=float, default=0)
 a = ap.parse_args()
-knife = os.path.join(a.run, "knife")
+knife = os.path.join(a.run, "part")
 files = sorted(f for f in os.listdir(knife) if f.endswith(".csv") and (f.startswith("profile_") or f == "section_worst.csv"))
 if "section_worst.csv" not in files:
-    fail("no knife/section_worst.csv")
+    fail("no part/section_worst.csv")
 for f in files:
     b = blocks(os.path.join(knife, f))
     if 0 not in b:
@@ -110,9 +110,9 @@ if criterion == "maximum edge recession":
         fail("the section through the gauge's station reads %.7f m, the gauge %.7f m" % (lowest - design_lowest, gauged))
 
 gp = open(os.path.join(a.run, "lifetime.gp")).read()
-m = re.search(r"set output 'knife/section_worst.png'.*?set xrange \[([^:]+):([^\]]+)\]\nset yrange \[([^:]+):([^\]]+)\]", gp, re.S)
+m = re.search(r"set output 'part/section_worst.png'.*?set xrange \[([^:]+):([^\]]+)\]\nset yrange \[([^:]+):([^\]]+)\]", gp, re.S)
 if not m:
-    fail("lifetime.gp draws no knife/section_worst.png")
+    fail("lifetime.gp draws no part/section_worst.png")
 y0, y1, z0, z1 = (float(v) / 1000 for v in m.groups())
 print("window %s %.4f..%.4f, %s %.4f..%.4f m" % ("xyz"[iu], y0, y1, "xyz"[iv], z0, z1))
 if not (y0 <= place[0] <= y1 and z0 <= place[1] <= z1):

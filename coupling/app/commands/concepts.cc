@@ -2,6 +2,7 @@
 // uncertainties (coupling/studies/concepts.h).
 #include "../command.h"
 #include "../command_line.h"
+#include "study_on_ranks.h"
 
 #include <abrade/common/error.h>
 #include <abrade/common/progress.h>
@@ -15,12 +16,17 @@ namespace abrade::app
 {
   namespace
   {
+    int concepts(const CommandLine &cl);
+
     int concepts_command(const std::vector<std::string> &args, const std::string &typed)
     {
       const CommandLine cl = parse("concepts", args, typed, {"FILES", "--set", "--output", "--quiet", "--seeds", "--jobs", "--knives", "--lifetime-updates"});
-      if (launch().size > 1)
-        throw InputError("command line",
-                         "abrade concepts runs its runs side by side itself (--jobs); start it without mpirun");
+      return study_on_ranks([&] { return concepts(cl); });
+    }
+
+    /// The concept study of @p cl, on rank 0 under mpirun.
+    int concepts(const CommandLine &cl)
+    {
       coupling::ConceptOptions o;
       o.files.push_back(cl.file);
       o.files.insert(o.files.end(), cl.more_files.begin(), cl.more_files.end());
@@ -45,6 +51,7 @@ namespace abrade::app
     "      run every knife concept's cycle per bed seed (the same beds for all), and write the\n"
     "      knives' wear per phase, payload, wear per tonne and the change against the baseline with\n"
     "      its uncertainty (concepts.md/.csv, wear.png); with --lifetime-updates, each concept's\n"
-    "      knife life too (lifetime/NAME/, lifetime.png)\n",
+    "      knife life too (lifetime/NAME/, lifetime.png); under mpirun the runs are spread over the\n"
+    "      ranks (--jobs: at a time on each)\n",
     concepts_command);
 } // namespace abrade::app

@@ -23,7 +23,7 @@ namespace abrade::app
   ABRADE_REGISTER_COMMAND("report",
                           "  abrade report RUN_DIR\n"
                           "      write RUN_DIR/report.html, one self-contained page (pictures inlined) for a lifetime,\n"
-                          "      knife (a preview), sweep, concepts, compare or calibrate run; those runs write it\n"
+                          "      part (a preview), sweep, concepts, compare or calibrate run; those runs write it\n"
                           "      themselves when they end\n",
                           report_command);
 } // namespace abrade::app

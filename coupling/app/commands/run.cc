@@ -1,4 +1,4 @@
-// abrade run: the job a parameter file describes (Job = dem, bed, knife, lifetime), its
+// abrade run: the job a parameter file describes (Job = dem, bed, part, lifetime), its
 // summary.json, log.txt and parameters.prm in the output directory, and its report.
 #include "run_job.h"
 
@@ -14,6 +14,7 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters/output_parameters.h>
 #include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/parameter_text.h>
 #include <abrade/coupling/parameters/simulation_parameters.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/mpi_once.h>
@@ -33,7 +34,8 @@ namespace abrade::app
   {
     /// DIR/parameters.prm: every parameter the run used. When the run reads its parameters from
     /// that very file (`run d/parameters.prm --output d`), it is left as it is if it holds exactly
-    /// that, and the run is refused if not (the user's edits would be lost).
+    /// that (or that as an abrade before a subsection's rename printed it), and the run is
+    /// refused if not (the user's edits would be lost).
     void write_parameters(const coupling::ParameterFile &params, const std::string &canonical,
                           const std::string &path)
     {
@@ -44,8 +46,8 @@ namespace abrade::app
             std::ifstream      in(input);
             std::ostringstream text;
             text << in.rdbuf();
-            if (text.str() == canonical)
-              return;
+            if (text.str() == canonical || text.str() == coupling::with_old_names(canonical))
+              return; // (an earlier abrade's run: the same parameters under the old names)
             throw InputError(input, "is the output directory's parameters.prm, which the run writes: copy it out of "
                                     "the output directory, or choose another --output");
           }

@@ -2,6 +2,7 @@
 // side, with the study's tables, plots and surfaces (coupling/studies/sweep.h).
 #include "../command.h"
 #include "../command_line.h"
+#include "study_on_ranks.h"
 
 #include <abrade/common/error.h>
 #include <abrade/common/progress.h>
@@ -14,11 +15,17 @@ namespace abrade::app
 {
   namespace
   {
+    int sweep(const CommandLine &cl);
+
     int sweep_command(const std::vector<std::string> &args, const std::string &typed)
     {
       const CommandLine cl = parse("sweep", args, typed, {"FILE", "--set", "--output", "--quiet", "--seeds", "--jobs", "--lifetime-updates", "--vary", "--edge-height", "--wall"});
-      if (launch().size > 1)
-        throw InputError("command line", "abrade sweep runs its runs side by side itself (--jobs); start it without mpirun");
+      return study_on_ranks([&] { return sweep(cl); });
+    }
+
+    /// The sweep of @p cl, on rank 0 under mpirun.
+    int sweep(const CommandLine &cl)
+    {
       if (cl.file.empty())
         throw InputError("command line", "sweep needs a parameter file");
       coupling::ParameterFile check(cl.file, cl.sets); // fail early on a bad file
@@ -43,6 +50,7 @@ namespace abrade::app
     "      run the case for every value (several --vary: every combination) and seed (one settled\n"
     "      bed per seed and particle parameters, reused), in parallel, and write study.csv/.md (mean\n"
     "      and std over seeds), plots/*.png and surfaces/*.vtp; with --lifetime-updates, each\n"
-    "      combination's life too, paired against the first's (lifetime/NAME/)\n",
+    "      combination's life too, paired against the first's (lifetime/NAME/); under mpirun the\n"
+    "      runs are spread over the ranks (--jobs: at a time on each)\n",
     sweep_command);
 } // namespace abrade::app

@@ -8,6 +8,7 @@
 #include <abrade/common/format_number.h>
 #include <abrade/common/surface_distance.h>
 #include <abrade/common/json.h>
+#include <abrade/common/output_directory.h>
 #include <abrade/common/vtk_input.h>
 #include <abrade/field/calibration.h>
 #include <abrade/field/golden_section.h>
@@ -248,7 +249,8 @@ namespace abrade::field
   {
     RunSeries         run;
     run.directory     = directory;
-    const std::string pvd = directory + "/knife/knife.pvd";
+    const std::string part = io::part_folder(directory); // (knife/knife.pvd in an earlier abrade's run)
+    const std::string pvd  = directory + "/" + part + "/" + part + ".pvd";
     std::ifstream     in(pvd);
     if (!in)
       throw InputError(pvd, "not found: is " + directory + " the output folder of a lifetime run?");
@@ -281,12 +283,12 @@ namespace abrade::field
         if (!run.tonnes.empty() && !(t > run.tonnes.back()))
           throw InputError(where, "timestep " + time + " t does not follow " + std::to_string(run.tonnes.back()) +
                                     " t: the outputs must come in increasing tonnes (edited?)");
-        const std::string file    = directory + "/knife/" + f[1].str();
+        const std::string file    = directory + "/" + part + "/" + f[1].str();
         const auto        surface = io::read_polydata(file);
         vtkPolyData      *s       = surface;
         if (!s->GetPointData()->GetArray("wear_depth") || !s->GetPointData()->GetArray("wear_displacement") ||
             s->GetNumberOfCells() == 0)
-          throw InputError(file, "no knife surface with wear_depth and wear_displacement");
+          throw InputError(file, "no part surface with wear_depth and wear_displacement");
         if (!design) // the first output is the fresh knife: the design
           {
             design = std::make_unique<geometry::SurfaceDistance>(distance_to(s));

@@ -32,7 +32,7 @@ namespace abrade::coupling
     report_coarse_graining(c, ctx);
     if (c.bed_file.empty())
       throw InputError(ctx.parameters.file_name(), "Job = bed needs Particles/Settling/Bed file (where the bed goes)");
-    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"), ctx.log); // the particles avoid them
+    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory(ctx.output.part_folder()), ctx.log); // the particles avoid them
     dem::Simulation sim(c.settings);
     build_simulation(c, sim);
     const bool loaded = prepare_bed(c, sim, ctx, c.bed_file);

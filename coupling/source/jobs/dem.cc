@@ -200,7 +200,7 @@ namespace abrade::coupling
   {
     c = read_dem_case(ctx.parameters);
     report_coarse_graining(c, ctx);
-    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory("knife"), ctx.log);
+    fill_solid_model_walls(c, ctx.parameters, ctx.output.subdirectory(ctx.output.part_folder()), ctx.log);
     sim       = std::make_unique<dem::Simulation>(c.settings);
     mechanism = build_simulation(c, *sim);
 

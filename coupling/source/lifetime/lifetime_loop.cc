@@ -133,7 +133,8 @@ namespace abrade::coupling::lifetime
     take_calibration();
 
     ctx.output.subdirectory("beds");
-    part_output      = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory("knife"), "knife");
+    part_output = std::make_unique<fem::SolidOutput>(ctx.output.subdirectory(ctx.output.part_folder(ctx.resume)),
+                                                     ctx.output.part_folder(ctx.resume));
     checkpoints       = std::make_unique<LifetimeCheckpoints>(ctx.output.subdirectory("checkpoint"));
     // (a calibration's numbers too: a resume with another calibration.json behind the same name
     // would mix two coefficients)
@@ -144,7 +145,7 @@ namespace abrade::coupling::lifetime
                                                                  : std::string();
     hash = io::fnv1a_hex(ctx.parameters.identity_text() + calibrated);
     // (a checkpoint of an abrade before subsection Knife became Part hashed that spelling)
-    hash_before_renames = io::fnv1a_hex(with_old_subsection_names(ctx.parameters.identity_text()) + calibrated);
+    hash_before_renames = io::fnv1a_hex(with_old_names(ctx.parameters.identity_text()) + calibrated);
     volume0           = part_model->volume();
     const std::size_t n_criteria = criteria.size();
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
@@ -189,7 +190,7 @@ namespace abrade::coupling::lifetime
     fem::PartModel::Settings ks;
     ks.mesh_size      = part_parameters.mesh_size;
     ks.density        = part_parameters.density;
-    ks.work_directory = ctx.output.subdirectory("knife/work");
+    ks.work_directory = ctx.output.subdirectory(ctx.output.part_folder(ctx.resume) + "/work");
     if (part_parameters.from_file)
       {
         PartMesh m = mesh_part(part_parameters, ctx.parameters, ks.work_directory);
@@ -262,7 +263,8 @@ namespace abrade::coupling::lifetime
         std::filesystem::remove(e.path(), ec);
     part_output->adopt({});
     part_model->write(*part_output, 0);
-    io::write_stl(ctx.output.file("knife/knife_00000.stl"), part_model->surface().as_polydata()); // the design
+    const std::string part = ctx.output.part_folder(ctx.resume);
+    io::write_stl(ctx.output.file(part + "/" + part_surface_name(part, 0)), part_model->surface().as_polydata()); // the design
     part_model->save(checkpoints->knife_file(0)); // the state a rejected first update returns to
   }
 
@@ -285,7 +287,7 @@ namespace abrade::coupling::lifetime
     for (const auto &p : history)
       output_times.push_back(p.tonnes);
     part_output->adopt(output_times);
-    for (const auto &path : truncate_profiles(s.planes, done, ctx.output.root() + "/knife"))
+    for (const auto &path : truncate_profiles(s.planes, done, ctx.output.file(ctx.output.part_folder(ctx.resume))))
       {
         warnings.push_back(path + " is missing: its profiles start at update " + std::to_string(done + 1));
         ctx.log.warning(warnings.back());
@@ -949,11 +951,10 @@ namespace abrade::coupling::lifetime
     trajectory_rows.push_back(trajectory.named_row(row));
     trajectory.flush();
 
-    write_profiles(surface, part_model->design_surface(), frame, s.planes, update, ctx.output.root() + "/knife");
+    const std::string folder = ctx.output.part_folder(ctx.resume);
+    write_profiles(surface, part_model->design_surface(), frame, s.planes, update, ctx.output.file(folder));
     part_model->write(*part_output, tonnes);
-    char stl[64];
-    std::snprintf(stl, sizeof stl, "knife/knife_%05ld.stl", update);
-    io::write_stl(ctx.output.file(stl), surface.as_polydata());
+    io::write_stl(ctx.output.file(folder + "/" + part_surface_name(folder, update)), surface.as_polydata());
     log_update(rates, st, dmax, swept);
   }
   /// The update's line in the log, with the remesh's share of the swept volume, and a warning

@@ -5,6 +5,7 @@
 #include <abrade/common/external.h>
 #include <abrade/coupling/lifetime/lifetime_outputs.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/output_directory.h>
 #include <abrade/coupling/lifetime/sections.h>
 
 #include <algorithm>
@@ -24,6 +25,13 @@ namespace abrade::coupling::lifetime
       return name;
     }
   } // namespace
+
+  std::string part_surface_name(const std::string &part, long update)
+  {
+    char number[32];
+    std::snprintf(number, sizeof number, "_%05ld.stl", update);
+    return part + number;
+  }
 
   double plane_x(const ProfileFrame &frame, double f)
   {
@@ -182,7 +190,7 @@ namespace abrade::coupling::lifetime
             "set datafile separator whitespace\nset datafile nocolumnheaders\nunset y2tics\nunset y2label\nset size ratio -1\n";
     }
 
-    /// The profiles' cross-sections (knife/profile_*.csv at @p planes, fractions of the
+    /// The profiles' cross-sections (part/profile_*.csv at @p planes, fractions of the
     /// length): the design's outline and the updates', zoomed to where they differ; each
     /// picture drawn is added to @p pictures.
     void write_profile_sections(std::ostream &gp, const std::string &dir, const std::vector<double> &planes,
@@ -190,7 +198,7 @@ namespace abrade::coupling::lifetime
     {
       for (double f : planes)
         {
-          const std::string name   = "knife/" + profile_name(f);
+          const std::string name   = io::part_folder(dir) + "/" + profile_name(f);
           const auto        blocks = read_section_blocks(dir + "/" + name + ".csv");
           const auto        window = section_window(blocks);
           if (section_plot(gp, blocks, window, name + ".png",
@@ -202,16 +210,13 @@ namespace abrade::coupling::lifetime
     }
 
     /// The cross-section through the place that ended the life (or the deepest point), cut
-    /// from the design and every update's surface (knife/knife_N.stl), written to
-    /// knife/section_worst.csv; its picture added to @p pictures when drawn.
+    /// from the design and every update's surface (part/part_N.stl), written to
+    /// part/section_worst.csv; its picture added to @p pictures when drawn.
     void write_worst_section(std::ostream &gp, const std::string &dir, const WorstSection &worst,
                              std::vector<std::string> &pictures)
     {
-      auto stl = [&](long u) {
-        char name[64];
-        std::snprintf(name, sizeof name, "/knife/knife_%05ld.stl", u);
-        return dir + name;
-      };
+      const std::string part = io::part_folder(dir);
+      auto              stl  = [&](long u) { return dir + "/" + part + "/" + part_surface_name(part, u); };
       // normal to x, unless the surface there is a face square to x (a worn end): a plane
       // normal to x would lie in that face, not cut it; then the plane of the other two
       // axes that holds the face's normal best
@@ -238,7 +243,7 @@ namespace abrade::coupling::lifetime
       const char       *axes = "xyz";
       const int         iu = (axis + 1) % 3, iv = (axis + 2) % 3;
       const std::string plane = std::string(1, axes[axis]) + " = " + io::format_number(1000 * place[axis], 5) + " mm";
-      write_section_blocks(dir + "/knife/section_worst.csv", blocks,
+      write_section_blocks(dir + "/" + part + "/section_worst.csv", blocks,
                            "section " + std::string(1, axes[axis]) + " " + io::format_number(place[axis], 10) +
                              ": u, v are " + axes[iu] + ", " + axes[iv]);
       auto         window = section_window(blocks);
@@ -256,13 +261,13 @@ namespace abrade::coupling::lifetime
       mark.at            = {u, v};
       mark.lowest_points = mark.lowest_points && axis == 0; // (the gauge's sections are normal to x)
       if (!blocks.empty() && blocks.rbegin()->first != worst.updates)
-        mark.text += " (the last surface found, knife_" + std::to_string(blocks.rbegin()->first) +
-                     ".stl, is drawn: a later one is missing)";
-      if (section_plot(gp, blocks, window, "knife/section_worst.png",
+        mark.text += " (the last surface found, " + part_surface_name(part, blocks.rbegin()->first) +
+                     ", is drawn: a later one is missing)";
+      if (section_plot(gp, blocks, window, part + "/section_worst.png",
                        "cross-section through where the life ended (" + plane + ")" +
                          (window.zoomed ? ", zoomed to the wear" : ""),
                        mark, std::string(1, axes[iu]).c_str(), std::string(1, axes[iv]).c_str()))
-        pictures.push_back("knife/section_worst.png");
+        pictures.push_back(part + "/section_worst.png");
     }
   } // namespace
 

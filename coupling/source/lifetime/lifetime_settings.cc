@@ -2,6 +2,7 @@
 // the gauges, the wear source and the end-of-life criteria (each declaring its own entries), the
 // interval asked for and a calibration; declared here and read and checked by the loop that
 // uses them (LifetimeLoop::read_settings()).
+#include <abrade/dem/parameter_section.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/lifetime/lifetime_loop.h>
 #include <abrade/coupling/lifetime/lifetime_settings.h>
@@ -21,7 +22,6 @@ namespace abrade::coupling::lifetime
 
   void declare_lifetime_parameters(dealii::ParameterHandler &prm)
   {
-    constexpr double huge = std::numeric_limits<double>::max();
     prm.enter_subsection("Lifetime");
     prm.declare_entry("Tonnes per cycle", "10", Double(0, 1e6),
                       "[t] Material handled per operating cycle (the tonnes axis of the trajectory); 0: "
@@ -40,19 +40,19 @@ namespace abrade::coupling::lifetime
                       "increment is 'Depth increment fraction' of the mesh size. Range: >= 0.");
     prm.declare_entry("Depth increment fraction", "0.05", Double(1e-6, 1),
                       "[-] Adaptive updates: largest depth increment per update over the mesh size. Range: (0, 1].");
-    prm.declare_entry("Smoothing radius", "0", Double(0, huge),
+    prm.declare_entry("Smoothing radius", "0", Double(0, dem::unbounded),
                       "[m] Length of the wear filter: the per-cycle wear is smoothed over the knife's "
                       "surface with a Gaussian of this length in the distance along the surface (it never "
                       "crosses the plate), conserving the volume. It stands for the particle's footprint; "
                       "0: the largest particle radius (DEM wear), none (analytic wear). Range: >= 0.");
-    prm.declare_entry("Recession points", "0.2, 0, 0", List(List(Double(-huge, huge), 3, 3), 1, 100, ";"),
+    prm.declare_entry("Recession points", "0.2, 0, 0", List(List(Double(-dem::unbounded, dem::unbounded), 3, 3), 1, 100, ";"),
                       "[m] Points of the knife (in its own coordinates: x along the length from 0, y "
                       "across the thickness from its middle, z up from the edge), separated by ';', whose "
                       "recession (how far the surface point that was there on the fresh knife has moved, "
                       "interpolated: at a chisel's tip, the tip's recession along its bisector) the trajectory "
                       "follows: column point_recession for the first, point_recession_2, ... for the "
                       "others. Default: the middle of the edge of the default knife.");
-    prm.declare_entry("Gauge height", "0", Double(0, huge),
+    prm.declare_entry("Gauge height", "0", Double(0, dem::unbounded),
                       "[m] Where the plate's thickness is gauged, above the design's edge; 0: one plate "
                       "thickness above where the design's middle section first reaches its full thickness "
                       "(a chisel's bevel top, whose worn corner rises as the faces beside it wear). "
@@ -64,7 +64,7 @@ namespace abrade::coupling::lifetime
                       "Range: [2, 10000].");
     lifetime::declare_wear_sources(prm); // (Wear source and each source's own: lifetime/wear_sources/)
     lifetime::declare_end_of_life_criteria(prm); // (Maximum depth, ...: each criterion's own, lifetime/criteria/)
-    prm.declare_entry("Target tonnes", "0", Double(0, huge),
+    prm.declare_entry("Target tonnes", "0", Double(0, dem::unbounded),
                       "[t] Stop when this many tonnes are handled; 0: no target. Range: >= 0.");
     prm.declare_entry("Maximum updates", "20", Integer(1), "Stop after this many updates. Range: >= 1.");
     prm.declare_entry("Target interval", "0", Double(0, 1),
@@ -82,7 +82,7 @@ namespace abrade::coupling::lifetime
                       "footprint it was made with (the calibrated run's Smoothing radius): another one is "
                       "warned about. DEM wear only. Empty: the case's W, no calibration component.");
     prm.declare_entry("Profile planes", "0.5", List(Double(0, 1)),
-                      "Cross-sections of the knife written per update (knife/profile_N.csv and .png), "
+                      "Cross-sections of the part written per update (part/profile_N.csv and .png), "
                       "at these fractions of the knife's length (planes normal to its length).");
     prm.leave_subsection();
   }

@@ -1,5 +1,6 @@
 // The subsections Material and Interaction of the particles and of every wall, declared and
 // read (material_parameters.h).
+#include <abrade/dem/parameter_section.h>
 #include <abrade/coupling/parameters/material_parameters.h>
 #include <abrade/coupling/parameters/parameter_section.h>
 #include <abrade/dem/contact_law.h>
@@ -13,22 +14,17 @@ namespace abrade::coupling
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
 
-  namespace
-  {
-    constexpr double huge = std::numeric_limits<double>::max();
-  }
-
   void declare_material(ParameterHandler &prm, double G, double nu, double rho, bool rotation_option)
   {
     prm.enter_subsection("Material");
-    prm.declare_entry("Shear modulus", std::to_string(G), Double(0, huge),
+    prm.declare_entry("Shear modulus", std::to_string(G), Double(0, dem::unbounded),
                       "[Pa] Shear modulus G. Give either G or Young's modulus; when both are "
                       "non-zero, Young's modulus wins. Range: >= 0.");
-    prm.declare_entry("Young's modulus", "0", Double(0, huge),
+    prm.declare_entry("Young's modulus", "0", Double(0, dem::unbounded),
                       "[Pa] Young's modulus E = 2 G (1 + nu); 0: use the shear modulus. Range: >= 0.");
     prm.declare_entry("Poisson's ratio", std::to_string(nu), Double(-0.999, 0.4999),
                       "[-] Poisson's ratio nu. Range: (-1, 0.5).");
-    prm.declare_entry("Density", std::to_string(rho), Double(1e-12, huge),
+    prm.declare_entry("Density", std::to_string(rho), Double(1e-12, dem::unbounded),
                       "[kg/m^3] Density. Range: > 0.");
     if (rotation_option)
       prm.declare_entry("Rotation", "false", Bool(),
@@ -43,10 +39,10 @@ namespace abrade::coupling
     prm.enter_subsection("Interaction");
     prm.declare_entry("Restitution", std::to_string(e), Double(1e-6, 1),
                       "[-] Coefficient of restitution of " + with + " contacts. Range: (0, 1].");
-    prm.declare_entry("Friction", std::to_string(mu), Double(0, huge),
+    prm.declare_entry("Friction", std::to_string(mu), Double(0, dem::unbounded),
                       "[-] Static friction coefficient of " + with + " contacts (Coulomb limit of "
                       "the tangential force). Range: >= 0.");
-    prm.declare_entry("Rolling friction", "0", Double(0, huge),
+    prm.declare_entry("Rolling friction", "0", Double(0, dem::unbounded),
                       "[-] Rolling friction coefficient of " + with + " contacts (EDEM constant "
                       "directional torque, or the epsd spring's limit mu_r R* |F_n|: Simulation/Rolling "
                       "model; acts only on rotating particles). Range: >= 0.");

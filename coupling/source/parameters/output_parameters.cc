@@ -1,5 +1,6 @@
 // Subsection Output (output_parameters.h): the output directory, the snapshots and force files,
 // and the wear field with its profile and filter.
+#include <abrade/dem/parameter_section.h>
 #include <abrade/coupling/parameters/output_parameters.h>
 #include <abrade/dem/wear_law.h>
 
@@ -14,8 +15,6 @@ namespace abrade::coupling
 
   namespace
   {
-    constexpr double huge = std::numeric_limits<double>::max();
-
     /// The volume fields of the registered laws ("archard_volume|oka_volume").
     std::string volume_field_names(const std::string &separator = ", ")
     {
@@ -35,13 +34,13 @@ namespace abrade::coupling
     prm.enter_subsection("Output");
     prm.declare_entry("Directory", "output", Anything(),
                       "Output directory (created if missing); `--output DIR` overrides it.");
-    prm.declare_entry("Snapshot interval", "0.05", Double(0, huge),
+    prm.declare_entry("Snapshot interval", "0.05", Double(0, dem::unbounded),
                       "[s] Simulated time between ParaView snapshots (particles and walls, .vtp in "
                       ".pvd series); 0: only at the end of each phase. Range: >= 0.");
-    prm.declare_entry("Force interval", "0.001", Double(0, huge),
+    prm.declare_entry("Force interval", "0.001", Double(0, dem::unbounded),
                       "[s] Simulated time between rows of the wall force files "
                       "(walls/NAME_forces.csv); 0: every time step. Range: >= 0.");
-    prm.declare_entry("Wear profile band", "0.01", Double(1e-6, huge),
+    prm.declare_entry("Wear profile band", "0.01", Double(1e-6, dem::unbounded),
                       "[m] Height of the bands of walls/NAME_wear_profile.csv (the wear by height "
                       "above a wall's lowest point, by face direction, and its filtered peak "
                       "depth). Range: > 0.");
@@ -50,7 +49,7 @@ namespace abrade::coupling
                       "lifetime loop (the knife's wear depth), sweep, concepts and calibrate use: a "
                       "volume field of a wear law (" + volume_field_names() + "); the knife's "
                       "Wear/Laws must include its law.");
-    prm.declare_entry("Wear filter length", "0.0275", Double(0, huge),
+    prm.declare_entry("Wear filter length", "0.0275", Double(0, dem::unbounded),
                       "[m] A fixed length of the surface filter for the filtered peak depth of "
                       "walls/NAME_wear_profile.csv (next to the filter over the largest particle "
                       "radius, the lifetime loop's default); the default is the thesis' "

@@ -1,5 +1,6 @@
 // A subsection of the parameter file as the DEM's plugins see it: their declarations and reads,
 // their refusals naming the file, line and entry (parameter_section.h).
+#include <abrade/dem/parameter_section.h>
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/parameters/parameter_section.h>
@@ -31,11 +32,10 @@ namespace abrade::coupling
   void PluginSection::declare_vector(const std::string &name, const std::array<double, 3> &value,
                                      const std::string &doc)
   {
-    constexpr double huge = std::numeric_limits<double>::max();
     prm.declare_entry(name,
                       io::format_number(value[0], 15) + ", " + io::format_number(value[1], 15) + ", " +
                         io::format_number(value[2], 15),
-                      dealii::Patterns::List(dealii::Patterns::Double(-huge, huge), 3, 3), doc + " Three numbers: x, y, z.");
+                      dealii::Patterns::List(dealii::Patterns::Double(-dem::unbounded, dem::unbounded), 3, 3), doc + " Three numbers: x, y, z.");
   }
 
   std::array<double, 3> PluginSection::vector(const std::string &name) const

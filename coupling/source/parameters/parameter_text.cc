@@ -1,5 +1,6 @@
 // A parameter file's text line by line, and the entries of a wall's replaced geometry or motion
 // left out of it (parameter_text.h).
+#include <abrade/common/list_items.h>
 #include <abrade/coupling/parameters/parameter_text.h>
 #include <abrade/coupling/walls/wall_parameters.h>
 
@@ -59,7 +60,10 @@ namespace abrade::coupling
         for (std::size_t k = n; k <= last; ++k)
           entries[k].path = path, entries[k].last = last;
         if (starts_with_keyword(l, "subsection"))
-          path.push_back(trim(l.substr(11)));
+          {
+            entries[n].opens = trim(l.substr(11));
+            path.push_back(entries[n].opens);
+          }
         else if ((l == "end" || l == "END") && !path.empty())
           path.pop_back();
         else if (const auto eq = l.find('='); starts_with_keyword(l, "set") && eq != std::string::npos)
@@ -99,15 +103,35 @@ namespace abrade::coupling
     // the part that wears need not be a knife (a liner, a bucket's lip)
     constexpr RenamedSubsection renamed_subsections[] = {{"Knife", "Part"}};
 
-    /// The renamed subsection a top-level line `subsection NAME` of an old name opens (nullptr:
-    /// none). @p entry is the line's entry (its path: where the line stands).
-    const RenamedSubsection *renamed_subsection(const std::string &line, const LineEntry &entry)
+    /// A choice of a top-level entry that was renamed: @p key = @p old_value is now @p key =
+    /// @p value.
+    struct RenamedValue
     {
-      const std::string l = trim(as_read(line).substr(0, as_read(line).find('#')));
-      if (!entry.path.empty() || !starts_with_keyword(l, "subsection"))
+      const char *key, *old_value, *value;
+    };
+    // the job that builds the part alone (the part need not be a knife)
+    constexpr RenamedValue renamed_values[] = {{"Job", "knife", "part"}};
+
+    /// The renamed value a top-level entry @p key = @p value gives under its old name (nullptr:
+    /// none).
+    const RenamedValue *renamed_value(const std::vector<std::string> &path, const std::string &key,
+                                      const std::string &value)
+    {
+      if (!path.empty())
+        return nullptr;
+      for (const auto &r : renamed_values)
+        if (key == r.key && trim(value.substr(0, value.find('#'))) == r.old_value)
+          return &r;
+      return nullptr;
+    }
+
+    /// The renamed subsection a line opens at the top level, under an old name (nullptr: none).
+    const RenamedSubsection *renamed_subsection(const LineEntry &entry)
+    {
+      if (!entry.path.empty())
         return nullptr;
       for (const auto &r : renamed_subsections)
-        if (trim(l.substr(11)) == r.old_name)
+        if (entry.opens == r.old_name)
           return &r;
       return nullptr;
     }
@@ -130,6 +154,24 @@ namespace abrade::coupling
     return s + key;
   }
 
+  std::string entry_as_now(const std::string &set)
+  {
+    std::vector<std::string> path = io::list_items(set.substr(0, set.find('=')), '/');
+    if (path.empty())
+      return "";
+    std::string key = path.back();
+    path.pop_back();
+    for (const auto &r : renamed_subsections)
+      if (!path.empty() && path.front() == r.old_name)
+        path.front() = r.name;
+    if (const MovedEntry *m = moved_entry(path, key))
+      {
+        path.push_back(m->now);
+        key = m->key;
+      }
+    return entry_path(path, key);
+  }
+
   std::string moved_entry_hint(const std::string &key)
   {
     for (const auto &m : moved_entries)
@@ -139,10 +181,11 @@ namespace abrade::coupling
     return "";
   }
 
-  std::string with_old_subsection_names(const std::string &printed)
+  std::string with_old_names(const std::string &printed)
   {
-    // the top-level entries, then one block per top-level subsection (from its line to its
-    // "end" in the first column), sorted by name as deal.II prints them
+    // the top-level entries (a renamed value under its old name), then one block per top-level
+    // subsection (from its line to its "end" in the first column), sorted by name as deal.II
+    // prints them
     const std::vector<std::string>                   lines = lines_of(printed);
     std::string                                      head;
     std::vector<std::pair<std::string, std::string>> blocks; // (name, text)
@@ -150,7 +193,13 @@ namespace abrade::coupling
       {
         if (lines[n].rfind("subsection ", 0) != 0)
           {
-            head += lines[n] + "\n";
+            std::string line = lines[n];
+            const auto  eq   = line.find('=');
+            for (const auto &r : renamed_values)
+              if (eq != std::string::npos && starts_with_keyword(line, "set") &&
+                  trim(line.substr(4, eq - 4)) == r.key && trim(line.substr(eq + 1)) == r.value)
+                line = line.substr(0, eq + 1) + " " + r.old_value;
+            head += line + "\n";
             continue;
           }
         std::string name = lines[n].substr(11), text;
@@ -189,36 +238,46 @@ namespace abrade::coupling
       notes.push_back({where, std::string("subsection ") + r.old_name + " is read as subsection " + r.name +
                                 " (its name now; the old one still works)"});
     };
+    const auto value_note = [&notes](const std::string &where, const RenamedValue &r) {
+      notes.push_back({where, std::string(r.key) + " = " + r.old_value + " is read as " + r.key + " = " + r.value +
+                                " (its name now; the old one still works)"});
+    };
+    // line n (and the lines it continued into, left blank) rewritten as @p now
+    const auto rewrite = [&](std::size_t &n, const std::vector<std::string> &now) {
+      for (const std::string &l : now)
+        {
+          out.push_back(l);
+          out_origin.push_back(from[n]);
+        }
+      for (std::size_t k = n + 1; k <= entries[n].last; ++k)
+        {
+          out.push_back("");
+          out_origin.push_back(from[k]);
+        }
+      n = entries[n].last;
+    };
     for (std::size_t n = 0; n < lines.size(); ++n)
-      {
-        if (const RenamedSubsection *r = renamed_subsection(lines[n], entries[n]))
-          {
-            renamed_note(from[n].first + ":" + std::to_string(from[n].second), *r);
-            out.push_back(lines[n].substr(0, lines[n].find_first_not_of(" \t")) + "subsection " + r->name);
-            out_origin.push_back(from[n]);
-            continue;
-          }
-        const MovedEntry *m = moved_entry(entries[n].path, entries[n].key);
-        if (!m)
-          {
-            out.push_back(lines[n]);
-            out_origin.push_back(from[n]);
-            continue;
-          }
-        note(from[n].first + ":" + std::to_string(from[n].second), *m, entries[n].path);
-        for (const std::string &l : {std::string("subsection ") + m->now,
-                                     std::string("  set ") + m->key + " = " + entries[n].value, std::string("end")})
-          {
-            out.push_back(l);
-            out_origin.push_back(from[n]);
-          }
-        for (std::size_t k = n + 1; k <= entries[n].last; ++k) // (the lines it continued into)
-          {
-            out.push_back("");
-            out_origin.push_back(from[k]);
-          }
-        n = entries[n].last;
-      }
+      if (const RenamedSubsection *r = renamed_subsection(entries[n]))
+        {
+          renamed_note(from[n].first + ":" + std::to_string(from[n].second), *r);
+          rewrite(n, {std::string("subsection ") + r->name});
+        }
+      else if (const RenamedValue *v = renamed_value(entries[n].path, entries[n].key, entries[n].value))
+        {
+          value_note(from[n].first + ":" + std::to_string(from[n].second), *v);
+          rewrite(n, {std::string("set ") + v->key + " = " + v->value});
+        }
+      else if (const MovedEntry *m = moved_entry(entries[n].path, entries[n].key))
+        {
+          note(from[n].first + ":" + std::to_string(from[n].second), *m, entries[n].path);
+          rewrite(n, {std::string("subsection ") + m->now, std::string("  set ") + m->key + " = " + entries[n].value,
+                      std::string("end")});
+        }
+      else
+        {
+          out.push_back(lines[n]);
+          out_origin.push_back(from[n]);
+        }
     for (auto &o : overrides)
       for (const auto &r : renamed_subsections)
         if (!o.path.empty() && o.path.front() == r.old_name)
@@ -226,6 +285,12 @@ namespace abrade::coupling
             renamed_note("--set '" + o.text + "'", r);
             o.path.front() = r.name;
           }
+    for (auto &o : overrides)
+      if (const RenamedValue *v = renamed_value(o.path, o.key, o.value))
+        {
+          value_note("--set '" + o.text + "'", *v);
+          o.value = v->value;
+        }
     for (auto &o : overrides)
       if (const MovedEntry *m = moved_entry(o.path, o.key))
         {

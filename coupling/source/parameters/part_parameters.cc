@@ -1,5 +1,6 @@
 // Subsection Part: the parametric knife or a user's part (part_parameters.h), meshed, its faces
 // chosen, and placed as the DEM's walls.
+#include <abrade/dem/parameter_section.h>
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/parameters/part_parameters.h>
@@ -19,8 +20,6 @@ namespace abrade::coupling
 {
   namespace
   {
-    constexpr double huge = std::numeric_limits<double>::max();
-
     dealii::Tensor<1, 3> get_tensor(dealii::ParameterHandler &prm, const std::string &name)
     {
       const dem::Vec3 v = vector_entry(prm, name);
@@ -54,34 +53,34 @@ namespace abrade::coupling
                       "parametric: the grab knife below; file: a solid from File (.msh, .step/.stp, "
                       ".iges/.igs, or a closed .stl).");
     prm.declare_entry("File", "", Anything(), "Solid file when Geometry = file; relative to the parameter file.");
-    prm.declare_entry("Length", "0.4", Double(1e-6, huge), "[m] Knife length (x). Range: > 0.");
-    prm.declare_entry("Height", "0.5", Double(1e-6, huge), "[m] Knife height (z). Range: > 0.");
-    prm.declare_entry("Thickness", "0.03", Double(1e-6, huge), "[m] Plate thickness (y). Range: > 0.");
-    prm.declare_entry("Bevel height", "0.04", Double(1e-6, huge),
+    prm.declare_entry("Length", "0.4", Double(1e-6, dem::unbounded), "[m] Knife length (x). Range: > 0.");
+    prm.declare_entry("Height", "0.5", Double(1e-6, dem::unbounded), "[m] Knife height (z). Range: > 0.");
+    prm.declare_entry("Thickness", "0.03", Double(1e-6, dem::unbounded), "[m] Plate thickness (y). Range: > 0.");
+    prm.declare_entry("Bevel height", "0.04", Double(1e-6, dem::unbounded),
                       "[m] Height of the bevel that forms the edge; with the thickness it sets the "
                       "edge angle. Range: (0, Height).");
     prm.declare_entry("Bevel side", "both", selection_of(bevel_sides),
                       "both: chisel edge in the middle; plus / minus: bevel on the +y / -y face only.");
-    prm.declare_entry("Tip radius", "0", Double(0, huge), "[m] Rounding of the edge; 0: sharp. Range: [0, Thickness/2).");
-    prm.declare_entry("Lip height", "0", Double(0, huge),
+    prm.declare_entry("Tip radius", "0", Double(0, dem::unbounded), "[m] Rounding of the edge; 0: sharp. Range: [0, Thickness/2).");
+    prm.declare_entry("Lip height", "0", Double(0, dem::unbounded),
                       "[m] Height of a ridge on the +y face above the bevel that holds back a "
                       "protective layer of material; 0: none. Range: >= 0.");
-    prm.declare_entry("Lip width", "0", Double(0, huge), "[m] How far the ridge stands out of the face. Range: >= 0.");
-    prm.declare_entry("Lip offset", "0", Double(0, huge), "[m] Distance of the ridge above the bevel. Range: >= 0.");
-    prm.declare_entry("Mesh size", "0.015", Double(1e-6, huge), "[m] Target tetrahedron size. Range: > 0.");
-    prm.declare_entry("File scale", "1", Double(1e-12, huge),
+    prm.declare_entry("Lip width", "0", Double(0, dem::unbounded), "[m] How far the ridge stands out of the face. Range: >= 0.");
+    prm.declare_entry("Lip offset", "0", Double(0, dem::unbounded), "[m] Distance of the ridge above the bevel. Range: >= 0.");
+    prm.declare_entry("Mesh size", "0.015", Double(1e-6, dem::unbounded), "[m] Target tetrahedron size. Range: > 0.");
+    prm.declare_entry("File scale", "1", Double(1e-12, dem::unbounded),
                       "[-] Geometry = file: multiplies the file's coordinates. STL and .msh files have no unit "
                       "(0.001: the file is in millimetres); STEP/IGES files declare theirs, which is converted "
                       "to metres on import (leave 1; another value multiplies on top, with a warning). A .msh "
                       "of hexahedra is split into tetrahedra. Range: > 0.");
-    prm.declare_entry("Maximum cells", "3000000", Double(0, huge),
+    prm.declare_entry("Maximum cells", "3000000", Double(0, dem::unbounded),
                       "[-] Refuse a knife that would need more tetrahedra than this (estimated before meshing "
                       "from its volume and Mesh size: about 8.5 V / h^3), with a Mesh size that fits; 0: no "
                       "limit. Range: >= 0.");
-    prm.declare_entry("Density", "7800", Double(1e-6, huge), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
+    prm.declare_entry("Density", "7800", Double(1e-6, dem::unbounded), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
     prm.declare_entry("Solid", "all", Anything(),
                       "Geometry = file, a CAD file with several solids: 'all' takes them all as one part, a "
-                      "number the solid of that number (the knife job lists them).");
+                      "number the solid of that number (the part job lists them).");
     section.declare_vector("Rotation axis", {0, 0, 1},
                    "[-] Geometry = file: the axis of the rotation that brings the part from the file's "
                    "(assembly) coordinates into the knife's frame (edge along x at the bottom, height along "
@@ -107,7 +106,7 @@ namespace abrade::coupling
                       "(faces on the cylinder of radius r about the axis through p along a: a bore or a pin, "
                       "whose CAD face may be split in halves; the facets' centres r from the axis within the "
                       "tolerance, default 0.15 r, their normals across it). Empty: none (every face wears). "
-                      "The knife job lists the part's faces.");
+                      "The part job lists the part's faces.");
     prm.declare_entry("Wearable faces", "", Anything(),
                       "Geometry = file: the faces that wear (selectors as for Clamped faces); faces that "
                       "neither list takes are held. Empty: every face that is not clamped wears.");
@@ -229,7 +228,7 @@ namespace abrade::coupling
     m.tria = std::make_unique<dealii::Triangulation<3>>();
     if (!part.from_file)
       {
-        part.geometry.mesh(*m.tria, part.mesh_size, directory + "/knife.msh");
+        part.geometry.mesh(*m.tria, part.mesh_size, directory + "/part.msh");
         return m;
       }
     fem::SolidFileSettings settings = part.file_settings;

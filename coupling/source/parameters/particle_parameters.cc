@@ -1,6 +1,7 @@
 // Subsection Particles (particle_parameters.h): the particles' material and contacts, how the
 // bed is generated (the fill region and the sizes), coarse graining, and the settling with its
 // bed file.
+#include <abrade/dem/parameter_section.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/parameters/material_parameters.h>
 #include <abrade/coupling/parameters/output_parameters.h>
@@ -25,8 +26,6 @@ namespace abrade::coupling
 
   namespace
   {
-    constexpr double huge = std::numeric_limits<double>::max();
-
     const Choices<dem::SizeDistribution::Kind> size_distributions = {
       {"constant", dem::SizeDistribution::Kind::constant},
       {"uniform", dem::SizeDistribution::Kind::uniform},
@@ -95,12 +94,12 @@ namespace abrade::coupling
                       "Particle radius distribution: constant (Radius), uniform in [Minimum radius, "
                       "Maximum radius], or normal (mean Radius, Standard deviation) truncated to "
                       "[Minimum radius, Maximum radius].");
-    prm.declare_entry("Radius", "0.0275", Double(1e-9, huge),
+    prm.declare_entry("Radius", "0.0275", Double(1e-9, dem::unbounded),
                       "[m] Particle radius (constant), or the mean of the normal distribution. "
                       "The thesis' coarse-grained pellets (docs/physics.md): 0.0275. Range: > 0.");
-    prm.declare_entry("Minimum radius", "0", Double(0, huge), "[m] Smallest radius (uniform, normal). Range: >= 0.");
-    prm.declare_entry("Maximum radius", "0", Double(0, huge), "[m] Largest radius (uniform, normal). Range: >= 0.");
-    prm.declare_entry("Standard deviation", "0", Double(0, huge), "[m] Of the normal distribution. Range: >= 0.");
+    prm.declare_entry("Minimum radius", "0", Double(0, dem::unbounded), "[m] Smallest radius (uniform, normal). Range: >= 0.");
+    prm.declare_entry("Maximum radius", "0", Double(0, dem::unbounded), "[m] Largest radius (uniform, normal). Range: >= 0.");
+    prm.declare_entry("Standard deviation", "0", Double(0, dem::unbounded), "[m] Of the normal distribution. Range: >= 0.");
     prm.declare_entry("Count", "0", Integer(0),
                       "Number of particles to generate; 0: use the solid fraction. Range: >= 0.");
     prm.declare_entry("Solid fraction", "0.35", Double(0, 0.5),
@@ -145,10 +144,10 @@ namespace abrade::coupling
                       "diameter of its particles. Range: [0.5, 1000].");
     prm.leave_subsection();
     prm.enter_subsection("Settling");
-    prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, huge),
+    prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, dem::unbounded),
                       "[J] The poured bed counts as settled when the mean kinetic energy per "
                       "particle falls below this. Range: >= 0.");
-    prm.declare_entry("Maximum time", "1.0", Double(0, huge),
+    prm.declare_entry("Maximum time", "1.0", Double(0, dem::unbounded),
                       "[s] Longest settling time (the run goes on, with a warning, if the bed has "
                       "not settled by then). Range: >= 0.");
     prm.declare_entry("Bed file", "", Anything(),

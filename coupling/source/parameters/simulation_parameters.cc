@@ -1,6 +1,7 @@
 // Subsection Simulation (simulation_parameters.h): the time step, the contact law's sub-models,
 // threads and ranks, the domain, what an error does, the operating cycle's phases and the
 // payload height.
+#include <abrade/dem/parameter_section.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/parameters/parameter_choices.h>
 #include <abrade/coupling/parameters/parameter_section.h>
@@ -24,8 +25,6 @@ namespace abrade::coupling
 
   namespace
   {
-    constexpr double huge = std::numeric_limits<double>::max();
-
     /// The names of a list of contact sub-models as an entry pattern, and their documentation.
     template <class Models>
     Selection model_selection()
@@ -58,7 +57,7 @@ namespace abrade::coupling
     prm.declare_entry("Time step", "0", Double(0, 1),
                       "[s] Time step; 0: 'Rayleigh fraction' times the Rayleigh time step of the "
                       "smallest particle. Range: [0, 1].");
-    prm.declare_entry("Maximum particle-steps", "1e12", Double(0, huge),
+    prm.declare_entry("Maximum particle-steps", "1e12", Double(0, dem::unbounded),
                       "[-] Refuse a run (one operating cycle, with its settling) that needs more particle-steps "
                       "than this, estimated from the particles, the time step and the phases before the bed is "
                       "generated (about 28 hours at 1e7 particle-steps/s); 0: no limit. Range: >= 0.");
@@ -66,10 +65,10 @@ namespace abrade::coupling
                       "[-] Time step as a fraction of the Rayleigh time step (EDEM recommends 0.2 "
                       "for dense packings, 0.4 for loose ones). Range: (0, 1].");
     section.declare_vector("Gravity", {0, 0, -9.81}, "[m/s^2] Gravitational acceleration.");
-    prm.declare_entry("Characteristic velocity", "1.5", Double(1e-9, huge),
+    prm.declare_entry("Characteristic velocity", "1.5", Double(1e-9, dem::unbounded),
                       "[m/s] Impact speed used to check the time step against the Hertz contact "
                       "time (a warning is printed when dt exceeds a tenth of it). Range: > 0.");
-    prm.declare_entry("Skin", "0", Double(0, huge),
+    prm.declare_entry("Skin", "0", Double(0, dem::unbounded),
                       "[m] Verlet skin of the neighbour lists; 0: 0.2 x the smallest radius. The "
                       "lists are rebuilt when a particle or wall has moved far enough to bring a new "
                       "pair into contact. Range: >= 0.");
@@ -103,7 +102,7 @@ namespace abrade::coupling
                       "step. The run measures its steps and tries one thread fewer or more now and "
                       "then (a few per cent of the time); the log says when it ran on fewer. The "
                       "results are the same bits either way. false: always all threads.");
-    prm.declare_entry("Rebalance threshold", "1.1", Double(1, huge),
+    prm.declare_entry("Rebalance threshold", "1.1", Double(1, dem::unbounded),
                       "[-] Under mpirun the particles are spread over the ranks by recursive "
                       "coordinate bisection; the domains are cut again at a neighbour-list build "
                       "when the rank with the most particles owns more than this times the mean. "
@@ -119,7 +118,7 @@ namespace abrade::coupling
                       "error, or print a warning and continue (lost particles are removed). A NaN "
                       "always stops the run.");
     prm.declare_entry("Phases", "penetration: 0.2666667, travel: 0.8",
-                      dealii::Patterns::Map(Anything(), Double(0, huge), 0, 1000, ",", ":"),
+                      dealii::Patterns::Map(Anything(), Double(0, dem::unbounded), 0, 1000, ",", ":"),
                       "[s] The operating cycle as named phases with durations, in order: "
                       "'name: duration, name: duration'. Walls take their velocity per phase "
                       "name (Wall NAME/Motion/Velocities); wear and forces are reported per phase.");

@@ -1,7 +1,7 @@
 #pragma once
 // The preview's set-up picture: the part where the case places it, among the case's walls,
 // with the particles' fill region, the domain and the path the part follows over one cycle
-// (the knife job's knife/scene_*.dat and scene_part.vtp, summary.json results.knife.case),
+// (the part job's part/scene_*.dat and scene_part.vtp, summary.json results.part.case),
 // drawn by gnuplot from four directions: oblique, from the side (x-z), from above (x-y) and
 // from the front (y-z).
 #include "surface_views.h"

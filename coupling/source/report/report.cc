@@ -7,6 +7,7 @@
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/format_number.h>
 #include <abrade/common/json.h>
+#include <abrade/common/output_directory.h>
 #include <abrade/common/error.h>
 #include <abrade/common/wear_field_names.h>
 #include <abrade/report/report.h>
@@ -266,8 +267,8 @@ namespace abrade::report
     /// The worn part at the design, the middle and the last update, and its worst region.
     void worn_part_pictures(HtmlPage &page, const std::string &dir, const Tree &r, const std::string &part)
     {
-      const auto files = fs::exists(dir + "/knife/knife.pvd") ? pvd_files(dir + "/knife/knife.pvd")
-                                                              : std::vector<std::pair<double, std::string>>();
+      const std::string pvd   = dir + "/" + io::part_folder(dir) + "/" + io::part_folder(dir) + ".pvd";
+      const auto        files = fs::exists(pvd) ? pvd_files(pvd) : std::vector<std::pair<double, std::string>>();
       if (files.empty())
         return;
       std::vector<SurfacePicture> stages;
@@ -278,16 +279,16 @@ namespace abrade::report
       RenderOptions laid; // (a long part face on: surface_views.h)
       laid.face_on_elongation = 3;
       bool face_on            = false;
-      if (!render_surfaces(dir + "/report", "knife_wear.png", stages, laid, &face_on))
+      if (!render_surfaces(dir + "/report", "part_wear.png", stages, laid, &face_on))
         page.paragraph("(the " + part + "'s pictures could not be drawn: gnuplot, or its VTU files, are missing)");
-      page.png(dir + "/report/knife_wear.png",
+      page.png(dir + "/report/part_wear.png",
                "The " + part + " coloured by wear depth (mm below the design surface) at the design, the middle "
                "update and the last update of the run, " +
                  std::string(face_on ? "laid face on (its longest extent across the picture), each from its two "
                                        "sides, one above the other"
                                      : "seen from two opposite sides (top row: from +x, -y; bottom row: from -x, +y)") +
                  "; one colour range for all. Beyond the last update the end of life is extrapolated, not drawn.",
-               "knife");
+               "part");
       worst_region_picture(page, dir, r, part, files.back().second, "after " + tonnes(files.back().first));
     }
 
@@ -295,13 +296,14 @@ namespace abrade::report
     void cross_sections(HtmlPage &page, const std::string &dir, const std::string &part)
     {
       std::vector<fs::path> profiles;
-      if (fs::is_directory(dir + "/knife"))
-        for (const auto &entry : fs::directory_iterator(dir + "/knife"))
+      const std::string     folder = dir + "/" + io::part_folder(dir);
+      if (fs::is_directory(folder))
+        for (const auto &entry : fs::directory_iterator(folder))
           if (entry.path().extension() == ".png" && entry.path().stem().string().rfind("profile_", 0) == 0)
             profiles.push_back(entry.path());
       std::sort(profiles.begin(), profiles.end());
-      if (fs::exists(dir + "/knife/section_worst.csv"))
-        page.png(dir + "/knife/section_worst.png",
+      if (fs::exists(folder + "/section_worst.csv"))
+        page.png(folder + "/section_worst.png",
                  "Cross-section of the " + part + " through where the life ended (circled), normal to x: the design's "
                  "outline (black) and the worn outlines of the updates (up to six), zoomed to where they differ; the "
                  "quantity that ended the life is drawn there and named below; y and z in mm.",
@@ -650,12 +652,13 @@ namespace abrade::report
       return page.html();
     }
     /// The preview's set-up: the part where the case places it, among the walls, with the fill
-    /// region, the domain and the part's path over one cycle (summary.json results.knife.case;
+    /// region, the domain and the part's path over one cycle (summary.json results.part.case;
     /// case_setup_view.h), and the same in numbers.
     void case_setup_section(HtmlPage &page, const std::string &dir, const Tree &scene,
                             const std::vector<std::pair<std::string, std::string>> &roles)
     {
-      CaseSetupPicture setup{dir + "/knife/scene_part.vtp", dir + "/knife/scene_walls.dat", dir + "/knife/scene_path.dat",
+      const std::string folder = dir + "/" + io::part_folder(dir);
+      CaseSetupPicture  setup{folder + "/scene_part.vtp", folder + "/scene_walls.dat", folder + "/scene_path.dat",
                              numbers_at<6>(scene, "domain"), numbers_at<6>(scene, "fill_region"), {}};
       std::vector<std::vector<std::string>> legs;
       if (const auto path = scene.get_child_optional("path"))
@@ -758,15 +761,18 @@ namespace abrade::report
         }
     }
 
-    /// The knife job's page: the part's preview. The part as the case places it, drawn from
+    /// The part job's page: the part's preview. The part as the case places it, drawn from
     /// two sides with its faces coloured by what the selectors made of them (wears, clamped,
     /// held) and the file's face numbers at their centres; the face table and what each
-    /// selector took (summary.json `knife`).
-    std::string knife_page(const std::string &dir, const Tree &summary)
+    /// selector took (summary.json `results.part`; `results.knife` from an abrade before the
+    /// job's rename).
+    std::string part_page(const std::string &dir, const Tree &summary)
     {
-      const auto k = summary.get_child_optional("results.knife");
+      auto k = summary.get_child_optional("results.part");
       if (!k)
-        throw InputError(dir + "/summary.json", "no results.knife in it (a knife job that did not finish?)");
+        k = summary.get_child_optional("results.knife");
+      if (!k)
+        throw InputError(dir + "/summary.json", "no results.part in it (a part job that did not finish?)");
       const bool from_file = k->get_child_optional("file_faces").has_value();
       HtmlPage   page(from_file ? "Part preview" : "Knife preview");
       page.headline(part_headline(*k, from_file));
@@ -774,7 +780,8 @@ namespace abrade::report
       o.label      = "role";
       o.categories = {{"wears", "#e66101"}, {"clamped", "#5e3c99"}, {"held", "#b2abd2"}};
       const std::vector<std::vector<std::string>> rows = from_file ? file_face_rows(*k, o) : std::vector<std::vector<std::string>>{};
-      render_surfaces(dir + "/report", "faces.png", {{dir + "/knife/faces.vtp", "role", "the part as placed"}}, o);
+      render_surfaces(dir + "/report", "faces.png",
+                      {{dir + "/" + io::part_folder(dir) + "/faces.vtp", "role", "the part as placed"}}, o);
       page.png(dir + "/report/faces.png",
                "The part in its own frame (the file's placed by Part/Rotation and Offset; the case's walls place "
                "it in the case: below), in mm, from the front and from the back: each face coloured by what "
@@ -802,11 +809,11 @@ namespace abrade::report
     if (summary.get_child_optional("results.lifetime") || text_at(summary, "job") == "lifetime")
       {
         html = lifetime_page(dir, summary);
-        if (fs::is_directory(dir + "/knife"))
+        if (fs::is_directory(dir + "/" + io::part_folder(dir)))
           write_paraview_script(dir);
       }
-    else if (text_at(summary, "job") == "knife")
-      html = knife_page(dir, summary);
+    else if (text_at(summary, "job") == "part" || text_at(summary, "job") == "knife") // (knife: its old name)
+      html = part_page(dir, summary);
     else if (fs::exists(dir + "/concepts.csv"))
       html = table_page(dir, "Knife concepts compared", "concepts.csv", {"wear.png", "lifetime.png"});
     else if (fs::exists(dir + "/study.csv"))
@@ -823,7 +830,7 @@ namespace abrade::report
     else if (fs::exists(dir + "/calibration.json") || fs::exists(dir + "/comparison.json"))
       html = field_page(dir);
     else
-      throw InputError(dir, "no lifetime, knife, concepts, sweep, compare or calibrate run here (summary.json, concepts.csv, "
+      throw InputError(dir, "no lifetime, part, concepts, sweep, compare or calibrate run here (summary.json, concepts.csv, "
                             "study.csv, comparison.json or calibration.json)");
     const std::string file = dir + "/report.html";
     io::write_file_atomically(file, html);
@@ -843,16 +850,17 @@ namespace abrade::report
 
   void write_paraview_script(const std::string &dir)
   {
-    std::ofstream py(dir + "/knife/open_in_paraview.py");
-    py << "# Opens the knife's worn shapes of this lifetime run in ParaView, coloured by wear depth [mm]:\n"
+    const std::string part = io::part_folder(dir);
+    std::ofstream     py(dir + "/" + part + "/open_in_paraview.py");
+    py << "# Opens the part's worn shapes of this lifetime run in ParaView, coloured by wear depth [mm]:\n"
           "#   paraview --script=open_in_paraview.py    (the GUI, to turn it around)\n"
-          "#   pvpython open_in_paraview.py             (knife_wear_paraview.png beside it, either way)\n"
+          "#   pvpython open_in_paraview.py             (" << part << "_wear_paraview.png beside it, either way)\n"
           "# The time slider steps through the updates (time = handled tonnes).\n"
           "import os\n"
           "from paraview.simple import *\n"
           "here = os.path.dirname(os.path.abspath(__file__)) if '__file__' in globals() else os.getcwd()\n"
-          "knife = PVDReader(FileName=os.path.join(here, 'knife.pvd'))\n"
-          "depth = Calculator(Input=knife)\n"
+          "part = PVDReader(FileName=os.path.join(here, '" << part << ".pvd'))\n"
+          "depth = Calculator(Input=part)\n"
           "depth.ResultArrayName = 'wear_depth_mm'\n"
           "depth.Function = 'wear_depth*1000'\n"
           "view = GetActiveViewOrCreate('RenderView')\n"
@@ -862,13 +870,13 @@ namespace abrade::report
           "lut.ApplyPreset('Viridis (matplotlib)', True)\n"
           "animation = GetAnimationScene()\n"
           "animation.UpdateAnimationUsingDataTimeSteps()\n"
-          "animation.AnimationTime = knife.TimestepValues[-1]\n"
+          "animation.AnimationTime = part.TimestepValues[-1]\n"
           "display.RescaleTransferFunctionToDataRange(False, True)\n"
           "display.SetScalarBarVisibility(view, True)\n"
           "GetScalarBar(lut, view).Title = 'wear depth [mm]'\n"
           "view.ResetCamera()\n"
           "Render()\n"
           "# (pvpython closes when the script ends: a picture of the last update stays)\n"
-          "SaveScreenshot(os.path.join(here, 'knife_wear_paraview.png'), view, ImageResolution=[1200, 900])\n";
+          "SaveScreenshot(os.path.join(here, '" << part << "_wear_paraview.png'), view, ImageResolution=[1200, 900])\n";
   }
 } // namespace abrade::report

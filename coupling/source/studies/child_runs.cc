@@ -5,13 +5,18 @@
 #include <abrade/common/list_items.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/termination.h>
+#include <abrade/coupling/parameters/parameter_text.h>
 #include <abrade/coupling/studies/child_runs.h>
+#include <abrade/dem/parallel.h>
 #include <abrade/coupling/studies/study_lives.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
+#include <iostream>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -38,19 +43,6 @@ namespace abrade::coupling
             "Job=dem"};
   }
 
-  namespace
-  {
-    /// The entry a --set names, spelt as the parameter file reads it ("Particles / Generation
-    /// /Seed" is Particles/Generation/Seed: each part trimmed, empty ones left out).
-    std::string entry_path(const std::string &set)
-    {
-      std::string path;
-      for (const std::string &part : io::list_items(set.substr(0, set.find('=')), '/'))
-        path += (path.empty() ? "" : "/") + part;
-      return path;
-    }
-  } // namespace
-
   void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option, bool lives)
   {
     std::vector<std::string> owned = study_cycle_sets(0, "");
@@ -59,41 +51,145 @@ namespace abrade::coupling
         owned.push_back(set);
     for (const std::string &set : sets)
       {
-        const std::string key = entry_path(set);
+        const std::string key = entry_as_now(set);
         for (const std::string &o : owned)
-          if (key == entry_path(o))
+          if (key == entry_as_now(o))
             throw InputError("command line", option + " " + key + ": the study sets this entry on each of its " +
                                                (lives ? "lifetime runs" : "cycles") +
                                                " itself (the seeds come from --seeds, the updates from --lifetime-updates)");
       }
   }
 
+  namespace
+  {
+    constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+
+    struct Share
+    {
+      std::size_t failed = none; ///< the lowest failed run's index (none: none failed)
+      std::size_t ran    = 0;    ///< the runs this rank started
+    };
+
+    /// This rank's share of @p runs (run k on rank k mod @p ranks), @p jobs at a time (0: the
+    /// cores of this machine shared by its @p ranks_here ranks). The progress line counts this
+    /// rank's runs.
+    Share run_share(const std::vector<ChildRun> &runs, int rank, int ranks, int ranks_here, int jobs,
+                    const std::string &what)
+    {
+      std::vector<std::size_t> mine;
+      for (std::size_t k = rank; k < runs.size(); k += ranks)
+        mine.push_back(k);
+      if (jobs <= 0)
+        jobs = int(std::max(1u, std::thread::hardware_concurrency() / unsigned(std::max(1, ranks_here))));
+      std::atomic<std::size_t> next{0}, done{0}, started{0}, failed{none};
+      io::ProgressLine         progress(ranks > 1 ? what + " (" + std::to_string(mine.size()) + " of the " +
+                                                   std::to_string(runs.size()) + " runs on rank " +
+                                                   std::to_string(rank) + " of " + std::to_string(ranks) + ")"
+                                                 : what,
+                                        double(mine.size()));
+      std::vector<std::thread> pool;
+      for (int j = 0; j < jobs; ++j)
+        pool.emplace_back([&] {
+          for (std::size_t i; (i = next++) < mine.size();)
+            {
+              ++started;
+              if (io::run_child_command(runs[mine[i]].command) != 0)
+                for (std::size_t was = failed.load(); mine[i] < was && !failed.compare_exchange_weak(was, mine[i]);)
+                  ;
+              progress.update(double(++done), std::to_string(done.load()) + "/" + std::to_string(mine.size()) + " runs");
+            }
+        });
+      for (auto &t : pool)
+        t.join();
+      progress.finish();
+      return {failed.load(), started.load()};
+    }
+
+    // A batch as rank 0 broadcasts it: "batch", the jobs, then each run's directory and
+    // command, every field as its length and its text; "end" and the exit code end the study.
+    std::string field(const std::string &text) { return std::to_string(text.size()) + ":" + text; }
+
+    std::string batch_text(const std::vector<ChildRun> &runs, int jobs)
+    {
+      std::string text = field("batch") + field(std::to_string(jobs));
+      for (const auto &r : runs)
+        text += field(r.dir) + field(r.command);
+      return text;
+    }
+
+    /// The fields of @p text (batch_text's or the end's).
+    std::vector<std::string> fields_of(const std::string &text)
+    {
+      std::vector<std::string> fields;
+      for (std::size_t at = 0; at < text.size();)
+        {
+          const std::size_t colon = text.find(':', at);
+          const std::size_t size  = std::stoul(text.substr(at, colon - at));
+          fields.push_back(text.substr(colon + 1, size));
+          at = colon + 1 + size;
+        }
+      return fields;
+    }
+
+    /// Every rank's lowest failed run (none: none failed), agreed; on rank 0 (unless quiet), a
+    /// line with the runs each rank started (what = "": a serving rank's).
+    std::size_t agree_on(const dem::Parallel &ranks, const Share &share, const std::string &what)
+    {
+      const double        f = ranks.min(share.failed == none ? 1e300 : double(share.failed));
+      std::vector<double> ran(ranks.size(), 0.0);
+      ran[ranks.rank()] = double(share.ran);
+      ranks.sum(ran);
+      if (ranks.distributed() && ranks.rank() == 0 && !io::ProgressLine::quiet())
+        {
+          std::string each;
+          for (std::size_t r = 0; r < ran.size(); ++r)
+            each += (r ? ", " : "") + std::to_string(long(ran[r]));
+          std::cout << what << ": runs started by the " << ran.size() << " MPI ranks: " << each << std::endl;
+        }
+      return f >= 1e300 ? none : std::size_t(f);
+    }
+  } // namespace
+
   void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what)
   {
-    if (jobs <= 0)
-      jobs = int(std::max(1u, std::thread::hardware_concurrency()));
-    std::atomic<std::size_t> next{0}, done{0};
-    std::mutex               failure_mutex;
-    std::string              failure;
-    io::ProgressLine         progress(what, double(runs.size()));
-    std::vector<std::thread> pool;
-    for (int j = 0; j < jobs; ++j)
-      pool.emplace_back([&] {
-        for (std::size_t k; (k = next++) < runs.size();)
-          {
-            if (io::run_child_command(runs[k].command) != 0)
-              {
-                std::lock_guard<std::mutex> lock(failure_mutex);
-                failure = "run " + runs[k].dir + " failed (see " + runs[k].dir + ".log)";
-              }
-            progress.update(double(++done), std::to_string(done.load()) + "/" + std::to_string(runs.size()) + " runs");
-          }
-      });
-    for (auto &t : pool)
-      t.join();
-    progress.finish();
-    if (!failure.empty())
-      throw RunError(what + ": " + failure);
+    const dem::Parallel ranks = dem::Parallel::world(); // (under mpirun: rank 0, StudyRanks)
+    if (ranks.distributed())
+      ranks.broadcast(batch_text(runs, jobs), 0);
+    const int         here   = ranks.ranks_on_this_machine();
+    const std::size_t failed = agree_on(ranks, run_share(runs, ranks.rank(), ranks.size(), here, jobs, what), what);
+    if (failed != none)
+      throw RunError(what + ": run " + runs[failed].dir + " failed (see " + runs[failed].dir + ".log)");
+  }
+
+  StudyRanks::StudyRanks() : ranks(dem::Parallel::world()) {}
+
+  StudyRanks::~StudyRanks()
+  {
+    if (leads())
+      end(std::uncaught_exceptions() > 0 ? 1 : 0);
+  }
+
+  void StudyRanks::end(int code)
+  {
+    if (!ranks.distributed() || ended)
+      return;
+    ended = true;
+    ranks.broadcast(field("end") + field(std::to_string(code)), 0);
+  }
+
+  int StudyRanks::serve() const
+  {
+    for (;;)
+      {
+        const std::vector<std::string> f = fields_of(ranks.broadcast("", 0));
+        if (f.at(0) == "end")
+          return std::stoi(f.at(1));
+        std::vector<ChildRun> runs;
+        for (std::size_t k = 2; k + 1 < f.size(); k += 2)
+          runs.push_back({f[k], f[k + 1]});
+        const int here = ranks.ranks_on_this_machine();
+        agree_on(ranks, run_share(runs, ranks.rank(), ranks.size(), here, std::stoi(f.at(1)), ""), "");
+      }
   }
 
   CsvTable read_csv_table(const std::string &path)

@@ -29,6 +29,7 @@
 #include <abrade/coupling/studies/paired_change.h>
 #include <abrade/coupling/studies/study_lives.h>
 #include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/parameter_text.h>
 #include <abrade/coupling/studies/sweep.h>
 
 #include <algorithm>
@@ -295,8 +296,11 @@ namespace abrade::coupling
           throw InputError("command line", "sweep needs --output DIR");
         for (std::size_t a = 0; a < o.varies.size(); ++a)
           for (std::size_t b = 0; b < a; ++b)
-            if (o.varies[a].key == o.varies[b].key)
-              throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice");
+            if (entry_as_now(o.varies[a].key) == entry_as_now(o.varies[b].key)) // (one entry, two spellings too)
+              throw InputError("command line", "--vary '" + o.varies[a].key + "' is given twice" +
+                                                 (o.varies[a].key == o.varies[b].key
+                                                    ? std::string()
+                                                    : " (as '" + o.varies[b].key + "')"));
         refuse_study_owned_sets(o.sets, "--set", o.lifetime_updates > 0);
         for (const auto &v : o.varies)
           refuse_study_owned_sets({v.key}, "--vary", o.lifetime_updates > 0);

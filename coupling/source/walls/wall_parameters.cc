@@ -1,5 +1,6 @@
 // The subsection "Wall NAME": declared with the entries of the wall's own geometry and motion,
 // read into the DEM's wall, and the mounted parts placed on their shells (wall_parameters.h).
+#include <abrade/dem/parameter_section.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/parameters/material_parameters.h>
 #include <abrade/coupling/parameters/parameter_section.h>
@@ -24,8 +25,6 @@ namespace abrade::coupling
 
   namespace
   {
-    constexpr double huge = std::numeric_limits<double>::max();
-
     Vec3 vec(const std::array<double, 3> &v) { return Vec3(v[0], v[1], v[2]); }
 
     /// The entries a plugin declares, with their defaults as a parameter file writes them.
@@ -111,7 +110,7 @@ namespace abrade::coupling
       section.declare_number("Rotation angle", 0, -360, 360,
                              "[deg] Angle of that rotation; 0: none. Not for a mounted knife (the shell places it). "
                              "Range: [-360, 360].");
-      section.declare_number("Maximum edge length", 0, 0, huge,
+      section.declare_number("Maximum edge length", 0, 0, dem::unbounded,
                              "[m] Refine the mesh until no triangle edge is longer than this (per-"
                              "triangle wear needs triangles smaller than a particle); 0: as given. "
                              "Range: >= 0.");
@@ -147,10 +146,10 @@ namespace abrade::coupling
                            "geometry bin, which moves with the wall): their number and mean velocity "
                            "along Axis, in walls/NAME_layer.csv.");
       section.declare_vector("Axis", {1, 0, 0}, "[-] Direction of the velocities the probe reports.");
-      section.declare_number("Thickness", 0, 0, huge,
+      section.declare_number("Thickness", 0, 0, dem::unbounded,
                              "[m] Largest distance from the wall's surface to a particle centre in the "
                              "layer; 0: 1.5 x the largest particle radius (one layer). Range: >= 0.");
-      section.declare_number("Interval", 0.001, 0, huge,
+      section.declare_number("Interval", 0.001, 0, dem::unbounded,
                              "[s] Simulated time between probe samples; 0: every step. Range: >= 0.");
       prm.leave_subsection();
     }

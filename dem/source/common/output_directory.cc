@@ -53,7 +53,7 @@ namespace abrade::io
     std::string first_link_inside(const std::string &root)
     {
       namespace fs = std::filesystem;
-      static const std::set<std::string> ours = {"knife",    "checkpoint", "beds",  "particles", "walls",
+      static const std::set<std::string> ours = {"part",     "knife",      "checkpoint", "beds",  "particles", "walls",
                                                  "report",   "plots",      "runs",  "surfaces",  "lifetime",
                                                  "compare", "calibration"};
       std::error_code ec;
@@ -74,6 +74,13 @@ namespace abrade::io
       return "";
     }
   } // namespace
+
+  std::string part_folder(const std::string &run)
+  {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    return fs::is_directory(run + "/knife", ec) && !fs::exists(run + "/part", ec) ? "knife" : "part";
+  }
 
   void OutputDirectory::claim()
   {

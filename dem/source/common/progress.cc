@@ -12,6 +12,8 @@ namespace abrade::io
   }
 
   void ProgressLine::set_quiet(bool quiet) { quiet_flag = quiet; }
+  bool ProgressLine::quiet() { return quiet_flag; }
+
   bool ProgressLine::enabled() { return !quiet_flag && isatty(fileno(stderr)); }
 
   ProgressLine::ProgressLine(std::string l, double t)

@@ -6,6 +6,8 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include <fcntl.h>
 #include <pthread.h>
@@ -99,6 +101,25 @@ namespace abrade::io
       }
   }
 
+  namespace
+  {
+    /// This process's environment without the MPI launcher's variables.
+    std::vector<std::string> environment_outside_mpi()
+    {
+      std::vector<std::string> kept;
+      for (char **e = environ; *e; ++e)
+        {
+          const std::string v = *e;
+          bool              mpi = false;
+          for (const char *prefix : {"OMPI_", "PMIX_", "PMI_", "OPAL_", "HYDRA_", "MPI_LOCALRANKID", "MPI_LOCALNRANKS"})
+            mpi = mpi || v.rfind(prefix, 0) == 0;
+          if (!mpi)
+            kept.push_back(v);
+        }
+      return kept;
+    }
+  } // namespace
+
   int run_child_command(const std::string &command)
   {
     // what the child needs, made before fork (after it only async-signal-safe calls); `exec`:
@@ -106,6 +127,11 @@ namespace abrade::io
     // below is the command's own (a shell that forked it died alone, leaving it running)
     const std::string line   = "exec " + command;
     const char       *argv[] = {"sh", "-c", line.c_str(), nullptr};
+    const std::vector<std::string> environment = environment_outside_mpi();
+    std::vector<const char *>      envp;
+    for (const auto &v : environment)
+      envp.push_back(v.c_str());
+    envp.push_back(nullptr);
     // the terminating signals held until the child is registered (and reset in the child): a
     // signal in between neither runs the parent's handler in the child nor misses the child
     sigset_t terminating, before;
@@ -134,7 +160,7 @@ namespace abrade::io
         for (const int s : {SIGTERM, SIGINT, SIGHUP})
           std::signal(s, SIG_DFL);
         pthread_sigmask(SIG_SETMASK, &before, nullptr);
-        ::execv("/bin/sh", const_cast<char *const *>(argv));
+        ::execve("/bin/sh", const_cast<char *const *>(argv), const_cast<char *const *>(envp.data()));
         ::_exit(127);
       }
     ::setpgid(pid, pid); // (also here: the group exists before a signal can be forwarded to it)

@@ -142,7 +142,6 @@ namespace abrade::dem
 {
   namespace
   {
-    constexpr double unbounded = std::numeric_limits<double>::max();
     const std::vector<std::pair<std::string, RopeGrab::Part>> part_entries = {
       {"Right shell walls", RopeGrab::Part::right_shell},
       {"Left shell walls", RopeGrab::Part::left_shell},

@@ -8,7 +8,7 @@
 // scan (measured_depths.csv).
 //
 // A run (a lifetime output folder) predicts the depth D(T) at each measured point from its knife
-// series (knife/knife.pvd: the surface's accumulated wear depth per update, followed at the
+// series (part/part.pvd: the surface's accumulated wear depth per update, followed at the
 // material point that was there on the fresh knife). Wear is proportional to W and the geometry
 // evolves with the accumulated wear only, so a run made with W0 predicts D(T; W) = D(T W / W0;
 // W0): the fit is one scale factor s = W / W0 by least squares over the measurements.

@@ -27,7 +27,7 @@ namespace abrade::report
   /// would be), by file name.
   std::string write_report(const std::string &directory, std::vector<std::string> *missing = nullptr);
 
-  /// Writes @p directory/knife/open_in_paraview.py: a pvpython script that opens the knife's
-  /// series (knife.pvd) coloured by wear depth.
+  /// Writes @p directory/part/open_in_paraview.py (knife/ in an earlier abrade's run): a
+  /// pvpython script that opens the part's series (part.pvd) coloured by wear depth.
   void write_paraview_script(const std::string &directory);
 } // namespace abrade::report

@@ -1,5 +1,6 @@
 // Geometry = chisel knife: the knife-bed reference knife as a surface of its own, a plate with a
 // chisel edge (docs/cases.md; wall_geometry.h). Not the FEM part (Geometry = solid model).
+#include <abrade/dem/parameter_section.h>
 #include <abrade/coupling/walls/wall_geometry.h>
 
 #include <limits>
@@ -16,11 +17,10 @@ namespace abrade::coupling
 
       void declare_parameters(dem::ParameterSection &prm) const override
       {
-        constexpr double huge = std::numeric_limits<double>::max();
-        prm.declare_number("Knife length", 0.4, 0, huge, "[m] Chisel knife: length along X.");
-        prm.declare_number("Knife height", 0.5, 0, huge, "[m] Chisel knife: height along Z.");
-        prm.declare_number("Knife thickness", 0.03, 0, huge, "[m] Chisel knife: thickness along Y.");
-        prm.declare_number("Bevel height", 0.04, 0, huge,
+        prm.declare_number("Knife length", 0.4, 0, dem::unbounded, "[m] Chisel knife: length along X.");
+        prm.declare_number("Knife height", 0.5, 0, dem::unbounded, "[m] Chisel knife: height along Z.");
+        prm.declare_number("Knife thickness", 0.03, 0, dem::unbounded, "[m] Chisel knife: thickness along Y.");
+        prm.declare_number("Bevel height", 0.04, 0, dem::unbounded,
                            "[m] Chisel knife: height of the bevel that forms the bottom edge.");
       }
 

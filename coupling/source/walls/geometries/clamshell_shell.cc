@@ -1,5 +1,6 @@
 // Geometry = clamshell shell: one shell of a grab, its hinge the origin and its axis y, with the
 // lip a part can be mounted on (wall_geometry.h; the surface: dem::primitives::clamshell_shell).
+#include <abrade/dem/parameter_section.h>
 #include <abrade/coupling/walls/wall_geometry.h>
 
 #include <cmath>
@@ -17,11 +18,10 @@ namespace abrade::coupling
 
       void declare_parameters(dem::ParameterSection &prm) const override
       {
-        constexpr double huge = std::numeric_limits<double>::max();
-        prm.declare_number("Shell radius", 0.6, 0, huge,
+        prm.declare_number("Shell radius", 0.6, 0, dem::unbounded,
                            "[m] Clamshell shell: radius of its bottom about the hinge (the hinge is the "
                            "shell's origin, its axis along Y; Offset places it). Range: > 0.");
-        prm.declare_number("Shell width", 1, 0, huge, "[m] Clamshell shell: width along the hinge (Y). Range: > 0.");
+        prm.declare_number("Shell width", 1, 0, dem::unbounded, "[m] Clamshell shell: width along the hinge (Y). Range: > 0.");
         prm.declare_number("Shell sector", 90, 1, 180,
                            "[deg] Clamshell shell: angle its bottom spans, from the lip. Range: [1, 180].");
         prm.declare_number("Shell opening", 0, 0, 180,

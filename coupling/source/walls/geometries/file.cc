@@ -1,5 +1,6 @@
 // Geometry = file: a surface mesh (STL, OBJ, PLY, VTK, VTP) or a CAD file whose surfaces Gmsh
 // meshes, optionally with a lip a part can be mounted on (wall_geometry.h).
+#include <abrade/dem/parameter_section.h>
 #include <abrade/common/error.h>
 #include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/walls/wall_geometry.h>
@@ -22,13 +23,12 @@ namespace abrade::coupling
 
       void declare_parameters(dem::ParameterSection &prm) const override
       {
-        constexpr double huge = std::numeric_limits<double>::max();
         prm.declare_text("File", "",
                          "Surface mesh file (STL ASCII/binary, OBJ, PLY, VTK, VTP) or CAD file "
                          "(STEP/IGES: its surfaces meshed by Gmsh to 'Maximum edge length') when "
                          "Geometry = file; relative to the parameter file's directory.");
-        prm.declare_number("File scale", 1, 1e-12, huge, "[m per file unit] 0.001 for a mesh in millimetres. Range: > 0.");
-        prm.declare_numbers("Lip centre", "", 0, 3, -huge, huge,
+        prm.declare_number("File scale", 1, 1e-12, dem::unbounded, "[m per file unit] 0.001 for a mesh in millimetres. Range: > 0.");
+        prm.declare_numbers("Lip centre", "", 0, 3, -dem::unbounded, dem::unbounded,
                             "[m] A shell read from a file (Geometry = file) that carries a knife: the "
                             "centre of its lip, in the file's coordinates in metres (after File scale, before "
                             "Rotation and Offset): 'x, y, z'. "

@@ -5,7 +5,10 @@
 //   DIR/log.txt           what was printed to the terminal
 //   DIR/particles/        particle .vtp files + particles.pvd
 //   DIR/walls/            wall .vtp files + <wall>.pvd, <wall>_forces.csv
-//   DIR/knife/            FEM knife .vtu/.pvd/.stl (lifetime runs)
+//   DIR/part/             the part: its solid mesh per update (part.pvd, part_NNNNN.vtu),
+//                         worn surface (part_NNNNN.stl), profiles and sections; a run
+//                         of an abrade before the part was called so has DIR/knife/knife*
+//                         instead: read as it is, and kept when resumed (part_folder)
 //   DIR/checkpoint/       restart data
 //   DIR/.rank-N/          under mpirun, what rank N > 0 writes (each rank runs the same job on
 //                         globally reduced data; rank 0's files are the results)
@@ -19,6 +22,12 @@
 
 namespace abrade::io
 {
+  /// The folder of run directory @p run that holds the part's files, which is also their
+  /// stem ("part": DIR/part/part.pvd): "knife" when the run has DIR/knife and no DIR/part (a
+  /// run of an abrade before the rename: read as it is, and resumed in its own layout; a fresh
+  /// run in that directory writes part/, OutputDirectory::part_folder).
+  std::string part_folder(const std::string &run);
+
   class OutputDirectory
   {
   public:
@@ -32,6 +41,10 @@ namespace abrade::io
     std::string shared_file(const std::string &name) const { return shared_path + "/" + name; }
     /// Creates (if needed) and returns the subdirectory @p name.
     std::string subdirectory(const std::string &name) const;
+    /// The folder a run writes the part's files into: "part", also in a directory an earlier
+    /// abrade wrote (its knife/ left as it was); a @p resumed run goes on in the folder it
+    /// began in (io::part_folder: an earlier abrade's run resumed keeps its knife/).
+    std::string part_folder(bool resumed = false) const { return resumed ? io::part_folder(root_path) : "part"; }
     /// Makes the directory this process's own until it ends (see above); throws InputError
     /// naming the directory when another process holds it or a symbolic link is inside it. A
     /// second claim of a directory this process holds already does nothing.

@@ -15,6 +15,7 @@ namespace abrade::io
 
     /// Process-wide switch, set by `--quiet`.
     static void set_quiet(bool quiet);
+    static bool quiet();
     static bool enabled();
 
     /// Reports progress @p done out of total, with an optional extra text.

@@ -23,6 +23,8 @@ namespace abrade::io
   void unregister_child_group(int pgid);
 
   /// Runs @p command with /bin/sh in a process group of its own, registered as above while it
-  /// runs, and returns its exit status as std::system() does (-1 if it could not start).
+  /// runs, and returns its exit status as std::system() does (-1 if it could not start). The
+  /// command gets this process's environment without the MPI launcher's variables (OMPI_*,
+  /// PMIX_*, PMI_*, ...): a child of an MPI rank (a study's run) is no part of its MPI job.
   int run_child_command(const std::string &command);
 } // namespace abrade::io

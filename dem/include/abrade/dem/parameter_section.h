@@ -4,12 +4,17 @@
 // own parameters while the DEM library knows no parameter-file library
 // (coupling/parameters/parameter_section.h maps it onto deal.II's ParameterHandler).
 #include <array>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace abrade::dem
 {
+  /// The upper end of a number's range that has none (declare_number's @p hi, and deal.II's
+  /// Double pattern's): the largest double.
+  inline constexpr double unbounded = std::numeric_limits<double>::max();
+
   /// One subsection of the parameter file, as a plugin sees it: it declares its entries (numbers in
   /// a range, with a unit and a sentence of documentation), reads them back and refuses a value
   /// with a message that names the entry and where it was set.

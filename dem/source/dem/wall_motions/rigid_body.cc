@@ -61,7 +61,6 @@ namespace abrade::dem
       }
 
     private:
-      static constexpr double unbounded = std::numeric_limits<double>::max();
     };
   } // namespace
 

@@ -1,6 +1,6 @@
 #pragma once
 // What a wear law's file needs (wear_law.h): the interface with its registration line, the
-// simulation it reads and two helpers.
+// simulation it reads and a helper (parameter_section.h gives the laws `unbounded`).
 #include <abrade/dem/simulation.h>
 #include <abrade/dem/wear_law.h>
 
@@ -10,9 +10,6 @@
 
 namespace abrade::dem::wear_laws
 {
-  /// The largest double, the upper end of unbounded parameter ranges.
-  inline constexpr double unbounded = std::numeric_limits<double>::max();
-
   /// |v| of a 3-vector.
   inline double length(const double *v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 } // namespace abrade::dem::wear_laws

@@ -25,7 +25,7 @@
 // face that is not clamped wears). A face that neither list takes is held like a clamped one. A
 // selector that takes no face is an error (a box in millimetres for a part in metres, say).
 // Boxes and normals are evaluated per boundary face (a triangle of the mesh), after the part is
-// scaled and placed: in the coordinates the knife job writes knife.stl in.
+// scaled and placed: in the coordinates the part job writes part/part.stl in.
 #include <abrade/fem/part_boundary.h>
 #include <abrade/fem/solid_surface.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The case around a part, for its preview (`abrade preview`, the knife job): what a user needs
+// The case around a part, for its preview (`abrade preview`, the part job): what a user needs
 // to see before a run to trust the set-up. Where the case's walls with Geometry = solid model
 // place the part (the case's frame, in which the DEM runs), the other walls' outlines, the
 // particles' fill region (the bed box) and the domain, and the path the part's lowest point

@@ -1,7 +1,7 @@
 #pragma once
 // The lifetime loop's files besides trajectory.csv and the knife series: cross-sections of the
-// knife per update (knife/profile_F.csv, blocks per update) and the gnuplot figures
-// (trajectory.png, knife/profile_F.png).
+// knife per update (part/profile_F.csv, blocks per update) and the gnuplot figures
+// (trajectory.png, part/profile_F.png).
 #include <abrade/coupling/lifetime/sections.h>
 #include <abrade/fem/solid_surface.h>
 
@@ -21,6 +21,10 @@ namespace abrade::coupling::lifetime
   ProfileFrame profile_frame(const fem::SolidSurface &design);
   /// The plane x of the fraction @p f of the length (0 and 1 a thousandth inside the ends).
   double plane_x(const ProfileFrame &frame, double f);
+
+  /// The worn surface after update @p update in the part's folder @p part (io::part_folder):
+  /// "part_00003.stl" (update 0: the design).
+  std::string part_surface_name(const std::string &part, long update);
 
   /// The knife's cross-sections at the fractions @p planes of its length: segments (y, z) where
   /// surface triangles cross the plane (sections.h), appended as update @p update's block; the
@@ -46,9 +50,9 @@ namespace abrade::coupling::lifetime
     double last_tonnes = 0, last_value = 0, life = 0, limit = 0;
   };
 
-  /// The cross-section through the place that ended the life (knife/section_worst.csv and
+  /// The cross-section through the place that ended the life (part/section_worst.csv and
   /// .png): the place @p where in the part's frame [m], the updates' surfaces it is cut from
-  /// (knife/knife_00000.stl ... knife_N.stl, N = @p updates) and what is drawn there.
+  /// (part/part_00000.stl ... part_N.stl, N = @p updates) and what is drawn there.
   struct WorstSection
   {
     std::vector<double> where;
@@ -57,7 +61,7 @@ namespace abrade::coupling::lifetime
   };
 
   /// trajectory.png (wear depth, recession and worn volume vs tonnes, the limits and an
-  /// extrapolation), knife/profile_F.png and, given @p worst, knife/section_worst.png: each
+  /// extrapolation), part/profile_F.png and, given @p worst, part/section_worst.png: each
   /// cross-section with the design's outline, zoomed to the wear (sections.h).
   void plot_lifetime(const std::string &dir, const std::vector<double> &planes, const ProfileFrame &frame,
                      const TrajectoryMarks &marks = {}, const WorstSection *worst = nullptr);

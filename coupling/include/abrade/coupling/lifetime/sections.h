@@ -1,7 +1,7 @@
 #pragma once
 // Cross-sections of the part (planes normal to its length, x in its frame) and their pictures:
 // the design's outline and the worn outlines of the updates, drawn zoomed to where they differ,
-// with the quantity that ended the life marked (knife/profile_F.png, knife/section_worst.png).
+// with the quantity that ended the life marked (part/profile_F.png, part/section_worst.png).
 // No deal.II here.
 #include <abrade/common/plane_section.h>
 
@@ -16,7 +16,7 @@ namespace abrade::coupling::lifetime
   /// sections are cut by io::plane_section (VTK's cutter) in the planes x = const.
   using Segment = io::SectionSegment;
 
-  /// A section file's blocks: update -> its segments (knife/profile_F.csv: lines
+  /// A section file's blocks: update -> its segments (part/profile_F.csv: lines
   /// 'update y0 z0 y1 z1', update 0 the design); an empty map when the file cannot be read.
   std::map<long, std::vector<Segment>> read_section_blocks(const std::string &file);
 

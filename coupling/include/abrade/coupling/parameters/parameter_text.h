@@ -30,6 +30,7 @@ namespace abrade::coupling
     std::vector<std::string> path;  ///< the subsections it is in
     std::string              key;   ///< the key it sets ("": none)
     std::string              value; ///< the value it gives the key, comment removed
+    std::string              opens; ///< the subsection it opens ("": none)
     std::size_t              last = 0;
   };
 
@@ -45,25 +46,27 @@ namespace abrade::coupling
   /// "Wall knife/Wear/Archard" + "/" + @p key: an entry's full name, as --set spells it.
   std::string entry_path(const std::vector<std::string> &path, const std::string &key);
 
+  /// The entry a --set (or --vary) @p set names ("Section/Key=value", the value optional),
+  /// spelt as the parameter file reads it now: each part trimmed, empty ones left out, and a
+  /// renamed subsection or moved entry under its name now ("Knife / Length" is "Part/Length").
+  /// Two spellings of one entry give the same text.
+  std::string entry_as_now(const std::string &set);
+
   /// For @p key, an entry that moved ("Archard coefficient"), where it is now ("'Archard
   /// coefficient' moved: subsection Archard, set Coefficient (inside Wear: ...)."); "" for any
   /// other key. Said where the old spelling is set outside the subsection it moved from.
   std::string moved_entry_hint(const std::string &key);
 
-  /// Entries and subsections that moved keep working under their old spelling. A top-level
-  /// subsection of an old name (`subsection Knife`, now `subsection Part`) is read under its
-  /// name now, its line rewritten in place, and a --set of it likewise. Each line of @p text
+  /// Entries, subsections and choices that moved keep working under their old spelling. A
+  /// top-level subsection of an old name (`subsection Knife`, now `subsection Part`) is read
+  /// under its name now, its line rewritten in place, and a --set of it likewise; so is a
+  /// top-level choice of an old name (`set Job = knife`, now `part`). Each line of @p text
   /// that sets an entry that moved (`set Archard coefficient = W` in a wall's Wear) becomes the
   /// entry where it is now (`subsection Archard`, `set Coefficient = W`, `end`), in place, so
-  /// that the last setting still wins; @p origin follows the new lines. Each --set of
-  /// @p overrides with an old path is rewritten likewise. Returns a note per old spelling read:
-  /// where it was read ("file:line" or "--set '...'") and where it is now.
-  /// @p printed (ParameterHandler's ShortPRM text, as ParameterFile::canonical_text() gives
-  /// it) as an abrade before the renames printed it: each renamed top-level subsection under
-  /// its old name, in its sorted place (`subsection Knife` before `subsection Lifetime`). A
-  /// lifetime checkpoint of an earlier abrade hashed that text.
-  std::string with_old_subsection_names(const std::string &printed);
-
+  /// that the last setting still wins; @p origin follows the new lines (a line continued with
+  /// '\' becomes one, the lines it continued into blank). Each --set of @p overrides with an old
+  /// path is rewritten likewise. Returns a note per old spelling read: where it was read
+  /// ("file:line" or "--set '...'") and where it is now.
   struct MovedNote
   {
     std::string where, what;
@@ -71,6 +74,13 @@ namespace abrade::coupling
   };
   std::vector<MovedNote> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
                                             const std::string &file, std::vector<Override> &overrides);
+
+  /// @p printed (ParameterHandler's ShortPRM text, as ParameterFile::canonical_text() gives
+  /// it) as an abrade before the renames printed it: each renamed top-level subsection under
+  /// its old name, in its sorted place (`subsection Knife` before `subsection Lifetime`), and a
+  /// renamed choice under its old name (`set Job = knife`). A lifetime checkpoint of an
+  /// earlier abrade hashed that text; a run directory's parameters.prm holds it.
+  std::string with_old_names(const std::string &printed);
 
   /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
   /// another geometry or motion than the wall's (@p lists), when they are

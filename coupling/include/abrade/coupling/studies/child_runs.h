@@ -1,7 +1,9 @@
 #pragma once
 // Studies made of many `abrade run`s (sweep, concepts): child processes, as many at a time as
-// asked, their output tables read back.
+// asked, their output tables read back. Under mpirun the runs are spread over the ranks
+// (StudyRanks), each rank starting its share on its own machine.
 #include <abrade/common/csv_reader.h>
+#include <abrade/dem/parallel.h>
 
 #include <map>
 #include <string>
@@ -32,8 +34,37 @@ namespace abrade::coupling
   void refuse_study_owned_sets(const std::vector<std::string> &sets, const std::string &option, bool lives);
 
   /// Runs @p runs, @p jobs at a time (0: one per core), with a progress line named @p what;
-  /// throws RunError naming a failed run's log.
+  /// throws RunError naming a failed run's log (the first in @p runs' order). Under mpirun
+  /// (called on rank 0, the others serving: StudyRanks) run k goes to rank k mod ranks, and
+  /// each rank runs its share @p jobs at a time (0: its machine's cores shared by the ranks on
+  /// it). The runs are the same processes either way (each outside the MPI job), so a study's
+  /// results do not depend on how many ranks ran it.
   void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what);
+
+  /// A study's ranks under mpirun (serial otherwise: one rank that leads). Rank 0 leads: it
+  /// makes the study (its beds, tables and report), and each of its run_children() calls hands
+  /// the other ranks their share of the runs. The other ranks serve() those calls until the
+  /// study ends: end() with the exit code, or the leader's StudyRanks going out of scope (code
+  /// 1 while an exception unwinds it). MPI must be started (fem::init_mpi_once) before.
+  class StudyRanks
+  {
+  public:
+    StudyRanks();
+    ~StudyRanks();
+    StudyRanks(const StudyRanks &) = delete;
+    StudyRanks &operator=(const StudyRanks &) = delete;
+
+    bool leads() const { return ranks.rank() == 0; }
+    /// Rank 0: the study ended with exit code @p code; the others' serve() returns it.
+    void end(int code);
+    /// Ranks other than 0: runs their share of each of the leader's batches; returns the
+    /// leader's exit code when it ends the study.
+    int serve() const;
+
+  private:
+    dem::Parallel ranks;
+    bool          ended = false;
+  };
 
   using io::CsvTable;
   /// A table a child run wrote; RunError when the run left none.

@@ -1,21 +1,21 @@
-// The `knife` job: the knife's solid model on its own.
+// The `part` job (`Job = knife` is its old name, still read): the part's solid model on its own.
 //
-// 1. Build the knife: the parametric grab knife (fem/parametric_knife.h) or a solid from a file.
+// 1. Build the part: the parametric grab knife (fem/parametric_knife.h) or a solid from a file.
 // 2. Check the mesh: scaled Jacobians, aspect ratio, inverted cells (an inverted cell is an
 //    error), the wearable and clamped boundary.
-// 3. Write knife/knife.pvd + .vtu (cell field scaled_jacobian), knife/knife.stl (the surface the
-//    DEM would see), knife/knife_surface.vtp (the same with boundary_id: 1 wears, 2 is clamped),
-//    the parametric knife as knife/knife.step
-//    (millimetres), knife/faces.vtp (each boundary face with the file's face it belongs to and
-//    its role: wears, clamped, held), and volume, mass, quality and a part's faces into
-//    summary.json. The run's report (report.html) is the part's preview: it drawn from two
-//    sides coloured by role with the faces' numbers, and the face table.
+// 3. Write part/part.pvd + .vtu (cell field scaled_jacobian), part/part.stl (the surface the
+//    DEM would see), part/part_surface.vtp (the same with boundary_id: 1 wears, 2 is clamped),
+//    the parametric knife as part/part.step (millimetres), part/faces.vtp (each boundary face
+//    with the file's face it belongs to and its role: wears, clamped, held), and volume, mass,
+//    quality and a part's faces into summary.json (results.part). The run's report
+//    (report.html) is the part's preview: it drawn from two sides coloured by role with the
+//    faces' numbers, and the face table.
 // 4. Where the parameter file is a DEM case that holds the part (a wall with Geometry = solid
 //    model): the case around it (case_scene.h) for the preview's set-up picture: the part as
-//    the case places it (knife/scene_part.vtp, with role), the other walls' outlines
-//    (knife/scene_walls.dat) and the part's path over one cycle (knife/scene_path.dat, a block
-//    per phase), the fill region and the domain
-//    (summary.json results.knife.case).
+//    the case places it (part/scene_part.vtp, with role), the other walls' outlines
+//    (part/scene_walls.dat) and the part's path over one cycle (part/scene_path.dat, a block
+//    per phase), the fill region and the domain (summary.json results.part.case).
+// (A run directory of an abrade before the rename has knife/knife* instead: io::part_folder.)
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_output.h>
 #include <abrade/coupling/case_setup/case_scene.h>
@@ -43,7 +43,7 @@ namespace abrade::coupling
   {
     /// The part's boundary faces as triangles, each with the file's face it belongs to
     /// (`face_id`; the parametric knife's boundary id) and what became of it (`role`: 0 wears,
-    /// 1 clamped, 2 held): knife/faces.vtp, which the preview draws.
+    /// 1 clamped, 2 held): part/faces.vtp, which the preview draws.
     io::PolyData part_faces_surface(const dealii::Triangulation<3> &tria, const PartMesh &m, bool from_file)
     {
       io::PolyData out;
@@ -110,7 +110,7 @@ namespace abrade::coupling
       for (const auto &o : scene.outlines)
         for (const auto &e : o.segments)
           walls << e[0] << ' ' << e[1] << ' ' << e[2] << '\n' << e[3] << ' ' << e[4] << ' ' << e[5] << "\n\n\n";
-      io::Json &c = ctx.results["knife"]["case"];
+      io::Json &c = ctx.results["part"]["case"];
       c["domain"] = std::vector<double>(scene.domain.begin(), scene.domain.end());
       c["fill_region"] = std::vector<double>(scene.fill_region.begin(), scene.fill_region.end());
       c["particles"] = scene.particles;
@@ -142,13 +142,14 @@ namespace abrade::coupling
 
   namespace
   {
-    class KnifeJob : public Job
+    class PartJob : public Job
     {
     public:
-      std::string name() const override { return "knife"; }
+      std::string name() const override { return "part"; }
       std::string documentation() const override
       {
-        return "build the knife's solid model (subsection Part), check its mesh and write it (VTU, STL) with its volume and mass";
+        return "build the part's solid model (subsection Part), check its mesh and write it (VTU, STL) with its volume and "
+               "mass (`knife` is its old name)";
       }
       void   run(JobContext &ctx) const override;
       Report report() const override { return {true, false, false}; }
@@ -167,7 +168,7 @@ namespace abrade::coupling
         << " kg; min scaled Jacobian " << q.min_scaled_jacobian << ", max aspect ratio " << q.max_aspect_ratio;
       log.line(s.str());
       if (q.n_inverted > 0)
-        throw RunError("the knife mesh has " + std::to_string(q.n_inverted) + " inverted cells (cell " +
+        throw RunError("the part's mesh has " + std::to_string(q.n_inverted) + " inverted cells (cell " +
                        std::to_string(q.worst_cell) + " is the worst)");
       return q;
     }
@@ -178,10 +179,11 @@ namespace abrade::coupling
     io::PolyData write_the_part(const dealii::Triangulation<3> &tria, const PartMesh &m, const PartParameters &part,
                                 const fem::SolidSurface &surface, const std::string &dir)
     {
-      fem::SolidOutput out(dir, "knife");
+      const std::string stem = std::filesystem::path(dir).filename().string(); // (io::part_folder)
+      fem::SolidOutput  out(dir, stem);
       out.write(tria, {{"scaled_jacobian", fem::cell_scaled_jacobians(tria)}}, 0.0);
-      io::write_stl(dir + "/knife.stl", surface.as_polydata());
-      io::write_vtp(dir + "/knife_surface.vtp", surface.as_polydata());
+      io::write_stl(dir + "/" + stem + ".stl", surface.as_polydata());
+      io::write_vtp(dir + "/" + stem + "_surface.vtp", surface.as_polydata());
       io::PolyData faces = part_faces_surface(tria, m, part.from_file);
       io::write_vtp(dir + "/faces.vtp", faces);
       return faces;
@@ -255,16 +257,16 @@ namespace abrade::coupling
     }
   } // namespace
 
-  void KnifeJob::run(JobContext &ctx) const
+  void PartJob::run(JobContext &ctx) const
   {
     for (const auto &n : ctx.parameters.notes()) // (what the reading left out or read under an old name)
       ctx.log.line(n);
     const PartParameters part = read_part_parameters(ctx.parameters);
     fem::init_mpi_once();
-    const std::string dir = ctx.output.subdirectory("knife");
+    const std::string dir = ctx.output.subdirectory(ctx.output.part_folder());
     PartMesh          m;
     {
-      io::ScopedTimer t(ctx.timers, "mesh knife");
+      io::ScopedTimer t(ctx.timers, "mesh part");
       m = mesh_part(part, ctx.parameters, dir);
     }
     const dealii::Triangulation<3> &tria = *m.tria;
@@ -275,17 +277,17 @@ namespace abrade::coupling
     const fem::SolidSurface surface = fem::extract_surface(tria);
     const io::PolyData      faces   = write_the_part(tria, m, part, surface, dir);
 
-    io::Json &r = ctx.results["knife"];
+    io::Json &r = ctx.results["part"];
     describe_the_part(r, tria, volume, surface, q, part.density);
     if (!part.from_file)
       {
         r["analytic_volume"] = part.geometry.volume();
-        part.geometry.write_step(dir + "/knife.step"); // the design as CAD, in millimetres
+        part.geometry.write_step(dir + "/" + ctx.output.part_folder() + ".step"); // the design as CAD, in mm
       }
     else
       describe_the_files_faces(r, m, warnings);
     write_case_scene(ctx, surface, faces, dir);
   }
 
-  ABRADE_REGISTER_JOB(KnifeJob);
+  ABRADE_REGISTER_JOB(PartJob);
 } // namespace abrade::coupling

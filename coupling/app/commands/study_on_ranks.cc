@@ -1,0 +1,40 @@
+// A study command on MPI ranks (study_on_ranks.h).
+#include "study_on_ranks.h"
+
+#include "../command_line.h"
+
+#include <abrade/common/error.h>
+#include <abrade/common/progress.h>
+#include <abrade/coupling/studies/child_runs.h>
+#include <abrade/fem/mpi_once.h>
+
+namespace abrade::app
+{
+  int study_on_ranks(const std::function<int()> &study)
+  {
+    if (launch().by_mpirun)
+      fem::init_mpi_once();
+    coupling::StudyRanks ranks;
+    if (!ranks.leads())
+      {
+        io::ProgressLine::set_quiet(true);
+        return ranks.serve();
+      }
+    try
+      {
+        const int code = study();
+        ranks.end(code);
+        return code;
+      }
+    catch (const InputError &)
+      {
+        ranks.end(2);
+        throw;
+      }
+    catch (const RunError &)
+      {
+        ranks.end(3);
+        throw;
+      }
+  }
+} // namespace abrade::app
