@@ -163,7 +163,7 @@ namespace abrade::fem
         impl->quadrature = std::make_unique<QGaussSimplex<3>>(s.degree + 1);
       }
     else
-      throw InputError("knife mesh", "mixed hexahedral/tetrahedral meshes are not supported");
+      throw InputError("part mesh", "mixed hexahedral/tetrahedral meshes are not supported");
     impl->dofs.distribute_dofs(*impl->fe);
   }
 

@@ -396,7 +396,7 @@ namespace abrade::fem
     {
       io::ScopedTimer t(timers, "remesh");
       if (const std::string failed = remesh(*tria, settings.mesh_size, *fresh, settings.work_directory); !failed.empty())
-        r.surface_kept = failed + "; the knife was meshed again inside its worn surface's own triangles";
+        r.surface_kept = failed + "; the part was meshed again inside its worn surface's own triangles";
     }
     set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, wearable_boundary);
     tria = std::move(fresh);
@@ -422,7 +422,7 @@ namespace abrade::fem
     displacement = transferred_vectors(transfer, displacement);
     since_remesh.assign(current_surface.vertices.size(), 0.0);
     if (r.quality.n_inverted > 0)
-      throw RunError("the remeshed knife has inverted cells");
+      throw RunError("the remeshed part has inverted cells");
     return transfer;
   }
 
@@ -484,12 +484,12 @@ namespace abrade::fem
       }
     catch (const InputError &e)
       {
-        throw RunError(std::string("the worn knife could not be meshed: ") + e.what());
+        throw RunError(std::string("the worn part could not be meshed: ") + e.what());
       }
     set_ids_from_design(*fresh, design, 1e-3 * settings.mesh_size, wearable_boundary);
     r.quality = timed_quality(timers, *fresh);
     if (r.quality.n_inverted > 0)
-      throw RunError("the remeshed knife has inverted cells");
+      throw RunError("the remeshed part has inverted cells");
     tria = std::move(fresh);
     ++remeshes;
     r.remeshed        = true;

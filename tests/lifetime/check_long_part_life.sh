@@ -18,7 +18,7 @@ abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 "$abrade" run "$src/tests/report/long_part.prm" --set "Lifetime/Maximum updates=8" --quiet --output "$out/run" \
   > "$out/run.log" 2>&1 || { cat "$out/run.log"; exit 1; }
-if grep -n "the worn knife could not be meshed\|could not be filled\|the worn surface could not be remeshed at update" \
+if grep -n "the worn part could not be meshed\|could not be filled\|the worn surface could not be remeshed at update" \
   "$out/run.log"; then
   echo "a worn surface Gmsh could not mesh (above)"; exit 1
 fi

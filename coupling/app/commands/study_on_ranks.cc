@@ -8,12 +8,19 @@
 #include <abrade/coupling/studies/child_runs.h>
 #include <abrade/fem/mpi_once.h>
 
+#include <cstdlib>
+
 namespace abrade::app
 {
   int study_on_ranks(const std::function<int()> &study)
   {
     if (launch().by_mpirun)
-      fem::init_mpi_once();
+      {
+        // a rank waiting in a collective (for the leader's next batch, or for the others'
+        // runs) gives its core to the runs instead of spinning on it (unless the user set it)
+        ::setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
+        fem::init_mpi_once();
+      }
     coupling::StudyRanks ranks;
     if (!ranks.leads())
       {

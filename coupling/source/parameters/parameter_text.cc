@@ -217,6 +217,54 @@ namespace abrade::coupling
     return head;
   }
 
+  namespace
+  {
+    /// What a note says of an old spelling read where it is now.
+    std::string read_as(const MovedEntry &m, const std::vector<std::string> &path)
+    {
+      std::vector<std::string> now = path;
+      now.push_back(m.now);
+      return entry_path(path, m.old_key) + " is read as " + entry_path(now, m.key) +
+             " (its place now; the old spelling still works)";
+    }
+    std::string read_as(const RenamedSubsection &r)
+    {
+      return std::string("subsection ") + r.old_name + " is read as subsection " + r.name +
+             " (its name now; the old one still works)";
+    }
+    std::string read_as(const RenamedValue &r)
+    {
+      return std::string(r.key) + " = " + r.old_value + " is read as " + r.key + " = " + r.value +
+             " (its name now; the old one still works)";
+    }
+
+    /// Each --set of @p overrides with an old spelling rewritten as it is now, a note each.
+    void read_moved_overrides(std::vector<Override> &overrides, std::vector<MovedNote> &notes)
+    {
+      for (auto &o : overrides)
+        {
+          const std::string where = "--set '" + o.text + "'";
+          for (const auto &r : renamed_subsections)
+            if (!o.path.empty() && o.path.front() == r.old_name)
+              {
+                notes.push_back({where, read_as(r)});
+                o.path.front() = r.name;
+              }
+          if (const RenamedValue *v = renamed_value(o.path, o.key, o.value))
+            {
+              notes.push_back({where, read_as(*v)});
+              o.value = v->value;
+            }
+          if (const MovedEntry *m = moved_entry(o.path, o.key))
+            {
+              notes.push_back({where, read_as(*m, o.path)});
+              o.path.push_back(m->now);
+              o.key = m->key;
+            }
+        }
+    }
+  } // namespace
+
   std::vector<MovedNote> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
                                             const std::string &file, std::vector<Override> &overrides)
   {
@@ -228,20 +276,7 @@ namespace abrade::coupling
     std::vector<MovedNote>                   notes;
     std::vector<std::string>                 out;
     std::vector<std::pair<std::string, int>> out_origin;
-    const auto note = [&notes](const std::string &where, const MovedEntry &m, const std::vector<std::string> &path) {
-      std::vector<std::string> now = path;
-      now.push_back(m.now);
-      notes.push_back({where, entry_path(path, m.old_key) + " is read as " + entry_path(now, m.key) +
-                                " (its place now; the old spelling still works)"});
-    };
-    const auto renamed_note = [&notes](const std::string &where, const RenamedSubsection &r) {
-      notes.push_back({where, std::string("subsection ") + r.old_name + " is read as subsection " + r.name +
-                                " (its name now; the old one still works)"});
-    };
-    const auto value_note = [&notes](const std::string &where, const RenamedValue &r) {
-      notes.push_back({where, std::string(r.key) + " = " + r.old_value + " is read as " + r.key + " = " + r.value +
-                                " (its name now; the old one still works)"});
-    };
+    const auto where = [&from](std::size_t n) { return from[n].first + ":" + std::to_string(from[n].second); };
     // line n (and the lines it continued into, left blank) rewritten as @p now
     const auto rewrite = [&](std::size_t &n, const std::vector<std::string> &now) {
       for (const std::string &l : now)
@@ -259,17 +294,17 @@ namespace abrade::coupling
     for (std::size_t n = 0; n < lines.size(); ++n)
       if (const RenamedSubsection *r = renamed_subsection(entries[n]))
         {
-          renamed_note(from[n].first + ":" + std::to_string(from[n].second), *r);
+          notes.push_back({where(n), read_as(*r)});
           rewrite(n, {std::string("subsection ") + r->name});
         }
       else if (const RenamedValue *v = renamed_value(entries[n].path, entries[n].key, entries[n].value))
         {
-          value_note(from[n].first + ":" + std::to_string(from[n].second), *v);
+          notes.push_back({where(n), read_as(*v)});
           rewrite(n, {std::string("set ") + v->key + " = " + v->value});
         }
       else if (const MovedEntry *m = moved_entry(entries[n].path, entries[n].key))
         {
-          note(from[n].first + ":" + std::to_string(from[n].second), *m, entries[n].path);
+          notes.push_back({where(n), read_as(*m, entries[n].path)});
           rewrite(n, {std::string("subsection ") + m->now, std::string("  set ") + m->key + " = " + entries[n].value,
                       std::string("end")});
         }
@@ -278,26 +313,7 @@ namespace abrade::coupling
           out.push_back(lines[n]);
           out_origin.push_back(from[n]);
         }
-    for (auto &o : overrides)
-      for (const auto &r : renamed_subsections)
-        if (!o.path.empty() && o.path.front() == r.old_name)
-          {
-            renamed_note("--set '" + o.text + "'", r);
-            o.path.front() = r.name;
-          }
-    for (auto &o : overrides)
-      if (const RenamedValue *v = renamed_value(o.path, o.key, o.value))
-        {
-          value_note("--set '" + o.text + "'", *v);
-          o.value = v->value;
-        }
-    for (auto &o : overrides)
-      if (const MovedEntry *m = moved_entry(o.path, o.key))
-        {
-          note("--set '" + o.text + "'", *m, o.path);
-          o.path.push_back(m->now);
-          o.key = m->key;
-        }
+    read_moved_overrides(overrides, notes);
     if (notes.empty())
       return notes;
     text.clear();

@@ -78,91 +78,113 @@ namespace abrade::coupling
     }
   } // namespace
 
+  namespace
+  {
+    /// Particles/Generation: the fill box, the sizes and their distribution, the count, the seed
+    /// and the initial velocity.
+    void declare_generation(dealii::ParameterHandler &prm, PluginSection &section)
+    {
+      prm.enter_subsection("Generation");
+      section.declare_vector("Region min", {-0.97, -0.97, 0.03}, "[m] Lower corner of the fill box.");
+      section.declare_vector("Region max", {0.97, 0.97, 0.85}, "[m] Upper corner of the fill box.");
+      prm.declare_entry("Region mesh", "", Anything(),
+                        "Optional closed surface mesh (STL/OBJ/PLY/VTK/VTP); particles are placed only "
+                        "inside it (and inside the fill box). Empty: the box alone.");
+      prm.declare_entry("Size distribution", "constant", selection_of(size_distributions),
+                        "Particle radius distribution: constant (Radius), uniform in [Minimum radius, "
+                        "Maximum radius], or normal (mean Radius, Standard deviation) truncated to "
+                        "[Minimum radius, Maximum radius].");
+      prm.declare_entry("Radius", "0.0275", Double(1e-9, dem::unbounded),
+                        "[m] Particle radius (constant), or the mean of the normal distribution. "
+                        "The thesis' coarse-grained pellets (docs/physics.md): 0.0275. Range: > 0.");
+      prm.declare_entry("Minimum radius", "0", Double(0, dem::unbounded), "[m] Smallest radius (uniform, normal). Range: >= 0.");
+      prm.declare_entry("Maximum radius", "0", Double(0, dem::unbounded), "[m] Largest radius (uniform, normal). Range: >= 0.");
+      prm.declare_entry("Standard deviation", "0", Double(0, dem::unbounded), "[m] Of the normal distribution. Range: >= 0.");
+      prm.declare_entry("Count", "0", Integer(0),
+                        "Number of particles to generate; 0: use the solid fraction. Range: >= 0.");
+      prm.declare_entry("Solid fraction", "0.35", Double(0, 0.5),
+                        "[-] Particle volume over fill-region volume, used when Count = 0. "
+                        "Range: [0, 0.5]; random placement (then a sweep of the free space) reaches "
+                        "about 0.35 in a box, then the particles are poured.");
+      prm.declare_entry("Seed", "1", Integer(0), "Random seed of the placement and sizes. Range: >= 0.");
+      section.declare_vector("Initial velocity", {0, 0, -0.5}, "[m/s] Velocity of the generated particles.");
+      prm.leave_subsection();
+    }
+
+    /// Particles/Coarse graining: the factor, and the fine region with its levels.
+    void declare_coarse_graining(dealii::ParameterHandler &prm, PluginSection &section)
+    {
+      prm.enter_subsection("Coarse graining");
+      prm.declare_entry("Factor", "1", Double(1e-3, 1e3),
+                        "[-] Coarse-graining ratio f: every simulated particle is f times the size of "
+                        "the real one and stands for f^3 of them. Particles/Generation describes the "
+                        "real particles: its radii are multiplied by f and its Count (of real "
+                        "particles) divided by f^3, so the bulk mass stays; Simulation/Skin is "
+                        "multiplied by f and Particles/Settling/Kinetic energy threshold by f^3; "
+                        "density, moduli, restitution and friction stay (Hertz-Mindlin contacts of "
+                        "scaled spheres keep the bulk's stresses, bulk density and angle of repose); "
+                        "the time step follows from the scaled radius. Parameters that stay in "
+                        "absolute units (a fixed Time step, a Layer probe Thickness, Lifetime/"
+                        "Smoothing radius, an imported bed) are named in a warning. What coarse "
+                        "graining does to wear: docs/coarse-graining.md. Range: [0.001, 1000].");
+      section.declare_vector("Fine region min", {0, 0, 0},
+                     "[m] Multi-level coarse graining: a box of the fill region that is filled with "
+                     "particles coarse-grained by Fine region factor instead (its share of the real "
+                     "Count by volume), around the tools' paths; layers of intermediate sizes surround "
+                     "it (Fine region step). Equal corners: none. docs/coarse-graining.md.");
+      section.declare_vector("Fine region max", {0, 0, 0}, "[m] Upper corner of the fine region.");
+      prm.declare_entry("Fine region factor", "1", Double(1e-3, 1e3),
+                        "[-] Coarse-graining ratio inside the fine region (smaller than Factor). The time "
+                        "step, the skin, a wall's contact layer and the wear filter follow these finer "
+                        "particles (the ones the tools meet). Range: [0.001, 1000].");
+      prm.declare_entry("Fine region step", "1.25", Double(0, 1e3),
+                        "[-] Largest ratio between the coarse-graining factors of neighbouring sizes: "
+                        "shells of intermediate sizes around the fine region take the factor from Fine "
+                        "region factor to Factor in equal steps no larger than this, so that no two sizes "
+                        "that meet differ by more (two sizes 2x apart pack up to 12 % denser where they meet; "
+                        "docs/coarse-graining.md). 0: none (the fine particles meet the bulk's). Range: 0 "
+                        "or >= 1.05.");
+      prm.declare_entry("Fine region layer thickness", "1", Double(0.5, 1e3),
+                        "[particle diameters] Thickness of each intermediate shell, in the largest "
+                        "diameter of its particles. Range: [0.5, 1000].");
+      prm.leave_subsection();
+    }
+
+    /// Particles/Settling: when a bed counts as settled (kinetic energy, time) and its bed file.
+    void declare_settling(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Settling");
+      prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, dem::unbounded),
+                        "[J] The poured bed counts as settled when the mean kinetic energy per "
+                        "particle falls below this. Range: >= 0.");
+      prm.declare_entry("Maximum time", "1.0", Double(0, dem::unbounded),
+                        "[s] Longest settling time (the run goes on, with a warning, if the bed has "
+                        "not settled by then). Range: >= 0.");
+      prm.declare_entry("Bed file", "", Anything(),
+                        "Settled-bed file. If it exists, the bed is loaded from it and no particles "
+                        "are generated; otherwise the bed is generated, settled and saved there, so "
+                        "later runs (and every operating cycle) start from the same bed. A relative "
+                        "path is relative to the output directory; a new bed is not written out of it "
+                        "('..'): a bed shared between runs is named by an absolute path. Empty: generate every time. "
+                        "A file ending in .csv, .dump, .lammpstrj or .liggghts is a bed made elsewhere "
+                        "and is imported as it is (not settled again, never written; relative to the "
+                        "parameter file): a CSV table with columns x, y, z and radius or diameter [m] "
+                        "(optional: id, vx, vy, vz, wx, wy, wz), or a LIGGGHTS/LAMMPS text dump "
+                        "(dump custom with id x y z radius or diameter; its last snapshot). Every "
+                        "particle gets Particles/Material; masses follow from its density.");
+      prm.leave_subsection();
+    }
+  } // namespace
+
   void declare_particle_parameters(dealii::ParameterHandler &prm)
   {
     PluginSection section(prm);
     prm.enter_subsection("Particles");
     declare_material(prm, 1e8, 0.25, 3700, true);
     declare_interaction(prm, 0.6, 0.5, "particle-particle");
-    prm.enter_subsection("Generation");
-    section.declare_vector("Region min", {-0.97, -0.97, 0.03}, "[m] Lower corner of the fill box.");
-    section.declare_vector("Region max", {0.97, 0.97, 0.85}, "[m] Upper corner of the fill box.");
-    prm.declare_entry("Region mesh", "", Anything(),
-                      "Optional closed surface mesh (STL/OBJ/PLY/VTK/VTP); particles are placed only "
-                      "inside it (and inside the fill box). Empty: the box alone.");
-    prm.declare_entry("Size distribution", "constant", selection_of(size_distributions),
-                      "Particle radius distribution: constant (Radius), uniform in [Minimum radius, "
-                      "Maximum radius], or normal (mean Radius, Standard deviation) truncated to "
-                      "[Minimum radius, Maximum radius].");
-    prm.declare_entry("Radius", "0.0275", Double(1e-9, dem::unbounded),
-                      "[m] Particle radius (constant), or the mean of the normal distribution. "
-                      "The thesis' coarse-grained pellets (docs/physics.md): 0.0275. Range: > 0.");
-    prm.declare_entry("Minimum radius", "0", Double(0, dem::unbounded), "[m] Smallest radius (uniform, normal). Range: >= 0.");
-    prm.declare_entry("Maximum radius", "0", Double(0, dem::unbounded), "[m] Largest radius (uniform, normal). Range: >= 0.");
-    prm.declare_entry("Standard deviation", "0", Double(0, dem::unbounded), "[m] Of the normal distribution. Range: >= 0.");
-    prm.declare_entry("Count", "0", Integer(0),
-                      "Number of particles to generate; 0: use the solid fraction. Range: >= 0.");
-    prm.declare_entry("Solid fraction", "0.35", Double(0, 0.5),
-                      "[-] Particle volume over fill-region volume, used when Count = 0. "
-                      "Range: [0, 0.5]; random placement (then a sweep of the free space) reaches "
-                      "about 0.35 in a box, then the particles are poured.");
-    prm.declare_entry("Seed", "1", Integer(0), "Random seed of the placement and sizes. Range: >= 0.");
-    section.declare_vector("Initial velocity", {0, 0, -0.5}, "[m/s] Velocity of the generated particles.");
-    prm.leave_subsection();
-    prm.enter_subsection("Coarse graining");
-    prm.declare_entry("Factor", "1", Double(1e-3, 1e3),
-                      "[-] Coarse-graining ratio f: every simulated particle is f times the size of "
-                      "the real one and stands for f^3 of them. Particles/Generation describes the "
-                      "real particles: its radii are multiplied by f and its Count (of real "
-                      "particles) divided by f^3, so the bulk mass stays; Simulation/Skin is "
-                      "multiplied by f and Particles/Settling/Kinetic energy threshold by f^3; "
-                      "density, moduli, restitution and friction stay (Hertz-Mindlin contacts of "
-                      "scaled spheres keep the bulk's stresses, bulk density and angle of repose); "
-                      "the time step follows from the scaled radius. Parameters that stay in "
-                      "absolute units (a fixed Time step, a Layer probe Thickness, Lifetime/"
-                      "Smoothing radius, an imported bed) are named in a warning. What coarse "
-                      "graining does to wear: docs/coarse-graining.md. Range: [0.001, 1000].");
-    section.declare_vector("Fine region min", {0, 0, 0},
-                   "[m] Multi-level coarse graining: a box of the fill region that is filled with "
-                   "particles coarse-grained by Fine region factor instead (its share of the real "
-                   "Count by volume), around the tools' paths; layers of intermediate sizes surround "
-                   "it (Fine region step). Equal corners: none. docs/coarse-graining.md.");
-    section.declare_vector("Fine region max", {0, 0, 0}, "[m] Upper corner of the fine region.");
-    prm.declare_entry("Fine region factor", "1", Double(1e-3, 1e3),
-                      "[-] Coarse-graining ratio inside the fine region (smaller than Factor). The time "
-                      "step, the skin, a wall's contact layer and the wear filter follow these finer "
-                      "particles (the ones the tools meet). Range: [0.001, 1000].");
-    prm.declare_entry("Fine region step", "1.25", Double(0, 1e3),
-                      "[-] Largest ratio between the coarse-graining factors of neighbouring sizes: "
-                      "shells of intermediate sizes around the fine region take the factor from Fine "
-                      "region factor to Factor in equal steps no larger than this, so that no two sizes "
-                      "that meet differ by more (two sizes 2x apart pack up to 12 % denser where they meet; "
-                      "docs/coarse-graining.md). 0: none (the fine particles meet the bulk's). Range: 0 "
-                      "or >= 1.05.");
-    prm.declare_entry("Fine region layer thickness", "1", Double(0.5, 1e3),
-                      "[particle diameters] Thickness of each intermediate shell, in the largest "
-                      "diameter of its particles. Range: [0.5, 1000].");
-    prm.leave_subsection();
-    prm.enter_subsection("Settling");
-    prm.declare_entry("Kinetic energy threshold", "1e-4", Double(0, dem::unbounded),
-                      "[J] The poured bed counts as settled when the mean kinetic energy per "
-                      "particle falls below this. Range: >= 0.");
-    prm.declare_entry("Maximum time", "1.0", Double(0, dem::unbounded),
-                      "[s] Longest settling time (the run goes on, with a warning, if the bed has "
-                      "not settled by then). Range: >= 0.");
-    prm.declare_entry("Bed file", "", Anything(),
-                      "Settled-bed file. If it exists, the bed is loaded from it and no particles "
-                      "are generated; otherwise the bed is generated, settled and saved there, so "
-                      "later runs (and every operating cycle) start from the same bed. A relative "
-                      "path is relative to the output directory; a new bed is not written out of it "
-                      "('..'): a bed shared between runs is named by an absolute path. Empty: generate every time. "
-                      "A file ending in .csv, .dump, .lammpstrj or .liggghts is a bed made elsewhere "
-                      "and is imported as it is (not settled again, never written; relative to the "
-                      "parameter file): a CSV table with columns x, y, z and radius or diameter [m] "
-                      "(optional: id, vx, vy, vz, wx, wy, wz), or a LIGGGHTS/LAMMPS text dump "
-                      "(dump custom with id x y z radius or diameter; its last snapshot). Every "
-                      "particle gets Particles/Material; masses follow from its density.");
-    prm.leave_subsection();
+    declare_generation(prm, section);
+    declare_coarse_graining(prm, section);
+    declare_settling(prm);
     prm.leave_subsection();
   }
 

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <sched.h>
+#include <system_error>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -70,48 +72,80 @@ namespace abrade::coupling
       std::size_t ran    = 0;    ///< the runs this rank started
     };
 
-    /// This rank's share of @p runs (run k on rank k mod @p ranks), @p jobs at a time (0: the
-    /// cores of this machine shared by its @p ranks_here ranks). The progress line counts this
-    /// rank's runs.
-    Share run_share(const std::vector<ChildRun> &runs, int rank, int ranks, int ranks_here, int jobs,
-                    const std::string &what)
+    /// Runs at a time when not told: the cores this process may run on (its MPI rank's
+    /// binding, which its child processes inherit; a container's CPU set), at most this
+    /// machine's cores shared by its @p ranks_here ranks.
+    int default_jobs(int ranks_here)
+    {
+      const int machine = int(std::max(1u, std::thread::hardware_concurrency()));
+      cpu_set_t allowed;
+      const int usable  = ::sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? CPU_COUNT(&allowed) : machine;
+      return std::max(1, std::min(usable, machine / std::max(1, ranks_here)));
+    }
+
+    /// This rank's share of @p runs (run k on rank (@p first + k) mod @p ranks), @p jobs at a
+    /// time (0: default_jobs). The progress line counts this rank's runs. Never throws: a
+    /// failure to start the work fails this rank's runs, so that every rank still meets the
+    /// others in the agreement that follows.
+    Share run_share(const std::vector<ChildRun> &runs, std::size_t first, int rank, int ranks, int ranks_here,
+                    int jobs, const std::string &what)
     {
       std::vector<std::size_t> mine;
-      for (std::size_t k = rank; k < runs.size(); k += ranks)
-        mine.push_back(k);
-      if (jobs <= 0)
-        jobs = int(std::max(1u, std::thread::hardware_concurrency() / unsigned(std::max(1, ranks_here))));
+      for (std::size_t k = 0; k < runs.size(); ++k)
+        if (int((first + k) % std::size_t(ranks)) == rank)
+          mine.push_back(k);
       std::atomic<std::size_t> next{0}, done{0}, started{0}, failed{none};
-      io::ProgressLine         progress(ranks > 1 ? what + " (" + std::to_string(mine.size()) + " of the " +
-                                                   std::to_string(runs.size()) + " runs on rank " +
-                                                   std::to_string(rank) + " of " + std::to_string(ranks) + ")"
-                                                 : what,
-                                        double(mine.size()));
-      std::vector<std::thread> pool;
-      for (int j = 0; j < jobs; ++j)
-        pool.emplace_back([&] {
-          for (std::size_t i; (i = next++) < mine.size();)
+      try
+        {
+          if (jobs <= 0)
+            jobs = default_jobs(ranks_here);
+          io::ProgressLine progress(ranks > 1 ? what + " (" + std::to_string(mine.size()) + " of the " +
+                                                  std::to_string(runs.size()) + " runs on rank " +
+                                                  std::to_string(rank) + " of " + std::to_string(ranks) + ")"
+                                                : what,
+                                    double(mine.size()));
+          std::vector<std::thread> pool;
+          const auto               work = [&] {
+            for (std::size_t i; (i = next++) < mine.size();)
+              {
+                ++started;
+                if (io::run_child_command(runs[mine[i]].command) != 0)
+                  for (std::size_t was = failed.load(); mine[i] < was && !failed.compare_exchange_weak(was, mine[i]);)
+                    ;
+                progress.update(double(++done), std::to_string(done.load()) + "/" + std::to_string(mine.size()) + " runs");
+              }
+          };
+          try
             {
-              ++started;
-              if (io::run_child_command(runs[mine[i]].command) != 0)
-                for (std::size_t was = failed.load(); mine[i] < was && !failed.compare_exchange_weak(was, mine[i]);)
-                  ;
-              progress.update(double(++done), std::to_string(done.load()) + "/" + std::to_string(mine.size()) + " runs");
+              for (int j = 0; j < jobs; ++j)
+                pool.emplace_back(work);
             }
-        });
-      for (auto &t : pool)
-        t.join();
-      progress.finish();
+          catch (const std::system_error &) // (no more threads: the ones started do the work)
+            {
+              if (pool.empty())
+                work();
+            }
+          for (auto &t : pool)
+            t.join();
+          progress.finish();
+        }
+      catch (const std::exception &)
+        {
+          if (!mine.empty())
+            for (std::size_t was = failed.load(); mine[0] < was && !failed.compare_exchange_weak(was, mine[0]);)
+              ;
+        }
       return {failed.load(), started.load()};
     }
 
-    // A batch as rank 0 broadcasts it: "batch", the jobs, then each run's directory and
-    // command, every field as its length and its text; "end" and the exit code end the study.
+    // A batch as rank 0 broadcasts it: "batch", the rank of its first run, the jobs, then each
+    // run's directory and command, every field as its length and its text; "end" and the exit
+    // code end the study.
     std::string field(const std::string &text) { return std::to_string(text.size()) + ":" + text; }
 
-    std::string batch_text(const std::vector<ChildRun> &runs, int jobs)
+    std::string batch_text(const std::vector<ChildRun> &runs, std::size_t first, int jobs)
     {
-      std::string text = field("batch") + field(std::to_string(jobs));
+      std::string text = field("batch") + field(std::to_string(first)) + field(std::to_string(jobs));
       for (const auto &r : runs)
         text += field(r.dir) + field(r.command);
       return text;
@@ -148,15 +182,22 @@ namespace abrade::coupling
         }
       return f >= 1e300 ? none : std::size_t(f);
     }
+
+    /// The rank of the next batch's first run: the batches go round the ranks (a batch of
+    /// fewer runs than ranks does not always land on the first ranks).
+    std::size_t next_first = 0;
   } // namespace
 
   void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what)
   {
     const dem::Parallel ranks = dem::Parallel::world(); // (under mpirun: rank 0, StudyRanks)
+    const std::size_t   first = next_first;
+    next_first                = (next_first + runs.size()) % std::size_t(ranks.size());
     if (ranks.distributed())
-      ranks.broadcast(batch_text(runs, jobs), 0);
+      ranks.broadcast(batch_text(runs, first, jobs), 0);
     const int         here   = ranks.ranks_on_this_machine();
-    const std::size_t failed = agree_on(ranks, run_share(runs, ranks.rank(), ranks.size(), here, jobs, what), what);
+    const Share       share  = run_share(runs, first, ranks.rank(), ranks.size(), here, jobs, what);
+    const std::size_t failed = agree_on(ranks, share, what);
     if (failed != none)
       throw RunError(what + ": run " + runs[failed].dir + " failed (see " + runs[failed].dir + ".log)");
   }
@@ -179,17 +220,41 @@ namespace abrade::coupling
 
   int StudyRanks::serve() const
   {
-    for (;;)
+    try
       {
-        const std::vector<std::string> f = fields_of(ranks.broadcast("", 0));
-        if (f.at(0) == "end")
-          return std::stoi(f.at(1));
-        std::vector<ChildRun> runs;
-        for (std::size_t k = 2; k + 1 < f.size(); k += 2)
-          runs.push_back({f[k], f[k + 1]});
-        const int here = ranks.ranks_on_this_machine();
-        agree_on(ranks, run_share(runs, ranks.rank(), ranks.size(), here, std::stoi(f.at(1)), ""), "");
+        for (;;)
+          {
+            const std::string text = ranks.broadcast("", 0);
+            std::vector<std::string> f;
+            std::vector<ChildRun>    runs;
+            std::size_t              first = 0;
+            int                      jobs  = 0;
+            bool                     read  = true;
+            try // (a batch this rank cannot read fails here, after the others agree)
+              {
+                f = fields_of(text);
+                if (f.at(0) == "end")
+                  return std::stoi(f.at(1));
+                first = std::stoul(f.at(1));
+                jobs  = std::stoi(f.at(2));
+                for (std::size_t k = 3; k + 1 < f.size(); k += 2)
+                  runs.push_back({f[k], f[k + 1]});
+              }
+            catch (const std::exception &)
+              {
+                read = false;
+              }
+            const int here  = ranks.ranks_on_this_machine();
+            Share     share = read ? run_share(runs, first, ranks.rank(), ranks.size(), here, jobs, "") : Share{0, 0};
+            agree_on(ranks, share, "");
+          }
       }
+    catch (const std::exception &e) // (outside a batch: the leader would wait for ever)
+      {
+        std::cerr << "abrade: error: rank " << ranks.rank() << " of a study: " << e.what() << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
+    return 1;
   }
 
   CsvTable read_csv_table(const std::string &path)

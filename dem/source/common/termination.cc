@@ -103,7 +103,8 @@ namespace abrade::io
 
   namespace
   {
-    /// This process's environment without the MPI launcher's variables.
+    /// This process's environment without the MPI launcher's variables (Open MPI's and PMIx's,
+    /// MPICH's Hydra and PMI; OPAL_PREFIX and the like, which say where Open MPI is, stay).
     std::vector<std::string> environment_outside_mpi()
     {
       std::vector<std::string> kept;
@@ -111,7 +112,7 @@ namespace abrade::io
         {
           const std::string v = *e;
           bool              mpi = false;
-          for (const char *prefix : {"OMPI_", "PMIX_", "PMI_", "OPAL_", "HYDRA_", "MPI_LOCALRANKID", "MPI_LOCALNRANKS"})
+          for (const char *prefix : {"OMPI_", "PMIX_", "PMI_", "HYDRA_", "MPI_LOCALRANKID", "MPI_LOCALNRANKS"})
             mpi = mpi || v.rfind(prefix, 0) == 0;
           if (!mpi)
             kept.push_back(v);

@@ -198,6 +198,11 @@ namespace abrade::dem
     });
   }
 
+  // The pair kernel, one function of about a hundred lines on purpose: the scan of the
+  // neighbour list, the batched contact law and the scatter of the forces share one parallel
+  // region and its restrict-qualified pointers, in one body for the compiler to see whole. A
+  // split is a change to the engine's hottest loop, to be made with its own interleaved
+  // benchmark (bench/knife_bed.sh with ABRADE_BASELINE), not as a tidy-up.
   template <bool rotation, class Law>
   void Simulation::pair_forces_with()
   {

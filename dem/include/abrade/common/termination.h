@@ -25,6 +25,7 @@ namespace abrade::io
   /// Runs @p command with /bin/sh in a process group of its own, registered as above while it
   /// runs, and returns its exit status as std::system() does (-1 if it could not start). The
   /// command gets this process's environment without the MPI launcher's variables (OMPI_*,
-  /// PMIX_*, PMI_*, ...): a child of an MPI rank (a study's run) is no part of its MPI job.
+  /// PMIX_*, PMI_*, ...; Open MPI settings given as OMPI_MCA_* go too): a child of an MPI rank
+  /// (a study's run) is no part of its MPI job.
   int run_child_command(const std::string &command);
 } // namespace abrade::io

@@ -35,10 +35,12 @@ namespace abrade::coupling
 
   /// Runs @p runs, @p jobs at a time (0: one per core), with a progress line named @p what;
   /// throws RunError naming a failed run's log (the first in @p runs' order). Under mpirun
-  /// (called on rank 0, the others serving: StudyRanks) run k goes to rank k mod ranks, and
-  /// each rank runs its share @p jobs at a time (0: its machine's cores shared by the ranks on
-  /// it). The runs are the same processes either way (each outside the MPI job), so a study's
-  /// results do not depend on how many ranks ran it.
+  /// (called on rank 0, the others serving: StudyRanks) the runs go round the ranks (run k of
+  /// a batch to rank (f + k) mod ranks, f where the last batch ended), and each rank runs its
+  /// share @p jobs at a time (0: the cores it is bound to, at most its machine's cores shared
+  /// by the ranks on it; its runs inherit its binding). The runs are the same processes either
+  /// way (each outside the MPI job), so a study's results do not depend on how many ranks ran
+  /// it.
   void run_children(const std::vector<ChildRun> &runs, int jobs, const std::string &what);
 
   /// A study's ranks under mpirun (serial otherwise: one rank that leads). Rank 0 leads: it
