@@ -32,7 +32,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -173,14 +172,14 @@ namespace abrade::coupling
       return q;
     }
 
-    /// The part into @p dir: the mesh with its cells' quality (VTU), its surface (STL, and VTP
-    /// with the boundary ids: 1 wears, 2 clamped) and its faces with their roles (the
-    /// preview's, returned).
+    /// The part into @p dir, its files named @p stem: the mesh with its cells' quality (VTU),
+    /// its surface (STL, and VTP with the boundary ids: 1 wears, 2 clamped) and its faces with
+    /// their roles (the preview's, returned).
     io::PolyData write_the_part(const dealii::Triangulation<3> &tria, const PartMesh &m, const PartParameters &part,
-                                const fem::SolidSurface &surface, const std::string &dir)
+                                const fem::SolidSurface &surface, const std::string &dir,
+                                const std::string &stem)
     {
-      const std::string stem = std::filesystem::path(dir).filename().string(); // (io::part_folder)
-      fem::SolidOutput  out(dir, stem);
+      fem::SolidOutput out(dir, stem);
       out.write(tria, {{"scaled_jacobian", fem::cell_scaled_jacobians(tria)}}, 0.0);
       io::write_stl(dir + "/" + stem + ".stl", surface.as_polydata());
       io::write_vtp(dir + "/" + stem + "_surface.vtp", surface.as_polydata());
@@ -263,7 +262,8 @@ namespace abrade::coupling
       ctx.log.line(n);
     const PartParameters part = read_part_parameters(ctx.parameters);
     fem::init_mpi_once();
-    const std::string dir = ctx.output.subdirectory(ctx.output.part_folder());
+    const std::string folder = ctx.output.part_folder(); // (also the files' stem: part/part.pvd)
+    const std::string dir    = ctx.output.subdirectory(folder);
     PartMesh          m;
     {
       io::ScopedTimer t(ctx.timers, "mesh part");
@@ -275,14 +275,14 @@ namespace abrade::coupling
     const double            volume  = fem::mesh_volume(tria);
     const fem::MeshQuality  q       = checked_quality(tria, volume, part.density, ctx.log);
     const fem::SolidSurface surface = fem::extract_surface(tria);
-    const io::PolyData      faces   = write_the_part(tria, m, part, surface, dir);
+    const io::PolyData      faces   = write_the_part(tria, m, part, surface, dir, folder);
 
     io::Json &r = ctx.results["part"];
     describe_the_part(r, tria, volume, surface, q, part.density);
     if (!part.from_file)
       {
         r["analytic_volume"] = part.geometry.volume();
-        part.geometry.write_step(dir + "/" + ctx.output.part_folder() + ".step"); // the design as CAD, in mm
+        part.geometry.write_step(dir + "/" + folder + ".step"); // the design as CAD, in mm
       }
     else
       describe_the_files_faces(r, m, warnings);

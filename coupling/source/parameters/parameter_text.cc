@@ -154,21 +154,44 @@ namespace abrade::coupling
     return s + key;
   }
 
+  namespace
+  {
+    /// A --set's entry (@p path, @p key, @p value) rewritten as it is spelt now: a renamed
+    /// subsection, a renamed choice, a moved entry. Returns the old spellings it met.
+    struct OldSpellings
+    {
+      const RenamedSubsection *subsection = nullptr;
+      const RenamedValue      *value      = nullptr;
+      const MovedEntry        *moved      = nullptr;
+    };
+    OldSpellings to_now(std::vector<std::string> &path, std::string &key, std::string &value)
+    {
+      OldSpellings old;
+      for (const auto &r : renamed_subsections)
+        if (!path.empty() && path.front() == r.old_name)
+          {
+            old.subsection = &r;
+            path.front()   = r.name;
+          }
+      if ((old.value = renamed_value(path, key, value)))
+        value = old.value->value;
+      if ((old.moved = moved_entry(path, key)))
+        {
+          path.push_back(old.moved->now);
+          key = old.moved->key;
+        }
+      return old;
+    }
+  } // namespace
+
   std::string entry_as_now(const std::string &set)
   {
     std::vector<std::string> path = io::list_items(set.substr(0, set.find('=')), '/');
     if (path.empty())
       return "";
-    std::string key = path.back();
+    std::string key = path.back(), value;
     path.pop_back();
-    for (const auto &r : renamed_subsections)
-      if (!path.empty() && path.front() == r.old_name)
-        path.front() = r.name;
-    if (const MovedEntry *m = moved_entry(path, key))
-      {
-        path.push_back(m->now);
-        key = m->key;
-      }
+    to_now(path, key, value);
     return entry_path(path, key);
   }
 
@@ -186,7 +209,8 @@ namespace abrade::coupling
     // the top-level entries (a renamed value under its old name), then one block per top-level
     // subsection (from its line to its "end" in the first column), sorted by name as deal.II
     // prints them
-    const std::vector<std::string>                   lines = lines_of(printed);
+    const std::vector<std::string>                   lines   = lines_of(printed);
+    const std::vector<LineEntry>                     entries = entries_by_line(lines);
     std::string                                      head;
     std::vector<std::pair<std::string, std::string>> blocks; // (name, text)
     for (std::size_t n = 0; n < lines.size(); ++n)
@@ -194,11 +218,9 @@ namespace abrade::coupling
         if (lines[n].rfind("subsection ", 0) != 0)
           {
             std::string line = lines[n];
-            const auto  eq   = line.find('=');
             for (const auto &r : renamed_values)
-              if (eq != std::string::npos && starts_with_keyword(line, "set") &&
-                  trim(line.substr(4, eq - 4)) == r.key && trim(line.substr(eq + 1)) == r.value)
-                line = line.substr(0, eq + 1) + " " + r.old_value;
+              if (entries[n].path.empty() && entries[n].key == r.key && entries[n].value == r.value)
+                line = line.substr(0, line.find('=') + 1) + " " + r.old_value;
             head += line + "\n";
             continue;
           }
@@ -243,24 +265,14 @@ namespace abrade::coupling
     {
       for (auto &o : overrides)
         {
-          const std::string where = "--set '" + o.text + "'";
-          for (const auto &r : renamed_subsections)
-            if (!o.path.empty() && o.path.front() == r.old_name)
-              {
-                notes.push_back({where, read_as(r)});
-                o.path.front() = r.name;
-              }
-          if (const RenamedValue *v = renamed_value(o.path, o.key, o.value))
-            {
-              notes.push_back({where, read_as(*v)});
-              o.value = v->value;
-            }
-          if (const MovedEntry *m = moved_entry(o.path, o.key))
-            {
-              notes.push_back({where, read_as(*m, o.path)});
-              o.path.push_back(m->now);
-              o.key = m->key;
-            }
+          const std::string  where = "--set '" + o.text + "'";
+          const OldSpellings old   = to_now(o.path, o.key, o.value);
+          if (old.subsection)
+            notes.push_back({where, read_as(*old.subsection)});
+          if (old.value)
+            notes.push_back({where, read_as(*old.value)});
+          if (old.moved) // (read in the subsection that now holds old.moved->now)
+            notes.push_back({where, read_as(*old.moved, {o.path.begin(), o.path.end() - 1})});
         }
     }
   } // namespace

@@ -267,7 +267,8 @@ namespace abrade::report
     /// The worn part at the design, the middle and the last update, and its worst region.
     void worn_part_pictures(HtmlPage &page, const std::string &dir, const Tree &r, const std::string &part)
     {
-      const std::string pvd   = dir + "/" + io::part_folder(dir) + "/" + io::part_folder(dir) + ".pvd";
+      const std::string part_files = io::part_folder(dir); // (the folder and the files' stem)
+      const std::string pvd   = dir + "/" + part_files + "/" + part_files + ".pvd";
       const auto        files = fs::exists(pvd) ? pvd_files(pvd) : std::vector<std::pair<double, std::string>>();
       if (files.empty())
         return;

@@ -2,7 +2,6 @@
 // side, waiting, and collecting what each wrote (child_runs.h).
 #include <abrade/common/error.h>
 #include <abrade/common/external.h>
-#include <abrade/common/list_items.h>
 #include <abrade/common/progress.h>
 #include <abrade/common/termination.h>
 #include <abrade/coupling/parameters/parameter_text.h>
@@ -19,7 +18,6 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <mutex>
 #include <sstream>
 #include <thread>
 
@@ -95,6 +93,10 @@ namespace abrade::coupling
         if (int((first + k) % std::size_t(ranks)) == rank)
           mine.push_back(k);
       std::atomic<std::size_t> next{0}, done{0}, started{0}, failed{none};
+      const auto               fail = [&failed](std::size_t k) { // (the lowest failed index stays)
+        for (std::size_t was = failed.load(); k < was && !failed.compare_exchange_weak(was, k);)
+          ;
+      };
       try
         {
           if (jobs <= 0)
@@ -110,8 +112,7 @@ namespace abrade::coupling
               {
                 ++started;
                 if (io::run_child_command(runs[mine[i]].command) != 0)
-                  for (std::size_t was = failed.load(); mine[i] < was && !failed.compare_exchange_weak(was, mine[i]);)
-                    ;
+                  fail(mine[i]);
                 progress.update(double(++done), std::to_string(done.load()) + "/" + std::to_string(mine.size()) + " runs");
               }
           };
@@ -132,8 +133,7 @@ namespace abrade::coupling
       catch (const std::exception &)
         {
           if (!mine.empty())
-            for (std::size_t was = failed.load(); mine[0] < was && !failed.compare_exchange_weak(was, mine[0]);)
-              ;
+            fail(mine[0]);
         }
       return {failed.load(), started.load()};
     }
