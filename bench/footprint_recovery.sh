@@ -60,12 +60,12 @@ footprints="0.00815 0.0122 0.0183 0.04125 0.0619"
 runs=(--run "$out/candidate")
 for r in $footprints; do
   life "replay_$r" --set "Lifetime/Smoothing radius=$r" --set "Lifetime/Wear source=replay" \
-    --set "Lifetime/Replay run=$out/candidate"
+    --set "Lifetime/Replay/Run=$out/candidate"
   runs+=(--run "$out/replay_$r")
 done
 # 6. the replay's own error: at the truth's footprint and W
 life replay_truth --set "Wall knife/Wear/Archard/Coefficient=3e-14" --set "Lifetime/Smoothing radius=0.01375" \
-  --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/candidate"
+  --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/candidate"
 
 # 3. the scans
 for u in 8 12; do
@@ -108,7 +108,7 @@ parallel "life dem2_$(radius 0) --set \"Wall knife/Wear/Archard/Coefficient=$w1\
 runs2=(--run "$out/dem2_$(radius 0)" --run "$out/dem2_$(radius -1)" --run "$out/dem2_$(radius 1)")
 for k in -2 2; do
   life "replay2_$(radius $k)" --set "Lifetime/Smoothing radius=$(radius $k)" --set "Lifetime/Wear source=replay" \
-    --set "Lifetime/Replay run=$out/dem2_$(radius 0)"
+    --set "Lifetime/Replay/Run=$out/dem2_$(radius 0)"
   runs2+=(--run "$out/replay2_$(radius $k)")
 done
 for m in scan8:compare8/measured_depths.csv scan12:compare12/measured_depths.csv both:both_scans.csv; do

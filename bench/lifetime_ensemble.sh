@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Wall-clock time of the lifetime worked example (cases/knife_bed/lifetime.prm: two beds per
-# update) with the beds run side by side on groups of MPI ranks (Lifetime/Ranks per bed), against
+# update) with the beds run side by side on groups of MPI ranks (Lifetime/DEM/Ranks per bed), against
 # one process, on this machine.
 #
 #   bench/lifetime_ensemble.sh [--case FILE.prm] [--set ENTRY=VALUE]... [--updates N] [--repeat N]
@@ -10,7 +10,7 @@
 #   np1        one process, the default threads (all cores)
 #   np1-t1     one process, one thread
 #   np2        mpirun -np 2, one thread each: the two beds side by side, one rank each
-#   np2-shared mpirun -np 2, Ranks per bed = 2: every bed on both ranks, one after the other
+#   np2-shared mpirun -np 2, DEM/Ranks per bed = 2: every bed on both ranks, one after the other
 # Each run starts in a fresh directory (its beds settled in the run, as every update settles its
 # fresh ones). The script also checks that np2's trajectory.csv is byte-identical to np1's: a
 # bed on a group of one rank is the bed of one process. Writes results.md and runs.txt.
@@ -80,7 +80,7 @@ for ((round = 1; round <= repeat; ++round)); do
       np1) one_run $way $round 1 ;;
       np1-t1) one_run $way $round 1 --set "Simulation/Threads=1" ;;
       np2) one_run $way $round 2 --set "Simulation/Threads=1" ;;
-      np2-shared) one_run $way $round 2 --set "Simulation/Threads=1" --set "Lifetime/Ranks per bed=2" ;;
+      np2-shared) one_run $way $round 2 --set "Simulation/Threads=1" --set "Lifetime/DEM/Ranks per bed=2" ;;
       *) echo "unknown way $way" >&2; exit 2 ;;
     esac
   done

@@ -10,7 +10,7 @@
 #  - `run DIR/parameters.prm --output DIR` with the old names reruns it (it was refused as
 #    edited);
 #  - the part job's directory gets its preview.
-# Each fails with io::part_folder answering "part" only, or with_old_names left out of run.
+# Each fails with io::part_folder answering "part" only, or earlier_printings left out of run.
 #   check_earlier_run_layout.sh ABRADE SOURCE_DIR OUTDIR
 set -euo pipefail
 abrade=$(realpath "$1") src=$2 out=$3
@@ -24,25 +24,54 @@ to_knife_layout() {
   for f in "$1"/knife/part*; do mv "$f" "$1/knife/knife${f##*/part}"; done
   sed -i 's/file="part_/file="knife_/' "$1/knife/knife.pvd"
 }
-# parameters.prm as an earlier abrade printed it: subsection Knife where it sorts
+# parameters.prm as the earliest abrade that still reads back printed it (written here, apart
+# from abrade's own earlier_printings): subsection Knife for Part; the wear sources' entries flat
+# in Lifetime (Analytic wear rate, ..., Replay run, Ranks per bed); Knife mount and Knife
+# protrusion; every wall's Motion with its velocity table (a fixed wall's empty). deal.II's print:
+# entries, then subsections, each sorted by its mangled name, the keys padded to the longest.
 with_knife_subsection() {
   python3 - "$1" <<'PY'
-import sys
-lines = open(sys.argv[1]).read().split("\n")
-head, blocks, n = [], [], 0
-while n < len(lines):
-    if not lines[n].startswith("subsection "):
-        head.append(lines[n]); n += 1; continue
-    name, block = lines[n][11:], [lines[n]]
-    while lines[n] != "end":
-        n += 1; block.append(lines[n])
-    n += 1
-    if name == "Part":
-        name, block[0] = "Knife", "subsection Knife"
-    blocks.append((name, block))
-blocks.sort(key=lambda b: b[0])
-text = "\n".join(l for l in head if l) + "\n" + "".join("\n".join(b) + "\n" for _, b in blocks)
-open(sys.argv[1], "w").write(text)
+import re, sys
+def mangled(s):
+    return "".join(c if c.isascii() and c.isalnum() else "_%02x" % ord(c) for c in s)
+def read(lines):
+    top = {"entries": {}, "subs": {}}; stack = [top]
+    for l in lines:
+        t = l.strip()
+        if t.startswith("subsection "):
+            stack.append(stack[-1]["subs"].setdefault(t[11:], {"entries": {}, "subs": {}}))
+        elif t == "end":
+            stack.pop()
+        elif t.startswith("set "):
+            key, value = l.split(" = ", 1)
+            stack[-1]["entries"][key.strip()[4:].strip()] = value
+    return top
+def write(s, indent, out):
+    width = max([len(k) for k in s["entries"]] or [0])
+    for k in sorted(s["entries"], key=mangled):
+        out.append(indent + "set " + k.ljust(width) + " = " + s["entries"][k])
+    for name in sorted(s["subs"], key=mangled):
+        out.append(indent + "subsection " + name); write(s["subs"][name], indent + "  ", out); out.append(indent + "end")
+top = read(open(sys.argv[1]).read().split("\n"))
+top["subs"]["Knife"] = top["subs"].pop("Part")
+life = top["subs"]["Lifetime"]
+for sub, key, old in [("Analytic", "Wear rate", "Analytic wear rate"), ("Analytic", "Wear is", "Analytic wear is"),
+                      ("Analytic", "Seed scatter", "Analytic seed scatter"), ("Replay", "Run", "Replay run"),
+                      ("DEM", "Ranks per bed", "Ranks per bed")]:
+    life["entries"][old] = life["subs"][sub]["entries"].pop(key)
+for sub in ("Analytic", "Replay", "DEM"):
+    del life["subs"][sub]
+for name, wall in top["subs"].items():
+    if name.startswith("Wall "):
+        for key, old in [("Mounted on", "Knife mount"), ("Protrusion", "Knife protrusion")]:
+            if key in wall["entries"]:
+                wall["entries"][old] = wall["entries"].pop(key)
+        motion = wall["subs"]["Motion"]["entries"]
+        motion.setdefault("Velocities", "penetration: 0, 0, -1.5; travel: 1.5, 0, 0" if name == "Wall knife" else "")
+        motion.setdefault("Angular velocities", "")
+out = []
+write(top, "", out)
+open(sys.argv[1], "w").write("\n".join(out) + "\n")
 PY
 }
 

@@ -20,7 +20,7 @@ dem() { "$abrade" run "$src/cases/lifetime/small.prm" --quiet --output "$out/$1"
 dem truth_w 3e-14
 dem run_w 2e-14
 analytic() { "$abrade" run "$src/tests/lifetime/analytic_edge.prm" --quiet --output "$out/$1" \
-               --set "Lifetime/Analytic wear rate=$2" --set "Lifetime/Maximum updates=4" > /dev/null; }
+               --set "Lifetime/Analytic/Wear rate=$2" --set "Lifetime/Maximum updates=4" > /dev/null; }
 analytic truth_pattern "2e-6*exp(-z/0.05)"
 analytic right_pattern "1e-6*exp(-z/0.05)"
 analytic wrong_pattern "1e-6*exp(-z/0.15)"

@@ -24,8 +24,10 @@ rm -rf "$out" && mkdir -p "$out"
 cat > "$out/band.prm" <<PRM
 include $src/tests/lifetime/analytic_edge.prm
 subsection Lifetime
-  set Analytic wear rate = 3e-6*(z < zlow + 0.004)
-  set Analytic wear is   = volume
+  subsection Analytic
+    set Wear rate = 3e-6*(z < zlow + 0.004)
+    set Wear is   = volume
+  end
   set Smoothing radius   = 0.01
   set Maximum updates    = 2
   set Cycles per update  = 1500
@@ -37,7 +39,7 @@ PRM
   --reference "$out/truth/part/part_00000.stl" --tonnes 3000 --no-registration --output "$out/scan" > /dev/null 2>&1
 for r in 0.005 0.01 0.02 0.04; do
   "$abrade" run "$out/band.prm" --quiet --output "$out/r$r" --set "Lifetime/Smoothing radius=$r" \
-    --set "Lifetime/Analytic wear rate=2e-6*(z < zlow + 0.004)" --set "Lifetime/Cycles per update=2250" > /dev/null &
+    --set "Lifetime/Analytic/Wear rate=2e-6*(z < zlow + 0.004)" --set "Lifetime/Cycles per update=2250" > /dev/null &
 done
 wait
 # the measured depths with a gauge's noise (0.1 mm, seeded)

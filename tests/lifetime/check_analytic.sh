@@ -56,7 +56,7 @@ cmp "$out/uniform_crossed.csv" "$out/uniform_crossed/trajectory.csv" || { echo "
 "$abrade" run "$dir/analytic_uniform.prm" --output "$out/uniform_coarse" --quiet \
   --set "Lifetime/Depth increment fraction=0.17" --set "Lifetime/Maximum depth=0.007" > /dev/null
 seeds() { "$abrade" run "$dir/analytic_uniform.prm" --output "$out/$1" --quiet --set "Lifetime/Seeds=$2" \
-            --set "Lifetime/Analytic seed scatter=0.1" --set "Lifetime/Maximum updates=2" \
+            --set "Lifetime/Analytic/Seed scatter=0.1" --set "Lifetime/Maximum updates=2" \
             --set "Lifetime/Cycles per update=1500" "${@:3}" > /dev/null; }
 seeds uniform_seeds 4,5,6
 for s in 4 5 6; do seeds "seed_$s" "$s"; done
@@ -74,7 +74,7 @@ seeds uniform_seeds_resumed 4,5,6 --resume
 # gauge read it on the surfaces in memory; ended by the worn mass: the section through the
 # deepest point (check_sections.py)
 "$abrade" run "$dir/analytic_edge.prm" --output "$out/edge_gauged" --quiet --set "Lifetime/Maximum depth=0" \
-  --set "Lifetime/Maximum edge recession=0.02" --set "Lifetime/Analytic wear rate=2e-6*exp(-z/0.05)*(1+10*x)" > /dev/null
+  --set "Lifetime/Maximum edge recession=0.02" --set "Lifetime/Analytic/Wear rate=2e-6*exp(-z/0.05)*(1+10*x)" > /dev/null
 python3 "$dir/../report/check_sections.py" "$out/edge_gauged" --part-height 0.25
 "$abrade" run "$dir/analytic_edge.prm" --output "$out/edge_mass" --quiet --set "Lifetime/Maximum depth=0" \
   --set "Lifetime/Maximum worn mass=0.05" > /dev/null

@@ -84,7 +84,7 @@ variant negative 'r["scale_standard_error_fit"] = -0.1'
 refused "negative standard error" "negative" --set "Lifetime/Calibration=$out/negative.json"
 variant vague 'r["scale_standard_error_fit"] = 10 * r["scale"]'
 refused "standard error above W" "uncertain by more than itself" --set "Lifetime/Calibration=$out/vague.json"
-refused "analytic rate" "Calibration" --set "Lifetime/Wear source=analytic" --set "Lifetime/Analytic wear rate=1e-6" \
+refused "analytic rate" "Calibration" --set "Lifetime/Wear source=analytic" --set "Lifetime/Analytic/Wear rate=1e-6" \
   --set "Lifetime/Tonnes per cycle=1" --set "Lifetime/Calibration=$out/calibration/calibration.json"
 
 python3 - "$out" <<'PY'

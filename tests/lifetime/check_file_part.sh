@@ -45,7 +45,7 @@ example=$src/cases/bolted_edge
 "$abrade" run "$example/lifetime.prm" --set Job=part --output "$out/edge_made" --quiet \
   --set "Part/File=$out/edge.step" > /dev/null
 "$abrade" run "$example/lifetime.prm" --output "$out/edge_life" --quiet --set "Lifetime/Wear source=analytic" \
-  --set "Lifetime/Analytic wear rate=1e-6*exp(-z/0.05)" --set "Lifetime/Smoothing radius=0.02" \
+  --set "Lifetime/Analytic/Wear rate=1e-6*exp(-z/0.05)" --set "Lifetime/Smoothing radius=0.02" \
   --set "Lifetime/Seeds=1" --set "Lifetime/Maximum depth=0.004" --set "Lifetime/Maximum recession=0" \
   --set "Lifetime/Depth increment fraction=0.1" > /dev/null
 

@@ -20,7 +20,7 @@
 #           rate over it (forward Euler in the tonnes), which leaves the tip above the front (it
 #           receded too far) by an error first order in the update: 1.0, 0.56, 0.36 mm at 20 mm with updates of
 #           10, 5, 2.5 % of the mesh (session 20).
-#  volume:  the same rate given as a volume (Analytic wear is = volume: rate x tonnes x area
+#  volume:  the same rate given as a volume (Analytic/Wear is = volume: rate x tonnes x area
 #           removed, as the DEM's Archard volume is): each update's depth is scaled so that the
 #           knife loses that volume (the offset alone loses 0.985 of it: the faces cut each other
 #           short at the convex edges). The depth after every update must be the exact inner
@@ -42,7 +42,7 @@ knife=(--set Part/Thickness=0.03 --set "Part/Bevel height=0.04" --set "Part/Mesh
        --set Part/Length=0.4 --set Part/Height=0.5 --set "Lifetime/Maximum updates=60")
 "$abrade" run "$dir/analytic_uniform.prm" "${knife[@]}" --output "$out/uniform" --quiet > /dev/null
 cases=uniform:12000
-"$abrade" run "$dir/analytic_uniform.prm" "${knife[@]}" --set "Lifetime/Analytic wear is=volume" \
+"$abrade" run "$dir/analytic_uniform.prm" "${knife[@]}" --set "Lifetime/Analytic/Wear is=volume" \
   --output "$out/volume" --quiet > /dev/null
 if [[ $long == long ]]; then
   "$abrade" run "$dir/analytic_uniform.prm" "${knife[@]}" --set "Lifetime/Maximum depth=0.014" \
@@ -54,7 +54,7 @@ fi
   --set "Lifetime/Depth increment fraction=0.05" --output "$out/edge" --quiet > /dev/null
 "$abrade" run "$dir/analytic_edge.prm" "${knife[@]}" --set "Lifetime/Maximum depth=0" \
   --set "Lifetime/Maximum recession=0.02" --set "Lifetime/Recession points=0.2, 0, 0" \
-  --set "Lifetime/Depth increment fraction=0.05" --set "Lifetime/Analytic wear is=volume" \
+  --set "Lifetime/Depth increment fraction=0.05" --set "Lifetime/Analytic/Wear is=volume" \
   --output "$out/edge_volume" --quiet > /dev/null
 python3 - "$out" "$dir" $cases <<'PY'
 import csv, json, os, sys

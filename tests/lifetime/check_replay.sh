@@ -28,7 +28,7 @@ abrade=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 updates=3
 source "$(dirname "$0")/small_case_runs.sh"
-replay() { local dir=$1; shift; run "$dir" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" "$@"; }
+replay() { local dir=$1; shift; run "$dir" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" "$@"; }
 run stored
 replay same
 run dem_r15 --set "Lifetime/Smoothing radius=0.015"
@@ -37,13 +37,13 @@ run dem_w4 --set "Wall knife/Wear/Archard/Coefficient=4e-14"
 replay replay_w4 --set "Wall knife/Wear/Archard/Coefficient=4e-14"
 replay beyond --set "Lifetime/Maximum updates=5"
 # a replay of a replay (its carried wear stored again) at its footprint: the same run again
-run replay_of_replay --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/replay_r15" \
+run replay_of_replay --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/replay_r15" \
   --set "Lifetime/Smoothing radius=0.015"
 cmp -s "$out/replay_r15/trajectory.csv" "$out/replay_of_replay/trajectory.csv" || { echo "a replay of a replay differs"; exit 1; }
 # a user's own files in the output directory's wear/ stay
 mkdir -p "$out/keep/wear" && echo "mine" > "$out/keep/wear/notes.txt"
 "$abrade" run "$case_file" --quiet --output "$out/keep" --set "Lifetime/Seeds=1,2,3" --set "Lifetime/Maximum updates=1" \
-  --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" > /dev/null
+  --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" > /dev/null
 [ -f "$out/keep/wear/notes.txt" ] && [ -f "$out/keep/wear/update_00001.wear" ] || { echo "wear/ of the output directory not kept"; exit 1; }
 
 for f in trajectory.csv life_beds.csv; do
@@ -127,21 +127,21 @@ print("replay: a footprint fitted on replays alone (%.3g mm; the truth 15 mm) wa
                                       1e3 * fit["dem"]["smoothing_radius_low"], 1e3 * fit["dem"]["smoothing_radius_high"]))
 PY
 
-refused "no directory given" "Replay run" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run="
-refused "missing directory" "$out/none" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/none"
+refused "no directory given" "Replay/Run" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run="
+refused "missing directory" "$out/none" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/none"
 mkdir -p "$out/empty"
-refused "no stored wear" "holds no stored wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/empty"
-refused "another knife" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Part/Height=0.3"
-refused "another bevel" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" --set "Part/Bevel height=0.08"
-refused "other particles" "Coarse graining/Factor" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/stored" \
+refused "no stored wear" "holds no stored wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/empty"
+refused "another knife" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Height=0.3"
+refused "another bevel" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Bevel height=0.08"
+refused "other particles" "Coarse graining/Factor" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" \
   --set "Particles/Coarse graining/Factor=1.5"
 set +e
 "$abrade" run "$case_file" --quiet --output "$out/stored" --set "Lifetime/Maximum updates=1" --set "Lifetime/Wear source=replay" \
-  --set "Lifetime/Replay run=$out/stored" > "$out/refused.log" 2>&1
+  --set "Lifetime/Replay/Run=$out/stored" > "$out/refused.log" 2>&1
 rc=$?
 set -e
 [ "$rc" = 2 ] && grep -q "own output directory" "$out/refused.log" || { echo "a replay into its own stored run: exit $rc"; cat "$out/refused.log"; exit 1; }
 cp -r "$out/stored" "$out/corrupt"
 sed -i '0,/^tonnes_start/s/^tonnes_start = .*/tonnes_start = 1/' "$out/corrupt/wear/update_00001.wear"
-refused "corrupt stored wear" "update_00001.wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay run=$out/corrupt"
+refused "corrupt stored wear" "update_00001.wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/corrupt"
 echo "replay: refusals exit 2"

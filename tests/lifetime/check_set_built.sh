@@ -19,7 +19,7 @@ set -euo pipefail
 abrade=$1 dir=$2 out=$3
 rm -rf "$out"
 for is in depth volume; do
-  "$abrade" run "$dir/analytic_tip.prm" --set "Lifetime/Analytic wear rate=1e-6" --set "Lifetime/Analytic wear is=$is" \
+  "$abrade" run "$dir/analytic_tip.prm" --set "Lifetime/Analytic/Wear rate=1e-6" --set "Lifetime/Analytic/Wear is=$is" \
     --set "Lifetime/Cycles per update=1" --set "Lifetime/Tonnes per cycle=3000" --set "Lifetime/Maximum updates=1" \
     --output "$out/$is" --quiet > /dev/null
 done

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Wear on a chisel's tip followed to 30 mm of tip recession, on tests/lifetime/analytic_tip.prm's
-# knife (30 mm chisel, 40 mm bevel, 10 mm mesh), the rate given as a volume (Analytic wear is =
+# knife (30 mm chisel, 40 mm bevel, 10 mm mesh), the rate given as a volume (Analytic/Wear is =
 # volume) and spread over a footprint as the loop spreads a DEM's wear (Lifetime/Smoothing radius,
 # volume-conserving). Two rates:
 #  edge line (issue 32's tip check): 1 um/t within 3 mm of the edge line below the point
@@ -24,7 +24,7 @@
 # largest edge recession is the tip of the worn knife's exported surface cut at its station
 # (computed here from the STL, 1e-5 m); the life no shorter than a sharp tip under the full rate gives (10,533 t: a
 # spread or blunted tip recedes slower).
-# zlow (the knife's lowest wearable point now, a variable of Analytic wear rate): a band
+# zlow (the knife's lowest wearable point now, a variable of Lifetime/Analytic/Wear rate): a band
 # 1e-6*(z < zlow + 0.003) keeps wearing the tip in the third update of 1000 t (1.4 mm), where the
 # fixed band z < 3 mm has stopped (the tip rose 4.8 mm in two; the run ends: no wear).
 # A smoothing radius below half the mesh size is warned about (checked on one update).
@@ -32,14 +32,14 @@
 set -euo pipefail
 abrade=$1 dir=$2 out=$3
 rm -rf "$out"
-tip=(--set "Lifetime/Analytic wear is=volume" --set "Lifetime/Maximum depth=0" --set "Lifetime/Maximum recession=0.03"
+tip=(--set "Lifetime/Analytic/Wear is=volume" --set "Lifetime/Maximum depth=0" --set "Lifetime/Maximum recession=0.03"
      --set "Lifetime/Maximum updates=90")
-"$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Analytic wear rate=1e-6*(z < zedge + 0.003)" \
+"$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Analytic/Wear rate=1e-6*(z < zedge + 0.003)" \
   --set "Lifetime/Smoothing radius=0.01" --output "$out/edge_line" --quiet > /dev/null
-"$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Analytic wear rate=1e-6*(z < zlow + 0.003)" \
+"$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Analytic/Wear rate=1e-6*(z < zlow + 0.003)" \
   --set "Lifetime/Smoothing radius=0.01" --output "$out/lowest" --quiet > /dev/null
 for r in 0.01 0.005; do
-  "$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Analytic wear rate=1e-6*(z < 0.003 + 1e-6*t/0.3511)" \
+  "$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Analytic/Wear rate=1e-6*(z < 0.003 + 1e-6*t/0.3511)" \
     --set "Lifetime/Smoothing radius=$r" --output "$out/band_ahead_$r" --quiet > /dev/null
 done
 "$abrade" run "$dir/analytic_tip.prm" "${tip[@]}" --set "Lifetime/Smoothing radius=0.004" \
@@ -47,7 +47,7 @@ done
 grep -q "Smoothing radius (0.004 m) is below half the Part/Mesh size" "$out/narrow/log.txt" ||
   { echo "narrow: no warning about a smoothing radius below half the mesh size"; exit 1; }
 for band in "z < 0.003" "z < zlow + 0.003"; do
-  "$abrade" run "$dir/analytic_tip.prm" --set "Lifetime/Analytic wear rate=1e-6*($band)" \
+  "$abrade" run "$dir/analytic_tip.prm" --set "Lifetime/Analytic/Wear rate=1e-6*($band)" \
     --set "Lifetime/Maximum updates=3" --output "$out/band_${band//[^a-z0-9]/_}" \
     --quiet > /dev/null || true
 done

@@ -2,7 +2,7 @@
 """An independent solution of the worn knife's cross-section, to check the lifetime loop against.
 
 Every point of the wearable surface recedes along its normal at the local rate F(y, z) per tonne
-(the run's `Analytic wear rate`, a function of the current position): the worn region after t
+(the run's `Lifetime/Analytic/Wear rate`, a function of the current position): the worn region after t
 tonnes is { T < t }, where T is the arrival time of the front, the viscosity solution of the
 eikonal equation |grad T| F = 1 with T = 0 on the design's boundary. Far from the knife's ends
 the section at mid-length is two-dimensional, so T is solved on a fine grid of the y-z section
@@ -171,7 +171,7 @@ def main():
     ap.add_argument("--top", type=float, default=0.12, help="[m] the grid's top, above the edge's lowest point")
     a = ap.parse_args()
     prm = open(os.path.join(a.run, "parameters.prm")).read()
-    expression = re.search(r"set\s+Analytic wear rate\s*=\s*(.+)", prm).group(1).strip()
+    expression = re.search(r"set\s+(?:Analytic )?[Ww]ear rate\s*=\s*(.+)", prm).group(1).strip()
     rows = list(csv.DictReader(open(os.path.join(a.run, "trajectory.csv"))))
     update = a.update or len(rows)
     tonnes = float(rows[update - 1]["tonnes"])

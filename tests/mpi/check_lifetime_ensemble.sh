@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The beds of a lifetime update side by side under mpirun (Lifetime/Ranks per bed, dem/ensemble.h),
+# The beds of a lifetime update side by side under mpirun (Lifetime/DEM/Ranks per bed, dem/ensemble.h),
 # on the small case made to exercise everything a bed hands on: DEM warnings (an overlap limit
 # of 8 %, On error = continue), a particle radius that differs from bed to bed (uniform sizes:
 # the last bed's largest is the filter's), the tonnes from the payload (Tonnes per cycle = 0).

@@ -1,4 +1,4 @@
-// The analytic wear source's variables of the knife's current shape (Lifetime/Analytic wear rate,
+// The analytic wear source's variables of the knife's current shape (Lifetime/Analytic/Wear rate,
 // coupling/source/lifetime/analytic_wear_source.cc), against a surface whose answer is known: a
 // chisel of length 0.15 m, 30 mm thick, 40 mm bevel, sheared so that its edge line is a V along
 // x (z = s |x - 75 mm|, s = 0.2: 15 mm up at both ends). Every cut x = const is the same section

@@ -3,6 +3,7 @@
 // `Wear/Archard/Coefficient`, where it is now, in the file and in --set, with a note naming
 // where it was read; the last setting still wins whichever spelling gives it, and every later
 // line of the file keeps its number in messages.
+#include <abrade/coupling/parameters/earlier_printings.h>
 #include <abrade/coupling/parameters/parameter_file.h>
 #include <abrade/coupling/parameters/parameter_text.h>
 
@@ -53,6 +54,13 @@ namespace
         return e.what();
       }
     return "";
+  }
+
+  std::string text_of(const std::string &file)
+  {
+    std::ostringstream text;
+    text << std::ifstream(file).rdbuf();
+    return text.str();
   }
 
   bool has_note(const abrade::coupling::ParameterFile &f, const std::string &text)
@@ -238,25 +246,129 @@ TEST(MovedEntries, TheKnifeJobIsReadAsThePartJob)
   EXPECT_TRUE(has_note(b, "--set 'Job=knife': Job = knife is read as Job = part"));
   const std::string printed = b.canonical_text();
   EXPECT_NE(printed.find("set Job   = part\n"), std::string::npos) << printed.substr(0, 80);
-  EXPECT_NE(abrade::coupling::with_old_names(printed).find("set Job   = knife\n"), std::string::npos);
+  const auto earlier = abrade::coupling::earlier_printings(printed); // (layouts 2, 1, 0)
+  ASSERT_EQ(earlier.size(), 3u);
+  EXPECT_NE(earlier[0].find("set Job   = part\n"), std::string::npos);
+  EXPECT_NE(earlier[1].find("set Job   = knife\n"), std::string::npos);
+  EXPECT_NE(earlier[2].find("set Job   = knife\n"), std::string::npos);
   // another job is read as it is, without a note
   abrade::coupling::ParameterFile c(knife_bed, {"Job=dem"});
   EXPECT_EQ(c.handler().get("Job"), "dem");
   EXPECT_TRUE(c.notes().empty());
 }
 
-// a lifetime checkpoint hashes the printed parameters: one made before the rename hashed them
-// with subsection Knife in its sorted place. printed_before_part_rename.prm is the
-// parameters.prm an abrade before the rename wrote (cases/lifetime/small.prm, coarse-grained);
-// read now and printed, it says Part, and with the old names it is that file again, byte for byte
+// a lifetime checkpoint hashes the printed parameters, and a run directory's parameters.prm is
+// them: an earlier abrade printed them under its names, in its places and with the entries it
+// had. printed_before_part_rename.prm is the parameters.prm an abrade before subsection Knife
+// became Part wrote (cases/lifetime/small.prm, coarse-grained): read now and printed, it says
+// Part, and as the earliest layout printed it, it is that file again, byte for byte
 TEST(MovedEntries, TheParametersPrintedWithTheOldNamesAreWhatAnEarlierAbradePrinted)
 {
-  const std::string  file = ABRADE_TESTS_DIR "/unit/printed_before_part_rename.prm";
-  std::ostringstream old_printed;
-  old_printed << std::ifstream(file).rdbuf();
+  const std::string               file = ABRADE_TESTS_DIR "/unit/printed_before_part_rename.prm";
   abrade::coupling::ParameterFile f(file, {});
   const std::string               now = f.canonical_text();
   EXPECT_EQ(now.find("subsection Knife"), std::string::npos);
   EXPECT_NE(now.find("subsection Part"), std::string::npos);
-  EXPECT_EQ(abrade::coupling::with_old_names(now), old_printed.str());
+  EXPECT_EQ(abrade::coupling::earlier_printings(now).back(), text_of(file));
+}
+
+// printed_before_wear_source_subsections.prm is the parameters.prm the abrade before the wear
+// sources' subsections wrote (a run of the grab concepts test; its two directories made
+// relative): the sources' entries flat in Lifetime, Knife mount and Knife protrusion, a fixed
+// wall's velocity table (the knives' and the container's, empty). Read now and printed, it has
+// none of them; as the layout before printed it, it is that file again, byte for byte. Each
+// later layout undone alone is needed: without the velocity table put back, or the entries
+// moved back, it differs.
+TEST(MovedEntries, TheParametersAreWhatTheAbradeBeforeTheWearSourceSubsectionsPrinted)
+{
+  const std::string               file = ABRADE_TESTS_DIR "/unit/printed_before_wear_source_subsections.prm";
+  abrade::coupling::ParameterFile f(file, {});
+  const std::string               now = f.canonical_text();
+  EXPECT_EQ(now.find("Analytic wear rate"), std::string::npos);
+  EXPECT_EQ(now.find("Knife mount"), std::string::npos);
+  EXPECT_NE(now.find("  subsection Analytic\n"), std::string::npos);
+  EXPECT_NE(now.find("  set Mounted on          = left\n"), std::string::npos);
+  const auto earlier = abrade::coupling::earlier_printings(now);
+  EXPECT_EQ(earlier.front(), text_of(file));
+  // ... and the same parameters printed now are the text itself again: none of the layouts
+  // before reads as today's
+  for (const auto &text : earlier)
+    EXPECT_NE(text, now);
+}
+
+// each wear source's entries moved into its own subsection of Lifetime (the plugins own them):
+// the old spellings of an older file and of --set are read there, with a note each
+TEST(MovedEntries, AWearSourcesEntriesAreReadInItsSubsection)
+{
+  const std::string file = case_file("old_source.prm", "subsection Lifetime\n"
+                                                       "  set Wear source = analytic\n"
+                                                       "  set Analytic wear rate = 2e-6*(z < 0.01)   # an older file\n"
+                                                       "  set Analytic wear is = volume\n"
+                                                       "  set Replay run = elsewhere\n"
+                                                       "end\n");
+  abrade::coupling::ParameterFile f(file, {"Lifetime/Ranks per bed=2", "Lifetime/Analytic seed scatter=0.1"});
+  auto &prm = f.handler();
+  prm.enter_subsection("Lifetime");
+  EXPECT_EQ(prm.get("Wear source"), "analytic");
+  prm.enter_subsection("Analytic");
+  EXPECT_EQ(prm.get("Wear rate"), "2e-6*(z < 0.01)");
+  EXPECT_EQ(prm.get("Wear is"), "volume");
+  EXPECT_EQ(prm.get_double("Seed scatter"), 0.1);
+  prm.leave_subsection();
+  prm.enter_subsection("Replay");
+  EXPECT_EQ(prm.get("Run"), "elsewhere");
+  prm.leave_subsection();
+  prm.enter_subsection("DEM");
+  EXPECT_EQ(prm.get_integer("Ranks per bed"), 2);
+  prm.leave_subsection();
+  prm.leave_subsection();
+  EXPECT_TRUE(has_note(f, file + ":4: Lifetime/Analytic wear rate is read as Lifetime/Analytic/Wear rate"));
+  EXPECT_TRUE(has_note(f, file + ":5: Lifetime/Analytic wear is is read as Lifetime/Analytic/Wear is"));
+  EXPECT_TRUE(has_note(f, file + ":6: Lifetime/Replay run is read as Lifetime/Replay/Run"));
+  EXPECT_TRUE(has_note(f, "--set 'Lifetime/Ranks per bed=2': Lifetime/Ranks per bed is read as "
+                          "Lifetime/DEM/Ranks per bed"));
+  EXPECT_TRUE(has_note(f, "--set 'Lifetime/Analytic seed scatter=0.1': Lifetime/Analytic seed scatter is read as "
+                          "Lifetime/Analytic/Seed scatter"));
+  // the old key where it never was is an unknown entry that says where it went
+  const std::string elsewhere = refusal(case_file("misplaced.prm", "subsection Output\n"
+                                                                   "  set Analytic wear rate = 1e-6\n"
+                                                                   "end\n"));
+  EXPECT_NE(elsewhere.find("'Analytic wear rate' moved: subsection Analytic, set Wear rate (inside Lifetime: each "
+                           "wear source has its subsection)"),
+            std::string::npos)
+    << elsewhere;
+}
+
+// the solid model's mounting entries are named for any part (the part on a shell's lip need not
+// be a knife): Knife mount and Knife protrusion of an older file or --set are read under their
+// names now, in whichever wall they are
+TEST(MovedEntries, TheMountingEntriesAreReadUnderTheirNamesNow)
+{
+  const std::string file = case_file("old_mount.prm", "subsection Wall knife\n"
+                                                      "  set Geometry         = solid model\n"
+                                                      "  set Knife mount      =        # an older file\n"
+                                                      "  set Knife protrusion = 0.03\n"
+                                                      "end\n");
+  abrade::coupling::ParameterFile f(file, {});
+  auto &prm = f.handler();
+  prm.enter_subsection("Wall knife");
+  EXPECT_EQ(prm.get_double("Protrusion"), 0.03);
+  EXPECT_EQ(prm.get("Mounted on"), "");
+  prm.leave_subsection();
+  EXPECT_TRUE(has_note(f, file + ":4: Wall knife/Knife mount is read as Wall knife/Mounted on (its name now"));
+  EXPECT_TRUE(has_note(f, file + ":5: Wall knife/Knife protrusion is read as Wall knife/Protrusion (its name now"));
+  abrade::coupling::ParameterFile g(knife_bed, {"Wall knife/Geometry=solid model", "Wall knife/Knife protrusion=0.04"});
+  g.handler().enter_subsection("Wall knife");
+  EXPECT_EQ(g.handler().get_double("Protrusion"), 0.04);
+  g.handler().leave_subsection();
+  EXPECT_TRUE(has_note(g, "--set 'Wall knife/Knife protrusion=0.04': Wall knife/Knife protrusion is read as Wall "
+                          "knife/Protrusion"));
+  // outside a wall it is an unknown entry that says its name now
+  const std::string elsewhere = refusal(case_file("misplaced_mount.prm", "subsection Part\n"
+                                                                         "  set Knife protrusion = 0.03\n"
+                                                                         "end\n"));
+  EXPECT_NE(elsewhere.find("'Knife protrusion' is now 'Protrusion' (in subsection Wall NAME: the part mounted need "
+                           "not be a knife)"),
+            std::string::npos)
+    << elsewhere;
 }

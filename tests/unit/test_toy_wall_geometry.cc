@@ -130,7 +130,7 @@ TEST(ToyWallGeometry, AWallHasItsOwnGeometrysEntriesOnly)
   EXPECT_NE(container.find("Tetrahedron edge"), std::string::npos);
   EXPECT_EQ(container.find("Box min"), std::string::npos);
   EXPECT_EQ(knife.find("Tetrahedron edge"), std::string::npos); // (a solid model)
-  EXPECT_NE(knife.find("Knife mount"), std::string::npos);
+  EXPECT_NE(knife.find("Mounted on"), std::string::npos);
   EXPECT_EQ(knife.find("Shell radius"), std::string::npos);
   // another geometry's entry set on the wall is refused, saying whose it is
   try

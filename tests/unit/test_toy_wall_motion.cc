@@ -166,3 +166,49 @@ TEST(RigidBodyMotion, RefusesWhatItCannotBe)
     << body;
   EXPECT_EQ(refusal({"Wall knife/Motion/Inertia=0,0,0.0", "Wall knife/Motion/Gravity=true"}), ""); // (the defaults)
 }
+
+// The velocity table (Motion/Velocities, Angular velocities) is the prescribed and rigid-body
+// motions' own: a fixed wall has none, and a velocity given it is refused (it was ignored
+// without a word when every wall had the table); at its default (empty) it is a no-op.
+TEST(VelocityTable, IsTheEntryOfTheMotionsThatFollowIt)
+{
+  const std::string fixed = refusal({"Wall container/Motion/Velocities=travel: 1, 0, 0"});
+  EXPECT_NE(fixed.find("'Velocities' is an entry of Motion/Type = prescribed, and wall container's Motion/Type is "
+                       "fixed"),
+            std::string::npos)
+    << fixed;
+  EXPECT_NE(refusal({"Wall container/Motion/Angular velocities=travel: 0, 0, 1"}).find("'Angular velocities' is an "
+                                                                                         "entry of Motion/Type"),
+            std::string::npos);
+  EXPECT_EQ(refusal({"Wall container/Motion/Velocities=", "Wall container/Motion/Angular velocities="}), "");
+
+  // read by the motions that take it: per phase, the phases not listed at rest
+  abrade::coupling::ParameterFile params(
+    "", {"Wall knife/Motion/Velocities=travel: 1, 2, 3", "Wall knife/Motion/Angular velocities=penetration: 0, 0, 4",
+         "Wall container/Motion/Type=rigid body", "Wall container/Motion/Mass=5",
+         "Wall container/Motion/Velocities=settle: 0, 0, -1"});
+  const abrade::coupling::DemCase c = abrade::coupling::read_dem_case(params);
+  const WallMotion               &container = c.walls[0].wall.motion, &knife = c.walls[1].wall.motion;
+  EXPECT_EQ(knife.phases.at("travel").velocity, Vec3(1, 2, 3));
+  EXPECT_EQ(knife.phases.at("travel").angular_velocity, Vec3::Zero());
+  EXPECT_EQ(knife.phases.at("penetration").velocity, Vec3::Zero());
+  EXPECT_EQ(knife.phases.at("penetration").angular_velocity, Vec3(0, 0, 4));
+  EXPECT_EQ(container.phases.at("settle").velocity, Vec3(0, 0, -1));
+  EXPECT_EQ(container.phases.count("travel"), 0u);
+
+  EXPECT_NE(refusal({"Wall knife/Motion/Velocities=bogus: 1, 0, 0"}).find("unknown phase 'bogus'"), std::string::npos);
+  EXPECT_NE(refusal({"Wall knife/Motion/Velocities=travel: 1, 0"}).find("phase 'travel': expected three finite numbers"),
+            std::string::npos);
+  EXPECT_NE(refusal({"Wall knife/Motion/Velocities=travel 1, 0, 0"}).find("expected 'phase: x, y, z'"),
+            std::string::npos);
+}
+
+// The default case's knife moves without a Velocities line (its wall's own default).
+TEST(VelocityTable, TheKnifesDefaultMovesIt)
+{
+  abrade::coupling::ParameterFile params("", {});
+  const abrade::coupling::DemCase c = abrade::coupling::read_dem_case(params);
+  EXPECT_EQ(c.walls[1].wall.name, "knife");
+  EXPECT_EQ(c.walls[1].wall.motion.phases.at("travel").velocity, Vec3(1.5, 0, 0));
+  EXPECT_EQ(c.walls[1].wall.motion.phases.at("penetration").velocity, Vec3(0, 0, -1.5));
+}

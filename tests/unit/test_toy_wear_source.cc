@@ -48,13 +48,14 @@ namespace
   {
   public:
     std::string name() const override { return "toy"; }
-    std::string documentation() const override { return "a depth of Toy rate per cycle everywhere"; }
+    std::string documentation() const override { return "a depth of Toy/Rate per cycle everywhere"; }
+    std::string section() const override { return "Toy"; }
     bool        from_particles() const override { return false; }
     void        declare_parameters(dealii::ParameterHandler &prm) const override
     {
-      prm.declare_entry("Toy rate", "1e-6", dealii::Patterns::Double(0), "[m] Wear source = toy: depth per cycle.");
+      prm.declare_entry("Rate", "1e-6", dealii::Patterns::Double(0), "[m] Wear source = toy: depth per cycle.");
     }
-    void parse_parameters(abrade::coupling::ParameterFile &file) override { rate = file.handler().get_double("Toy rate"); }
+    void parse_parameters(abrade::coupling::ParameterFile &file) override { rate = file.handler().get_double("Rate"); }
     std::unique_ptr<WearSource> make(const WearSourceSetUp &) const override
     {
       return std::make_unique<UniformDepth>(rate);
@@ -79,7 +80,7 @@ TEST(ToyWearSource, IsAChoiceBesideTheBuiltInOnes)
 TEST(ToyWearSource, DrivesALifeToTheAnalyticCrossing)
 {
   abrade::io::Json results = run_analytic_lifetime("abrade_toy_wear_source",
-                                                   {"Lifetime/Wear source=toy", "Lifetime/Toy rate=2e-6",
+                                                   {"Lifetime/Wear source=toy", "Lifetime/Toy/Rate=2e-6",
                                                     "Lifetime/Maximum depth=0.003", "Lifetime/Maximum updates=4"});
   const std::string summary = results.dump();
   EXPECT_NE(summary.find("\"wear_source\": \"toy\""), std::string::npos) << summary;
@@ -93,7 +94,7 @@ TEST(ToyWearSource, NamesItsOutputsAfterTheWearField)
   std::string            dir;
   const abrade::io::Json results =
     run_analytic_lifetime("abrade_toy_wear_field",
-                          {"Lifetime/Wear source=toy", "Lifetime/Toy rate=2e-6", "Lifetime/Maximum depth=0.003",
+                          {"Lifetime/Wear source=toy", "Lifetime/Toy/Rate=2e-6", "Lifetime/Maximum depth=0.003",
                            "Lifetime/Maximum updates=1", "Output/Wear field=oka_volume"},
                           &dir);
   const std::string summary = results.dump();

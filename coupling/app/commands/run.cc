@@ -14,12 +14,13 @@
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters/output_parameters.h>
 #include <abrade/coupling/parameters/parameter_file.h>
-#include <abrade/coupling/parameters/parameter_text.h>
+#include <abrade/coupling/parameters/earlier_printings.h>
 #include <abrade/coupling/parameters/simulation_parameters.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/mpi_once.h>
 #include <abrade/report/report.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -34,7 +35,7 @@ namespace abrade::app
   {
     /// DIR/parameters.prm: every parameter the run used. When the run reads its parameters from
     /// that very file (`run d/parameters.prm --output d`), it is left as it is if it holds exactly
-    /// that (or that as an abrade before a subsection's rename printed it), and the run is
+    /// that (or that as an earlier abrade printed it: earlier_printings.h), and the run is
     /// refused if not (the user's edits would be lost).
     void write_parameters(const coupling::ParameterFile &params, const std::string &canonical,
                           const std::string &path)
@@ -46,8 +47,9 @@ namespace abrade::app
             std::ifstream      in(input);
             std::ostringstream text;
             text << in.rdbuf();
-            if (text.str() == canonical || text.str() == coupling::with_old_names(canonical))
-              return; // (an earlier abrade's run: the same parameters under the old names)
+            const auto earlier = coupling::earlier_printings(canonical);
+            if (text.str() == canonical || std::find(earlier.begin(), earlier.end(), text.str()) != earlier.end())
+              return; // (an earlier abrade's run: the same parameters as it printed them)
             throw InputError(input, "is the output directory's parameters.prm, which the run writes: copy it out of "
                                     "the output directory, or choose another --output");
           }

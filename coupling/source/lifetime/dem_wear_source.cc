@@ -1,5 +1,5 @@
 // The DEM wear source: one operating cycle per bed seed on the knife's current surface; under
-// mpirun the beds run side by side on groups of the ranks (Lifetime/Ranks per bed).
+// mpirun the beds run side by side on groups of the ranks (Lifetime/DEM/Ranks per bed).
 #include <abrade/common/timer.h>
 #include <abrade/coupling/dem_run/bed_preparation.h>
 #include <abrade/coupling/parameters/part_parameters.h>
@@ -87,7 +87,7 @@ namespace abrade::coupling::lifetime
       DemCase          c;
       std::vector<int> base_seeds; ///< their beds are kept (the first update's); derived ones deleted
       double           tonnes_per_cycle;
-      int              ranks_per_bed; ///< Lifetime/Ranks per bed (0: the ranks shared out among the beds)
+      int              ranks_per_bed; ///< Lifetime/DEM/Ranks per bed (0: the ranks shared out among the beds)
       bool             announced = false;
       std::shared_ptr<dem::ThreadGovernor> governor; ///< the first cycle's, carried on
       JobContext      &ctx;
@@ -133,7 +133,7 @@ namespace abrade::coupling::lifetime
         const int fewest = ensemble.smallest_group(), most = ensemble.largest_group();
         ctx.log.line("beds side by side on " + std::to_string(ensemble.groups()) + " groups of ranks (" +
                      (fewest == most ? std::to_string(most) : std::to_string(fewest) + " or " + std::to_string(most)) +
-                     " rank(s) each; Lifetime/Ranks per bed)");
+                     " rank(s) each; Lifetime/DEM/Ranks per bed)");
       }
 
       /// One cycle of bed @p seed on the ranks of @p group.

@@ -15,7 +15,7 @@
 #include <abrade/coupling/lifetime/stored_wear.h>
 #include <abrade/coupling/lifetime/update_size.h>
 #include <abrade/coupling/lifetime/wear_rates.h>
-#include <abrade/coupling/parameters/parameter_text.h>
+#include <abrade/coupling/parameters/earlier_printings.h>
 #include <abrade/dem/wear.h>
 #include <abrade/dem/parallel.h>
 #include <abrade/fem/mpi_once.h>
@@ -144,8 +144,9 @@ namespace abrade::coupling::lifetime
                                                                    io::format_number(calibration.smoothing_radius, 17)
                                                                  : std::string();
     hash = io::fnv1a_hex(ctx.parameters.identity_text() + calibrated);
-    // (a checkpoint of an abrade before subsection Knife became Part hashed that spelling)
-    hash_before_renames = io::fnv1a_hex(with_old_names(ctx.parameters.identity_text()) + calibrated);
+    // (a checkpoint of an earlier abrade hashed the parameters as it printed them)
+    for (const std::string &text : earlier_printings(ctx.parameters.identity_text()))
+      earlier_hashes.push_back(io::fnv1a_hex(text + calibrated));
     volume0           = part_model->volume();
     const std::size_t n_criteria = criteria.size();
     history           = {{0.0, std::vector<double>(n_criteria, 0.0)}};
@@ -305,9 +306,10 @@ namespace abrade::coupling::lifetime
                                state_format + "'); start afresh without --resume");
     // (a checkpoint of an earlier abrade hashed the parameters with the output directory's
     // name: resumed when made in the directory of this run's name)
-    if (state.text("parameter_hash") != hash && state.text("parameter_hash") != hash_before_renames &&
-        state.text("parameter_hash") != io::fnv1a_hex(ctx.parameters.canonical_text()))
-      throw InputError(file, "the checkpoint was made with other parameters (hash " + state.text("parameter_hash") +
+    const std::string kept = state.text("parameter_hash");
+    if (kept != hash && std::find(earlier_hashes.begin(), earlier_hashes.end(), kept) == earlier_hashes.end() &&
+        kept != io::fnv1a_hex(ctx.parameters.canonical_text()))
+      throw InputError(file, "the checkpoint was made with other parameters (hash " + kept +
                                ", now " + hash + "); resume with the same parameter file and --set options" +
                                (calibration.coefficient > 0 ? " and the same Lifetime/Calibration file content" : ""));
     if (state.number("update") != double(done))
@@ -398,7 +400,7 @@ namespace abrade::coupling::lifetime
       }
     catch (const std::domain_error &e) // an analytic rate that is negative or not a number
       {
-        ctx.parameters.fail({"Lifetime"}, source_choice->rate_parameter(), e.what());
+        source_choice->fail_on_rate(ctx.parameters, e.what());
       }
     store_wear(wear, beds);
     // the DEM's warnings (Simulation/On error = continue): each kind logged once, all counted
@@ -432,7 +434,7 @@ namespace abrade::coupling::lifetime
       }
     catch (const std::domain_error &e)
       {
-        ctx.parameters.fail({"Lifetime"}, source_choice->rate_parameter(), e.what());
+        source_choice->fail_on_rate(ctx.parameters, e.what());
       }
     store_wear(wear, beds);
     resolve_smoothing(wear);

@@ -1,5 +1,6 @@
 // Subsection Lifetime (lifetime_settings.h): the tonnes, the beds and the updates, the filter,
-// the gauges, the wear source and the end-of-life criteria (each declaring its own entries), the
+// the gauges, the wear source (each source's entries in its subsection) and the end-of-life
+// criteria (each declaring its own entries), the
 // interval asked for and a calibration; declared here and read and checked by the loop that
 // uses them (LifetimeLoop::read_settings()).
 #include <abrade/dem/parameter_section.h>
@@ -109,7 +110,9 @@ namespace abrade::coupling::lifetime
     source_choice     = make_wear_source_choice(prm.get("Wear source"));
     if (!source_choice) // (the pattern lists the registered ones: a program without its plugins)
       ctx.parameters.fail({"Lifetime"}, "Wear source", "no wear source of that name is registered in this program");
+    prm.enter_subsection(source_choice->section());
     source_choice->parse_parameters(ctx.parameters);
+    prm.leave_subsection();
     s.target_interval = prm.get_double("Target interval");
     s.max_beds        = prm.get_integer("Maximum beds");
     s.calibration_file = ctx.parameters.path_beside(prm.get("Calibration"));

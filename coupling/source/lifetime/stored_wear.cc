@@ -180,7 +180,7 @@ namespace abrade::coupling::lifetime
         const std::string dir = directory + "/wear";
         std::error_code   ec;
         if (!fs::is_directory(directory, ec))
-          throw InputError(directory, "no such directory (Replay run is taken relative to the parameter file; give "
+          throw InputError(directory, "no such directory (Lifetime/Replay/Run is taken relative to the parameter file; give "
                                       "an absolute path for a run elsewhere)");
         if (!fs::is_directory(dir, ec))
           throw InputError(directory, "holds no stored wear (wear/update_*.wear): not a lifetime run's "

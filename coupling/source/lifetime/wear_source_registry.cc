@@ -1,5 +1,6 @@
 // The registry of wear sources (Lifetime/Wear source, wear_source.h): each source's file adds its
-// factory with ABRADE_REGISTER_WEAR_SOURCE before main() runs.
+// factory with ABRADE_REGISTER_WEAR_SOURCE before main() runs; each declares its entries in its
+// own subsection of Lifetime.
 #include <abrade/coupling/lifetime/wear_source.h>
 
 #include <algorithm>
@@ -34,6 +35,10 @@ namespace abrade::coupling::lifetime
       }
     prm.declare_entry("Wear source", default_source, dealii::Patterns::Selection(names), doc + ".");
     for (const auto &c : all)
-      c->declare_parameters(prm);
+      {
+        prm.enter_subsection(c->section());
+        c->declare_parameters(prm);
+        prm.leave_subsection();
+      }
   }
 } // namespace abrade::coupling::lifetime

@@ -1,6 +1,7 @@
 // A parameter file's text line by line, and the entries of a wall's replaced geometry or motion
 // left out of it (parameter_text.h).
 #include <abrade/common/list_items.h>
+#include <abrade/coupling/parameters/parameter_renames.h>
 #include <abrade/coupling/parameters/parameter_text.h>
 #include <abrade/coupling/walls/wall_parameters.h>
 
@@ -85,32 +86,24 @@ namespace abrade::coupling
 
   namespace
   {
-    /// An entry that moved: key @p old_key of a subsection named @p in is now @p key of its
-    /// subsection @p now.
-    struct MovedEntry
-    {
-      const char *in, *old_key, *now, *key;
-    };
-    // each wear law's parameters moved into the law's own subsection of Wear (the plugins)
-    constexpr MovedEntry moved_entries[] = {{"Wear", "Archard coefficient", "Archard", "Coefficient"},
-                                            {"Wear", "Finnie coefficient", "Finnie", "Coefficient"}};
+    using namespace renames;
 
-    /// A top-level subsection that was renamed: @p old_name is now @p name.
-    struct RenamedSubsection
+    /// Whether subsection @p path is one that entry @p m was in.
+    bool was_in(const MovedEntry &m, const std::vector<std::string> &path)
     {
-      const char *old_name, *name;
-    };
-    // the part that wears need not be a knife (a liner, a bucket's lip)
-    constexpr RenamedSubsection renamed_subsections[] = {{"Knife", "Part"}};
+      const std::string in = m.in;
+      if (in.back() == ' ')
+        return path.size() == 1 && path[0].rfind(in, 0) == 0;
+      return !path.empty() && path.back() == in;
+    }
 
-    /// A choice of a top-level entry that was renamed: @p key = @p old_value is now @p key =
-    /// @p value.
-    struct RenamedValue
+    /// The subsection @p m is in now, from @p path, where it was.
+    std::vector<std::string> now_in(const MovedEntry &m, std::vector<std::string> path)
     {
-      const char *key, *old_value, *value;
-    };
-    // the job that builds the part alone (the part need not be a knife)
-    constexpr RenamedValue renamed_values[] = {{"Job", "knife", "part"}};
+      if (*m.now)
+        path.push_back(m.now);
+      return path;
+    }
 
     /// The renamed value a top-level entry @p key = @p value gives under its old name (nullptr:
     /// none).
@@ -139,7 +132,7 @@ namespace abrade::coupling
     const MovedEntry *moved_entry(const std::vector<std::string> &path, const std::string &key)
     {
       for (const auto &m : moved_entries)
-        if (!path.empty() && path.back() == m.in && key == m.old_key)
+        if (was_in(m, path) && key == m.old_key)
           return &m;
       return nullptr;
     }
@@ -177,8 +170,8 @@ namespace abrade::coupling
         value = old.value->value;
       if ((old.moved = moved_entry(path, key)))
         {
-          path.push_back(old.moved->now);
-          key = old.moved->key;
+          path = now_in(*old.moved, path);
+          key  = old.moved->key;
         }
       return old;
     }
@@ -199,44 +192,10 @@ namespace abrade::coupling
   {
     for (const auto &m : moved_entries)
       if (key == m.old_key)
-        return "'" + key + "' moved: subsection " + m.now + ", set " + m.key + " (inside " + m.in +
-               ": each wear law has its subsection).";
+        return *m.now ? "'" + key + "' moved: subsection " + m.now + ", set " + m.key + " (inside " + m.in + ": " +
+                          m.why + ")."
+                      : "'" + key + "' is now '" + m.key + "' (in subsection " + m.in + "NAME: " + m.why + ").";
     return "";
-  }
-
-  std::string with_old_names(const std::string &printed)
-  {
-    // the top-level entries (a renamed value under its old name), then one block per top-level
-    // subsection (from its line to its "end" in the first column), sorted by name as deal.II
-    // prints them
-    const std::vector<std::string>                   lines   = lines_of(printed);
-    const std::vector<LineEntry>                     entries = entries_by_line(lines);
-    std::string                                      head;
-    std::vector<std::pair<std::string, std::string>> blocks; // (name, text)
-    for (std::size_t n = 0; n < lines.size(); ++n)
-      {
-        if (lines[n].rfind("subsection ", 0) != 0)
-          {
-            std::string line = lines[n];
-            for (const auto &r : renamed_values)
-              if (entries[n].path.empty() && entries[n].key == r.key && entries[n].value == r.value)
-                line = line.substr(0, line.find('=') + 1) + " " + r.old_value;
-            head += line + "\n";
-            continue;
-          }
-        std::string name = lines[n].substr(11), text;
-        for (const auto &r : renamed_subsections)
-          if (name == r.name)
-            name = r.old_name;
-        text = "subsection " + name + "\n";
-        while (++n < lines.size() && lines[n] != "end")
-          text += lines[n] + "\n";
-        blocks.emplace_back(name, text + "end\n");
-      }
-    std::stable_sort(blocks.begin(), blocks.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
-    for (const auto &b : blocks)
-      head += b.second;
-    return head;
   }
 
   namespace
@@ -244,10 +203,8 @@ namespace abrade::coupling
     /// What a note says of an old spelling read where it is now.
     std::string read_as(const MovedEntry &m, const std::vector<std::string> &path)
     {
-      std::vector<std::string> now = path;
-      now.push_back(m.now);
-      return entry_path(path, m.old_key) + " is read as " + entry_path(now, m.key) +
-             " (its place now; the old spelling still works)";
+      return entry_path(path, m.old_key) + " is read as " + entry_path(now_in(m, path), m.key) +
+             (*m.now ? " (its place now; the old spelling still works)" : " (its name now; the old one still works)");
     }
     std::string read_as(const RenamedSubsection &r)
     {
@@ -272,7 +229,8 @@ namespace abrade::coupling
           if (old.value)
             notes.push_back({where, read_as(*old.value)});
           if (old.moved) // (read in the subsection that now holds old.moved->now)
-            notes.push_back({where, read_as(*old.moved, {o.path.begin(), o.path.end() - 1})});
+            notes.push_back({where, read_as(*old.moved, *old.moved->now ? std::vector<std::string>(o.path.begin(), o.path.end() - 1)
+                                                                        : o.path)});
         }
     }
   } // namespace
@@ -317,8 +275,11 @@ namespace abrade::coupling
       else if (const MovedEntry *m = moved_entry(entries[n].path, entries[n].key))
         {
           notes.push_back({where(n), read_as(*m, entries[n].path)});
-          rewrite(n, {std::string("subsection ") + m->now, std::string("  set ") + m->key + " = " + entries[n].value,
-                      std::string("end")});
+          if (*m->now)
+            rewrite(n, {std::string("subsection ") + m->now, std::string("  set ") + m->key + " = " + entries[n].value,
+                        std::string("end")});
+          else
+            rewrite(n, {std::string("set ") + m->key + " = " + entries[n].value});
         }
       else
         {

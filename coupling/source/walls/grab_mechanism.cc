@@ -74,7 +74,7 @@ namespace abrade::coupling
                  std::to_string(wc.shell->opening * 180 / M_PI) + " degrees from straight down)");
     }
 
-    /// The knives mounted on wall @p name (their Knife mount) ride with its @p part: added to
+    /// The knives mounted on wall @p name (their Mounted on) ride with its @p part: added to
     /// @p rig, or refused where the mechanism lists them on another part.
     void add_mounted_knives(ParameterFile &f, const DemCase &c, const std::string &name, dem::RopeGrab::Part part,
                             dem::RopeGrabRig &rig)
@@ -88,7 +88,7 @@ namespace abrade::coupling
               rig.walls.emplace_back(knife.wall.name, part);
             else if (listed->second != part)
               f.fail({"Grab mechanism"}, key_of(listed->second),
-                     "'" + knife.wall.name + "' is mounted on '" + name + "' (its Knife mount) and rides with it");
+                     "'" + knife.wall.name + "' is mounted on '" + name + "' (its Mounted on) and rides with it");
           }
     }
   } // namespace

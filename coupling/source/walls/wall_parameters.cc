@@ -154,6 +154,24 @@ namespace abrade::coupling
       prm.leave_subsection();
     }
 
+    /// A motion's entries as a wall declares them: with the wall's own default for a text entry
+    /// it names (the default case's knife moves without a Velocities line: wall_defaults()).
+    class WithWallDefaults : public PluginSection
+    {
+    public:
+      WithWallDefaults(ParameterHandler &prm, std::map<std::string, std::string> defaults)
+        : PluginSection(prm), defaults(std::move(defaults))
+      {}
+      void declare_text(const std::string &name, const std::string &value, const std::string &doc) override
+      {
+        const auto own = defaults.find(name);
+        PluginSection::declare_text(name, own == defaults.end() ? value : own->second, doc);
+      }
+
+    private:
+      std::map<std::string, std::string> defaults;
+    };
+
     void declare_motion(ParameterHandler &prm, const std::string &name, const WallChoices *choices)
     {
       prm.enter_subsection("Motion");
@@ -164,69 +182,28 @@ namespace abrade::coupling
           names += (names.empty() ? "" : "|") + m->name();
           doc += (doc.empty() ? "" : "; ") + m->name() + (m->documentation().empty() ? "" : ": " + m->documentation());
         }
-      prm.declare_entry("Type", default_wall_choices(name).motion, dealii::Patterns::Selection(names), doc + ".");
+      prm.declare_entry("Type", default_wall_choices(name).motion, dealii::Patterns::Selection(names),
+                        doc + ". A wall takes the entries of its own motion only.");
       PluginSection section(prm);
       section.declare_vector("Centre", {0, 0, 0},
                              "[m] Rotation centre (a hinge point) in the geometry's coordinates before "
                              "Offset; it moves with the wall. Torques are reported about it.");
-      section.declare_text("Velocities", wall_defaults(name).velocities,
-                           "[m/s] Translational velocity per phase: 'phase: vx, vy, vz; phase: vx, vy, "
-                           "vz'. Phases not listed: at rest.");
-      section.declare_text("Angular velocities", "",
-                           "[rad/s] Angular velocity per phase about the centre: 'phase: wx, wy, wz; "
-                           "...'. Phases not listed: not rotating.");
-      // the chosen motion's own parameters (in Motion itself, or in its subsection)
+      // the chosen motion's own parameters (in Motion itself, or in its subsection; the velocity
+      // table the prescribed and rigid-body motions')
+      std::map<std::string, std::string> own_defaults;
+      if (const std::string velocities = wall_defaults(name).velocities; !velocities.empty())
+        own_defaults["Velocities"] = velocities;
       for (const auto &motion : motions)
         if (!choices || motion->name() == choices->motion)
           {
             if (!motion->section().empty())
               prm.enter_subsection(motion->section());
-            PluginSection own(prm);
+            WithWallDefaults own(prm, own_defaults);
             motion->declare_parameters(own);
             if (!motion->section().empty())
               prm.leave_subsection();
           }
       prm.leave_subsection();
-    }
-
-    // "phase: a, b, c; phase: a, b, c"
-    std::map<std::string, Vec3> read_phase_vectors(const ParameterFile &f, const std::vector<std::string> &path,
-                                                   const std::string &key, const std::string &text,
-                                                   const std::vector<Phase> &phases)
-    {
-      std::map<std::string, Vec3> out;
-      for (const auto &item : split_string_list(text, ';'))
-        {
-          if (trim(item).empty())
-            continue;
-          const auto colon = item.find(':');
-          if (colon == std::string::npos)
-            f.fail(path, key, "expected 'phase: x, y, z', got '" + item + "'");
-          const std::string phase = trim(item.substr(0, colon));
-          const auto        v     = split_string_list(item.substr(colon + 1));
-          Vec3              vec;
-          try
-            {
-              if (v.size() != 3)
-                throw std::invalid_argument("size");
-              for (int d = 0; d < 3; ++d)
-                {
-                  std::size_t used = 0;
-                  vec[d]           = std::stod(v[d], &used);
-                  if (used != v[d].size() || !std::isfinite(vec[d]))
-                    throw std::invalid_argument("junk");
-                }
-            }
-          catch (const std::exception &)
-            {
-              f.fail(path, key, "phase '" + phase + "': expected three finite numbers, got '" + trim(item.substr(colon + 1)) + "'");
-            }
-          if (std::none_of(phases.begin(), phases.end(), [&](const Phase &p) { return p.first == phase; }) &&
-              phase != "settle")
-            f.fail(path, key, "unknown phase '" + phase + "' (Simulation/Phases defines the phases)");
-          out[phase] = vec;
-        }
-      return out;
     }
 
     /// The geometry's shape, placed (rotated, moved), refined and oriented as the wall says.
@@ -331,11 +308,6 @@ namespace abrade::coupling
       const PluginSection            section(f, mp);
       dem::WallMotion               &m = wc.wall.motion;
       m.centre                         = wc.rotation * vec(section.vector("Centre")) + wc.offset;
-      for (const auto &[phase, v] : read_phase_vectors(f, mp, "Velocities", section.text("Velocities"), c.phases))
-        m.phases[phase].velocity = v;
-      for (const auto &[phase, v] :
-           read_phase_vectors(f, mp, "Angular velocities", section.text("Angular velocities"), c.phases))
-        m.phases[phase].angular_velocity = v;
       std::shared_ptr<dem::WallMotionModel> motion = dem::make_wall_motion(prm.get("Type"));
       dem::MotionContext                    context;
       for (const auto &p : c.phases)
@@ -443,8 +415,8 @@ namespace abrade::coupling
   /// Places every mounted knife on its shell's lip and gives it the shell's motion (one rigid
   /// body with it). Knife frame: x along the length from 0, y across the thickness, z from
   /// the edge up; on the shell: x along the hinge (y; -y on a -x shell), z along the shell's
-  /// bottom from the lip inwards, +y towards the shell's inside (the hinge), the edge 'Knife
-  /// protrusion' beyond the lip.
+  /// bottom from the lip inwards, +y towards the shell's inside (the hinge), the edge
+  /// 'Protrusion' beyond the lip.
   void mount_knives(ParameterFile &f, DemCase &c, const double length)
   {
     c.mounted_knife_length = length;
@@ -455,7 +427,7 @@ namespace abrade::coupling
         const std::vector<std::string> wp = {"Wall " + wc.wall.name};
         auto shell = std::find_if(c.walls.begin(), c.walls.end(), [&](const auto &o) { return o.wall.name == wc.mount; });
         if (shell == c.walls.end() || !shell->lip)
-          f.fail(wp, "Knife mount",
+          f.fail(wp, "Mounted on",
                  "'" + wc.mount + "' is not a wall with a lip (in Walls; Geometry = clamshell shell, or a file with 'Lip centre')");
         const Vec3 along = shell->lip->along, up = shell->lip->inward, lip = shell->lip->centre;
         const Vec3 across = up.cross(along);
@@ -521,11 +493,13 @@ namespace abrade::coupling
     const std::string ours = entry->family == "Geometry" ? chosen->second.geometry : chosen->second.motion;
     if (entry->defaults.count(ours))
       return std::nullopt; // (its own)
-    return ForeignEntry{std::move(*entry), wall, ours};
+    return ForeignEntry{std::move(*entry), wall, ours, key == "Velocities" ? wall_defaults(wall).velocities : ""};
   }
 
   bool ForeignEntry::at_default(const std::string &value) const
   {
+    if (!own_default.empty() && same_value(value, own_default))
+      return true;
     for (const auto &[plugin, default_value] : entry.defaults)
       if (same_value(value, default_value))
         return true;

@@ -189,7 +189,7 @@ namespace abrade::dem
                                    : part == RopeGrab::Part::left_shell ? "left shell (the -x one), turning about the hinge"
                                    : part == RopeGrab::Part::lower_head ? "lower head (with the hinge)"
                                                                         : "upper head") +
-                       "; a knife mounted on a shell (Knife mount) rides with its shell. The walls need no Motion.");
+                       "; a knife mounted on a shell (Mounted on) rides with its shell. The walls need no Motion.");
     p.declare_vector("Hinge", {0, 0, 0},
                      "[m] A point of the shells' hinge axis (along y) at the start: the shells' walls turn about it.");
     p.declare_number("Upper pin offset", 0.45, 0, unbounded,

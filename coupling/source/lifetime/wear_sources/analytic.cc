@@ -15,14 +15,15 @@ namespace abrade::coupling::lifetime
       std::string name() const override { return "analytic"; }
       std::string documentation() const override
       {
-        return "the wear comes from 'Analytic wear rate' instead (verification of the loop, or wear rates "
-               "measured elsewhere)";
+        return "the wear comes from the rate of subsection Analytic instead (verification of the loop, or wear "
+               "rates measured elsewhere)";
       }
+      std::string section() const override { return "Analytic"; }
       bool from_particles() const override { return false; }
 
       void declare_parameters(dealii::ParameterHandler &prm) const override
       {
-        prm.declare_entry("Analytic wear rate", "1e-6", dealii::Patterns::Anything(),
+        prm.declare_entry("Wear rate", "1e-6", dealii::Patterns::Anything(),
                           "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
                           "inward normal, as a function of the knife's current coordinates x, y, z (the "
                           "knife's own frame, see Recession points), of t, the tonnes handled so far, and of "
@@ -31,13 +32,13 @@ namespace abrade::coupling::lifetime
                           "runs along x), e.g. '1e-6*exp(-z/0.01)', '1e-6*(1+t/5000)' or "
                           "'1e-6*(z < zedge + 0.003)' (a band on the edge line that follows each part of it up); "
                           "evaluated at the surface's vertices. muparser syntax.");
-        prm.declare_entry("Analytic wear is", "depth", dealii::Patterns::Selection("depth|volume"),
+        prm.declare_entry("Wear is", "depth", dealii::Patterns::Selection("depth|volume"),
                           "Wear source = analytic: depth: the surface recedes by the rate x tonnes along its "
                           "normal (the offset surface, exact: verification of the motion); volume: the rate x "
                           "tonnes x each vertex's area is a volume removed, as the DEM's Archard volume is, "
                           "and every update's moved surface is corrected so that the knife loses exactly it "
                           "(an offset surface loses less at convex edges).");
-        prm.declare_entry("Analytic seed scatter", "0", dealii::Patterns::Double(0, 1),
+        prm.declare_entry("Seed scatter", "0", dealii::Patterns::Double(0, 1),
                           "[-] Wear source = analytic: each bed's rate is multiplied by a lognormal factor "
                           "of mean 1 and this relative standard deviation, drawn from the bed's seed (a fresh "
                           "one every update): a known bed-to-bed scatter (verification of the life's "
@@ -47,9 +48,9 @@ namespace abrade::coupling::lifetime
       void parse_parameters(ParameterFile &file) override
       {
         auto &prm    = file.handler();
-        expression   = prm.get("Analytic wear rate");
-        scatter      = prm.get_double("Analytic seed scatter");
-        as_volume    = prm.get("Analytic wear is") == "volume";
+        expression   = prm.get("Wear rate");
+        scatter      = prm.get_double("Seed scatter");
+        as_volume    = prm.get("Wear is") == "volume";
       }
 
       std::unique_ptr<WearSource> make(const WearSourceSetUp &s) const override
@@ -60,10 +61,10 @@ namespace abrade::coupling::lifetime
           }
         catch (const std::invalid_argument &e)
           {
-            s.ctx.parameters.fail({"Lifetime"}, "Analytic wear rate", e.what());
+            s.ctx.parameters.fail(path(), "Wear rate", e.what());
           }
       }
-      std::string rate_parameter() const override { return "Analytic wear rate"; }
+      std::vector<std::string> rate_entry() const override { return {"Lifetime", section(), "Wear rate"}; }
       std::string description() const override { return "the analytic rate " + expression; }
 
     private:

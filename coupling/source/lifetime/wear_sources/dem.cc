@@ -15,6 +15,7 @@ namespace abrade::coupling::lifetime
       {
         return "every update runs the DEM cycles on the knife's current surface";
       }
+      std::string section() const override { return "DEM"; }
       bool        from_particles() const override { return true; }
       std::string description() const override { return "the DEM"; }
       void declare_parameters(dealii::ParameterHandler &prm) const override

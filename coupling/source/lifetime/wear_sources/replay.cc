@@ -19,15 +19,16 @@ namespace abrade::coupling::lifetime
       std::string name() const override { return "replay"; }
       std::string documentation() const override
       {
-        return "the unfiltered wear another lifetime run of this case stored (its wear/ directory, 'Replay "
-               "run'), carried onto this run's surface: the same life at another Smoothing radius (a candidate "
+        return "the unfiltered wear another lifetime run of this case stored (its wear/ directory, Replay/"
+               "Run), carried onto this run's surface: the same life at another Smoothing radius (a candidate "
                "footprint for abrade calibrate) or W without a DEM run (docs/field.md)";
       }
-      bool from_particles() const override { return true; }
+      std::string section() const override { return "Replay"; }
+      bool        from_particles() const override { return true; }
 
       void declare_parameters(dealii::ParameterHandler &prm) const override
       {
-        prm.declare_entry("Replay run", "", dealii::Patterns::Anything(),
+        prm.declare_entry("Run", "", dealii::Patterns::Anything(),
                           "[directory] Wear source = replay: the output directory of the lifetime run whose "
                           "stored wear (wear/update_*.wear) is replayed (relative to this file; give an absolute path on the command line). Its beds are "
                           "the replay's; beyond the tonnes it reached its last update's wear is used (warned). "
@@ -36,9 +37,9 @@ namespace abrade::coupling::lifetime
 
       void parse_parameters(ParameterFile &file) override
       {
-        const std::string given = file.handler().get("Replay run");
+        const std::string given = file.handler().get("Run");
         if (given.empty())
-          file.fail({"Lifetime"}, "Replay run", "Wear source = replay needs the directory of a lifetime run");
+          file.fail(path(), "Run", "Wear source = replay needs the directory of a lifetime run");
         run = file.path_beside(given);
       }
 
@@ -46,7 +47,7 @@ namespace abrade::coupling::lifetime
       {
         std::error_code ec;
         if (std::filesystem::equivalent(run, s.ctx.output.root(), ec))
-          s.ctx.parameters.fail({"Lifetime"}, "Replay run", run + " is this run's own output directory: its stored "
+          s.ctx.parameters.fail(path(), "Run", run + " is this run's own output directory: its stored "
                                 "wear would be overwritten by the replay's; give the replay another --output");
         std::unique_ptr<WearSource> source;
         try
@@ -55,7 +56,7 @@ namespace abrade::coupling::lifetime
           }
         catch (const InputError &e)
           {
-            s.ctx.parameters.fail({"Lifetime"}, "Replay run", e.what());
+            s.ctx.parameters.fail(path(), "Run", e.what());
           }
         // scaled to this case's W where the stored run had another
         std::string  scaled;
@@ -74,7 +75,7 @@ namespace abrade::coupling::lifetime
       void add_results(io::Json &r) const override { r["replayed_run"] = run; }
 
     private:
-      std::string run; ///< Replay run, resolved
+      std::string run; ///< Replay/Run, resolved
     };
   } // namespace
 

@@ -20,23 +20,23 @@ namespace abrade::coupling
 
       void declare_parameters(dem::ParameterSection &prm) const override
       {
-        prm.declare_text("Knife mount", "",
-                         "Solid model: the name of a shell wall whose lip carries this knife (a "
-                         "clamshell shell, or a file with 'Lip centre' set). The knife (subsection Part) lies "
-                         "along the shell's width, its edge "
-                         "'Knife protrusion' beyond the lip, its height along the shell's bottom, and "
-                         "it moves with the shell (the shell's Motion is used; this wall's own Motion "
-                         "and Offset are ignored). Empty: placed by Offset.");
-        prm.declare_number("Knife protrusion", 0.02, 0, std::numeric_limits<double>::max(),
-                           "[m] Mounted knife: how far its edge stands beyond the shell's lip. Range: >= 0.");
+        prm.declare_text("Mounted on", "",
+                         "Solid model: the name of a shell wall whose lip carries the part as its knife (a "
+                         "clamshell shell, or a file with 'Lip centre' set). The part (subsection Part) lies "
+                         "along the shell's width, its edge 'Protrusion' beyond the lip, its height along the "
+                         "shell's bottom, and it moves with the shell (the shell's Motion is used; this wall's "
+                         "own Motion and Offset are ignored). Empty: placed by Offset.");
+        prm.declare_number("Protrusion", 0.02, 0, std::numeric_limits<double>::max(),
+                           "[m] A part Mounted on a shell: how far its edge stands beyond the shell's lip. "
+                           "Range: >= 0.");
       }
 
       WallShape make(const dem::ParameterSection &prm, const WallGeometryContext &) const override
       {
         WallShape shape; // (no triangles: the job fills them in from the FEM part)
         shape.solid_model = true;
-        shape.mount       = prm.text("Knife mount");
-        shape.protrusion  = prm.number("Knife protrusion");
+        shape.mount       = prm.text("Mounted on");
+        shape.protrusion  = prm.number("Protrusion");
         if (!shape.mount.empty())
           shape.fixed_orientation = "a mounted knife is placed by its shell's lip: no rotation of its own";
         return shape;

@@ -57,6 +57,15 @@ namespace abrade::dem
     virtual bool time_dependent() const { return false; }
   };
 
+  /// The wall's velocity table, for the motions that follow one (prescribed; a rigid body's
+  /// degrees of freedom that are not free): Motion/Velocities and Angular velocities, "phase:
+  /// x, y, z; phase: x, y, z", constant in a phase, phases not listed at rest. Declared by the
+  /// motion that takes it, in its declare_parameters().
+  void declare_velocity_table(ParameterSection &p);
+  /// Reads the table into @p motion's phases; a phase that is not one of @p c's (nor "settle")
+  /// or a velocity that is not three finite numbers is refused through @p p.
+  void read_velocity_table(const ParameterSection &p, const MotionContext &c, WallMotion &motion);
+
   using WallMotionFactory = std::unique_ptr<WallMotionModel> (*)();
 
   /// The registered motions' names in the order of their names ("fixed", "prescribed", ...).

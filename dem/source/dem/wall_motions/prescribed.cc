@@ -13,6 +13,12 @@ namespace abrade::dem
       std::string      name() const override { return "prescribed"; }
       std::string      documentation() const override { return "velocities per phase"; }
       WallMotion::Kind kind() const override { return WallMotion::Kind::prescribed; }
+
+      void declare_parameters(ParameterSection &p) const override { declare_velocity_table(p); }
+      void parse_parameters(const ParameterSection &p, const MotionContext &c, WallMotion &m) override
+      {
+        read_velocity_table(p, c, m);
+      }
     };
   } // namespace
 

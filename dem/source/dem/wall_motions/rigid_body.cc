@@ -26,6 +26,7 @@ namespace abrade::dem
 
       void declare_parameters(ParameterSection &p) const override
       {
+        declare_velocity_table(p); // (the degrees of freedom that are not free, and every one outside Free in phases)
         p.declare_number("Mass", 0, 0, unbounded, "[kg] Rigid body: mass. Range: >= 0.");
         p.declare_vector("Inertia", {0, 0, 0}, "[kg m^2] Rigid body: principal moments about the centre.");
         p.declare_choices("Free degrees of freedom", "", degrees_of_freedom,
@@ -43,6 +44,7 @@ namespace abrade::dem
 
       void parse_parameters(const ParameterSection &p, const MotionContext &c, WallMotion &m) override
       {
+        read_velocity_table(p, c, m);
         m.mass          = p.number("Mass");
         const auto i    = p.vector("Inertia");
         m.inertia       = Vec3(i[0], i[1], i[2]);
@@ -59,8 +61,6 @@ namespace abrade::dem
             m.free_phases.insert(phase);
           }
       }
-
-    private:
     };
   } // namespace
 

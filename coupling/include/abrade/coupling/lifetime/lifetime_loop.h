@@ -198,7 +198,7 @@ namespace abrade::coupling::lifetime
     std::unique_ptr<LifetimeCheckpoints>  checkpoints;
     io::CsvWriter                         trajectory;
     std::string                           hash;
-    std::string                           hash_before_renames; ///< (of a checkpoint of an earlier abrade)
+    std::vector<std::string>              earlier_hashes; ///< (of the parameters as earlier abrades printed them)
 
     WearFieldColumns             field_columns; ///< the Wear field's outputs' names (trajectory.csv, summary.json)
 

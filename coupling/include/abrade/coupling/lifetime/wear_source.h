@@ -73,7 +73,7 @@ namespace abrade::coupling::lifetime
 
   /// A choice of Lifetime/Wear source, as a plugin: a class in a file of its own in
   /// coupling/source/lifetime/wear_sources/ that declares, reads and checks its own entries (in
-  /// subsection Lifetime) and makes the WearSource the loop draws every cycle's wear from;
+  /// its subsection of Lifetime, section()) and makes the WearSource the loop draws every cycle's wear from;
   /// registered there with one line, ABRADE_REGISTER_WEAR_SOURCE(Class). Its library is linked
   /// whole into the programs (abrade_program), which is what makes a registration in a file
   /// nothing names reach them.
@@ -89,14 +89,25 @@ namespace abrade::coupling::lifetime
     /// then a solid-model wall whose wear laws record Output/Wear field, its W can be calibrated
     /// and the wear filter's length defaults to the particle radius. Otherwise a known rate.
     virtual bool from_particles() const = 0;
-    /// Declares its entries (in subsection Lifetime, which the caller has entered).
+    /// The subsection of Lifetime its entries are in ("Analytic": Lifetime/Analytic/Wear rate).
+    virtual std::string section() const = 0;
+    /// That subsection's path, for refusals: {"Lifetime", section()}.
+    std::vector<std::string> path() const { return {"Lifetime", section()}; }
+    /// Declares its entries (in its subsection, which the caller has entered).
     virtual void declare_parameters(dealii::ParameterHandler &) const {}
-    /// Reads and checks them (in subsection Lifetime, entered); refusals through file.fail().
+    /// Reads and checks them (in its subsection, entered); refusals through file.fail(path(), ...).
     virtual void parse_parameters(ParameterFile &) {}
     /// The source (refusals through ctx.parameters.fail()).
     virtual std::unique_ptr<WearSource> make(const WearSourceSetUp &set_up) const = 0;
-    /// The entry a cycle's std::domain_error is about (a rate that is negative somewhere).
-    virtual std::string rate_parameter() const { return "Wear source"; }
+    /// The entry a cycle's std::domain_error is about (a rate that is negative somewhere), its
+    /// path and key: Lifetime/Wear source unless the source names one of its own.
+    virtual std::vector<std::string> rate_entry() const { return {"Lifetime", "Wear source"}; }
+    /// Refuses rate_entry() in @p file: @p why.
+    [[noreturn]] void fail_on_rate(ParameterFile &file, const std::string &why) const
+    {
+      const auto entry = rate_entry();
+      file.fail({entry.begin(), entry.end() - 1}, entry.back(), why);
+    }
     /// Where the wear comes from, for the log ("the DEM").
     virtual std::string description() const = 0;
     /// What it adds to summary.json's results.lifetime.
@@ -108,7 +119,8 @@ namespace abrade::coupling::lifetime
   std::vector<std::unique_ptr<WearSourceChoice>> make_wear_source_choices();
   /// A new one of that name; nullptr if there is none.
   std::unique_ptr<WearSourceChoice> make_wear_source_choice(const std::string &name);
-  /// Declares Lifetime/Wear source and every registered source's entries (in Lifetime, entered).
+  /// Declares Lifetime/Wear source and every registered source's entries, each in its
+  /// subsection (in Lifetime, entered).
   void declare_wear_sources(dealii::ParameterHandler &prm);
   /// Adds a wear source (ABRADE_REGISTER_WEAR_SOURCE); a name registered twice is a bug.
   struct WearSourceRegistration

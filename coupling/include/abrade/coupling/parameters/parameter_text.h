@@ -75,13 +75,6 @@ namespace abrade::coupling
   std::vector<MovedNote> read_moved_entries(std::string &text, std::vector<std::pair<std::string, int>> &origin,
                                             const std::string &file, std::vector<Override> &overrides);
 
-  /// @p printed (ParameterHandler's ShortPRM text, as ParameterFile::canonical_text() gives
-  /// it) as an abrade before the renames printed it: each renamed top-level subsection under
-  /// its old name, in its sorted place (`subsection Knife` before `subsection Lifetime`), and a
-  /// renamed choice under its old name (`set Job = knife`). A lifetime checkpoint of an
-  /// earlier abrade hashed that text; a run directory's parameters.prm holds it.
-  std::string with_old_names(const std::string &printed);
-
   /// Leaves out of @p text (blanks, keeping its lines) the entries of a wall that belong to
   /// another geometry or motion than the wall's (@p lists), when they are
   ///  - that geometry's or motion's defaults (a file that lists every geometry's entries, as

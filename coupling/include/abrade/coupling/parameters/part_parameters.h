@@ -67,7 +67,7 @@ namespace abrade::coupling
   dem::TriangleMesh place_surface(const fem::SolidSurface &surface, const DemCase::WallCase &wc);
 
   /// A part from a file mounted on a shell: centred along the lip by its bounding box, its
-  /// lowest point (the edge) 'Knife protrusion' beyond the lip (the parametric knife, x from 0
+  /// lowest point (the edge) 'Protrusion' beyond the lip (the parametric knife, x from 0
   /// to its length and its edge at z = 0, is placed so by construction). Across the lip (y) the
   /// part stays as placed: its y = 0 plane on the lip's line. Returns a warning when the part
   /// does not straddle y = 0 (empty otherwise).

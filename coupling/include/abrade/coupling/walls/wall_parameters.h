@@ -83,7 +83,10 @@ namespace abrade::coupling
     PluginEntry entry;
     std::string wall; ///< its name ("floor" of subsection "Wall floor")
     std::string ours; ///< the wall's own choice in entry.family
-    /// Whether @p value is one of those plugins' default for it (a no-op).
+    /// the wall's own default for it, where the wall gives one (the default case's knife's
+    /// Velocities, which an earlier abrade printed whatever its motion)
+    std::string own_default;
+    /// Whether @p value is one of those plugins' default for it, or the wall's own (a no-op).
     bool at_default(const std::string &value) const;
   };
   /// @p key in subsection @p path as such an entry; nullopt when it is the wall's own (or no
