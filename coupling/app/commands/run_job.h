@@ -1,5 +1,5 @@
 #pragma once
-// The job of a parameter file, run (commands/run.cc): abrade run, and abrade preview (the knife
+// The job of a parameter file, run (commands/run.cc): abrade run, and abrade preview (the part
 // job of a case).
 #include "../command_line.h"
 

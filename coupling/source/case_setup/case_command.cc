@@ -364,7 +364,7 @@ namespace abrade::coupling
     }
 
     /// Part: the part's file, its placing, mesh size and faces.
-    void write_case_knife(std::ostream &f, const Options &o, const PartShape &part, const Drag &d)
+    void write_case_part(std::ostream &f, const Options &o, const PartShape &part, const Drag &d)
     {
       auto n = [](double x, int digits = 4) { return num(x, digits); };
       const double lx = part.extent[0], ly = part.extent[1], lz = part.extent[2];
@@ -412,7 +412,7 @@ namespace abrade::coupling
       write_case_simulation(f, o, d);
       write_case_particles(f, o, d, m);
       write_case_walls(f, o, d, m);
-      write_case_knife(f, o, part, d);
+      write_case_part(f, o, part, d);
       write_case_lifetime(f, o, part, d);
       return f.str();
     }

@@ -63,7 +63,7 @@ namespace abrade::coupling
         scene.fill_region[d] = c.fill.box_min[d], scene.fill_region[3 + d] = c.fill.box_max[d];
       }
     scene.particles = c.fill.count;
-    fit_mounted_knives(c, part); // (a part mounted on a shell's lip: placed by it)
+    fit_mounted_parts(c, part); // (a part mounted on a shell's lip: placed by it)
     for (auto &wc : c.walls)
       {
         if (!wc.solid_model)

@@ -148,7 +148,7 @@ namespace abrade::field
     /// worn point lies less than the wear depth inside it; a scan may hold some of the holder). A
     /// point farther away is in other coordinates or units (a factor of 1000), and would be
     /// fitted to the nearest corner of the knife.
-    void check_on_knife(const geometry::SurfaceDistance &design, vtkPolyData *fresh,
+    void check_on_part(const geometry::SurfaceDistance &design, vtkPolyData *fresh,
                         const std::vector<Measurement> &measurements)
     {
       double b[6];
@@ -292,7 +292,7 @@ namespace abrade::field
         if (!design) // the first output is the fresh knife: the design
           {
             design = std::make_unique<geometry::SurfaceDistance>(distance_to(s));
-            check_on_knife(*design, s, measurements);
+            check_on_part(*design, s, measurements);
           }
         run.tonnes.push_back(t);
         run.depth.push_back(depth_at(s, *design, measurements));

@@ -32,7 +32,8 @@ namespace abrade::field
 )";
   const char *calibrate_usage = R"(  abrade calibrate --run DIR [--run DIR]... --measurements FILE.csv [--locations FILE.csv]
                    [--block SIZE] --output DIR
-      fit the Archard coefficient W of each lifetime run to measured wear depths (columns
+      fit the wear coefficient W of each lifetime run (Archard's, or its Output/Wear field's
+      law's) to measured wear depths (columns
       tonnes, depth or depth_mm, x, y, z or location), with its 95 % interval (the fit's, over
       spatial blocks of SIZE m, default 0.05, and the run's bed-to-bed spread), and rank the
       runs by pattern agreement (calibration.json/.md, residuals.csv, calibration.png)

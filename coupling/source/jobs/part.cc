@@ -15,7 +15,8 @@
 //    the case places it (part/scene_part.vtp, with role), the other walls' outlines
 //    (part/scene_walls.dat) and the part's path over one cycle (part/scene_path.dat, a block
 //    per phase), the fill region and the domain (summary.json results.part.case).
-// (A run directory of an abrade before the rename has knife/knife* instead: io::part_folder.)
+// (A run directory of an abrade from before subsection Knife was named Part has knife/knife*
+// instead: io::part_folder.)
 #include <abrade/common/error.h>
 #include <abrade/common/vtk_output.h>
 #include <abrade/coupling/case_setup/case_scene.h>

@@ -25,7 +25,7 @@ namespace abrade::coupling::lifetime
 
   namespace
   {
-    /// The heights the rate's variables zlow and zedge stand for on the knife's current shape.
+    /// The heights the rate's variables zlow and zedge stand for on the part's current shape.
     /// zlow: the lowest wearable point now (a band on the edge that follows the tip up). zedge:
     /// the lowest wearable point within a longest triangle edge of the point along x (a band on
     /// the edge line that follows each part of the edge up as it recedes there): the lowest

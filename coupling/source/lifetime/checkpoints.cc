@@ -14,7 +14,7 @@ namespace abrade::coupling
     : directory(std::move(directory))
   {}
 
-  std::string LifetimeCheckpoints::knife_file(long update) const
+  std::string LifetimeCheckpoints::part_file(long update) const
   {
     return directory + "/knife-" + std::to_string(update) + ".ckpt";
   }
@@ -26,7 +26,7 @@ namespace abrade::coupling
 
   std::vector<long> LifetimeCheckpoints::updates() const
   {
-    // the updates that have a state or a knife file (a stray name with a 30-digit number is
+    // the updates that have a state or a part file (a stray name with a 30-digit number is
     // not one: at most 15 digits)
     std::vector<long> found;
     const std::regex  files(R"((loop-([0-9]{1,15})\.txt)|(knife-([0-9]{1,15})\.ckpt))");
@@ -62,8 +62,8 @@ namespace abrade::coupling
     if (common > 0 && !std::filesystem::exists(state_file(common)))
       throw InputError(state_file(common), "missing: another MPI rank resumes from this update, this rank kept "
                                            "only update " + std::to_string(mine) + " (checkpoints edited?)");
-    if (common > 0 && !std::filesystem::exists(knife_file(common)))
-      throw InputError(knife_file(common), "missing, but its loop state is there (checkpoints edited?)");
+    if (common > 0 && !std::filesystem::exists(part_file(common)))
+      throw InputError(part_file(common), "missing, but its loop state is there (checkpoints edited?)");
     return common;
   }
 
@@ -75,7 +75,7 @@ namespace abrade::coupling
 
   void LifetimeCheckpoints::commit(long update) const
   {
-    std::filesystem::rename(knife_file_aside(update), knife_file(update));
+    std::filesystem::rename(part_file_aside(update), part_file(update));
     std::filesystem::rename(state_file_aside(update), state_file(update));
     remove(update - 2);
   }
@@ -84,6 +84,6 @@ namespace abrade::coupling
   {
     std::error_code ec; // (either may never have been written)
     std::filesystem::remove(state_file(update), ec);
-    std::filesystem::remove(knife_file(update), ec);
+    std::filesystem::remove(part_file(update), ec);
   }
 } // namespace abrade::coupling

@@ -1,4 +1,4 @@
-// The DEM wear source: one operating cycle per bed seed on the knife's current surface; under
+// The DEM wear source: one operating cycle per bed seed on the part's current surface; under
 // mpirun the beds run side by side on groups of the ranks (Lifetime/DEM/Ranks per bed).
 #include <abrade/common/timer.h>
 #include <abrade/coupling/dem_run/bed_preparation.h>
@@ -54,10 +54,10 @@ namespace abrade::coupling::lifetime
         for (std::size_t b = 0; b < seeds.size(); ++b)
           {
             payload += beds[b].payload / seeds.size();
-            const std::size_t knives = beds[b].knife_phase_volume.size() / std::max<std::size_t>(1, c.phases.size());
+            const std::size_t knives = beds[b].part_phase_volume.size() / std::max<std::size_t>(1, c.phases.size());
             for (std::size_t k = 0; k < knives; ++k)
               for (std::size_t p = 0; p < c.phases.size(); ++p)
-                w.phase_volume[p] += beds[b].knife_phase_volume[k * c.phases.size() + p] / (knives * seeds.size());
+                w.phase_volume[p] += beds[b].part_phase_volume[k * c.phases.size() + p] / (knives * seeds.size());
             w.particle_radius = beds[b].particle_radius;
             for (const auto &text : beds[b].warnings)
               w.warnings.push_back("seed " + std::to_string(seeds[b]) + ": " + text);
@@ -97,7 +97,7 @@ namespace abrade::coupling::lifetime
       {
         std::vector<double>      volume; ///< wear volume per surface vertex, the knives' mean [m^3]
         /// per knife wall, per phase: its total wear volume [m^3]
-        std::vector<double>      knife_phase_volume;
+        std::vector<double>      part_phase_volume;
         double                   payload         = 0; ///< [kg]
         double                   particle_radius = 0; ///< the largest [m]
         std::vector<std::string> warnings;
@@ -107,12 +107,12 @@ namespace abrade::coupling::lifetime
         {
           if (ensemble.groups() == 1)
             return;
-          std::vector<double> numbers = knife_phase_volume;
+          std::vector<double> numbers = part_phase_volume;
           numbers.insert(numbers.end(), {payload, particle_radius});
           ensemble.share(numbers, b);
           particle_radius = numbers.back(), numbers.pop_back();
           payload = numbers.back(), numbers.pop_back();
-          knife_phase_volume = std::move(numbers);
+          part_phase_volume = std::move(numbers);
           ensemble.share(volume, b);
           std::string text;
           for (const auto &line : warnings)
@@ -188,7 +188,7 @@ namespace abrade::coupling::lifetime
             for (std::size_t i = 0; i < v.size(); ++i)
               w.volume[i] += v[i] / knives.size();
             for (std::size_t p = 0; p < run.phases.size(); ++p)
-              w.knife_phase_volume.push_back(wear->total(k, run.wear_field, run.phases[p].first));
+              w.part_phase_volume.push_back(wear->total(k, run.wear_field, run.phases[p].first));
           }
         // a derived seed's bed serves this cycle only (the next update draws fresh ones; a
         // resumed run settles it again, to the same bits): rank 0 wrote it, rank 0 removes it

@@ -1,4 +1,4 @@
-// The lifetime loop (lifetime_loop.h): the knife's wear over its working life. This file holds
+// The lifetime loop (lifetime_loop.h): the part's wear over its working life. This file holds
 // the loop's bookkeeping; the arithmetic of every step is in its own file (end_of_life.cc,
 // life_interval.cc, update_size.cc, fem/surface_filter.cc, fem/part_model.cc).
 #include <abrade/common/error.h>
@@ -38,11 +38,12 @@ namespace abrade::coupling::lifetime
 {
   namespace
   {
-    /// The lifetime state file's format: 2 holds the trajectory's rows and a checksum; 3 the
-    /// updates' records of every criterion (beds, relative variance) and the beds of the next;
-    /// 4 the beds' deviations at every criterion's places (place_scatter.h); 6 every
-    /// criterion's entries named after the criterion (end_of_life_criterion.h), not numbered; 7
-    /// the wear so far as wear_total (of whichever Wear field).
+    /// The lifetime state file's format, raised whenever what a state holds changes (a state of
+    /// another format is refused: start afresh). It holds the trajectory's rows and a checksum,
+    /// the updates' records of every criterion (beds, relative variance) and the beds of the
+    /// next, the beds' deviations at every criterion's places (place_scatter.h), each
+    /// criterion's entries under its name (end_of_life_criterion.h), and the wear so far as
+    /// wear_total (of whichever Wear field).
     const std::string state_format = "abrade lifetime state 7";
 
     /// A criterion's entries in the state file: "history_" + this ("maximum_depth").
@@ -184,7 +185,7 @@ namespace abrade::coupling::lifetime
                  source_choice->description());
   }
 
-  // The knife: the parametric one or a user's part (its faces chosen, placed), checked against
+  // The part: the parametric one or a user's part (its faces chosen, placed), checked against
   // the criteria that need to know where it is.
   void LifetimeLoop::build_part()
   {
@@ -197,7 +198,7 @@ namespace abrade::coupling::lifetime
         PartMesh m = mesh_part(part_parameters, ctx.parameters, ks.work_directory);
         report_part_mesh(part_parameters, m, ctx.log, &warnings);
         part_model = std::make_unique<fem::PartModel>(std::move(m.tria), ks);
-        if (const std::string w = fit_mounted_knives(dem_case, part_model->design_surface()); !w.empty())
+        if (const std::string w = fit_mounted_parts(dem_case, part_model->design_surface()); !w.empty())
           {
             ctx.log.warning(w);
             warnings.push_back(w);
@@ -237,7 +238,7 @@ namespace abrade::coupling::lifetime
         ctx.log.warning(w);
         warnings.push_back(w);
       }
-    // a followed point away from the knife would follow the nearest surface point without a word
+    // a followed point away from the part would follow the nearest surface point without a word
     const std::vector<double> off = part_model->depth_below_design(s.recession_points);
     std::vector<double>       points;
     for (const auto &p : s.recession_points)
@@ -266,7 +267,7 @@ namespace abrade::coupling::lifetime
     part_model->write(*part_output, 0);
     const std::string part = ctx.output.part_folder(ctx.resume);
     io::write_stl(ctx.output.file(part + "/" + part_surface_name(part, 0)), part_model->surface().as_polydata()); // the design
-    part_model->save(checkpoints->knife_file(0)); // the state a rejected first update returns to
+    part_model->save(checkpoints->part_file(0)); // the state a rejected first update returns to
   }
 
   bool LifetimeLoop::resume()
@@ -282,8 +283,8 @@ namespace abrade::coupling::lifetime
     trajectory_rows.clear();
     for (long k = 1; k <= done; ++k)
       trajectory_rows.push_back(state.text("trajectory_row_" + std::to_string(k)));
-    part_model->load(checkpoints->knife_file(done));
-    gauge_the_knife();
+    part_model->load(checkpoints->part_file(done));
+    gauge_the_part();
     std::vector<double> output_times;
     for (const auto &p : history)
       output_times.push_back(p.tonnes);
@@ -575,7 +576,7 @@ namespace abrade::coupling::lifetime
   }
 
   // 3. How many cycles this update stands for: sized from the previous update's largest rate,
-  //    not from the beds that then move the knife (update_size.h: sized by its own beds, the
+  //    not from the beds that then move the part (update_size.h: sized by its own beds, the
   //    life was biased long by about c^2 / beds, +9 to +23 % at the DEM's bed spreads).
   long LifetimeLoop::choose_cycles(const Rates &rates) const
   {
@@ -585,11 +586,11 @@ namespace abrade::coupling::lifetime
     return n;
   }
 
-  // 4. Move the knife. A surface that cannot be remeshed (it folds where the wear is deepest)
-  //    rejects the step: the knife goes back to its last checkpoint (the state before this
+  // 4. Move the part. A surface that cannot be remeshed (it folds where the wear is deepest)
+  //    rejects the step: the part goes back to its last checkpoint (the state before this
   //    update) and the update is retried with half the cycles, up to three times; if that fails
-  //    too, the knife stays at the checkpoint and the run ends there. Under MPI every rank moves
-  //    its own copy of the knife: the ranks agree on the outcome (a failure on one is a failure
+  //    too, the part stays at the checkpoint and the run ends there. Under MPI every rank moves
+  //    its own copy of the part: the ranks agree on the outcome (a failure on one is a failure
   //    on all), so that their knives stay the same.
   LifetimeLoop::Step LifetimeLoop::move_part(const Rates &rates, long n)
   {
@@ -609,7 +610,7 @@ namespace abrade::coupling::lifetime
           }
         if (attempt == 3 || n == 1)
           {
-            part_model->load(checkpoints->knife_file(update - 1)); // the rejected step leaves no trace
+            part_model->load(checkpoints->part_file(update - 1)); // the rejected step leaves no trace
             st.error = "the worn surface could not be remeshed at update " + std::to_string(update) +
                        (halvings ? ", also with " + std::to_string(n) + " cycles after " + std::to_string(halvings) +
                                      " halving(s)"
@@ -639,10 +640,10 @@ namespace abrade::coupling::lifetime
       {
         io::ScopedTimer t(ctx.timers, "fem update");
         if (attempt > 0)
-          part_model->load(checkpoints->knife_file(update - 1));
+          part_model->load(checkpoints->part_file(update - 1));
         // the moved vertices are exact where they do not fold, and a smaller step often
         // does not: the surface is built anew as a set only from the third attempt on
-        // a source of volumes (the DEM's): the knife loses exactly the volume worn
+        // a source of volumes (the DEM's): the part loses exactly the volume worn
         st.result = part_model->apply_wear(depth, attempt >= 2 || n == 1,
                                            source->removes_volume() ? n * rates.wear_volume : 0.0);
       }
@@ -814,7 +815,7 @@ namespace abrade::coupling::lifetime
     if (rates.seed.size() > 1) // (one bed: no scatter to keep)
       for (const auto &seed : rates.seed)
         b.design_points.push_back(part_model->at_followed_points(seed, part_model->design_surface().vertices));
-    // where the gauges read the knife now (its sections after the last update)
+    // where the gauges read the part now (its sections after the last update)
     const std::size_t stations = sections.x.size();
     const double      z        = frame.z0 + s.gauge_height;
     fem::SolidSurface at;
@@ -841,7 +842,7 @@ namespace abrade::coupling::lifetime
     return b;
   }
 
-  void LifetimeLoop::gauge_the_knife()
+  void LifetimeLoop::gauge_the_part()
   {
     std::tie(sections, design_at_sections) = worn_and_design_sections(part_model->surface(), part_model->design_surface(),
                                                                       int(s.gauge_stations), frame.z0 + s.gauge_height,
@@ -906,8 +907,8 @@ namespace abrade::coupling::lifetime
     const double volume    = part_model->volume(); // (an integral over the whole mesh)
     const double worn      = volume0 - volume;
     const double swept     = st.volume_before - volume;
-    gauge_the_knife();
-    const PartNow   part = part_now(); // (the knife as the criteria read it after this update)
+    gauge_the_part();
+    const PartNow   part = part_now(); // (the part as the criteria read it after this update)
     const EdgeGauge &g   = part.gauge;
     history.push_back({tonnes, {}});
     for (const auto &c : criteria)
@@ -960,7 +961,7 @@ namespace abrade::coupling::lifetime
     log_update(rates, st, dmax, swept);
   }
   /// The update's line in the log, with the remesh's share of the swept volume, and a warning
-  /// when the knife did not lose the volume worn.
+  /// when the part did not lose the volume worn.
   void LifetimeLoop::log_update(const Rates &rates, const Step &st, double dmax, double swept)
   {
     const long  n      = st.cycles;
@@ -996,11 +997,11 @@ namespace abrade::coupling::lifetime
   }
 
 
-  // 6. Checkpoint: the knife and the loop's state, written aside and then renamed, so that a
+  // 6. Checkpoint: the part and the loop's state, written aside and then renamed, so that a
   //    kill never leaves half of one (lifetime/checkpoints.h).
   void LifetimeLoop::checkpoint()
   {
-    part_model->save(checkpoints->knife_file_aside(update));
+    part_model->save(checkpoints->part_file_aside(update));
     StateFile state;
     state.set("format", state_format);
     state.set("parameter_hash", hash);
@@ -1336,7 +1337,7 @@ namespace abrade::coupling::lifetime
     std::ostringstream line;
     if (e.criterion != EndOfLife::none && !e.reached && end.rfind("no wear", 0) == 0)
       {
-        // the wear stopped (a cycle that no longer touches the knife, a rate that ends): the
+        // the wear stopped (a cycle that no longer touches the part, a rate that ends): the
         // life would be extrapolated from wear that no longer happens
         ctx.log.line("Lifetime: " + end + " after " + std::to_string(cycles) + " cycles; no life predicted");
         throw RunError("no life predicted: the knife stopped wearing after " + io::format_number(tonnes, 6) +

@@ -198,7 +198,7 @@ namespace abrade::coupling::lifetime
           }
         if (updates.empty() || updates.back().update < 1)
           throw InputError(dir, "no stored update (wear/update_00001.wear)");
-        // other particles wear the knife otherwise: the stored wear is not this case's
+        // other particles wear the part otherwise: the stored wear is not this case's
         if (std::abs(updates.front().coarse_graining_factor / coarse_graining_factor - 1) > 1e-9)
           throw InputError(directory, "its wear was made with Particles/Coarse graining/Factor = " +
                                         io::format_number(updates.front().coarse_graining_factor) + ", this case has " +

@@ -4,6 +4,7 @@
 // their *_parameters.cc; Wall NAME: walls/wall_parameters.cc; Grab mechanism:
 // walls/grab_mechanism.cc), in the order their checks run; and the DEM simulation built from
 // what was read.
+#include <abrade/common/format_number.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/lifetime/lifetime_settings.h>
@@ -48,9 +49,16 @@ namespace abrade::coupling
 
   void declare_lists(ParameterHandler &prm)
   {
+    const WallDefaults knife = wall_defaults("knife");
     prm.declare_entry("Walls", "container, knife", dealii::Patterns::List(dealii::Patterns::Anything()),
-                      "Names of the walls (triangle meshes). Each name gets a subsection "
-                      "'Wall NAME' with its geometry, material and motion.");
+                      "Names of the walls (triangle meshes). Each name gets a subsection 'Wall NAME' with its "
+                      "geometry, material and motion. A wall is a fixed " + knife.choices.geometry +
+                        " without wear laws unless its subsection says otherwise, but for a wall named knife, "
+                        "whose defaults are the default case's knife's: Motion/Type = " + knife.choices.motion +
+                        ", Motion/Velocities = " + knife.velocities + ", Wear/Laws = " + knife.wear_laws +
+                        ", Layer probe/Enabled = " + (knife.probe ? "true" : "false") +
+                        ", Interaction/Friction = " + io::format_number(knife.friction) +
+                        " (its Geometry a " + knife.choices.geometry + " too: give its shape).");
   }
 
   DeclarationLists read_lists(ParameterHandler &prm)
@@ -104,7 +112,7 @@ namespace abrade::coupling
 
     for (const auto &name : get_list(prm, "Walls"))
       c.walls.push_back(read_wall(f, name, c));
-    mount_knives(f, c, read_part_length(f));
+    mount_parts(f, c, read_part_length(f));
     read_grab_mechanism(f, c);
     return c;
   }

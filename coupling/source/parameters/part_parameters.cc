@@ -300,7 +300,7 @@ namespace abrade::coupling
     return wall_mesh(surface, wc.rotation, wc.offset);
   }
 
-  std::string fit_mounted_knives(DemCase &c, const fem::SolidSurface &design)
+  std::string fit_mounted_parts(DemCase &c, const fem::SolidSurface &design)
   {
     if (design.vertices.empty())
       return {};
@@ -312,8 +312,8 @@ namespace abrade::coupling
     for (auto &wc : c.walls)
       if (wc.solid_model && !wc.mount.empty())
         {
-          // mount_knives placed x = length / 2 at the lip's centre and z = 0 'protrusion' beyond it
-          const double length = c.mounted_knife_length;
+          // mount_parts placed x = length / 2 at the lip's centre and z = 0 'protrusion' beyond it
+          const double length = c.mounted_part_length;
           wc.offset += wc.rotation * dem::Vec3(0.5 * length - 0.5 * (x0 + x1), 0, -z0);
         }
     if (mounted && !(y0 < 0 && y1 > 0))
@@ -333,7 +333,7 @@ namespace abrade::coupling
     report_part_mesh(part, m, log);
     const fem::SolidSurface surface = fem::extract_surface(*m.tria);
     if (part.from_file)
-      if (const std::string w = fit_mounted_knives(c, surface); !w.empty())
+      if (const std::string w = fit_mounted_parts(c, surface); !w.empty())
         log.warning(w);
     for (auto &wc : c.walls)
       if (wc.solid_model)

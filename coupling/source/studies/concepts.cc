@@ -47,6 +47,7 @@ namespace abrade::coupling
 
     struct Sample
     {
+      std::string                   field;       ///< Output/Wear field ("archard_volume")
       std::vector<std::string>      phases;      ///< in the order of the cycle
       std::map<std::string, double> wear;        ///< per phase and "total" [m^3 per cycle]
       double                        payload = 0; ///< [t per cycle]
@@ -57,10 +58,9 @@ namespace abrade::coupling
       Sample s;
       for (const auto &k : knives)
         {
-          const std::string field =
-            io::summary_string(dir + "/summary.json", "wear_field").value_or("archard_volume"); // Output/Wear field
+          s.field = io::summary_string(dir + "/summary.json", "wear_field").value_or("archard_volume");
           const CsvTable t   = read_csv_table(dir + "/walls/" + k + "_wear.csv");
-          const int      vol = t.column(field);
+          const int      vol = t.column(s.field);
           for (const auto &row : t.rows)
             {
               if (k == knives.front() && row[0] != "total")
@@ -167,6 +167,7 @@ namespace abrade::coupling
       std::map<std::string, std::string>   life;       // label -> predicted tonnes (text)
       std::map<std::string, StudyLife>     life_value; // label -> its life, interval and beds
       std::vector<std::string>             phases;
+      std::string                          wear_field; ///< the runs' Output/Wear field, as its columns name it
       std::vector<Summary>                 sum;
     };
 
@@ -262,6 +263,7 @@ namespace abrade::coupling
         for (int seed : o.seeds)
           samples[k].push_back(reduce(root + "/runs/" + labels[k] + "-seed" + std::to_string(seed), o.knives));
       phases = samples[0][0].phases;
+      wear_field = samples[0][0].field;
       sum.resize(o.files.size());
       for (std::size_t k = 0; k < o.files.size(); ++k)
         {
@@ -370,7 +372,7 @@ namespace abrade::coupling
     void ConceptStudy::write_md_head(std::ostream &md) const
     {
       md << "# Knife concepts (" << o.seeds.size() << " beds each; baseline: " << labels[0] << ")\n\n"
-         << "Knife wear per cycle (Archard volume, mean of the knives) in mm^3, payload in kg per cycle, mean +- "
+         << "Knife wear per cycle (" << wear_field << ", mean of the knives) in mm^3, payload in kg per cycle, mean +- "
             "standard deviation over the beds. Changes against the baseline pair by pair on the same beds: the "
             "geometric mean of the per-bed ratios and its 95 % interval [low, high]; * marks a significant change "
             "(the interval excludes no change). The predicted life: its 95 % interval in parentheses, its change against the "

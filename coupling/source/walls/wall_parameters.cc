@@ -417,9 +417,9 @@ namespace abrade::coupling
   /// the edge up; on the shell: x along the hinge (y; -y on a -x shell), z along the shell's
   /// bottom from the lip inwards, +y towards the shell's inside (the hinge), the edge
   /// 'Protrusion' beyond the lip.
-  void mount_knives(ParameterFile &f, DemCase &c, const double length)
+  void mount_parts(ParameterFile &f, DemCase &c, const double length)
   {
-    c.mounted_knife_length = length;
+    c.mounted_part_length = length;
     for (auto &wc : c.walls)
       {
         if (wc.mount.empty())

@@ -1,5 +1,6 @@
 #pragma once
-// `abrade calibrate`: the Archard coefficient W, and the choice among candidate runs, from wear
+// `abrade calibrate`: the wear coefficient W (of the run's law of Output/Wear field, Archard's
+// by default), and the choice among candidate runs, from wear
 // measured on knives in the field.
 //
 // Measurements are a table (CSV with a header): `tonnes` and `depth` (m; or `depth_mm`), and

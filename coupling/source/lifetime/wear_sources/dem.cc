@@ -1,4 +1,4 @@
-// Lifetime/Wear source = dem: every update runs the DEM's operating cycle on the knife's current
+// Lifetime/Wear source = dem: every update runs the DEM's operating cycle on the part's current
 // surface, one bed per seed (dem_wear_source.cc; wear_source.h); under mpirun the beds side by
 // side on groups of the ranks.
 #include <abrade/coupling/lifetime/wear_source.h>

@@ -24,7 +24,8 @@ namespace abrade::io
 {
   /// The folder of run directory @p run that holds the part's files, which is also their
   /// stem ("part": DIR/part/part.pvd): "knife" when the run has DIR/knife and no DIR/part (a
-  /// run of an abrade before the rename: read as it is, and resumed in its own layout; a fresh
+  /// run of an abrade from before subsection Knife was named Part: read as it is, and resumed
+  /// in its own layout; a fresh
   /// run in that directory writes part/, OutputDirectory::part_folder).
   std::string part_folder(const std::string &run);
 

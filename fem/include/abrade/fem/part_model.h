@@ -18,14 +18,14 @@
 // of the moved surface turn over, and the surface folds. Such an update (a triangle turned or
 // squashed to 5 % of its area), and one whose moved surface Gmsh cannot remesh, is taken from
 // the surface before it by eroded_surface.h, which solves "every point recedes along its normal
-// by its depth" as a set and cannot fold; the knife is meshed anew from that.
+// by its depth" as a set and cannot fold; the part is meshed anew from that.
 // The wear depth (wear_depth) is not that displacement: it is the distance of the worn surface
-// below the design (the fresh knife's surface), measured as `abrade compare` measures a scan
+// below the design (the fresh part's surface), measured as `abrade compare` measures a scan
 // (geometry::wear_depth, one definition for both). Where the offset faces meet at a chisel tip
 // or a corner the vertex moves 2.9-3x as far as the surface lies below the design; the
 // displacement stays available as vertex_displacement(), a diagnostic.
 // A depth that reaches the local wall thickness is reported as worn through and not applied
-// (only where the knife is at least half its plate thickness thick: near a sharp edge the local
+// (only where the part is at least half its plate thickness thick: near a sharp edge the local
 // thickness vanishes and the receding edge is the mesh motion's and the remeshing's business).
 #include <abrade/common/surface_distance.h>
 #include <abrade/common/timer.h>
@@ -126,19 +126,19 @@ namespace abrade::fem
     /// gauge there measures. The worn surface is laid onto the design at its vertices' closest
     /// design points and its depth interpolated there (as `abrade calibrate` looks it up).
     std::vector<double> wear_depth_below(const std::vector<dealii::Point<3>> &points) const;
-    /// How far each vertex of surface() has moved inward since the fresh knife, summed over the
+    /// How far each vertex of surface() has moved inward since the fresh part, summed over the
     /// updates [m] (a diagnostic: at edges and corners 2.9-3x the wear depth).
     const std::vector<double>    &vertex_displacement() const { return accumulated; }
     const dealii::Triangulation<3> &triangulation() const { return *tria; }
     /// The design (fresh) surface.
     const SolidSurface &design_surface() const { return design; }
     /// A per-vertex @p field of surface() at the surface points that were at @p points on the
-    /// fresh knife (the surface moved back by its accumulated displacement, interpolated
-    /// linearly): what happened to points followed through the knife's life.
+    /// fresh part (the surface moved back by its accumulated displacement, interpolated
+    /// linearly): what happened to points followed through the part's life.
     std::vector<double> at_followed_points(const std::vector<double>                &field,
                                            const std::vector<dealii::Point<3>> &points) const;
     /// The recession of followed points: how far the surface point that was at each of
-    /// @p points on the fresh knife has moved (vertex displacement interpolated); at a chisel
+    /// @p points on the fresh part has moved (vertex displacement interpolated); at a chisel
     /// tip that is the tip's recession along its bisector.
     std::vector<double> recession_at(const std::vector<dealii::Point<3>> &points) const
     {
@@ -177,15 +177,15 @@ namespace abrade::fem
     /// anew; the followed points carried over. Throws RunError when Gmsh cannot mesh it.
     /// @p volume > 0: the depth scaled so that the set removes that much (as move_surface's).
     void rebuild_eroded(const Before &before, const std::string &why, UpdateResult &r, double volume = 0);
-    /// The knife meshed anew inside its current surface (Gmsh remeshes the surface, keeping
+    /// The part meshed anew inside its current surface (Gmsh remeshes the surface, keeping
     /// the edges it classifies), the followed points carried over; @p r gets the quality and
     /// how it was meshed. Returns the transfer from the old surface to the new one (for fields
-    /// given on the old one). Throws InputError, the knife unchanged, when Gmsh cannot mesh it;
+    /// given on the old one). Throws InputError, the part unchanged, when Gmsh cannot mesh it;
     /// RunError when the new mesh has inverted cells.
     SurfaceTransfer remesh_current(UpdateResult &r);
-    /// The knife meshed anew inside its current surface (@p from), then moved by @p depth
+    /// The part meshed anew inside its current surface (@p from), then moved by @p depth
     /// (given on @p from) carried to the new vertices, the remesh's change of the volume part of
-    /// @p volume; @p r says it was meshed first, and @p why. False, the knife as it was, where
+    /// @p volume; @p r says it was meshed first, and @p why. False, the part as it was, where
     /// Gmsh could not remesh it, or only filled its own triangles where @p new_vertices are
     /// needed (the step would fold on the old ones).
     bool remesh_then_move(const SolidSurface &from, const std::vector<double> &depth, bool may_rebuild, UpdateResult &r,
@@ -219,7 +219,7 @@ namespace abrade::fem
     void remesh_after_step(const Before &before, const dealii::Triangulation<3> &unmoved,
                            const std::vector<double> &since_before, const std::vector<double> &given_depth,
                            double moved_most, bool may_rebuild, UpdateResult &r, double volume, bool may_mesh_first);
-    /// apply_wear after its worn-through check: the vertices moved by @p depth, the knife meshed
+    /// apply_wear after its worn-through check: the vertices moved by @p depth, the part meshed
     /// anew first where they would fold on the mesh as it stands, built as a set where they
     /// fold on a fresh mesh too (if @p may_rebuild).
     /// @p volume > 0: the depth scaled so that the moved surface encloses that much less.

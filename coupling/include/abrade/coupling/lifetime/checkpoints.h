@@ -1,6 +1,6 @@
 #pragma once
 // The lifetime loop's checkpoints (`abrade run ... --resume`). After update u the loop writes
-// knife-u.ckpt (the knife's exact mesh and fields) and loop-u.txt (the loop's state), each
+// knife-u.ckpt (the part's exact mesh and fields) and loop-u.txt (the loop's state), each
 // aside and then renamed, the state last: a checkpoint is complete when its state file exists,
 // whenever the process was killed. The newest two are kept, because under mpirun every rank
 // writes its own and a kill can fall between two ranks' writes of one update: the ranks then
@@ -31,15 +31,16 @@ namespace abrade::coupling
     /// same directory must not be resumed from later).
     void clear() const;
 
-    /// Where the knife of update @p update is (0: the fresh knife, which has no state file).
-    std::string knife_file(long update) const;
+    /// Where the part of update @p update is (0: the fresh part, which has no state file), in
+    /// knife-u.ckpt (the name the checkpoints of every abrade have).
+    std::string part_file(long update) const;
     /// Where the loop's state after update @p update is.
     std::string state_file(long update) const;
     /// Where to write them before commit().
-    std::string knife_file_aside(long update) const { return knife_file(update) + ".tmp"; }
+    std::string part_file_aside(long update) const { return part_file(update) + ".tmp"; }
     std::string state_file_aside(long update) const { return state_file(update) + ".tmp"; }
 
-    /// Renames the files written aside for @p update into place (the knife, then the state)
+    /// Renames the files written aside for @p update into place (the part, then the state)
     /// and removes the checkpoint two updates older.
     void commit(long update) const;
 

@@ -24,7 +24,7 @@ namespace abrade::coupling::lifetime
     double      limit; ///< the quantity's end-of-life value; <= 0: not a criterion
   };
 
-  /// The trajectory after one update (or the fresh knife: tonnes 0, values 0).
+  /// The trajectory after one update (or the fresh part: tonnes 0, values 0).
   struct TrajectoryPoint
   {
     double              tonnes;
@@ -45,7 +45,7 @@ namespace abrade::coupling::lifetime
   /// The tonnes where the segment (t0, v0) - (t1, v1) reaches @p limit (v0 < limit <= v1).
   double crossing(double t0, double v0, double t1, double v1, double limit);
 
-  /// The end of life of @p trajectory (its first point is the fresh knife) under @p criteria.
+  /// The end of life of @p trajectory (its first point is the fresh part) under @p criteria.
   EndOfLife end_of_life(const std::vector<Criterion> &criteria, const std::vector<TrajectoryPoint> &trajectory);
 
   /// What end_of_life() found, in words for the log and summary.json ("maximum depth reached

@@ -53,7 +53,7 @@ namespace abrade::coupling::lifetime
   {
     double      tonnes = 0; ///< handled after the update [t]
     double      value  = 0; ///< the quantity after the update (the trajectory's value)
-    std::size_t beds   = 1; ///< beds whose mean moved the knife in this update
+    std::size_t beds   = 1; ///< beds whose mean moved the part in this update
     /// the beds' sample variance of their rate at the place that ends life, relative to the
     /// square of their mean (n - 1 in the denominator; 0 for one bed; -1: the place did not
     /// wear, left out of the pool)

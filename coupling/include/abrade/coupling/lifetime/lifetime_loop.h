@@ -1,6 +1,6 @@
 #pragma once
-// The `lifetime` job: a knife's wear over its working life, by alternating operating cycles
-// (DEM, or a known rate) and geometry updates of the knife's solid model (FEM). run() reads as
+// The `lifetime` job: a part's wear over its working life, by alternating operating cycles
+// (DEM, or a known rate) and geometry updates of the part's solid model (FEM). run() reads as
 // the algorithm; each step is a member function, and the arithmetic of each step is a function of
 // its own with a unit test (tests/unit/test_lifetime_steps.cc):
 //
@@ -16,8 +16,8 @@
 //                                mesh follows, is checked and remeshed (fem/part_model.h); a
 //                                step that cannot be remeshed is rejected: back to the checkpoint
 //     record()                   wear depth below the design (the definition `abrade compare`
-//                                uses), volumes, followed points: trajectory.csv, knife series
-//     checkpoint()               the knife and the loop's state (key = value, state_file.h)
+//                                uses), volumes, followed points: trajectory.csv, part series
+//     checkpoint()               the part and the loop's state (key = value, state_file.h)
 //   finish()                     the life from the whole trajectory, reached or extrapolated
 //                                (end_of_life.h), its interval over all updates' beds
 //                                (life_interval.h): final_life(), then write_results()
@@ -79,7 +79,7 @@ namespace abrade::coupling::lifetime
       std::string                   calibration_file;    ///< Lifetime/Calibration, resolved; empty: none
     };
 
-    /// The outcome of moving the knife by one update.
+    /// The outcome of moving the part by one update.
     struct Step
     {
       bool                         moved = false;
@@ -152,9 +152,9 @@ namespace abrade::coupling::lifetime
     LifeInterval current_interval(const EndOfLife &e) const;
     /// The beds of the next update under Lifetime/Target interval.
     void choose_beds();
-    /// The gauges' sections of the knife as it is and of its design at the same stations.
-    void gauge_the_knife();
-    /// The part as the criteria read it: the knife as it is now, or its design.
+    /// The gauges' sections of the part as it is and of its design at the same stations.
+    void gauge_the_part();
+    /// The part as the criteria read it: the part as it is now, or its design.
     PartNow part_now() const;
     PartNow design_now() const;
     // the parts of move_part()
@@ -169,7 +169,7 @@ namespace abrade::coupling::lifetime
     /// The end of life within this update (@p st worn through): where and after how many tonnes
     /// the depth first reaches the local thickness, and the other criteria at the update's end.
     void note_worn_through(const Step &st, const Rates &rates, long n);
-    /// The beds' rates where the criteria read the knife, before it moves (move_part()).
+    /// The beds' rates where the criteria read the part, before it moves (move_part()).
     BedRates rates_at_places(const Rates &rates, long cycles) const;
     /// The criterion of that name (one every run has: the depth, the worn mass).
     std::size_t criterion_named(const std::string &name) const;
@@ -189,7 +189,7 @@ namespace abrade::coupling::lifetime
     std::unique_ptr<fem::PartModel>       part_model;
     ProfileFrame                          frame; ///< where the profiles are cut
     EdgeSections                          design_sections; ///< the design's, for the gauges (edge_gauge.h)
-    EdgeSections                          sections;        ///< the worn knife's, after the last update
+    EdgeSections                          sections;        ///< the worn part's, after the last update
     EdgeSections                          design_at_sections; ///< the design's at the same stations
     double                                design_thickness = 0; ///< the design's largest at the gauge height
     std::unique_ptr<fem::SolidOutput>     part_output;
@@ -211,7 +211,7 @@ namespace abrade::coupling::lifetime
     /// every registered end-of-life criterion (end_of_life_criterion.h) and their limits
     std::vector<std::unique_ptr<EndOfLifeCriterion>> criteria;
     std::vector<Criterion>       limits;
-    std::vector<TrajectoryPoint> history;      ///< per update (and the fresh knife) the criteria's values
+    std::vector<TrajectoryPoint> history;      ///< per update (and the fresh part) the criteria's values
     std::vector<std::string>     trajectory_rows; ///< trajectory.csv's rows as written (rebuilt from them on resume)
     std::vector<std::vector<UpdateRecord>> records; ///< per criterion, per update (life_interval.h)
     /// per criterion: the beds' deviations at each of its places (the design's vertices, the

@@ -1,5 +1,5 @@
 #pragma once
-// The lifetime loop's files besides trajectory.csv and the knife series: cross-sections of the
+// The lifetime loop's files besides trajectory.csv and the part series: cross-sections of the
 // knife per update (part/profile_F.csv, blocks per update) and the gnuplot figures
 // (trajectory.png, part/profile_F.png).
 #include <abrade/coupling/lifetime/sections.h>
@@ -10,8 +10,8 @@
 
 namespace abrade::coupling::lifetime
 {
-  /// Where the knife's cross-sections are taken and what the figures show, from the design
-  /// surface's bounding box (the knife's frame: x along the edge, z up from the edge): the
+  /// Where the part's cross-sections are taken and what the figures show, from the design
+  /// surface's bounding box (the part's frame: x along the edge, z up from the edge): the
   /// planes x = x0 + f (x1 - x0); y over twice the part's thickness and z from its lowest
   /// point up to three thicknesses (the worn end, where the gauges look for the whole plate).
   struct ProfileFrame
@@ -26,7 +26,7 @@ namespace abrade::coupling::lifetime
   /// "part_00003.stl" (update 0: the design).
   std::string part_surface_name(const std::string &part, long update);
 
-  /// The knife's cross-sections at the fractions @p planes of its length: segments (y, z) where
+  /// The part's cross-sections at the fractions @p planes of its length: segments (y, z) where
   /// surface triangles cross the plane (sections.h), appended as update @p update's block; the
   /// first update starts the files with the outline of @p design as update 0.
   void write_profiles(const fem::SolidSurface &s, const fem::SolidSurface &design, const ProfileFrame &frame,

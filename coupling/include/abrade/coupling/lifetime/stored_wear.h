@@ -4,13 +4,13 @@
 // loop can be run again without its wear source (Lifetime/Wear source = replay).
 //
 // What for: the footprint (Lifetime/Smoothing radius) acts after the DEM, on each cycle's wear.
-// A second footprint, r', needs no DEM run of its own: the replay moves the knife again with
+// A second footprint, r', needs no DEM run of its own: the replay moves the part again with
 // the stored wear filtered at r' (docs/field.md, "Candidate footprints without a DEM run each").
 //
 // How exact that is: a replay's update takes the stored update nearest in state, the one that
 // began with the most volume worn off but not more than the replay's knife has lost (the worn
 // volume does not depend on the footprint; at another W it is reached at other tonnes). The
-// stored wear fell on the stored run's surface; at another footprint the knife has another
+// stored wear fell on the stored run's surface; at another footprint the part has another
 // shape after the first update, and the replay carries the stored wear onto it (a wear volume
 // per unit area, interpolated at each vertex's closest point on the stored surface, the total
 // kept). What the replay leaves out is how the DEM's wear itself would have changed with that
@@ -37,7 +37,7 @@ namespace abrade::coupling::lifetime
     double                   tonnes_start = 0; ///< the tonnes handled before it
     std::vector<int>         bed_seeds;        ///< the beds of wear.seed_volume, in order
     CycleWear                wear;             ///< per-vertex volumes per cycle of @p surface
-    fem::SolidSurface        surface;          ///< the knife's surface it fell on (vertices, triangles, ids)
+    fem::SolidSurface        surface;          ///< the part's surface it fell on (vertices, triangles, ids)
     double                   wear_coefficient = 0;
     bool                     removes_volume   = true;
     double                   coarse_graining_factor = 1; ///< of the case that made it
@@ -70,7 +70,7 @@ namespace abrade::coupling::lifetime
   /// very surface (the same run again), else the stored update that began with the most volume
   /// worn off but not more than @p surface has lost (the enclosed volume below the first stored
   /// surface's), its volumes carried onto @p surface (carry_wear_volume), its beds in
-  /// CycleWear::bed_seeds. Said once each in CycleWear::warnings: a knife that has lost more
+  /// CycleWear::bed_seeds. Said once each in CycleWear::warnings: a part that has lost more
   /// than the stored run did by its end (its last update's wear is used), a stored update
   /// serving a second update. @p design: this run's unworn surface, which must be the stored
   /// run's (the same extent within a tenth of @p tolerance, the same volume within 0.1 %), and

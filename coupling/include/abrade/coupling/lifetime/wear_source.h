@@ -1,8 +1,8 @@
 #pragma once
 // Where a lifetime update's wear comes from (Lifetime/Wear source, a registered choice): the
-// DEM's operating cycle on the knife's current surface, a DEM run's stored wear, or a known
+// DEM's operating cycle on the part's current surface, a DEM run's stored wear, or a known
 // analytic rate (verification). The loop asks for one
-// cycle's wear per bed seed, as a wear volume at every vertex of the knife's surface: deposited
+// cycle's wear per bed seed, as a wear volume at every vertex of the part's surface: deposited
 // where the contacts happened (barycentric weights of each contact point, dem/wear.h), so that
 // wear at the chisel's tip stays on the tip's vertices.
 #include <abrade/common/plugin_registry.h>
@@ -18,7 +18,7 @@
 
 namespace abrade::coupling::lifetime
 {
-  /// One operating cycle's wear on the knife.
+  /// One operating cycle's wear on the part.
   struct CycleWear
   {
     std::vector<std::vector<double>> seed_volume;   ///< per seed: wear volume per cycle at each surface vertex [m^3]
@@ -44,16 +44,16 @@ namespace abrade::coupling::lifetime
   {
   public:
     virtual ~WearSource() = default;
-    /// The wear of one cycle on the knife's current @p surface (its vertex order), after
+    /// The wear of one cycle on the part's current @p surface (its vertex order), after
     /// @p tonnes handled so far, on one bed per seed of @p bed_seeds.
     virtual CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) = 0;
     /// The phases of the cycle (trajectory columns FIELD_<phase>: archard_volume_penetration).
     virtual std::vector<std::string> phases() const = 0;
-    /// The coefficient the wear scales with (the knife's law of Output/Wear field: Archard's W;
+    /// The coefficient the wear scales with (the part's law of Output/Wear field: Archard's W;
     /// 0: none, or not the DEM's).
     virtual double wear_coefficient() const { return 0; }
     /// Whether the wear is a volume of material removed (Archard's law measures one): the
-    /// loop then has the moved knife lose exactly that volume in every update
+    /// loop then has the moved part lose exactly that volume in every update
     /// (PartModel::apply_wear). A known depth rate (verification) is not.
     virtual bool removes_volume() const { return true; }
     /// What the wear comes from, in the loop's messages.
@@ -128,7 +128,7 @@ namespace abrade::coupling::lifetime
     explicit WearSourceRegistration(WearSourceFactory make);
   };
 
-  /// The coefficient of the knife's law of Output/Wear field in case @p c (Archard's W; 0: none).
+  /// The coefficient of the part's law of Output/Wear field in case @p c (Archard's W; 0: none).
   double case_wear_coefficient(const DemCase &c);
 
   /// A known wear rate: @p expression, depth per tonne [m/t] as a function of x, y, z [m] (the

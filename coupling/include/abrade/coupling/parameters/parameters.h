@@ -115,8 +115,8 @@ namespace abrade::coupling
     std::vector<WallCase> walls;
     /// The mechanism that moves a grab's walls (Grab mechanism; none: each wall's own motion).
     std::optional<dem::RopeGrabRig> grab_mechanism;
-    /// Part/Length, by which mount_knives centres a mounted knife on its lip [m]
-    double mounted_knife_length = 0.4;
+    /// Part/Length, by which mount_parts centres a mounted knife on its lip [m]
+    double mounted_part_length = 0.4;
     double snapshot_interval = 0.05, force_interval = 1e-3;
     bool   write_particles   = true;
   };

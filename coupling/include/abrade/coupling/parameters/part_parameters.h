@@ -71,7 +71,7 @@ namespace abrade::coupling
   /// to its length and its edge at z = 0, is placed so by construction). Across the lip (y) the
   /// part stays as placed: its y = 0 plane on the lip's line. Returns a warning when the part
   /// does not straddle y = 0 (empty otherwise).
-  std::string fit_mounted_knives(DemCase &c, const fem::SolidSurface &design);
+  std::string fit_mounted_parts(DemCase &c, const fem::SolidSurface &design);
 
   /// Meshes the part of subsection Part (into @p directory) and gives every wall with
   /// Geometry = solid model its surface, placed.

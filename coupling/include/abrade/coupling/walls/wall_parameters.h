@@ -35,7 +35,7 @@ namespace abrade::coupling
 
   /// Places every mounted part (@p knife_length long, Part/Length: part_parameters.h) on its
   /// shell's lip and gives it the shell's motion.
-  void mount_knives(ParameterFile &f, DemCase &c, double knife_length);
+  void mount_parts(ParameterFile &f, DemCase &c, double knife_length);
 
   /// Whether a wall of Walls is the part's surface (Geometry = solid model). A file that
   /// describes a part alone has none: no case around the part.
