@@ -37,10 +37,10 @@ read -r total per_update < <(count continue)
 (( total >= 2 )) || { echo "lost particles counted $total"; exit 1; }
 
 analytic=("$abrade" run "$src/tests/lifetime/analytic_uniform.prm" --quiet --set "Lifetime/Maximum updates=2")
-$expect 3 "run failed: no life predicted: no wear on the knife" -- "${analytic[@]}" --output no_wear \
+$expect 3 "run failed: no life predicted: no wear on the part" -- "${analytic[@]}" --output no_wear \
   --set "Lifetime/Analytic/Wear rate=0"
 $expect 2 "Lifetime/Analytic/Wear rate: the rate is -1e-06 at \(" -- "${analytic[@]}" --output negative \
   --set "Lifetime/Analytic/Wear rate=-1e-6"
-$expect 3 "run failed: no life predicted: the knife stopped wearing after 1500 t" -- "${analytic[@]}" --output stops \
+$expect 3 "run failed: no life predicted: the part stopped wearing after 1500 t" -- "${analytic[@]}" --output stops \
   --set "Lifetime/Analytic/Wear rate=1e-6*(t<1000)" --set "Lifetime/Maximum updates=5"
 echo "DEM faults and wear-free runs: reported"

@@ -9,7 +9,7 @@
 #     to 1 %, and one refused by Gmsh halves an update in one run only).
 #  2. The worked example (cases/bolted_edge): edge.step is what `abrade convert` makes of
 #     edge.geo (the same volume to 1e-9, the same 11 faces); placed by its rotation and offset,
-#     it lies in the knife's frame (bounding box 0..0.4 x -0.015..0.015 x 0..0.5 m to 1e-9);
+#     it lies in the part's frame (bounding box 0..0.4 x -0.015..0.015 x 0..0.5 m to 1e-9);
 #     with edge-concentrated analytic wear it runs to its end of life (4 mm below the design,
 #     interpolated). (That clamped faces do not move: the unit test PartFiles.ClampedFacesDoNotMove.)
 #     Which faces each selector took (summary.json: selectors, and each face's role and its

@@ -8,7 +8,7 @@
 #          cuts the convex edges by up to half its grid spacing);
 #  volume: the rate is a volume (as the DEM's Archard volume): the depth is scaled until the set
 #          removes it, within 0.5 % (before, the set was not scaled: 0.961, and the loop warned
-#          "the knife lost 0.9614 times the volume worn"), and the factor is the exact body's
+#          "the part lost 0.9614 times the volume worn"), and the factor is the exact body's
 #          (1.0538: the depth whose inner parallel body removes depth x area) within 2 %
 #          (measured 1.0402).
 # For both: filled inside its own triangles by Gmsh (HXT without the optimiser: seconds; with the

@@ -12,7 +12,7 @@ namespace abrade::coupling
       std::string name() const override { return "lifetime"; }
       std::string documentation() const override
       {
-        return "alternate DEM cycles (on the knife's solid model) and geometry updates until end of life (subsection Lifetime)";
+        return "alternate DEM cycles (on the part's solid model) and geometry updates until end of life (subsection Lifetime)";
       }
       void   run(JobContext &ctx) const override;
       Report report() const override { return {true, true, true}; }

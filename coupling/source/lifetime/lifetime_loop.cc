@@ -89,7 +89,7 @@ namespace abrade::coupling::lifetime
         const Rates rates = filter(wear);
         if (!(rates.largest > 0))
           {
-            end = "no wear on the knife (does the cycle touch it?)";
+            end = "no wear on the part (does the cycle touch it?)";
             break;
           }
         const Step step = move_part(rates, choose_cycles(rates));
@@ -180,7 +180,7 @@ namespace abrade::coupling::lifetime
     for (const auto &row : trajectory_rows)
       trajectory.raw_row(row);
     trajectory.flush();
-    ctx.log.line("Lifetime: knife of " + std::to_string(part_model->triangulation().n_active_cells()) + " cells, " +
+    ctx.log.line("Lifetime: part of " + std::to_string(part_model->triangulation().n_active_cells()) + " cells, " +
                  std::to_string(beds_now) + " fresh bed(s) per update, wear from " +
                  source_choice->description());
   }
@@ -248,8 +248,8 @@ namespace abrade::coupling::lifetime
         ctx.parameters.fail({"Lifetime"}, "Recession points",
                             "point " + std::to_string(k + 1) + " (" + io::format_number(points[3 * k]) + ", " +
                               io::format_number(points[3 * k + 1]) + ", " + io::format_number(points[3 * k + 2]) + ") lies " +
-                              io::format_number(std::abs(off[k])) + " m from the knife's surface (more than its Mesh size): "
-                              "give points on the edge in the knife's frame (after the part's placement)");
+                              io::format_number(std::abs(off[k])) + " m from the part's surface (more than its Mesh size): "
+                              "give points on the edge in the part's frame (after its placement)");
   }
 
   void LifetimeLoop::start_afresh()
@@ -478,11 +478,11 @@ namespace abrade::coupling::lifetime
     io::require_input_file(s.calibration_file);
     calibration = read_wear_calibration(s.calibration_file);
     if (!(source->wear_coefficient() > 0))
-      ctx.parameters.fail({"Lifetime"}, "Calibration", "the knife's wear law has no coefficient to replace");
+      ctx.parameters.fail({"Lifetime"}, "Calibration", "the part's wear law has no coefficient to replace");
     if (!calibration.wear_field.empty() && calibration.wear_field != dem_case.wear_field)
       ctx.parameters.fail({"Lifetime"}, "Calibration",
                           s.calibration_file + " fitted the coefficient of " + calibration.wear_field +
-                            ", this run wears the knife by " + dem_case.wear_field +
+                            ", this run wears the part by " + dem_case.wear_field +
                             " (Output/Wear field): another law's coefficient");
     if (const double ratio = calibration.coefficient / source->wear_coefficient(); !(ratio >= 1e-3 && ratio <= 1e3))
       ctx.parameters.fail({"Lifetime"}, "Calibration",
@@ -672,14 +672,14 @@ namespace abrade::coupling::lifetime
       }
     if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
       return "";
-    return error.empty() ? "the knife could not be moved on another MPI rank" : error;
+    return error.empty() ? "the part could not be moved on another MPI rank" : error;
   }
 
   void LifetimeLoop::log_how_it_moved(const fem::PartModel::UpdateResult &result)
   {
     const std::string at = "update " + std::to_string(update) + ": ";
     if (!result.meshed_first.empty())
-      ctx.log.line(at + "the knife meshed anew before its vertices moved (" + result.meshed_first + ")");
+      ctx.log.line(at + "the part meshed anew before its vertices moved (" + result.meshed_first + ")");
     if (!result.rebuilt.empty())
       ctx.log.line(at + "the worn surface built anew (" + result.rebuilt + ")" +
                    (result.volume_cut_off > 0
@@ -987,7 +987,7 @@ namespace abrade::coupling::lifetime
         source->removes_volume() && rates.wear_volume > 0 && std::abs(ratio - 1) > 0.02)
       {
         ++updates_off_volume;
-        ctx.log.warning("update " + std::to_string(update) + ": the knife lost " + io::format_number(ratio) +
+        ctx.log.warning("update " + std::to_string(update) + ": the part lost " + io::format_number(ratio) +
                         " times the volume worn in it (" +
                         (st.result.rebuilt.empty() ? std::string("a remesh's own share or a depth that could not be "
                                                                  "scaled")
@@ -1340,7 +1340,7 @@ namespace abrade::coupling::lifetime
         // the wear stopped (a cycle that no longer touches the part, a rate that ends): the
         // life would be extrapolated from wear that no longer happens
         ctx.log.line("Lifetime: " + end + " after " + std::to_string(cycles) + " cycles; no life predicted");
-        throw RunError("no life predicted: the knife stopped wearing after " + io::format_number(tonnes, 6) +
+        throw RunError("no life predicted: the part stopped wearing after " + io::format_number(tonnes, 6) +
                        " t (" + end + "); the end of life is not reached");
       }
     if (e.criterion == EndOfLife::none)

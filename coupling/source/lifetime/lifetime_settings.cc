@@ -42,14 +42,14 @@ namespace abrade::coupling::lifetime
     prm.declare_entry("Depth increment fraction", "0.05", Double(1e-6, 1),
                       "[-] Adaptive updates: largest depth increment per update over the mesh size. Range: (0, 1].");
     prm.declare_entry("Smoothing radius", "0", Double(0, dem::unbounded),
-                      "[m] Length of the wear filter: the per-cycle wear is smoothed over the knife's "
+                      "[m] Length of the wear filter: the per-cycle wear is smoothed over the part's "
                       "surface with a Gaussian of this length in the distance along the surface (it never "
                       "crosses the plate), conserving the volume. It stands for the particle's footprint; "
                       "0: the largest particle radius (DEM wear), none (analytic wear). Range: >= 0.");
     prm.declare_entry("Recession points", "0.2, 0, 0", List(List(Double(-dem::unbounded, dem::unbounded), 3, 3), 1, 100, ";"),
-                      "[m] Points of the knife (in its own coordinates: x along the length from 0, y "
+                      "[m] Points of the part (in its own coordinates: x along the length from 0, y "
                       "across the thickness from its middle, z up from the edge), separated by ';', whose "
-                      "recession (how far the surface point that was there on the fresh knife has moved, "
+                      "recession (how far the surface point that was there on the fresh part has moved, "
                       "interpolated: at a chisel's tip, the tip's recession along its bisector) the trajectory "
                       "follows: column point_recession for the first, point_recession_2, ... for the "
                       "others. Default: the middle of the edge of the default knife.");
@@ -77,14 +77,14 @@ namespace abrade::coupling::lifetime
                       "Target interval: the most beds an update draws. Range: [1, 1000].");
     prm.declare_entry("Calibration", "", Anything(),
                       "[file] calibration.json of abrade calibrate (relative to this file): the best-ranked "
-                      "run's fitted wear coefficient (W) replaces the knife's, every cycle's wear scaled by "
+                      "run's fitted wear coefficient (W) replaces the part's, every cycle's wear scaled by "
                       "their ratio, and the fit's standard error enters the life's interval as its "
                       "component 'calibration' (to first order the life goes as 1/W). The fit holds for the "
                       "footprint it was made with (the calibrated run's Smoothing radius): another one is "
                       "warned about. DEM wear only. Empty: the case's W, no calibration component.");
     prm.declare_entry("Profile planes", "0.5", List(Double(0, 1)),
                       "Cross-sections of the part written per update (part/profile_N.csv and .png), "
-                      "at these fractions of the knife's length (planes normal to its length).");
+                      "at these fractions of the part's length (planes normal to its length).");
     prm.leave_subsection();
   }
 
@@ -147,15 +147,15 @@ namespace abrade::coupling::lifetime
                           "0 takes the tonnes from the DEM's payload: set Simulation/Payload height");
     if (particles &&
         std::none_of(dem_case.walls.begin(), dem_case.walls.end(), [](const auto &w) { return w.solid_model; }))
-      ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the knife)");
+      ctx.parameters.fail({}, "Walls", "a lifetime run needs a wall with Geometry = solid model (the part)");
     if (particles)
       for (const auto &w : dem_case.walls)
         if (w.solid_model && !dem::law_recording(w.wear, dem_case.wear_field))
           {
             const dem::WearLaw *law = dem::wear_law_of_field(dem_case.wear_field);
             ctx.parameters.fail({"Wall " + w.wall.name, "Wear"}, "Laws",
-                                "the knife's wear laws do not record Output/Wear field = " + dem_case.wear_field +
-                                  ", the field the lifetime loop wears the knife by: add " +
+                                "the part's wear laws do not record Output/Wear field = " + dem_case.wear_field +
+                                  ", the field the lifetime loop wears the part by: add " +
                                   (law ? law->name() : std::string("its law")));
           }
     // a known rate is per tonne: nothing weighs a payload

@@ -214,7 +214,7 @@ namespace abrade::coupling::lifetime
           other = other || std::abs(a.lower_bound(d) - b.lower_bound(d)) > 0.1 * tolerance ||
                   std::abs(a.upper_bound(d) - b.upper_bound(d)) > 0.1 * tolerance;
         if (other)
-          throw InputError(directory, "its wear fell on another knife (its unworn volume " +
+          throw InputError(directory, "its wear fell on another part (its unworn volume " +
                                         io::format_number(v_stored * 1e6, 6) + " cm^3 and extent against this run's " +
                                         io::format_number(v_design * 1e6, 6) + " cm^3): replay a run of the same case "
                                         "(only W and the Smoothing radius may differ)");
@@ -256,7 +256,7 @@ namespace abrade::coupling::lifetime
         if (worn > worn_at_end && !said_beyond)
           {
             said_beyond = true;
-            said.push_back("after " + io::format_number(tonnes, 4) + " t the knife has lost more (" +
+            said.push_back("after " + io::format_number(tonnes, 4) + " t the part has lost more (" +
                                     io::format_number(worn * 1e6, 4) + " cm^3) than the stored run " +
                                     source_directory + " did (" + io::format_number(worn_at_end * 1e6, 4) +
                                     " cm^3): its last update's wear, on its last surface, is used from here on");

@@ -46,8 +46,8 @@ namespace abrade::coupling
                       "depth). Range: > 0.");
     prm.declare_entry("Wear field", "archard_volume", volume_field_selection(),
                       "The worn-volume field that the wear profile (walls/NAME_wear_profile.csv), the "
-                      "lifetime loop (the knife's wear depth), sweep, concepts and calibrate use: a "
-                      "volume field of a wear law (" + volume_field_names() + "); the knife's "
+                      "lifetime loop (the part's wear depth), sweep, concepts and calibrate use: a "
+                      "volume field of a wear law (" + volume_field_names() + "); the part's "
                       "Wear/Laws must include its law.");
     prm.declare_entry("Wear filter length", "0.0275", Double(0, dem::unbounded),
                       "[m] A fixed length of the surface filter for the filtered peak depth of "

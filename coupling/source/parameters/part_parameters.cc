@@ -74,16 +74,16 @@ namespace abrade::coupling
                       "to metres on import (leave 1; another value multiplies on top, with a warning). A .msh "
                       "of hexahedra is split into tetrahedra. Range: > 0.");
     prm.declare_entry("Maximum cells", "3000000", Double(0, dem::unbounded),
-                      "[-] Refuse a knife that would need more tetrahedra than this (estimated before meshing "
+                      "[-] Refuse a part that would need more tetrahedra than this (estimated before meshing "
                       "from its volume and Mesh size: about 8.5 V / h^3), with a Mesh size that fits; 0: no "
                       "limit. Range: >= 0.");
-    prm.declare_entry("Density", "7800", Double(1e-6, dem::unbounded), "[kg/m^3] Density of the knife steel (mass). Range: > 0.");
+    prm.declare_entry("Density", "7800", Double(1e-6, dem::unbounded), "[kg/m^3] Density of the part's steel (mass). Range: > 0.");
     prm.declare_entry("Solid", "all", Anything(),
                       "Geometry = file, a CAD file with several solids: 'all' takes them all as one part, a "
                       "number the solid of that number (the part job lists them).");
     section.declare_vector("Rotation axis", {0, 0, 1},
                    "[-] Geometry = file: the axis of the rotation that brings the part from the file's "
-                   "(assembly) coordinates into the knife's frame (edge along x at the bottom, height along "
+                   "(assembly) coordinates into the part's frame (edge along x at the bottom, height along "
                    "z); through the origin, right-handed. A mounted part is then centred on its shell's lip "
                    "along x and z by its bounding box; across the lip its y = 0 plane lies on the lip's line.");
     prm.declare_entry("Rotation angle", "0", Double(-360, 360),
@@ -100,7 +100,7 @@ namespace abrade::coupling
                       "Geometry = file: the faces bolted or welded to the shell, which the mesh motion holds "
                       "and which do not wear; selectors separated by ';': 'group NAME' (a physical group of "
                       "a .msh, by name or number, or a CAD face by its number), 'box x0, y0, z0, x1, y1, z1' "
-                      "(faces whose centre lies in the box, in metres, in the knife's frame after scale and "
+                      "(faces whose centre lies in the box, in metres, in the part's frame after scale and "
                       "placement), 'normal nx, ny, nz[, angle]' (faces whose outward normal is within angle "
                       "degrees, default 10, of the direction), 'cylinder px, py, pz, ax, ay, az, r[, tolerance]' "
                       "(faces on the cylinder of radius r about the axis through p along a: a bore or a pin, "
@@ -141,7 +141,7 @@ namespace abrade::coupling
         {
           char text[300];
           std::snprintf(text, sizeof text,
-                        "%.3g m needs about %.3g tetrahedra for this knife, more than Maximum cells = %.3g; a "
+                        "%.3g m needs about %.3g tetrahedra for this part, more than Maximum cells = %.3g; a "
                         "Mesh size of %.3g m needs about half the limit",
                         part.mesh_size, cells, fs.max_cells, part.mesh_size * std::cbrt(cells / (0.5 * fs.max_cells)));
           file.fail({"Part"}, "Mesh size", text);
@@ -150,13 +150,13 @@ namespace abrade::coupling
         file.fail({"Part"}, part.clamped_faces.empty() ? "Wearable faces" : "Clamped faces",
                   "the parametric knife's clamped face is its top (bolted to the shell); face selectors are for "
                   "Geometry = file");
-      // the parametric knife is built in the knife's frame: nothing to place
+      // the parametric knife is built in the part's frame: nothing to place
       if (fs.rotation_angle != 0)
-        file.fail({"Part"}, "Rotation angle", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        file.fail({"Part"}, "Rotation angle", "the parametric knife is built in the part's frame: placement is for Geometry = file");
       if (fs.offset.norm() > 0)
-        file.fail({"Part"}, "Offset", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        file.fail({"Part"}, "Offset", "the parametric knife is built in the part's frame: placement is for Geometry = file");
       if (!fs.place.text.empty())
-        file.fail({"Part"}, "Place", "the parametric knife is built in the knife's frame: placement is for Geometry = file");
+        file.fail({"Part"}, "Place", "the parametric knife is built in the part's frame: placement is for Geometry = file");
     }
   } // namespace
 
@@ -318,7 +318,7 @@ namespace abrade::coupling
         }
     if (mounted && !(y0 < 0 && y1 > 0))
       return "the mounted part lies at y = " + io::format_number(y0) + " ... " + io::format_number(y1) +
-             " m in the knife's frame: its y = 0 plane is put on the lip's line (the middle of the plate "
+             " m in the part's frame: its y = 0 plane is put on the lip's line (the middle of the plate "
              "should be there); Part/Offset moves it";
     return {};
   }

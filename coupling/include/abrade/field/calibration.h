@@ -4,7 +4,7 @@
 // measured on knives in the field.
 //
 // Measurements are a table (CSV with a header): `tonnes` and `depth` (m; or `depth_mm`), and
-// where: `x, y, z` in the knife's frame, or `location` naming a row of a locations table
+// where: `x, y, z` in the part's frame, or `location` naming a row of a locations table
 // (`name, x, y, z`). `abrade compare --reference DESIGN --tonnes T` writes such a table from a
 // scan (measured_depths.csv).
 //

@@ -15,7 +15,7 @@ namespace abrade::coupling::lifetime
       void declare_parameters(dealii::ParameterHandler &prm) const override
       {
         prm.declare_entry(parameter(), "0", dealii::Patterns::Double(0),
-                          "[kg] End of life: the mass worn off the knife; 0: no limit. Range: >= 0.");
+                          "[kg] End of life: the mass worn off the part; 0: no limit. Range: >= 0.");
       }
       void parse_parameters(dealii::ParameterHandler &prm) override { maximum = prm.get_double(parameter()); }
       bool   active() const override { return maximum > 0; }

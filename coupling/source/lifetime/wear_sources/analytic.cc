@@ -25,9 +25,9 @@ namespace abrade::coupling::lifetime
       {
         prm.declare_entry("Wear rate", "1e-6", dealii::Patterns::Anything(),
                           "[m/t] Wear source = analytic: the depth worn off per tonne handled, along the "
-                          "inward normal, as a function of the knife's current coordinates x, y, z (the "
-                          "knife's own frame, see Recession points), of t, the tonnes handled so far, and of "
-                          "zlow, the z of the knife's lowest wearable point now, and zedge, the z of its lowest "
+                          "inward normal, as a function of the part's current coordinates x, y, z (the "
+                          "part's own frame, see Recession points), of t, the tonnes handled so far, and of "
+                          "zlow, the z of the part's lowest wearable point now, and zedge, the z of its lowest "
                           "wearable point within a longest triangle edge of the point along x (the edge "
                           "runs along x), e.g. '1e-6*exp(-z/0.01)', '1e-6*(1+t/5000)' or "
                           "'1e-6*(z < zedge + 0.003)' (a band on the edge line that follows each part of it up); "
@@ -36,7 +36,7 @@ namespace abrade::coupling::lifetime
                           "Wear source = analytic: depth: the surface recedes by the rate x tonnes along its "
                           "normal (the offset surface, exact: verification of the motion); volume: the rate x "
                           "tonnes x each vertex's area is a volume removed, as the DEM's Archard volume is, "
-                          "and every update's moved surface is corrected so that the knife loses exactly it "
+                          "and every update's moved surface is corrected so that the part loses exactly it "
                           "(an offset surface loses less at convex edges).");
         prm.declare_entry("Seed scatter", "0", dealii::Patterns::Double(0, 1),
                           "[-] Wear source = analytic: each bed's rate is multiplied by a lognormal factor "

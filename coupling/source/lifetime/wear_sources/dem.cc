@@ -13,7 +13,7 @@ namespace abrade::coupling::lifetime
       std::string name() const override { return "dem"; }
       std::string documentation() const override
       {
-        return "every update runs the DEM cycles on the knife's current surface";
+        return "every update runs the DEM cycles on the part's current surface";
       }
       std::string section() const override { return "DEM"; }
       bool        from_particles() const override { return true; }
