@@ -1,4 +1,4 @@
-// The worn boundary's displacement carried into the knife's interior: -div(k grad u_c) = f_c
+// The worn boundary's displacement carried into the part's interior: -div(k grad u_c) = f_c
 // per component, solved with deal.II and PETSc (mesh_motion.h).
 #include <abrade/common/error.h>
 #include <abrade/fem/mesh_motion.h>

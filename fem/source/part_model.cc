@@ -1,4 +1,4 @@
-// The knife as the lifetime loop sees it: its surface receding by a wear depth per vertex, the
+// The part as the lifetime loop sees it: its surface receding by a wear depth per vertex, the
 // mesh moved, checked and remeshed, checkpoints (part_model.h).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
@@ -305,7 +305,7 @@ namespace abrade::fem
   {
     // A remesh after the step would change the volume the update removed (Gmsh's chords
     // across a rounded region cut up to 3.5 % of a DEM update's volume): with a volume to
-    // remove, the step is undone, the knife meshed anew first and the step taken on the
+    // remove, the step is undone, the part meshed anew first and the step taken on the
     // fresh mesh, the remesh's change part of the volume (not again if that mesh, too,
     // needs a remesh after its step).
     const bool fresh = *std::max_element(since_before.begin(), since_before.end()) == 0;
@@ -366,7 +366,7 @@ namespace abrade::fem
       }
     catch (const InputError &)
       {
-        return false; // Gmsh could not mesh it: the knife is as it was
+        return false; // Gmsh could not mesh it: the part is as it was
       }
     // where Gmsh only filled the surface's own triangles, the vertices are the old ones: they
     // would fold the same way (the caller goes on another way); a step that needed only a fresh

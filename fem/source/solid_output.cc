@@ -1,4 +1,4 @@
-// The knife's VTU/PVD output with cell and vertex fields, and its volume (solid_output.h).
+// The part's VTU/PVD output with cell and vertex fields, and its volume (solid_output.h).
 #include <abrade/common/error.h>
 #include <abrade/common/atomic_file.h>
 #include <abrade/fem/solid_output.h>

@@ -1,4 +1,4 @@
-// The knife's boundary as a triangle surface, mapped to the cells' faces and vertices; read from
+// The part's boundary as a triangle surface, mapped to the cells' faces and vertices; read from
 // files, remeshed by Gmsh, its thickness and fields carried across (solid_surface.h).
 #include <abrade/common/closest_point.h>
 #include <abrade/common/error.h>
@@ -376,7 +376,7 @@ namespace abrade::fem
                                   const std::string &dir, const SolidSurface &ids_from, bool own_triangles_first)
   {
     std::filesystem::create_directories(dir);
-    // a name of this process's own: under MPI every rank meshes its copy of the knife
+    // a name of this process's own: under MPI every rank meshes its copy of the part
     const std::string stl = dir + "/remesh-surface-" + std::to_string(::getpid()) + ".stl";
     io::write_stl(stl, surface);
     SolidFileSettings as_is;

@@ -1,4 +1,4 @@
-// The wear filter: a per-vertex wear volume smoothed over the knife's surface, volume
+// The wear filter: a per-vertex wear volume smoothed over the part's surface, volume
 // conserving (surface_filter.h).
 #include <abrade/fem/surface_filter.h>
 

@@ -46,7 +46,7 @@ cal "run: the best fit lies at the end of the range searched" kg.csv
 cal "run: the best fit lies at the end of the range searched" huge.csv
 cal "zero.csv: every measurement is at 0 t" zero.csv
 cal "both_depths.csv: both 'depth' \[m\] and 'depth_mm' columns" both_depths.csv
-cal "far.csv:2: the point \(10.07.*lies 9.9.* m or more from the knife's surface" far.csv
+cal "far.csv:2: the point \(10.07.*lies 9.9.* m or more from the part's surface" far.csv
 cal "short_row.csv:5: 4 cells, the header has 5" short_row.csv
 cal "copied.csv:5: the same measurement as copied.csv:3" copied.csv
 $expect 2 "locations.csv:3: location 'tip' is defined twice \(first on line 2\)" -- \

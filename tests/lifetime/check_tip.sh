@@ -17,7 +17,7 @@
 #              the tip (23 mm above it at the end) and wears the whole bevel and the plate below
 #              60 mm; footprints of 10 mm and 5 mm.
 # Checks, for each: the recession limit reached, not extrapolated; no update halved, folded,
-# built as a set or filled inside its old surface; the knife meshed anew before a step at least
+# built as a set or filled inside its old surface; the part meshed anew before a step at least
 # once; every update removed the volume worn (1e-4; the edge line's remesh before a step once
 # took 0.6 of an update's volume, and the step's factor was refused below 0.5: 1.6) and the worn
 # volume at the end is the summed wear (1e-6); the gauge's recession only grows, and at the end its

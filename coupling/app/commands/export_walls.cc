@@ -30,7 +30,7 @@ namespace abrade::app
       log.set_echo(true);
       for (const auto &note : c.notes)
         log.line(note);
-      coupling::fill_solid_model_walls(c, p, out.root(), log); // the FEM knife's surface, placed
+      coupling::fill_solid_model_walls(c, p, out.root(), log); // the FEM part's surface, placed
       for (const auto &w : c.walls)
         {
           std::error_code ec;

@@ -166,7 +166,7 @@ namespace abrade::field
           if (d > 0.5 * size)
             throw InputError(m.where, "the point (" + io::format_number(p[0]) + ", " + io::format_number(p[1]) + ", " +
                                         io::format_number(p[2]) + ") m lies " + io::format_number(d) +
-                                        " m or more from the knife's surface (the knife is " + io::format_number(size) +
+                                        " m or more from the part's surface (the part is " + io::format_number(size) +
                                         " m across): coordinates in other units or another frame?");
         }
     }

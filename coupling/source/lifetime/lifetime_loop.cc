@@ -116,7 +116,7 @@ namespace abrade::coupling::lifetime
   }
 
   // ---------------------------------------------------------------------------------------------
-  // Set-up: parameters (read_settings(): lifetime_settings.cc), knife, wear source, outputs, and
+  // Set-up: parameters (read_settings(): lifetime_settings.cc), part, wear source, outputs, and
   // the resume.
   void LifetimeLoop::set_up()
   {
@@ -591,7 +591,7 @@ namespace abrade::coupling::lifetime
   //    update) and the update is retried with half the cycles, up to three times; if that fails
   //    too, the part stays at the checkpoint and the run ends there. Under MPI every rank moves
   //    its own copy of the part: the ranks agree on the outcome (a failure on one is a failure
-  //    on all), so that their knives stay the same.
+  //    on all), so that their parts stay the same.
   LifetimeLoop::Step LifetimeLoop::move_part(const Rates &rates, long n)
   {
     Step st;
@@ -668,7 +668,7 @@ namespace abrade::coupling::lifetime
         const double vertices = moved ? double(part_model->surface().vertices.size()) : -1;
         const bool   differ   = ranks.max(volume) != ranks.min(volume) || ranks.max(vertices) != ranks.min(vertices);
         if (moved && differ)
-          error = "the MPI ranks' knives differ after the update (a remesh went another way on one)";
+          error = "the MPI ranks' parts differ after the update (a remesh went another way on one)";
       }
     if (!(ranks.max(error.empty() ? 0.0 : 1.0) > 0))
       return "";
@@ -801,7 +801,7 @@ namespace abrade::coupling::lifetime
   }
 
   // Before the move: the wear depth, and each bed's depth rate where the criteria read the
-  // knife: the followed points, the points the design's vertices moved to (more than one bed),
+  // part: the followed points, the points the design's vertices moved to (more than one bed),
   // the gauges' stations (interpolated on the surface: what moves those points; 0 where there
   // is no section).
   BedRates LifetimeLoop::rates_at_places(const Rates &rates, long n) const
@@ -1196,7 +1196,7 @@ namespace abrade::coupling::lifetime
       beds_per_update.push_back(double(u.beds));
     r["beds_per_update"]                 = beds_per_update;
     r["wear_rate_relative_spread"]       = li.bed_relative_sd; // one bed's, at the place that ends life
-    // the beds' relative standard deviation of the whole knife's worn volume, as one bed's over
+    // the beds' relative standard deviation of the whole part's worn volume, as one bed's over
     // the run (abrade calibrate divides it by sqrt(seeds) for its replicate part)
     if (const std::size_t mass = criterion_named(mass_name);
         !records[mass].empty() && history.back().values[mass] > 0)

@@ -204,7 +204,7 @@ namespace abrade::coupling::lifetime
                                         io::format_number(updates.front().coarse_graining_factor) + ", this case has " +
                                         io::format_number(coarse_graining_factor) +
                                         ": replay a run of the same case (only W and the Smoothing radius may differ)");
-        // the stored run's knife must be this one: the first stored surface is its design (the
+        // the stored run's part must be this one: the first stored surface is its design (the
         // same extent within a tenth of the mesh size, the same volume within 0.1 %)
         const dealii::BoundingBox<3> a(design.vertices), b(updates.front().surface.vertices);
         const double                 v_design = fem::enclosed_volume(design),
@@ -246,7 +246,7 @@ namespace abrade::coupling::lifetime
           if (u.bed_seeds == bed_seeds && same_surface(u.surface, surface))
             use = &u;
         // else the stored update that began with the most volume worn off, but not more than
-        // this knife has lost: the nearest state (the worn volume does not depend on the
+        // this part has lost: the nearest state (the worn volume does not depend on the
         // footprint, nor, in cycles, on W: its tonnes do)
         const double worn = design_volume - fem::enclosed_volume(surface);
         if (!use)
@@ -282,7 +282,7 @@ namespace abrade::coupling::lifetime
     private:
       std::vector<StoredWear> updates;
       std::string              source_directory;
-      double                   design_volume = 0; ///< enclosed by this run's design (its unworn knife)
+      double                   design_volume = 0; ///< enclosed by this run's design (its unworn part)
       std::vector<double>      worn_before;       ///< per stored update: the volume worn off before it
       double                   worn_at_end = 0;   ///< the stored run's worn volume at its end
       std::vector<int>         uses;              ///< per stored update: how often replayed

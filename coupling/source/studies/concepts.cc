@@ -1,6 +1,6 @@
 // `abrade concepts`: see concepts.h.
 //
-// Per run (concept, seed): the knives' Archard volume per phase (walls/KNIFE_wear.csv, averaged
+// Per run (concept, seed): the knives' wear volume per phase (the runs' Output/Wear field; walls/KNIFE_wear.csv, averaged
 // over the knives: the grab's two knives are replicates) and the payload (payload.csv: the most
 // mass above Simulation/Payload height at the end of a phase). Per concept: mean and standard
 // deviation over the seeds of the wear per phase and in total, the payload, and the wear per

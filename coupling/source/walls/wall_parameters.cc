@@ -108,7 +108,7 @@ namespace abrade::coupling
                              "the rotation and turn with it; Motion/Velocities, Angular velocities and the Layer "
                              "probe's Axis are in the global frame and do not.");
       section.declare_number("Rotation angle", 0, -360, 360,
-                             "[deg] Angle of that rotation; 0: none. Not for a mounted knife (the shell places it). "
+                             "[deg] Angle of that rotation; 0: none. Not for a part Mounted on a shell (the shell places it). "
                              "Range: [-360, 360].");
       section.declare_number("Maximum edge length", 0, 0, dem::unbounded,
                              "[m] Refine the mesh until no triangle edge is longer than this (per-"
@@ -412,8 +412,8 @@ namespace abrade::coupling
     return wc;
   }
 
-  /// Places every mounted knife on its shell's lip and gives it the shell's motion (one rigid
-  /// body with it). Knife frame: x along the length from 0, y across the thickness, z from
+  /// Places every mounted part (a grab's knife) on its shell's lip and gives it the shell's motion (one rigid
+  /// body with it). The part's frame: x along the length from 0, y across the thickness, z from
   /// the edge up; on the shell: x along the hinge (y; -y on a -x shell), z along the shell's
   /// bottom from the lip inwards, +y towards the shell's inside (the hinge), the edge
   /// 'Protrusion' beyond the lip.

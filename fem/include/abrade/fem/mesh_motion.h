@@ -1,8 +1,8 @@
 #pragma once
-// Mesh motion: the displacement that a worn boundary prescribes is carried into the knife's
+// Mesh motion: the displacement that a worn boundary prescribes is carried into the part's
 // interior by solving, for each displacement component u_c,
 //
-//     -div( k grad u_c ) = f_c   in the knife,   u_c = g_c on the moved / clamped boundaries,
+//     -div( k grad u_c ) = f_c   in the part,   u_c = g_c on the moved / clamped boundaries,
 //
 // with natural (zero-flux) conditions elsewhere. k = (V_ref / V_cell)^s stiffens small cells
 // (s = 0: plain Laplacian smoothing; s = 1 is the usual choice), so that small, distorted cells

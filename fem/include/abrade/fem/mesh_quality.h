@@ -1,5 +1,5 @@
 #pragma once
-// Quality of the knife's volume mesh while it moves with its wear: the scaled Jacobian at every
+// Quality of the part's volume mesh while it moves with its wear: the scaled Jacobian at every
 // corner of every cell (1 for a cube or a regular tetrahedron, <= 0 for an inverted cell), the
 // aspect ratio (longest over shortest edge), and the number of inverted cells. The lifetime loop
 // remeshes when the minimum scaled Jacobian falls below a threshold, and reports an inverted

@@ -1,5 +1,5 @@
 #pragma once
-// Writing a solid (the knife's volume mesh) for ParaView with deal.II's DataOut: one .vtu per
+// Writing a solid (the part's volume mesh) for ParaView with deal.II's DataOut: one .vtu per
 // update with named per-cell fields, strung into a .pvd series. Works for hexahedral and
 // tetrahedral meshes.
 #include <deal.II/grid/tria.h>

@@ -1,5 +1,5 @@
 #pragma once
-// The knife's boundary as a triangle surface, for the DEM and for export: outward-oriented
+// The part's boundary as a triangle surface, for the DEM and for export: outward-oriented
 // triangles (a hexahedral face gives two), each mapped back to the cell face it lies on, and
 // each surface vertex to its triangulation vertex. The map is stable while the mesh moves (it
 // is rebuilt after a remesh), so per-triangle DEM fields come to the FEM boundary and back.
@@ -61,7 +61,7 @@ namespace abrade::fem
   double typical_thickness(const SolidSurface &surface, dealii::types::boundary_id id = 1);
 
   /// Surface vertices whose inward wear depth reaches @p fraction of the local thickness: where
-  /// the knife is worn through, which ends its life (reported, never carried into the mesh).
+  /// the part is worn through, which ends its life (reported, never carried into the mesh).
   /// Vertices thinner than @p ignore_below (the region of a sharp edge, whose receding and
   /// rounding the mesh motion and remeshing follow) are not counted.
   std::vector<unsigned> worn_through(const SolidSurface &surface, const std::vector<double> &depth,

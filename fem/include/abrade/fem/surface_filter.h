@@ -1,5 +1,5 @@
 #pragma once
-// The wear filter: a per-vertex wear volume, smoothed over the knife's surface.
+// The wear filter: a per-vertex wear volume, smoothed over the part's surface.
 //
 // The DEM's wear is noisy at the scale of single contacts and, with coarse-grained particles,
 // concentrated on lines narrower than any real contact patch (the chisel's edge). The loop

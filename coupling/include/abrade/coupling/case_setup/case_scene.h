@@ -50,7 +50,7 @@ namespace abrade::coupling
   };
 
   /// Reads the DEM case of @p file (walls, fill, domain, phases; errors as a run would give
-  /// them) and places @p part (the knife's surface, its own frame) as its walls do.
+  /// them) and places @p part (the part's surface, its own frame) as its walls do.
   CaseScene case_scene(ParameterFile &file, const fem::SolidSurface &part);
 
   /// The feature edges of a triangle mesh (vertices, triangles): edges between triangles whose

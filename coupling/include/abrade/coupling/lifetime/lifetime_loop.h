@@ -4,7 +4,7 @@
 // the algorithm; each step is a member function, and the arithmetic of each step is a function of
 // its own with a unit test (tests/unit/test_lifetime_steps.cc):
 //
-//   set_up()                     knife, wear source, outputs; resume from the last checkpoint
+//   set_up()                     part, wear source, outputs; resume from the last checkpoint
 //   size_first_update()          a pilot cycle on beds of its own sizes the first update
 //   for every update:
 //     run_cycles()               one cycle's wear per bed seed, per surface vertex (wear_source.h)
@@ -161,7 +161,7 @@ namespace abrade::coupling::lifetime
     /// One attempt at moving the part by @p n cycles of @p rates (into @p st.result); from the
     /// second attempt on, from the last checkpoint. Returns the error, or "".
     std::string try_to_move(Step &st, const Rates &rates, long n, int attempt);
-    /// @p error as every rank sees it: under MPI one rank's failure, or knives that differ
+    /// @p error as every rank sees it: under MPI one rank's failure, or parts that differ
     /// after the move, fail the step on all (collective).
     std::string agreed_by_the_ranks(std::string error) const;
     /// What the move did that a user should know: meshed first, rebuilt, volume notes.
@@ -226,7 +226,7 @@ namespace abrade::coupling::lifetime
     double                       previous_largest = 0; ///< the last update's largest depth rate (its size)
     bool                         smoothing_checked = false; ///< the filter's length warned about (once)
     double                       particle_radius   = 0;     ///< the largest particle's [m] (the DEM's; 0: none seen)
-    std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn knife, its own frame)
+    std::vector<double>          deepest = {0, 0, 0}; ///< where the wear depth is largest (worn part, its own frame)
     double                       tonnes_per_cycle_now = 0; ///< of the update being made
     long                         surfaces_kept = 0; ///< remeshes inside the worn surface (this run)
     /// updates whose swept volume was more than 2 % off the volume worn (a source of volumes; this run)

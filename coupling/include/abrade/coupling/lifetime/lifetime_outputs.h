@@ -1,6 +1,6 @@
 #pragma once
 // The lifetime loop's files besides trajectory.csv and the part series: cross-sections of the
-// knife per update (part/profile_F.csv, blocks per update) and the gnuplot figures
+// part per update (part/profile_F.csv, blocks per update) and the gnuplot figures
 // (trajectory.png, part/profile_F.png).
 #include <abrade/coupling/lifetime/sections.h>
 #include <abrade/fem/solid_surface.h>

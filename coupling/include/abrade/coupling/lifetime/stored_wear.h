@@ -8,7 +8,7 @@
 // the stored wear filtered at r' (docs/field.md, "Candidate footprints without a DEM run each").
 //
 // How exact that is: a replay's update takes the stored update nearest in state, the one that
-// began with the most volume worn off but not more than the replay's knife has lost (the worn
+// began with the most volume worn off but not more than the replay's part has lost (the worn
 // volume does not depend on the footprint; at another W it is reached at other tonnes). The
 // stored wear fell on the stored run's surface; at another footprint the part has another
 // shape after the first update, and the replay carries the stored wear onto it (a wear volume

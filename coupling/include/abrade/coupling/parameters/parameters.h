@@ -97,25 +97,25 @@ namespace abrade::coupling
       dem::Vec3        probe_axis = dem::Vec3::UnitX();
       double           probe_thickness = 0;    ///< 0: 1.5 x the largest particle radius
       double           probe_interval  = 1e-3; ///< [s]
-      bool             solid_model = false;    ///< the mesh is the FEM knife's surface
+      bool             solid_model = false;    ///< the mesh is the FEM part's surface
       /// Placement of the geometry: p -> rotation p + offset (rotation: identity unless the wall
-      /// is a knife mounted on a shell's lip).
+      /// is a part mounted on a shell's lip).
       dem::Vec3        offset   = dem::Vec3::Zero();
       Eigen::Matrix3d  rotation = Eigen::Matrix3d::Identity();
       using Shell = ShellShape;
       std::optional<Shell> shell;
-      /// Where a knife sits on this wall (a shell's lip), at t = 0 in the global frame
+      /// Where a part sits on this wall (a shell's lip), at t = 0 in the global frame
       /// (wall_geometry.h). Parametric shells have one; a shell read from a file gets one from
       /// 'Lip centre', 'Lip direction', 'Lip inward'.
       using Lip = WallLip;
       std::optional<Lip> lip;
-      std::string          mount; ///< the shell whose lip carries this knife ("": none)
+      std::string          mount; ///< the shell whose lip carries this part ("": none)
       double               protrusion = 0.02; ///< of a mounted knife's edge beyond the lip [m]
     };
     std::vector<WallCase> walls;
     /// The mechanism that moves a grab's walls (Grab mechanism; none: each wall's own motion).
     std::optional<dem::RopeGrabRig> grab_mechanism;
-    /// Part/Length, by which mount_parts centres a mounted knife on its lip [m]
+    /// Part/Length, by which mount_parts centres a mounted part on its lip [m]
     double mounted_part_length = 0.4;
     double snapshot_interval = 0.05, force_interval = 1e-3;
     bool   write_particles   = true;

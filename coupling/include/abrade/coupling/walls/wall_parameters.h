@@ -33,9 +33,9 @@ namespace abrade::coupling
   /// read), adding its warnings and input files to @p c.
   DemCase::WallCase read_wall(ParameterFile &f, const std::string &name, DemCase &c);
 
-  /// Places every mounted part (@p knife_length long, Part/Length: part_parameters.h) on its
+  /// Places every mounted part (@p part_length long, Part/Length: part_parameters.h) on its
   /// shell's lip and gives it the shell's motion.
-  void mount_parts(ParameterFile &f, DemCase &c, double knife_length);
+  void mount_parts(ParameterFile &f, DemCase &c, double part_length);
 
   /// Whether a wall of Walls is the part's surface (Geometry = solid model). A file that
   /// describes a part alone has none: no case around the part.
