@@ -131,8 +131,8 @@ refused "no directory given" "Replay/Run" --set "Lifetime/Wear source=replay" --
 refused "missing directory" "$out/none" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/none"
 mkdir -p "$out/empty"
 refused "no stored wear" "holds no stored wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/empty"
-refused "another knife" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Height=0.3"
-refused "another bevel" "another knife" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Bevel height=0.08"
+refused "another part" "another part" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Height=0.3"
+refused "another bevel" "another part" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Bevel height=0.08"
 refused "other particles" "Coarse graining/Factor" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" \
   --set "Particles/Coarse graining/Factor=1.5"
 set +e
