@@ -125,8 +125,7 @@ namespace abrade::coupling
         if (m.layout == layout)
           for (auto &[name, section] : top.subsections)
             {
-              const std::string in = m.in;
-              if (in.back() == ' ' ? name.rfind(in, 0) != 0 : name != in)
+              if (!renames::was_in(m, {name}))
                 continue; // (the moves of nested subsections, a wall's Wear, are older than any layout)
               Section *now = &section;
               if (*m.now)

@@ -88,15 +88,6 @@ namespace abrade::coupling
   {
     using namespace renames;
 
-    /// Whether subsection @p path is one that entry @p m was in.
-    bool was_in(const MovedEntry &m, const std::vector<std::string> &path)
-    {
-      const std::string in = m.in;
-      if (in.back() == ' ')
-        return path.size() == 1 && path[0].rfind(in, 0) == 0;
-      return !path.empty() && path.back() == in;
-    }
-
     /// The subsection @p m is in now, from @p path, where it was.
     std::vector<std::string> now_in(const MovedEntry &m, std::vector<std::string> path)
     {

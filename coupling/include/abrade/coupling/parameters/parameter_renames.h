@@ -5,6 +5,9 @@
 // read under today's names (parameter_text.h, read_moved_entries), and today's printing is
 // written back as each earlier layout printed it (earlier_printings.h), so that an earlier
 // abrade's run directory is resumed and rerun.
+#include <string>
+#include <vector>
+
 namespace abrade::coupling::renames
 {
   /// The layouts, oldest first: 0, the earliest an abrade still reads back; 1, subsection Knife
@@ -37,6 +40,15 @@ namespace abrade::coupling::renames
     {"Lifetime", "Ranks per bed", "DEM", "Ranks per bed", source_has_one, 3},
     {"Wall ", "Knife mount", "", "Mounted on", not_a_knife, 3},
     {"Wall ", "Knife protrusion", "", "Protrusion", not_a_knife, 3}};
+
+  /// Whether subsection @p path (its names from the top) is one that entry @p m was in.
+  inline bool was_in(const MovedEntry &m, const std::vector<std::string> &path)
+  {
+    const std::string in = m.in;
+    if (in.back() == ' ')
+      return path.size() == 1 && path[0].rfind(in, 0) == 0;
+    return !path.empty() && path.back() == in;
+  }
 
   /// A top-level subsection that was renamed: @p old_name is now @p name, since @p layout.
   struct RenamedSubsection
