@@ -70,9 +70,18 @@ namespace abrade::coupling
 
   namespace
   {
-    /// Generates the particles of @p c into @p sim (the fine region first, if any) and lets
-    /// them settle.
-    void generate_and_settle(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
+    /// What one pour generated: each level's count and mean particle mass (the finest first,
+    /// the bulk's last; one level without a fine region) and the mass over each level's
+    /// footprint (dem::footprint_masses).
+    struct Pour
+    {
+      std::vector<long>   counts;
+      std::vector<double> mean_mass, footprint;
+    };
+
+    /// Generates the particles of @p c into @p sim, the fine region's levels first (with
+    /// @p counts, each level's count instead of the case's: a second pour), and sets it up.
+    Pour generate(const DemCase &c, dem::Simulation &sim, JobContext &ctx, const std::vector<long> &counts = {})
     {
       dem::FillRegion   fill = c.fill;
       dem::TriangleMesh region;
@@ -83,23 +92,45 @@ namespace abrade::coupling
         }
       for (std::size_t w = 0; w < sim.n_walls(); ++w)
         fill.avoid.push_back(sim.wall(w).current_mesh());
+      Pour        pour;
+      const auto &P    = sim.particles(); // (every rank generates all of them until setup)
+      const auto  pour_level = [&](dem::FillRegion part) {
+        const std::size_t k = pour.counts.size();
+        if (k < counts.size())
+          part.count = counts[k];
+        const std::size_t first = P.size();
+        const long        n     = dem::fill_region(sim, part);
+        double            mass  = 0;
+        for (std::size_t i = first; i < P.size(); ++i)
+          mass += P.mass[i];
+        pour.counts.push_back(n);
+        pour.mean_mass.push_back(n > 0 ? mass / double(n) : 0.0);
+        return n;
+      };
       {
         io::ScopedTimer t(ctx.timers, "generate");
         for (const auto &level : c.finer_levels) // multi-level coarse graining: the finest first
           {
             dem::FillRegion part = level.fill;
             part.avoid           = fill.avoid;
-            const long n         = dem::fill_region(sim, part);
+            const long n         = pour_level(part);
             ctx.log.line("Generated " + std::to_string(n) + " particles of radius " + io::format_number(part.sizes.largest()) +
                          " m (coarse-grained by " + io::format_number(level.factor, 4) + ") in the fine region" +
                          (&level == &c.finer_levels.front() ? std::string() : "'s shell") + " (seed " +
                          std::to_string(part.seed) + ")");
           }
-        const long n = dem::fill_region(sim, fill);
+        const long n = pour_level(fill);
         ctx.log.line("Generated " + std::to_string(n) + " particles (seed " + std::to_string(fill.seed) + ")");
       }
+      pour.footprint = dem::footprint_masses(c.finer_levels, P);
       sim.setup();
       flush_warnings(sim, ctx.log);
+      return pour;
+    }
+
+    /// Lets the particles of @p sim settle (Particles/Settling).
+    void settle(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
+    {
       {
         io::ScopedTimer  t(ctx.timers, "settle");
         io::ProgressLine progress("settling", c.settle_max_time);
@@ -115,6 +146,79 @@ namespace abrade::coupling
       if (c.settle_ke > 0 && ke > c.settle_ke)
         ctx.log.warning("the bed did not settle below " + io::format_number(c.settle_ke) +
                         " J per particle within Particles/Settling/Maximum time");
+    }
+
+    /// The mass over each level's footprint of the settled bed of @p sim, all ranks'.
+    std::vector<double> settled_footprint(const DemCase &c, const dem::Simulation &sim) // collective
+    {
+      std::vector<double> mass = dem::footprint_masses(c.finer_levels, sim.particles());
+      sim.parallel().sum(mass);
+      return mass;
+    }
+
+    /// "96.7 %, 101.8 %, ...": each finer level's settled footprint mass over its poured one.
+    std::string footprint_shares(const std::vector<double> &poured, const std::vector<double> &settled)
+    {
+      std::string out;
+      for (std::size_t k = 0; k + 1 < poured.size(); ++k)
+        out += (k ? ", " : "") + io::format_number(100 * settled[k] / std::max(poured[k], 1e-300), 4) + " %";
+      return out;
+    }
+
+    /// Generates the particles of @p c into @p sim (the fine region first, if any) and lets
+    /// them settle. A multi-level bed is poured Particles/Coarse graining/Fine region pours
+    /// times: each pour but the last, in a simulation of its own, measures the mass the levels'
+    /// footprints lack once settled (the finer particles spread into the coarser ones' voids),
+    /// and the next is poured with each level's count refilled by it (dem::refill_counts), so
+    /// that the fine region holds the mass per area the case pours over it, as the uniform bed
+    /// of its particles would. The last pour is the bed.
+    void generate_and_settle(const DemCase &c, dem::Simulation &sim, JobContext &ctx)
+    {
+      const int           pours = c.finer_levels.empty() ? 1 : c.fine_region_pours;
+      std::vector<long>   counts;  // of the next pour (empty: the case's)
+      std::vector<double> nominal; // the case's mass over each footprint: the first pour's
+      const auto          record = [&](const char *key, const std::vector<double> &settled) {
+        io::Json &shares = ctx.results["coarse_graining"]["pours"];
+        io::Json  pour;
+        for (std::size_t k = 0; k + 1 < settled.size(); ++k)
+          pour[key].push_back(settled[k] / std::max(nominal[k], 1e-300));
+        for (long n : counts)
+          pour["counts"].push_back(double(n));
+        shares.push_back(pour);
+      };
+      for (int p = 1; p < pours; ++p)
+        {
+          dem::Simulation trial(c.settings);
+          build_simulation(c, trial);
+          ctx.log.line("Multi-level bed, pour " + std::to_string(p) + " of " + std::to_string(pours) +
+                       ": what settling carries across the levels' footprints");
+          const Pour pour = generate(c, trial, ctx, counts);
+          settle(c, trial, ctx);
+          if (nominal.empty())
+            nominal = pour.footprint;
+          const std::vector<double> settled = settled_footprint(c, trial);
+          counts = pour.counts;
+          record("footprint_share", settled);
+          counts = dem::refill_counts(pour.counts, pour.mean_mass, nominal, settled);
+          std::string change;
+          for (std::size_t k = 0; k < counts.size(); ++k)
+            change += (k ? ", " : "") + std::string(counts[k] >= pour.counts[k] ? "+" : "") +
+                      std::to_string(counts[k] - pour.counts[k]);
+          ctx.log.line("Multi-level bed: the levels' footprints (finest first) held " + footprint_shares(nominal, settled) +
+                       " of the mass the case pours over them; poured again with what they lacked (" + change +
+                       " particles per level, the bulk's last)");
+        }
+      const Pour pour = generate(c, sim, ctx, counts);
+      settle(c, sim, ctx);
+      if (c.finer_levels.empty())
+        return;
+      if (nominal.empty())
+        nominal = pour.footprint;
+      const std::vector<double> settled = settled_footprint(c, sim);
+      counts = pour.counts;
+      record("footprint_share", settled);
+      ctx.log.line("Multi-level bed: the levels' footprints (finest first) hold " + footprint_shares(nominal, settled) +
+                   " of the mass the case pours over them");
     }
   } // namespace
 

@@ -147,6 +147,18 @@ namespace abrade::coupling
       prm.declare_entry("Fine region layer thickness", "1", Double(0.5, 1e3),
                         "[particle diameters] Thickness of each intermediate shell, in the largest "
                         "diameter of its particles. Range: [0.5, 1000].");
+      prm.declare_entry("Fine region pours", "3", Integer(1, 10),
+                        "[-] How many times a multi-level bed is poured. Where the sizes meet, the finer "
+                        "particles spread into the coarser ones' voids while the bed settles (about half a "
+                        "fine radius at every interface: the knife-bed's fine column 0.48 m wide lost 3.3 % "
+                        "of its mass and settled 16 mm lower than the uniform bed, the knife 6 % shallower "
+                        "in it, its wear and travel force about 10 % low). Each pour but the last measures "
+                        "the mass each level's footprint (its box across x and y) lacks once settled, and "
+                        "the next is poured with each level's count refilled by it (the total stays): the "
+                        "fine column held 96.7, 99.0 and 99.7 % of its mass in three pours. 1: poured "
+                        "once, as before. Each pour settles the bed again; the log and summary.json "
+                        "(coarse_graining.pours) give the footprints' shares. docs/coarse-graining.md. "
+                        "Range: [1, 10].");
       prm.leave_subsection();
     }
 
@@ -238,6 +250,7 @@ namespace abrade::coupling
       region.factor          = prm.get_double("Fine region factor");
       region.step            = prm.get_double("Fine region step");
       region.layer_diameters = prm.get_double("Fine region layer thickness");
+      c.fine_region_pours    = static_cast<int>(prm.get_integer("Fine region pours"));
       prm.leave_subsection();
       if (region.lo == region.hi)
         return;

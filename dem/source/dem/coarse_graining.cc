@@ -3,7 +3,9 @@
 #include <abrade/common/format_number.h>
 #include <abrade/dem/coarse_graining.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace abrade::dem
@@ -95,6 +97,51 @@ namespace abrade::dem
     fill.centres_in = std::make_pair(fill.box_min, fill.box_max);
     fill.exclude.emplace_back(inner_lo, inner_hi);
     return levels;
+  }
+
+  std::size_t footprint_of(const std::vector<Level> &levels, const double x, const double y)
+  {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < levels.size(); ++k)
+      {
+        const FillRegion &f = levels[k].fill;
+        if (!f.centres_in)
+          continue;
+        const auto &[lo, hi] = *f.centres_in;
+        const double x0 = lo[0] <= f.box_min[0] ? -inf : lo[0], x1 = hi[0] >= f.box_max[0] ? inf : hi[0];
+        const double y0 = lo[1] <= f.box_min[1] ? -inf : lo[1], y1 = hi[1] >= f.box_max[1] ? inf : hi[1];
+        if (x >= x0 && x <= x1 && y >= y0 && y <= y1)
+          return k;
+      }
+    return levels.size();
+  }
+
+  std::vector<double> footprint_masses(const std::vector<Level> &levels, const ParticleStore &P)
+  {
+    std::vector<double> mass(levels.size() + 1, 0.0);
+    for (std::size_t i = 0; i < P.size(); ++i)
+      mass[footprint_of(levels, P.x[i], P.y[i])] += P.mass[i];
+    return mass;
+  }
+
+  std::vector<long> refill_counts(const std::vector<long> &counts, const std::vector<double> &mean_mass,
+                                  const std::vector<double> &wanted, const std::vector<double> &settled)
+  {
+    if (counts.empty() || mean_mass.size() != counts.size() || wanted.size() != counts.size() ||
+        settled.size() != counts.size())
+      throw std::invalid_argument("refill_counts: one count, mean mass and footprint mass per level, the bulk's last");
+    std::vector<long> out = counts;
+    const std::size_t bulk  = counts.size() - 1;
+    double            added = 0; // mass, taken from the bulk
+    for (std::size_t k = 0; k < bulk; ++k)
+      if (const double lack = wanted[k] - settled[k]; lack > 0 && mean_mass[k] > 0)
+        {
+          const long n = std::lround(lack / mean_mass[k]);
+          out[k] += n, added += n * mean_mass[k];
+        }
+    if (mean_mass[bulk] > 0)
+      out[bulk] = std::max(0L, counts[bulk] - std::lround(added / mean_mass[bulk]));
+    return out;
   }
 
   std::vector<std::string> coarse_graining_warnings(const double f, const Settings &settings)

@@ -62,6 +62,9 @@ namespace abrade::coupling
     double                   coarse_graining = 1; ///< Particles/Coarse graining/Factor (applied)
     /// Multi-level coarse graining: the finer levels' fills, finest first (fill holds the rest).
     std::vector<dem::Level>  finer_levels;
+    /// Particles/Coarse graining/Fine region pours: a multi-level bed is poured this many
+    /// times, each with the levels' counts refilled by what their footprints lacked before.
+    int                      fine_region_pours = 3;
     /// The largest radius of the particles the tools meet: the finest level's where there are
     /// levels, else 0 (the largest in the bed). Lengths tied to the particle size near a wall
     /// (the contact layer's thickness, the wear filter) follow it.
