@@ -36,6 +36,7 @@ while (($#)); do
   esac
 done
 [[ -x $abrade ]] || { echo "build abrade first: scripts/setup.sh" >&2; exit 2; }
+((per_bed == 1 || uniform)) || { echo "--runs-per-bed needs --uniform (the comparison bed by bed)" >&2; exit 2; }
 out=${out:-$(mktemp -d /tmp/abrade-multi-level.XXXXXX)}
 mkdir -p "$out"
 case_file=$root/cases/knife_bed/coarse_graining.prm

@@ -70,6 +70,28 @@ namespace abrade::coupling
 
   namespace
   {
+    /// A saved multi-level bed holds the case's counts if it was poured once, other counts if it
+    /// was refilled (Fine region pours): one made by another setting (or by an abrade before the
+    /// refill) is used as it is, with a warning.
+    void check_bed_pours(const DemCase &c, const dem::Simulation &sim, const std::string &bed, JobContext &ctx)
+    {
+      if (c.finer_levels.empty())
+        return;
+      double case_count = std::lround(dem::expected_particles(c.fill));
+      for (const auto &level : c.finer_levels)
+        case_count += std::lround(dem::expected_particles(level.fill));
+      const double n       = double(sim.particles().size()); // (every rank holds the whole file until setup)
+      const bool   refills = c.fine_region_pours > 1, refilled = n != case_count;
+      if (refills != refilled)
+        ctx.log.warning(bed + ": its " + io::format_number(n, 10) + " particles are " + (refilled ? "not " : "") +
+                        "the case's " + io::format_number(case_count, 10) + ": it was poured " +
+                        (refilled ? "more than once" : "once") + ", and Particles/Coarse graining/Fine region pours is " +
+                        std::to_string(c.fine_region_pours) + " (delete the bed to pour it anew)");
+    }
+  } // namespace
+
+  namespace
+  {
     /// What one pour generated: each level's count and mean particle mass (the finest first,
     /// the bulk's last; one level without a fine region) and the mass over each level's
     /// footprint (dem::footprint_masses).
@@ -177,14 +199,31 @@ namespace abrade::coupling
       const int           pours = c.finer_levels.empty() ? 1 : c.fine_region_pours;
       std::vector<long>   counts;  // of the next pour (empty: the case's)
       std::vector<double> nominal; // the case's mass over each footprint: the first pour's
-      const auto          record = [&](const char *key, const std::vector<double> &settled) {
-        io::Json &shares = ctx.results["coarse_graining"]["pours"];
-        io::Json  pour;
+      // each pour's shares and counts in summary.json, with the bed's seed (a lifetime run makes
+      // a bed per seed into the same results)
+      const auto record = [&](int p, const std::vector<double> &settled) {
+        io::Json pour;
+        pour["seed"] = double(c.fill.seed), pour["pour"] = double(p);
         for (std::size_t k = 0; k + 1 < settled.size(); ++k)
-          pour[key].push_back(settled[k] / std::max(nominal[k], 1e-300));
+          pour["footprint_share"].push_back(settled[k] / std::max(nominal[k], 1e-300));
         for (long n : counts)
           pour["counts"].push_back(double(n));
-        shares.push_back(pour);
+        ctx.results["coarse_graining"]["pours"].push_back(pour);
+      };
+      // a refilled count the random placement cannot hold says which pour asked for it
+      const auto pour_into = [&](dem::Simulation &into, int p) {
+        try
+          {
+            return generate(c, into, ctx, counts);
+          }
+        catch (const InputError &e)
+          {
+            if (p == 1)
+              throw;
+            throw InputError("Particles/Coarse graining/Fine region pours",
+                             "pour " + std::to_string(p) + " of " + std::to_string(pours) + ", refilled by what the fine region " +
+                               "lacked after the one before: " + e.what() + " (or pour fewer times)");
+          }
       };
       for (int p = 1; p < pours; ++p)
         {
@@ -192,13 +231,14 @@ namespace abrade::coupling
           build_simulation(c, trial);
           ctx.log.line("Multi-level bed, pour " + std::to_string(p) + " of " + std::to_string(pours) +
                        ": what settling carries across the levels' footprints");
-          const Pour pour = generate(c, trial, ctx, counts);
+          const Pour pour = pour_into(trial, p);
           settle(c, trial, ctx);
+          flush_warnings(trial, ctx.log);
           if (nominal.empty())
             nominal = pour.footprint;
           const std::vector<double> settled = settled_footprint(c, trial);
           counts = pour.counts;
-          record("footprint_share", settled);
+          record(p, settled);
           counts = dem::refill_counts(pour.counts, pour.mean_mass, nominal, settled);
           std::string change;
           for (std::size_t k = 0; k < counts.size(); ++k)
@@ -208,7 +248,7 @@ namespace abrade::coupling
                        " of the mass the case pours over them; poured again with what they lacked (" + change +
                        " particles per level, the bulk's last)");
         }
-      const Pour pour = generate(c, sim, ctx, counts);
+      const Pour pour = pour_into(sim, pours);
       settle(c, sim, ctx);
       if (c.finer_levels.empty())
         return;
@@ -216,7 +256,7 @@ namespace abrade::coupling
         nominal = pour.footprint;
       const std::vector<double> settled = settled_footprint(c, sim);
       counts = pour.counts;
-      record("footprint_share", settled);
+      record(pours, settled);
       ctx.log.line("Multi-level bed: the levels' footprints (finest first) hold " + footprint_shares(nominal, settled) +
                    " of the mass the case pours over them");
     }
@@ -280,6 +320,7 @@ namespace abrade::coupling
       io::ScopedTimer t(ctx.timers, "load bed");
       dem::load_bed(sim, bed);
       check_bed_sizes(c, sim, bed);
+      check_bed_pours(c, sim, bed, ctx);
       sim.setup();
     }
     if (!made)

@@ -4,6 +4,7 @@
 #include <abrade/coupling/dem_run/bed_preparation.h>
 #include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/lifetime/wear_source.h>
+#include <abrade/dem/coarse_graining.h>
 #include <abrade/dem/ensemble.h>
 #include <abrade/dem/thread_governor.h>
 #include <abrade/dem/wear.h>
@@ -140,7 +141,7 @@ namespace abrade::coupling::lifetime
       BedWear run_one(const fem::SolidSurface &surface, int seed, const dem::Parallel &group)
       {
         DemCase run = c;
-        run.fill.seed = static_cast<std::uint64_t>(seed);
+        dem::reseed(run.fill, run.finer_levels, static_cast<std::uint64_t>(seed)); // (a fine region's levels too)
         run.settings.ranks = group;
         std::vector<std::size_t> knives; // a grab carries two: averaged as two more replicates
         for (std::size_t k = 0; k < run.walls.size(); ++k)

@@ -148,17 +148,19 @@ namespace abrade::coupling
                         "[particle diameters] Thickness of each intermediate shell, in the largest "
                         "diameter of its particles. Range: [0.5, 1000].");
       prm.declare_entry("Fine region pours", "3", Integer(1, 10),
-                        "[-] How many times a multi-level bed is poured. Where the sizes meet, the finer "
-                        "particles spread into the coarser ones' voids while the bed settles (about half a "
-                        "fine radius at every interface: the knife-bed's fine column 0.48 m wide lost 3.3 % "
-                        "of its mass and settled 16 mm lower than the uniform bed, the knife 6 % shallower "
-                        "in it, its wear and travel force about 10 % low). Each pour but the last measures "
-                        "the mass each level's footprint (its box across x and y) lacks once settled, and "
-                        "the next is poured with each level's count refilled by it (the total stays): the "
-                        "fine column held 96.7, 99.0 and 99.7 % of its mass in three pours. 1: poured "
-                        "once, as before. Each pour settles the bed again; the log and summary.json "
-                        "(coarse_graining.pours) give the footprints' shares. docs/coarse-graining.md. "
-                        "Range: [1, 10].");
+                        "[-] How many times a multi-level bed is poured (only with a fine region, and only "
+                        "when its bed is made: a saved Bed file is used as it is, with a warning when it "
+                        "was poured another number of times). While a bed settles, the finer particles "
+                        "spread into the coarser ones' voids, so that poured once the fine region holds "
+                        "about 3 % less mass per area than the case pours over it (the knife-bed's: 96.7 %, "
+                        "its top 15 mm lower than the uniform bed's). Each pour but the last measures what "
+                        "each level's footprint (its box across x and y) lacks once settled, and the next "
+                        "is poured with that level's count raised by it, the bulk's lowered (the total mass "
+                        "stays, to half a bulk particle): 96.7, 99.0 and 99.7 % in three pours. Each pour "
+                        "settles the bed again (a lifetime run's beds too, once each); a refilled count the "
+                        "random placement cannot hold is refused. 1: poured once. The log and summary.json "
+                        "(coarse_graining.pours) give each pour's shares. docs/coarse-graining.md. Range: "
+                        "[1, 10].");
       prm.leave_subsection();
     }
 

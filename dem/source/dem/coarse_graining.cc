@@ -70,7 +70,7 @@ namespace abrade::dem
             inner_lo = shell_lo, inner_hi = shell_hi;
           }
         part.count = fill.count > 0 ? std::max(1L, std::lround(per_volume * level.volume)) : 0; // 0: the solid fraction
-        part.seed  = fill.seed + 1000003 * (levels.size() + 1); // its own draws
+        part.seed  = level_seed(fill.seed, levels.size()); // its own draws
         taken += part.count;
         Settings unused; // (the skin is the caller's)
         coarse_grain(f, part, unused);
@@ -97,6 +97,13 @@ namespace abrade::dem
     fill.centres_in = std::make_pair(fill.box_min, fill.box_max);
     fill.exclude.emplace_back(inner_lo, inner_hi);
     return levels;
+  }
+
+  void reseed(FillRegion &fill, std::vector<Level> &levels, const std::uint64_t seed)
+  {
+    fill.seed = seed;
+    for (std::size_t k = 0; k < levels.size(); ++k)
+      levels[k].fill.seed = level_seed(seed, k);
   }
 
   std::size_t footprint_of(const std::vector<Level> &levels, const double x, const double y)
@@ -140,7 +147,7 @@ namespace abrade::dem
           out[k] += n, added += n * mean_mass[k];
         }
     if (mean_mass[bulk] > 0)
-      out[bulk] = std::max(0L, counts[bulk] - std::lround(added / mean_mass[bulk]));
+      out[bulk] = std::max(1L, counts[bulk] - std::lround(added / mean_mass[bulk])); // (0: the solid fraction)
     return out;
   }
 

@@ -21,6 +21,7 @@
 #include <abrade/dem/generation.h>
 #include <abrade/dem/simulation.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,13 @@ namespace abrade::dem
   /// fine). Throws std::invalid_argument for a step in (0, 1.05) (thousands of levels).
   std::vector<double> level_factors(double fine, double bulk, double step);
 
+  /// The random seed of level @p level (0: the finest) of a multi-level bed whose bulk draws with
+  /// @p bulk_seed: each level its own draws, all following the bed's seed.
+  inline std::uint64_t level_seed(std::uint64_t bulk_seed, std::size_t level) { return bulk_seed + 1000003 * (level + 1); }
+
+  /// Gives the bed the seed @p seed: the bulk's fill @p fill and every level of @p levels.
+  void reseed(FillRegion &fill, std::vector<Level> &levels, std::uint64_t seed);
+
   /// Splits @p fill (described with the real particles; a fill box without region mesh) into the
   /// finer levels of @p region, finest first, each coarse-grained by its factor: the box, then a
   /// shell per intermediate factor around it (its thickness region.layer_diameters of its
@@ -96,7 +104,7 @@ namespace abrade::dem
   /// level's mean mass @p mean_mass, rounded; the bulk's count less the mass added. Where the
   /// sizes meet, the finer particles spread into the coarser ones' voids (about half a fine
   /// radius at every interface; the 0.48 m wide fine column of the knife-bed lost 3.3 % of its
-  /// mass and settled 16 mm lower than the uniform bed, docs/coarse-graining.md); poured again
+  /// mass and settled 15 mm lower than the uniform bed, docs/coarse-graining.md); poured again
   /// with these counts the fine region holds more of its share. A level whose footprint held
   /// more than its share (the shells, which the finer particles spread into) keeps its count:
   /// emptier shells would take in more of the finer particles. The total mass stays.

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# A multi-level knife-bed (19.4 mm pellets in |y| < 0.24 m, 27.5 mm beyond) poured twice
+# through the bed job (bed_preparation.cc): the first pour's fine column holds less than the
+# case pours over it (the finer pellets spread into the shells), the refilled second holds more
+# of it, the log and summary.json say so with the bed's seed, the total mass stays (the bulk gave
+# what the fine region took), and the saved bed rerun with one pour is used with a warning.
+#   check_multi_level_pours.sh ABRADE CASE_DIR OUTDIR
+set -euo pipefail
+abrade=$1 cases=$2 out=$3
+rm -rf "$out" && mkdir -p "$out"
+fine=(--set "Particles/Coarse graining/Fine region min=-0.97, -0.24, 0.03" --set "Particles/Coarse graining/Fine region max=0.97, 0.24, 0.85"
+      --set "Particles/Coarse graining/Fine region factor=2.828" --set "Simulation/Threads=2" --quiet)
+"$abrade" run "$cases/coarse_graining.prm" --output "$out/bed" --set Job=bed "${fine[@]}" \
+  --set "Particles/Coarse graining/Fine region pours=2" --set "Particles/Settling/Bed file=$out/bed.bed"
+grep -q "Multi-level bed, pour 1 of 2" "$out/bed/log.txt" || { echo "no first pour in the log"; exit 1; }
+python3 - "$out/bed/summary.json" "$out/bed.bed" <<'PY'
+import json, struct, sys
+pours = json.load(open(sys.argv[1]))["results"]["coarse_graining"]["pours"]
+assert [p["pour"] for p in pours] == [1, 2] and all(p["seed"] == 1 for p in pours), pours
+first, second = pours[0]["footprint_share"][0], pours[1]["footprint_share"][0]
+print(f"the fine column held {100 * first:.2f} % poured once, {100 * second:.2f} % refilled")
+assert first < 0.985, "poured once, the fine column should lack mass (the finer pellets spread into the shells)"
+assert second > first + 0.01, "the refilled pour should hold more of the fine column's mass"
+# the saved bed's total mass is the case's: what the fine region gained the bulk gave (to half
+# a bulk pellet: 4/3 pi 0.0275^3 3700 = 0.32 kg)
+b = open(sys.argv[2], "rb").read()
+n = struct.unpack_from("<Q", b, 8)[0]
+mass = sum(struct.unpack_from(f"<{n}d", b, 24 + 10 * 8 * n))
+print(f"bed: {n} pellets, {mass:.2f} kg")
+assert abs(mass - 3383.1) < 0.4, mass
+PY
+"$abrade" run "$cases/coarse_graining.prm" --output "$out/once" --set Job=bed "${fine[@]}" \
+  --set "Particles/Coarse graining/Fine region pours=1" --set "Particles/Settling/Bed file=$out/bed.bed"
+grep -q "it was poured more than once, and Particles/Coarse graining/Fine region pours is 1" "$out/once/log.txt" ||
+  { echo "the refilled bed was used for a one-pour case without a warning"; exit 1; }
+echo "ok: the refilled pour holds more of the fine column's mass, the total stays, a bed of other pours is named"
