@@ -27,7 +27,8 @@ to_knife_layout() {
 # parameters.prm as the earliest abrade that still reads back printed it (written here, apart
 # from abrade's own earlier_printings): subsection Knife for Part; the wear sources' entries flat
 # in Lifetime (Analytic wear rate, ..., Replay run, Ranks per bed); Knife mount and Knife
-# protrusion; every wall's Motion with its velocity table (a fixed wall's empty). deal.II's print:
+# protrusion; every wall's Motion with its velocity table (a fixed wall's empty); no Fine region
+# pours. deal.II's print:
 # entries, then subsections, each sorted by its mangled name, the keys padded to the longest.
 with_knife_subsection() {
   python3 - "$1" <<'PY'
@@ -69,6 +70,9 @@ for name, wall in top["subs"].items():
         motion = wall["subs"]["Motion"]["entries"]
         motion.setdefault("Velocities", "penetration: 0, 0, -1.5; travel: 1.5, 0, 0" if name == "Wall knife" else "")
         motion.setdefault("Angular velocities", "")
+cg = top["subs"]["Particles"]["subs"]["Coarse graining"]["entries"] # (Fine region pours came later)
+if cg.get("Fine region pours") == "3":
+    del cg["Fine region pours"]
 out = []
 write(top, "", out)
 open(sys.argv[1], "w").write("\n".join(out) + "\n")

@@ -5,6 +5,7 @@
 // line of the file keeps its number in messages.
 #include <abrade/coupling/parameters/earlier_printings.h>
 #include <abrade/coupling/parameters/parameter_file.h>
+#include <abrade/coupling/parameters/parameter_renames.h>
 #include <abrade/coupling/parameters/parameter_text.h>
 
 #include <gtest/gtest.h>
@@ -246,11 +247,13 @@ TEST(MovedEntries, TheKnifeJobIsReadAsThePartJob)
   EXPECT_TRUE(has_note(b, "--set 'Job=knife': Job = knife is read as Job = part"));
   const std::string printed = b.canonical_text();
   EXPECT_NE(printed.find("set Job   = part\n"), std::string::npos) << printed.substr(0, 80);
-  const auto earlier = abrade::coupling::earlier_printings(printed); // (layouts 2, 1, 0)
-  ASSERT_EQ(earlier.size(), 3u);
+  const auto earlier = abrade::coupling::earlier_printings(printed); // (layouts 3, 2, 1, 0)
+  ASSERT_EQ(earlier.size(), 4u);
   EXPECT_NE(earlier[0].find("set Job   = part\n"), std::string::npos);
-  EXPECT_NE(earlier[1].find("set Job   = knife\n"), std::string::npos);
+  EXPECT_NE(earlier[1].find("set Job   = part\n"), std::string::npos);
   EXPECT_NE(earlier[2].find("set Job   = knife\n"), std::string::npos);
+  EXPECT_NE(earlier[3].find("set Job   = knife\n"), std::string::npos);
+  EXPECT_EQ(earlier[0].find("Fine region pours"), std::string::npos); // (added in layout 4)
   // another job is read as it is, without a note
   abrade::coupling::ParameterFile c(knife_bed, {"Job=dem"});
   EXPECT_EQ(c.handler().get("Job"), "dem");
@@ -289,7 +292,8 @@ TEST(MovedEntries, TheParametersAreWhatTheAbradeBeforeTheWearSourceSubsectionsPr
   EXPECT_NE(now.find("  subsection Analytic\n"), std::string::npos);
   EXPECT_NE(now.find("  set Mounted on          = left\n"), std::string::npos);
   const auto earlier = abrade::coupling::earlier_printings(now);
-  EXPECT_EQ(earlier.front(), text_of(file));
+  // (the printings of layouts current - 1, ..., 0: layout 2's is at current - 3)
+  EXPECT_EQ(earlier.at(abrade::coupling::renames::current_layout - 3), text_of(file));
   // ... and the same parameters printed now are the text itself again: none of the layouts
   // before reads as today's
   for (const auto &text : earlier)

@@ -118,9 +118,30 @@ namespace abrade::coupling
             }
     }
 
+    /// The entries @p layout added, taken out where they have their default (an earlier abrade
+    /// could not have printed another value).
+    void take_out_added_entries(int layout, Section &top)
+    {
+      for (const auto &a : renames::added_entries)
+        {
+          if (a.layout != layout)
+            continue;
+          Section          *s = &top;
+          std::stringstream path(a.path);
+          for (std::string name; s && std::getline(path, name, '/');)
+            {
+              const auto it = s->subsections.find(name);
+              s             = it == s->subsections.end() ? nullptr : &it->second;
+            }
+          if (s && s->entries.count(a.key) && s->entries[a.key] == a.value)
+            s->entries.erase(a.key);
+        }
+    }
+
     /// @p top as the layout before @p layout printed it.
     void undo_layout(int layout, Section &top)
     {
+      take_out_added_entries(layout, top);
       for (const auto &m : renames::moved_entries)
         if (m.layout == layout)
           for (auto &[name, section] : top.subsections)

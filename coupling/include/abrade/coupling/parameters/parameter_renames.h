@@ -13,8 +13,9 @@ namespace abrade::coupling::renames
   /// The layouts, oldest first: 0, the earliest an abrade still reads back; 1, subsection Knife
   /// named Part; 2, Job = knife named part; 3, the wear sources' entries in their own
   /// subsections of Lifetime, the mounting entries named for any part and the velocity table the
-  /// motions' own that follow it (a fixed wall has none). Today's is the last.
-  inline constexpr int current_layout = 3;
+  /// motions' own that follow it (a fixed wall has none); 4, a multi-level bed's Fine region
+  /// pours. Today's is the last.
+  inline constexpr int current_layout = 4;
 
   /// An entry that moved: key @p old_key of a subsection named @p in (every top-level
   /// subsection whose name begins so, where @p in ends in a blank: "Wall ") is now @p key of
@@ -68,4 +69,14 @@ namespace abrade::coupling::renames
   };
   // the job that builds the part alone (the part need not be a knife)
   inline constexpr RenamedValue renamed_values[] = {{"Job", "knife", "part", 2}};
+
+  /// An entry that was added: @p key of subsection @p path ("Particles/Coarse graining"),
+  /// printed as @p value by default, since @p layout (the layouts before did not print it).
+  struct AddedEntry
+  {
+    const char *path, *key, *value;
+    int         layout;
+  };
+  // a multi-level bed poured again, refilled by what its fine region lacked
+  inline constexpr AddedEntry added_entries[] = {{"Particles/Coarse graining", "Fine region pours", "3", 4}};
 } // namespace abrade::coupling::renames
