@@ -201,12 +201,12 @@ namespace abrade::coupling
       std::vector<double> nominal; // the case's mass over each footprint: the first pour's
       // each pour's shares and counts in summary.json, with the bed's seed (a lifetime run makes
       // a bed per seed into the same results)
-      const auto record = [&](int p, const std::vector<double> &settled) {
+      const auto record = [&](int p, const std::vector<long> &poured, const std::vector<double> &settled) {
         io::Json pour;
         pour["seed"] = double(c.fill.seed), pour["pour"] = double(p);
         for (std::size_t k = 0; k + 1 < settled.size(); ++k)
           pour["footprint_share"].push_back(settled[k] / std::max(nominal[k], 1e-300));
-        for (long n : counts)
+        for (long n : poured)
           pour["counts"].push_back(double(n));
         ctx.results["coarse_graining"]["pours"].push_back(pour);
       };
@@ -237,8 +237,7 @@ namespace abrade::coupling
           if (nominal.empty())
             nominal = pour.footprint;
           const std::vector<double> settled = settled_footprint(c, trial);
-          counts = pour.counts;
-          record(p, settled);
+          record(p, pour.counts, settled);
           counts = dem::refill_counts(pour.counts, pour.mean_mass, nominal, settled);
           std::string change;
           for (std::size_t k = 0; k < counts.size(); ++k)
@@ -255,8 +254,7 @@ namespace abrade::coupling
       if (nominal.empty())
         nominal = pour.footprint;
       const std::vector<double> settled = settled_footprint(c, sim);
-      counts = pour.counts;
-      record(pours, settled);
+      record(pours, pour.counts, settled);
       ctx.log.line("Multi-level bed: the levels' footprints (finest first) hold " + footprint_shares(nominal, settled) +
                    " of the mass the case pours over them");
     }
