@@ -38,10 +38,26 @@ for d in [d for d in glob.glob(os.path.join(out, "runs", "*")) if os.path.isdir(
     for kind in ("height", "face"):
         s = sum(float(w["archard_volume"]) for w in rows if w["kind"] == kind)
         assert abs(s - total) <= 1e-9 * total, f"{d}: the {kind} rows sum to {s}, the wear table says {total}"
+    # each phase's column: its height and face rows sum to that phase's wear in the wear table,
+    # and a row's phase columns to the row's total
+    phase_wear = {w["phase"]: float(w["archard_volume"]) for w in csv.DictReader(open(os.path.join(d, "walls", "knife_wear.csv")))}
+    phase_columns = [c for c in rows[0] if c.startswith("archard_volume_")]
+    assert sorted(c[len("archard_volume_"):] for c in phase_columns) == sorted(p for p in phase_wear if p != "total"), phase_columns
+    for c in phase_columns:
+        want = phase_wear[c[len("archard_volume_"):]]
+        for kind in ("height", "face"):
+            s = sum(float(w[c]) for w in rows if w["kind"] == kind)
+            assert abs(s - want) <= 1e-9 * total, f"{d}: the {kind} rows of {c} sum to {s}, the wear table says {want}"
+    for w in rows:
+        if w["kind"] in ("height", "face"):
+            s = sum(float(w[c]) for c in phase_columns)
+            assert abs(s - float(w["archard_volume"])) <= 1e-9 * total, (d, w)
     peaks = [float(w["archard_volume"]) for w in rows if w["kind"] == "filtered_peak"]
     assert len(peaks) == 2 and all(p > 0 for p in peaks), f"{d}: filtered peaks {peaks}"
 for r in csv.DictReader(open(os.path.join(out, "study.csv"))):
     assert abs(float(r["wear_penetration_mean"]) / float(r["wear_per_m_penetration_mean"]) - 0.15) < 1e-3
+    # the phases' edge shares are reported (shares)
+    assert 0 <= float(r["edge_share_penetration_mean"]) <= 1 and 0 <= float(r["edge_share_travel_mean"]) <= 1, r
 # each combination's total wear against the first's, pair by pair on the same seeds: the
 # geometric mean of the per-seed ratios and its t-interval (1 degree of freedom), again here
 # from the runs' own wear tables

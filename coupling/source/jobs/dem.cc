@@ -356,9 +356,13 @@ namespace abrade::coupling
           continue;
         write_wear_table(ctx, *sim, *wear, w, c.phases, path_length);
         if (wear->tracks(w, c.wear_field))
-          write_wear_profile(ctx.output.file("walls/" + sim->wall(w).name + "_wear_profile.csv"), sim->wall(w).mesh,
-                             c.wear_field, wear->values(w, c.wear_field), wear->vertex_values(w, c.wear_field),
-                             {c.wear_profile_band, c.wear_filter_length, c.particle_radius_at_tools(*sim)});
+          {
+            std::vector<WearVolumes> volumes{{"", wear->values(w, c.wear_field), wear->vertex_values(w, c.wear_field)}};
+            for (const auto &[phase, duration] : c.phases)
+              volumes.push_back({phase, wear->values(w, c.wear_field, phase), wear->vertex_values(w, c.wear_field, phase)});
+            write_wear_profile(ctx.output.file("walls/" + sim->wall(w).name + "_wear_profile.csv"), sim->wall(w).mesh,
+                               c.wear_field, volumes, {c.wear_profile_band, c.wear_filter_length, c.particle_radius_at_tools(*sim)});
+          }
       }
   }
 

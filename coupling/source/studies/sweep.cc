@@ -133,9 +133,10 @@ namespace abrade::coupling
     }
 
     /// The wear profile, where the run wrote one: the share per height band and below the edge
-    /// height (a band it cuts in proportion), per face, and the filtered peaks.
+    /// height (a band it cuts in proportion), per face, and the filtered peaks; per phase, where
+    /// the profile has the phases' columns, the share of that phase's wear below the edge height.
     void add_profile(RunMetrics &m, const std::string &dir, const std::string &wall, const std::string &field,
-                     double edge_height)
+                     double edge_height, const std::vector<std::string> &phases)
     {
       const std::string profile_file = dir + "/walls/" + wall + "_wear_profile.csv";
       if (!std::filesystem::exists(profile_file))
@@ -160,6 +161,18 @@ namespace abrade::coupling
             m.value["peak_depth_filter_" + r[label]] = number(r[v]);
         }
       m.value["edge_share"] = edge;
+      for (const auto &p : phases)
+        if (const int column = pr.find(field + "_" + p); column >= 0)
+          {
+            double below = 0, all = 0;
+            for (const auto &r : pr.rows)
+              if (r[0] == "height")
+                {
+                  const double a = number(r[lo]), b = number(r[hi]), v_p = number(r[column]);
+                  below += v_p * std::clamp((edge_height - a) / (b - a), 0.0, 1.0), all += v_p;
+                }
+            m.value["edge_share_" + p] = all > 0 ? below / all : 0.0;
+          }
     }
 
     /// The metrics of one finished run (see the file comment).
@@ -172,7 +185,7 @@ namespace abrade::coupling
       add_wear(m, dir, wall, field);
       const double steady_from = add_forces(m, dir, wall, phases);
       add_layer(m, dir, wall, phases, steady_from);
-      add_profile(m, dir, wall, field, edge_height);
+      add_profile(m, dir, wall, field, edge_height, phases);
       return m;
     }
 
@@ -472,7 +485,10 @@ namespace abrade::coupling
           metrics.push_back("wear_" + p);
         for (const auto &p : phases)
           metrics.push_back("wear_per_m_" + p);
-        for (const std::string m : {"edge_share", "share_face_+x", "share_face_-x", "share_face_+y", "share_face_-y",
+        metrics.push_back("edge_share");
+        for (const auto &p : phases)
+          metrics.push_back("edge_share_" + p);
+        for (const std::string m : {"share_face_+x", "share_face_-x", "share_face_+y", "share_face_-y",
                                     "share_face_+z", "share_face_-z", "peak_depth_filter_radius", "peak_depth_filter_fixed"})
           metrics.push_back(m);
         for (const auto &p : phases)
@@ -502,7 +518,7 @@ namespace abrade::coupling
               "the parameter file); per metre: over the distance the wall's "
               "centroid moved in the phase. edge_share: the share of the total wear on triangles within "
            << o.edge_height
-           << " m of the wall's lowest point; share_face_D: on the triangles whose normal is closest to direction D. "
+           << " m of the wall's lowest point, edge_share_PHASE the share of that phase's wear there; share_face_D: on the triangles whose normal is closest to direction D. "
               "peak_depth_filter_radius/fixed: the largest wear depth after the surface filter over the largest "
               "particle radius / over Output/Wear filter length. Forces in N (magnitude); steady-state and layer "
               "values are averages over the second half of phase '"

@@ -1,7 +1,9 @@
 #pragma once
 // Where on a wall the wear of a volume field (Output/Wear field, Archard's by default) went, for studies that compare wear patterns (docs/
 // coarse-graining.md): walls/NAME_wear_profile.csv of the `dem` job, with columns
-// kind, label, lower, upper, FIELD (the field's name: archard_volume), area and rows
+// kind, label, lower, upper, FIELD (the field's name: archard_volume), area, then FIELD_PHASE
+// for every phase (archard_volume_penetration, ...: the same row's value from that phase's wear
+// alone; the phases' columns sum to FIELD except in the filtered_peak rows) and rows
 //  - kind "height": the volume on the triangles whose centroid is between lower and upper [m]
 //    above the wall's lowest point (bands of Output/Wear profile band; a knife's edge first);
 //  - kind "face": per direction of the triangles' outward normal in the reference pose (label
@@ -24,9 +26,16 @@ namespace abrade::coupling
     double radius       = 0;      ///< the largest particle radius [m]
   };
 
-  /// Writes @p file from the wall's reference @p mesh and the volumes of field @p field per
-  /// triangle and per vertex (which have the same sum).
+  /// The volumes of a field per triangle and per vertex (which have the same sum), over the
+  /// whole run or one phase.
+  struct WearVolumes
+  {
+    std::string         phase; ///< "" for the whole run
+    std::vector<double> triangle, vertex;
+  };
+
+  /// Writes @p file from the wall's reference @p mesh and the volumes of field @p field over the
+  /// whole run (@p volumes' first entry, phase "") and per phase (the others, in their order).
   void write_wear_profile(const std::string &file, const dem::TriangleMesh &mesh, const std::string &field,
-                          const std::vector<double> &triangle_volume, const std::vector<double> &vertex_volume,
-                          const WearProfileSettings &settings);
+                          const std::vector<WearVolumes> &volumes, const WearProfileSettings &settings);
 } // namespace abrade::coupling
