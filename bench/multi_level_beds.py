@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Multi-level beds against uniform beds, run by run (bench/multi_level.sh --uniform).
 
-    multi_level_beds.py UNIFORM_SWEEP_DIR NAME=MULTI_LEVEL_SWEEP_DIR ...
+    multi_level_beds.py UNIFORM_SWEEP_DIR[,DIR...] NAME=MULTI_LEVEL_SWEEP_DIR[,DIR...] ...
 
 Reads every run of each sweep (DIR/runs/*-seedN: summary.json's knife wear per phase, the
 knife's forces), takes each bed's mean over its runs (runs of one bed differ by a perturbation
@@ -9,7 +9,10 @@ of the Verlet skin, --runs-per-bed: the penetration is not yet chaotic and repea
 travel is, so each run gives another sample of it), and prints a markdown table: each quantity's
 mean and standard deviation over the beds, and for each multi-level sweep its ratio to the
 uniform one with the 95 % interval of the difference of the means in per cent of the uniform
-mean (Welch's t-interval; the bed is the unit: beds are independent, a bed's runs are not)."""
+mean (Welch's t-interval; the bed is the unit: beds are independent, a bed's runs are not).
+Several sweep directories joined by commas are one group (seeds added by later sweeps). Where
+every run's walls/knife_wear_profile.csv has the phases' columns, the travel's wear is also split
+at EDGE_HEIGHT (0.05 m) above the knife's edge: where along the knife a difference sits."""
 import csv
 import json
 import math
@@ -26,7 +29,10 @@ QUANTITIES = [
     ("travel", "wear, travel"),
     ("force_penetration", "mean force, penetration [N]"),
     ("force_travel", "steady force, travel [N]"),
+    ("travel_edge", "wear, travel, within 0.05 m of the edge"),
+    ("travel_above", "wear, travel, above 0.05 m"),
 ]
+EDGE_HEIGHT = 0.05
 
 
 def run_metrics(run):
@@ -39,20 +45,29 @@ def run_metrics(run):
     half = 0.5 * (float(travel[0]["time"]) + float(travel[-1]["time"]))
     steady = [mag(r) for r in travel if float(r["time"]) >= half]
     pen = [mag(r) for r in rows if r["phase"] == "penetration"]
-    return {"total": wear["total"]["archard_volume"], "penetration": wear["penetration"]["archard_volume"],
-            "travel": wear["travel"]["archard_volume"], "force_penetration": sum(pen) / len(pen),
-            "force_travel": sum(steady) / len(steady)}
+    m = {"total": wear["total"]["archard_volume"], "penetration": wear["penetration"]["archard_volume"],
+         "travel": wear["travel"]["archard_volume"], "force_penetration": sum(pen) / len(pen),
+         "force_travel": sum(steady) / len(steady)}
+    bands = [r for r in csv.DictReader(open(os.path.join(run, "walls", "knife_wear_profile.csv"))) if r["kind"] == "height"]
+    if bands and "archard_volume_travel" in bands[0]:
+        share = lambda r: min(max((EDGE_HEIGHT - float(r["lower"])) / (float(r["upper"]) - float(r["lower"])), 0.0), 1.0)
+        m["travel_edge"] = sum(float(r["archard_volume_travel"]) * share(r) for r in bands)
+        m["travel_above"] = sum(float(r["archard_volume_travel"]) * (1 - share(r)) for r in bands)
+    return m
 
 
-def bed_means(sweep):
-    """{seed: {quantity: mean over the bed's runs}, ...} and the runs per bed."""
+def bed_means(sweeps):
+    """{seed: {quantity: mean over the bed's runs}, ...} of the sweeps (comma-separated
+    directories) and the runs per bed; a quantity some run lacks is left out."""
     runs = {}
-    root = os.path.join(sweep, "runs")
-    for name in sorted(os.listdir(root)):
-        m = re.search(r"-seed(\d+)$", name)
-        if m and os.path.exists(os.path.join(root, name, "summary.json")):
-            runs.setdefault(int(m.group(1)), []).append(run_metrics(os.path.join(root, name)))
-    means = {s: {q: statistics.mean(r[q] for r in rs) for q, _ in QUANTITIES} for s, rs in runs.items()}
+    for sweep in sweeps.split(","):
+        root = os.path.join(sweep, "runs")
+        for name in sorted(os.listdir(root)):
+            m = re.search(r"-seed(\d+)$", name)
+            if m and os.path.exists(os.path.join(root, name, "summary.json")):
+                runs.setdefault(int(m.group(1)), []).append(run_metrics(os.path.join(root, name)))
+    means = {s: {q: statistics.mean(r[q] for r in rs) for q, _ in QUANTITIES if all(q in r for r in rs)}
+             for s, rs in runs.items()}
     return means, max(len(rs) for rs in runs.values())
 
 
@@ -66,6 +81,8 @@ def main():
     print(header)
     print("|---|---|" + "---|---|" * len(others))
     for q, name in QUANTITIES:
+        if not all(q in b for _, beds in [("", uniform)] + others for b in beds.values()):
+            continue # (runs without the profile's phase columns)
         u = [b[q] for b in uniform.values()]
         sd = lambda v: statistics.stdev(v) if len(v) > 1 else float("nan") # (one bed: no interval)
         mu, su = statistics.mean(u), sd(u)

@@ -13,12 +13,14 @@
 // angle.
 #include "dem_test_helpers.h"
 
+#include <optional>
 #include <abrade/dem/coarse_graining.h>
 #include <abrade/dem/generation.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 using namespace abrade::dem;
 using namespace abrade::dem::testing;
@@ -328,33 +330,69 @@ TEST(CoarseGraining, LevelsStepFromTheFineFactorToTheBulksInEqualRatios)
 
 namespace
 {
-  /// The solid fraction across a multi-level bed's interface: the real particles poured into a
-  /// box 0.48 m long (x) and 0.24 m wide, the finest (coarse-grained by @p fine) in x < 0,
-  /// @p bulk beyond with levels by @p step (shells @p layer diameters thick) between, settled;
-  /// the solid fraction in @p n slabs of width @p w centred on x = 0, each sphere cut exactly at
-  /// the slabs' faces, of the particles whose centres lie within 0.08 m of the box's axis (y)
-  /// and between a quarter and three quarters of the bed's height.
-  std::vector<double> interface_profile(double fine, double bulk, double step, double layer, double w, int n, std::uint64_t seed)
+  /// A bed of the real particles poured (not yet settled) into a box 0.48 m long (x), 0.24 m
+  /// wide and 0.5 m high, coarse-grained by @p bulk, with the finer levels of @p region between
+  /// (none: a uniform bed) and placement seed @p seed; @p counts, where not empty, the number
+  /// of particles of each level, the bulk's last (empty: the split's). What was poured: the
+  /// levels, the particles per level and their mean masses.
+  struct PouredBox
+  {
+    std::unique_ptr<Simulation> sim;
+    std::vector<Level>          levels;
+    std::vector<long>           counts;
+    std::vector<double>         mean_mass;
+  };
+
+  PouredBox pour_box(const std::optional<FineRegion> &region, double bulk, std::uint64_t seed,
+                     const std::vector<long> &counts = {})
   {
     const double L    = 0.24;
     FillRegion   rest = real_particles(Vec3(-0.235, -0.115, 0.01), Vec3(0.235, 0.115, 0.4), 57650);
     rest.seed         = seed;
-    std::vector<Level> levels;
-    if (fine != bulk)
-      {
-        FineRegion region;
-        region.lo = Vec3(-1, -1, -1), region.hi = Vec3(0, 1, 1), region.factor = fine, region.step = step,
-        region.layer_diameters = layer;
-        levels                 = split_into_levels(rest, region, bulk);
-      }
+    PouredBox out;
+    if (region)
+      out.levels = split_into_levels(rest, *region, bulk);
     Settings s;
     s.threads = 2;
     coarse_grain(bulk, rest, s);
     const TriangleMesh box = primitives::box_container(Vec3(-L, -L / 2, 0), Vec3(L, L / 2, 0.5));
-    auto               sim = pellet_simulation(s, box);
-    for (auto &level : levels)
-      level.fill.avoid.push_back(box), fill_region(*sim, level.fill);
-    rest.avoid.push_back(box), fill_region(*sim, rest);
+    out.sim                = pellet_simulation(s, box);
+    std::vector<FillRegion> fills;
+    for (const auto &level : out.levels)
+      fills.push_back(level.fill);
+    fills.push_back(rest);
+    for (std::size_t k = 0; k < fills.size(); ++k)
+      {
+        FillRegion f = fills[k];
+        f.avoid.push_back(box);
+        if (!counts.empty())
+          f.count = counts[k];
+        const std::size_t first = out.sim->particles().size();
+        out.counts.push_back(fill_region(*out.sim, f));
+        double mass = 0;
+        for (std::size_t i = first; i < out.sim->particles().size(); ++i)
+          mass += out.sim->particles().mass[i];
+        out.mean_mass.push_back(mass / out.counts.back());
+      }
+    return out;
+  }
+
+  /// The solid fraction across a multi-level bed's interface: pour_box with the finest particles
+  /// (coarse-grained by @p fine) in x < 0, @p bulk beyond with levels by @p step (shells @p layer
+  /// diameters thick) between, settled; the solid fraction in @p n slabs of width @p w centred on
+  /// x = 0, each sphere cut exactly at the slabs' faces, of the particles whose centres lie
+  /// within 0.08 m of the box's axis (y) and between a quarter and three quarters of the bed's
+  /// height.
+  std::vector<double> interface_profile(double fine, double bulk, double step, double layer, double w, int n, std::uint64_t seed)
+  {
+    std::optional<FineRegion> region;
+    if (fine != bulk)
+      {
+        region.emplace();
+        region->lo = Vec3(-1, -1, -1), region->hi = Vec3(0, 1, 1), region->factor = fine, region->step = step,
+        region->layer_diameters = layer;
+      }
+    auto sim = pour_box(region, bulk, seed).sim;
     sim->setup();
     sim->run_phase("settle", 1.2);
     const auto  &P = sim->particles();
@@ -415,43 +453,13 @@ TEST(CoarseGraining, AGradedInterfaceKeepsTheUniformBedsDensity)
 
 namespace
 {
-  /// A multi-level bed poured into a box 0.48 m long (x) and 0.24 m wide: the real particles
-  /// coarse-grained by 12/7 (6 mm) in a strip |x| < 0.06 m across the box's width, by 24/7
-  /// (12 mm) beyond, the default levels between. Poured with @p counts (each level's, the
-  /// bulk's last; empty: the split's), set up; the particles per level and their mean masses in
-  /// @p counts_out, @p mean_mass.
-  std::unique_ptr<Simulation> strip_bed(std::vector<long> counts, std::vector<Level> &levels,
-                                        std::vector<long> &counts_out, std::vector<double> &mean_mass)
+  /// pour_box with the particles coarse-grained by 12/7 (6 mm) in a strip |x| < 0.06 m across
+  /// the box's width, by 24/7 (12 mm) beyond, the default levels between, poured with @p counts.
+  PouredBox strip_bed(const std::vector<long> &counts)
   {
-    const double L    = 0.24;
-    FillRegion   rest = real_particles(Vec3(-0.235, -0.115, 0.01), Vec3(0.235, 0.115, 0.4), 57650);
-    FineRegion   region;
+    FineRegion region;
     region.lo = Vec3(-0.06, -1, -1), region.hi = Vec3(0.06, 1, 1), region.factor = 12.0 / 7;
-    levels = split_into_levels(rest, region, 24.0 / 7);
-    Settings s;
-    s.threads = 2;
-    coarse_grain(24.0 / 7, rest, s);
-    const TriangleMesh box = primitives::box_container(Vec3(-L, -L / 2, 0), Vec3(L, L / 2, 0.5));
-    auto               sim = pellet_simulation(s, box);
-    std::vector<FillRegion> fills;
-    for (const auto &level : levels)
-      fills.push_back(level.fill);
-    fills.push_back(rest);
-    counts_out.clear(), mean_mass.clear();
-    for (std::size_t k = 0; k < fills.size(); ++k)
-      {
-        FillRegion f = fills[k];
-        f.avoid.push_back(box);
-        if (!counts.empty())
-          f.count = counts[k];
-        const std::size_t first = sim->particles().size();
-        counts_out.push_back(fill_region(*sim, f));
-        double mass = 0;
-        for (std::size_t i = first; i < sim->particles().size(); ++i)
-          mass += sim->particles().mass[i];
-        mean_mass.push_back(mass / counts_out.back());
-      }
-    return sim;
+    return pour_box(region, 24.0 / 7, 5, counts); // (real_particles' seed)
   }
 } // namespace
 
@@ -470,7 +478,9 @@ TEST(CoarseGraining, ARefilledPourHoldsTheFineRegionsMassPerArea)
   double              total_wanted = 0;
   for (int pour = 1; pour <= 3; ++pour)
     {
-      auto sim = strip_bed(counts, levels, counts, mean_mass);
+      PouredBox bed = strip_bed(counts);
+      auto     &sim = bed.sim;
+      levels = bed.levels, counts = bed.counts, mean_mass = bed.mean_mass;
       ASSERT_EQ(counts.size(), levels.size() + 1);
       const auto poured = footprint_masses(levels, sim->particles());
       double     total  = 0;

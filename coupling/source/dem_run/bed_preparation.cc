@@ -345,7 +345,7 @@ namespace abrade::coupling
     if (c.finer_levels.empty())
       return;
     j["tool_particle_radius"] = c.tool_particle_radius; // the finest level's
-    io::Json &levels          = j["levels"];
+    io::Json &levels          = j["levels"]; // the case's counts; "pours" has what each pour poured
     for (const auto &level : c.finer_levels)
       {
         io::Json l;
