@@ -21,9 +21,24 @@ namespace
   const std::string knife_bed = ABRADE_TESTS_DIR "/../cases/knife_bed/knife_bed.prm";
 
   /// Writes @p body after an include of the knife-bed case into a file of its own.
+  /// The test's own directory (per process), removed when the test program ends.
+  const fs::path &case_directory()
+  {
+    static const struct Directory
+    {
+      fs::path path = fs::temp_directory_path() / ("abrade_moved_entries_" + std::to_string(::getpid()));
+      ~Directory()
+      {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+      }
+    } directory;
+    return directory.path;
+  }
+
   std::string case_file(const std::string &name, const std::string &body)
   {
-    const fs::path dir = fs::temp_directory_path() / ("abrade_moved_entries_" + std::to_string(::getpid()));
+    const fs::path &dir = case_directory();
     fs::create_directories(dir);
     const std::string file = (dir / name).string();
     std::ofstream(file) << "include " << knife_bed << "\n" << body;
