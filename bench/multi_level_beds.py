@@ -29,6 +29,8 @@ QUANTITIES = [
     ("travel", "wear, travel"),
     ("force_penetration", "mean force, penetration [N]"),
     ("force_travel", "steady force, travel [N]"),
+    ("edge_share", "share of the wear within 0.04 m of the edge"),
+    ("peak_fixed", "peak depth, filter 27.5 mm [volume / m^2]"),
     ("travel_edge", "wear, travel, within 0.05 m of the edge"),
     ("travel_above", "wear, travel, above 0.05 m"),
 ]
@@ -48,11 +50,15 @@ def run_metrics(run):
     m = {"total": wear["total"]["archard_volume"], "penetration": wear["penetration"]["archard_volume"],
          "travel": wear["travel"]["archard_volume"], "force_penetration": sum(pen) / len(pen),
          "force_travel": sum(steady) / len(steady)}
-    bands = [r for r in csv.DictReader(open(os.path.join(run, "walls", "knife_wear_profile.csv"))) if r["kind"] == "height"]
+    profile = list(csv.DictReader(open(os.path.join(run, "walls", "knife_wear_profile.csv"))))
+    bands = [r for r in profile if r["kind"] == "height"]
+    below = lambda r, h: min(max((h - float(r["lower"])) / (float(r["upper"]) - float(r["lower"])), 0.0), 1.0)
+    # as the sweep's edge_share (--edge-height 0.04) and peak_depth_filter_fixed
+    m["edge_share"] = sum(float(r["archard_volume"]) * below(r, 0.04) for r in bands) / m["total"]
+    m["peak_fixed"] = next(float(r["archard_volume"]) for r in profile if r["kind"] == "filtered_peak" and r["label"] == "fixed")
     if bands and "archard_volume_travel" in bands[0]:
-        share = lambda r: min(max((EDGE_HEIGHT - float(r["lower"])) / (float(r["upper"]) - float(r["lower"])), 0.0), 1.0)
-        m["travel_edge"] = sum(float(r["archard_volume_travel"]) * share(r) for r in bands)
-        m["travel_above"] = sum(float(r["archard_volume_travel"]) * (1 - share(r)) for r in bands)
+        m["travel_edge"] = sum(float(r["archard_volume_travel"]) * below(r, EDGE_HEIGHT) for r in bands)
+        m["travel_above"] = sum(float(r["archard_volume_travel"]) * (1 - below(r, EDGE_HEIGHT)) for r in bands)
     return m
 
 
