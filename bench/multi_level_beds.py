@@ -28,6 +28,7 @@ QUANTITIES = [
     ("penetration", "wear, penetration"),
     ("travel", "wear, travel"),
     ("force_penetration", "mean force, penetration [N]"),
+    ("force_travel_first", "mean force, travel's first half [N]"),
     ("force_travel", "steady force, travel [N]"),
     ("edge_share", "share of the wear within 0.04 m of the edge"),
     ("peak_fixed", "peak depth, filter 27.5 mm [volume / m^2]"),
@@ -46,10 +47,11 @@ def run_metrics(run):
     travel = [r for r in rows if r["phase"] == "travel"]
     half = 0.5 * (float(travel[0]["time"]) + float(travel[-1]["time"]))
     steady = [mag(r) for r in travel if float(r["time"]) >= half]
+    first = [mag(r) for r in travel if float(r["time"]) < half]
     pen = [mag(r) for r in rows if r["phase"] == "penetration"]
     m = {"total": wear["total"]["archard_volume"], "penetration": wear["penetration"]["archard_volume"],
          "travel": wear["travel"]["archard_volume"], "force_penetration": sum(pen) / len(pen),
-         "force_travel": sum(steady) / len(steady)}
+         "force_travel": sum(steady) / len(steady), "force_travel_first": sum(first) / len(first)}
     profile = list(csv.DictReader(open(os.path.join(run, "walls", "knife_wear_profile.csv"))))
     bands = [r for r in profile if r["kind"] == "height"]
     below = lambda r, h: min(max((h - float(r["lower"])) / (float(r["upper"]) - float(r["lower"])), 0.0), 1.0)
