@@ -11,7 +11,7 @@ set -euo pipefail
 abrade=$1 prm=$2 out=$3
 rm -rf "$out"
 "$abrade" sweep "$prm" --vary "Wall knife/Interaction/Friction=0,0.4" --vary "Particles/Coarse graining/Factor=1,1.25" \
-  --seeds 1,2 --output "$out" --quiet
+  --seeds 1,2 --edge-height 0.005 --output "$out" --quiet
 rows=$(tail -n +2 "$out/study.csv" | wc -l)
 [[ $rows -eq 4 ]] || { echo "study.csv has $rows rows, expected 4"; exit 1; }
 cut -d, -f1,2 "$out/study.csv" | tail -n +2 | tr '\n' ' ' | grep -q "^0,1 0,1.25 0.4,1 0.4,1.25 $" || { echo "unexpected values"; cat "$out/study.csv"; exit 1; }
@@ -25,6 +25,7 @@ python3 - "$out" <<'PY'
 import csv, glob, os, sys
 out = sys.argv[1]
 import json
+edge_shares = {}
 for d in [d for d in glob.glob(os.path.join(out, "runs", "*")) if os.path.isdir(d)]:
     # the path from the summed wall positions against the prescribed speed x the steps taken
     res = json.load(open(os.path.join(d, "summary.json")))["results"]
@@ -52,12 +53,33 @@ for d in [d for d in glob.glob(os.path.join(out, "runs", "*")) if os.path.isdir(
         if w["kind"] in ("height", "face"):
             s = sum(float(w[c]) for c in phase_columns)
             assert abs(s - float(w["archard_volume"])) <= 1e-9 * total, (d, w)
+    # a phase's filtered peak: the filter is linear with weights >= 0 but for one factor per
+    # field that conserves its volume (within about 1e-4 of the run's here), so no phase's peak
+    # is above the run's and the phases' peaks add up to at least the run's, to 1 %; the phases'
+    # peaks are their own (where both phases wear, one at least is below the run's)
+    for w in rows:
+        if w["kind"] == "filtered_peak":
+            run_peak, phase_peaks = float(w["archard_volume"]), [float(w[c]) for c in phase_columns]
+            assert all(0 < p <= run_peak * 1.01 for p in phase_peaks), (d, w)
+            assert sum(phase_peaks) >= run_peak * 0.99, (d, w)
+            assert min(phase_peaks) < run_peak * (1 - 1e-6), (d, w)
+    # each phase's share within --edge-height (0.005 m: half the lowest 10 mm band) of the edge
+    edge = {}
+    for c in phase_columns:
+        bands = [w for w in rows if w["kind"] == "height"]
+        below = sum(float(w[c]) * min(max((0.005 - float(w["lower"])) / (float(w["upper"]) - float(w["lower"])), 0), 1) for w in bands)
+        edge[c[len("archard_volume_"):]] = below / sum(float(w[c]) for w in bands)
+    edge_shares[os.path.basename(d)] = edge
     peaks = [float(w["archard_volume"]) for w in rows if w["kind"] == "filtered_peak"]
     assert len(peaks) == 2 and all(p > 0 for p in peaks), f"{d}: filtered peaks {peaks}"
 for r in csv.DictReader(open(os.path.join(out, "study.csv"))):
     assert abs(float(r["wear_penetration_mean"]) / float(r["wear_per_m_penetration_mean"]) - 0.15) < 1e-3
-    # the phases' edge shares are reported (shares)
-    assert 0 <= float(r["edge_share_penetration_mean"]) <= 1 and 0 <= float(r["edge_share_travel_mean"]) <= 1, r
+    # the phases' edge shares: the means over the seeds of each run's, from its profile
+    name = r["Wall knife/Interaction/Friction"] + "_" + r["Particles/Coarse graining/Factor"]
+    for phase in ("penetration", "travel"):
+        want = sum(edge_shares[f"{name}-seed{s}"][phase] for s in (1, 2)) / 2
+        assert abs(float(r[f"edge_share_{phase}_mean"]) - want) < 1e-8, (name, phase, r[f"edge_share_{phase}_mean"], want)
+        assert 0.05 < want < 0.95, (name, phase, want) # the height cuts the wear (a check that can fail)
 # each combination's total wear against the first's, pair by pair on the same seeds: the
 # geometric mean of the per-seed ratios and its t-interval (1 degree of freedom), again here
 # from the runs' own wear tables

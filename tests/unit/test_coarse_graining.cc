@@ -13,7 +13,6 @@
 // angle.
 #include "dem_test_helpers.h"
 
-#include <optional>
 #include <abrade/dem/coarse_graining.h>
 #include <abrade/dem/generation.h>
 

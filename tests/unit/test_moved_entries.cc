@@ -20,7 +20,6 @@ namespace
 
   const std::string knife_bed = ABRADE_TESTS_DIR "/../cases/knife_bed/knife_bed.prm";
 
-  /// Writes @p body after an include of the knife-bed case into a file of its own.
   /// The test's own directory (per process), removed when the test program ends.
   const fs::path &case_directory()
   {
@@ -36,6 +35,7 @@ namespace
     return directory.path;
   }
 
+  /// Writes @p body after an include of the knife-bed case into a file of its own.
   std::string case_file(const std::string &name, const std::string &body)
   {
     const fs::path &dir = case_directory();

@@ -7,7 +7,8 @@
 // 2. Run every other (combination, seed) from those beds, in parallel, one thread per run.
 // 3. Reduce: per run, from walls/WALL_wear.csv, WALL_forces.csv, WALL_layer.csv and
 //    WALL_wear_profile.csv: the total and per-phase wear (of Output/Wear field) and per metre of the wall's
-//    path in each phase; the share of the wear below --edge-height (the edge) and on each face
+//    path in each phase; the share of the wear below --edge-height (the edge), also of each
+//    phase's wear where the profile has the phases' columns, and on each face
 //    direction; the peak wear depth after the surface filter (over the particle radius and over
 //    a fixed length); the mean force magnitude per phase, the peak force in the first phase and
 //    the mean force over the second half of the last (steady state); the contact layer's
