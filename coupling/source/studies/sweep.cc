@@ -145,6 +145,11 @@ namespace abrade::coupling
       const CsvTable pr    = read_csv_table(profile_file);
       const int      label = pr.column("label"), lo = pr.column("lower"), hi = pr.column("upper"),
                 v = pr.column(field), area = pr.column("area");
+      // the part of a height row's band below the edge height
+      const auto below_edge = [&](const std::vector<std::string> &r) {
+        const double a = number(r[lo]), b = number(r[hi]);
+        return std::clamp((edge_height - a) / (b - a), 0.0, 1.0);
+      };
       const double total = m.value["wear_total"];
       double       edge  = 0;
       for (const auto &r : pr.rows)
@@ -152,9 +157,8 @@ namespace abrade::coupling
           const double share = total > 0 ? number(r[v]) / total : 0.0;
           if (r[0] == "height")
             {
-              const double a = number(r[lo]), b = number(r[hi]);
-              m.height_share.push_back(share), m.band = b - a;
-              edge += share * std::clamp((edge_height - a) / (b - a), 0.0, 1.0);
+              m.height_share.push_back(share), m.band = number(r[hi]) - number(r[lo]);
+              edge += share * below_edge(r);
             }
           else if (r[0] == "face" && number(r[area]) > 0)
             m.value["share_face_" + r[label]] = share;
@@ -168,10 +172,7 @@ namespace abrade::coupling
             double below = 0, all = 0;
             for (const auto &r : pr.rows)
               if (r[0] == "height")
-                {
-                  const double a = number(r[lo]), b = number(r[hi]), v_p = number(r[column]);
-                  below += v_p * std::clamp((edge_height - a) / (b - a), 0.0, 1.0), all += v_p;
-                }
+                below += number(r[column]) * below_edge(r), all += number(r[column]);
             m.value["edge_share_" + p] = all > 0 ? below / all : 0.0;
           }
     }
