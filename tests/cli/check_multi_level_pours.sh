@@ -4,6 +4,10 @@
 # case pours over it (the finer pellets spread into the shells), the refilled second holds more
 # of it, the log and summary.json say so with the bed's seed, the total mass stays (the bulk gave
 # what the fine region took), and the saved bed rerun with one pour is used with a warning.
+# The fine box's margin (fine_region_margin.cc): 0.225 m beside the knife's path (|y| < 0.24 m,
+# the knife 0.03 m thick) is under 1.2 times the depth its edge reaches below the bed's surface
+# (z = 0.6 - 1.5 m/s x 0.2667 s = 0.2 m; the surface from the bed file here, the mean of its
+# columns' tops): a warning; with |y| < 0.48 m (0.465 m) a line and no warning.
 #   check_multi_level_pours.sh ABRADE CASE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 cases=$2 out=$3
@@ -33,4 +37,33 @@ PY
   --set "Particles/Coarse graining/Fine region pours=1" --set "Particles/Settling/Bed file=$out/bed.bed"
 grep -q "it was poured more than once, and Particles/Coarse graining/Fine region pours is 1" "$out/once/log.txt" ||
   { echo "the refilled bed was used for a one-pour case without a warning"; exit 1; }
-echo "ok: the refilled pour holds more of the fine column's mass, the total stays, a bed of other pours is named"
+margin_of() { # the margin and the depth a log states
+  sed -n "s/.*wall knife's path comes \([-0-9.e]*\) m from the fine region's face across y; its lowest point is \([0-9.e-]*\) m below.*/\1 \2/p" "$1"
+}
+grep -q "warning: Particles/Coarse graining/Fine region: wall knife's path comes" "$out/once/log.txt" ||
+  { echo "no warning for a fine box 0.225 m beside the knife's path"; exit 1; }
+"$abrade" run "$cases/coarse_graining.prm" --output "$out/wide" --set Job=bed "${fine[@]}" \
+  --set "Particles/Coarse graining/Fine region min=-0.97, -0.48, 0.03" --set "Particles/Coarse graining/Fine region max=0.97, 0.48, 0.85" \
+  --set "Particles/Settling/Bed file=$out/bed.bed"
+grep -q "^Fine region: wall knife's path comes" "$out/wide/log.txt" || { echo "no margin line for |y| < 0.48 m"; exit 1; }
+! grep -q "warning: Particles/Coarse graining/Fine region" "$out/wide/log.txt" || { echo "a margin warning for 0.465 m"; exit 1; }
+python3 - "$out/bed.bed" "$(margin_of "$out/once/log.txt")" "$(margin_of "$out/wide/log.txt")" <<'PY'
+import struct, sys
+b = open(sys.argv[1], "rb").read()
+n = struct.unpack_from("<Q", b, 8)[0]
+x, y, z = (struct.unpack_from(f"<{n}d", b, 24 + k * 8 * n) for k in range(3))
+r = struct.unpack_from(f"<{n}d", b, 24 + 9 * 8 * n)
+tops = {}  # the highest top in each 0.1 m column of the box |x|, |y| < 0.9 m
+for xi, yi, zi, ri in zip(x, y, z, r):
+    if abs(xi) < 0.9 and abs(yi) < 0.9:
+        key = (int((xi + 0.9) // 0.1), int((yi + 0.9) // 0.1))
+        tops[key] = max(tops.get(key, -1.0), zi + ri)
+surface = sum(tops.values()) / len(tops)
+depth = surface - (0.6 - 1.5 * 0.2666667)
+print(f"bed surface {surface:.4f} m (highest top {max(zi + ri for zi, ri in zip(z, r)):.4f} m): the edge {depth:.4f} m below it")
+for stated, half in ((sys.argv[2], 0.24), (sys.argv[3], 0.48)):
+    margin, said_depth = map(float, stated.split())
+    assert abs(margin - (half - 0.015)) < 1e-3, (stated, half)
+    assert abs(said_depth - depth) < 0.006, (stated, depth)  # two definitions of the surface: a few mm
+PY
+echo "ok: the refilled pour holds more of the fine column's mass, the total stays, a bed of other pours is named, the fine box's margin and depth are the knife's and the bed's"

@@ -6,6 +6,7 @@
 //   abrade run cases/knife_bed/knife_bed.prm --set Job=bed --set "Particles/Settling/Bed file=$PWD/bed.bed"
 #include <abrade/common/error.h>
 #include <abrade/coupling/dem_run/bed_preparation.h>
+#include <abrade/coupling/dem_run/fine_region_margin.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/parameters/parameters.h>
@@ -36,6 +37,7 @@ namespace abrade::coupling
     dem::Simulation sim(c.settings);
     build_simulation(c, sim);
     const bool loaded = prepare_bed(c, sim, ctx, c.bed_file);
+    check_fine_region_margins(c, sim, ctx.log);
     ctx.results["particles"]  = static_cast<long>(sim.n_particles());
     ctx.results["bed_loaded"] = loaded;
     ctx.results["bed_file"]   = c.bed_file;

@@ -12,6 +12,7 @@
 #include <abrade/common/format_number.h>
 #include <abrade/common/progress.h>
 #include <abrade/coupling/dem_run/bed_preparation.h>
+#include <abrade/coupling/dem_run/fine_region_margin.h>
 #include <abrade/coupling/jobs.h>
 #include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/parameters/parameters.h>
@@ -205,6 +206,7 @@ namespace abrade::coupling
     mechanism = build_simulation(c, *sim);
 
     loaded = prepare_bed(c, *sim, ctx, c.bed_file);
+    check_fine_region_margins(c, *sim, ctx.log);
     sim->set_time(0);
     flush_warnings(*sim, ctx.log);
     ctx.log.line("Particles: " + std::to_string(sim->n_particles()) + ", time step " + io::format_number(sim->dt()) +

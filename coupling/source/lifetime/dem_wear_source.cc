@@ -2,6 +2,7 @@
 // mpirun the beds run side by side on groups of the ranks (Lifetime/DEM/Ranks per bed).
 #include <abrade/common/timer.h>
 #include <abrade/coupling/dem_run/bed_preparation.h>
+#include <abrade/coupling/dem_run/fine_region_margin.h>
 #include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/dem/coarse_graining.h>
@@ -163,7 +164,8 @@ namespace abrade::coupling::lifetime
         quiet.set_echo(false);
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
         const std::string bed = "beds/bed-seed" + std::to_string(seed) + ".bed";
-        prepare_bed(run, sim, cycle_ctx, bed);
+        if (!prepare_bed(run, sim, cycle_ctx, bed)) // a bed made now: its margin once, with its warnings
+          check_fine_region_margins(run, sim, quiet);
         governor->carry_on(); // (after the settling's steps: the cycle's are measured afresh)
         sim.set_time(0);
         std::vector<dem::WallWearLaws> laws;
