@@ -7,7 +7,9 @@
 # The fine box's margin (fine_region_margin.cc): 0.225 m beside the knife's path (|y| < 0.24 m,
 # the knife 0.03 m thick) is under 1.2 times the depth its edge reaches below the bed's surface
 # (z = 0.6 - 1.5 m/s x 0.2667 s = 0.2 m; the surface from the bed file here, the mean of its
-# columns' tops): a warning; with |y| < 0.48 m (0.465 m) a line and no warning.
+# columns' tops): a warning; with |y| < 0.48 m (0.465 m) a line and no warning; with the box
+# wide below the knife's path only, the upper face's margin, warned. The bed made with the narrow
+# box and used with a wider one is named in a warning.
 #   check_multi_level_pours.sh ABRADE CASE_DIR OUTDIR
 set -euo pipefail
 abrade=$1 cases=$2 out=$3
@@ -37,18 +39,21 @@ PY
   --set "Particles/Coarse graining/Fine region pours=1" --set "Particles/Settling/Bed file=$out/bed.bed"
 grep -q "it was poured more than once, and Particles/Coarse graining/Fine region pours is 1" "$out/once/log.txt" ||
   { echo "the refilled bed was used for a one-pour case without a warning"; exit 1; }
-margin_of() { # the margin and the depth a log states
-  sed -n "s/.*wall knife's path comes \([-0-9.e]*\) m from the fine region's face across y; its lowest point is \([0-9.e-]*\) m below.*/\1 \2/p" "$1"
-}
 grep -q "warning: Particles/Coarse graining/Fine region: wall knife's path comes" "$out/once/log.txt" ||
   { echo "no warning for a fine box 0.225 m beside the knife's path"; exit 1; }
+# the same bed with a wider box (0.465 m, no margin warning; the bed was made with the narrow box:
+# a warning names it) and with a box wide below the knife but not above (the upper face's 0.225 m)
 "$abrade" run "$cases/coarse_graining.prm" --output "$out/wide" --set Job=bed "${fine[@]}" \
   --set "Particles/Coarse graining/Fine region min=-0.97, -0.48, 0.03" --set "Particles/Coarse graining/Fine region max=0.97, 0.48, 0.85" \
   --set "Particles/Settling/Bed file=$out/bed.bed"
-grep -q "^Fine region: wall knife's path comes" "$out/wide/log.txt" || { echo "no margin line for |y| < 0.48 m"; exit 1; }
+grep -q "finest particles (radius 0.01944 m) are not about the" "$out/wide/log.txt" ||
+  { echo "a bed made with another fine region was used without a warning"; exit 1; }
 ! grep -q "warning: Particles/Coarse graining/Fine region" "$out/wide/log.txt" || { echo "a margin warning for 0.465 m"; exit 1; }
-python3 - "$out/bed.bed" "$(margin_of "$out/once/log.txt")" "$(margin_of "$out/wide/log.txt")" <<'PY'
-import struct, sys
+"$abrade" run "$cases/coarse_graining.prm" --output "$out/upper" --set Job=bed "${fine[@]}" \
+  --set "Particles/Coarse graining/Fine region min=-0.97, -0.48, 0.03" --set "Particles/Coarse graining/Fine region max=0.97, 0.24, 0.85" \
+  --set "Particles/Settling/Bed file=$out/bed.bed"
+python3 - "$out/bed.bed" "$out/once/log.txt" "$out/wide/log.txt" "$out/upper/log.txt" <<'PY'
+import re, struct, sys
 b = open(sys.argv[1], "rb").read()
 n = struct.unpack_from("<Q", b, 8)[0]
 x, y, z = (struct.unpack_from(f"<{n}d", b, 24 + k * 8 * n) for k in range(3))
@@ -59,11 +64,21 @@ for xi, yi, zi, ri in zip(x, y, z, r):
         key = (int((xi + 0.9) // 0.1), int((yi + 0.9) // 0.1))
         tops[key] = max(tops.get(key, -1.0), zi + ri)
 surface = sum(tops.values()) / len(tops)
-depth = surface - (0.6 - 1.5 * 0.2666667)
+depth = surface - (0.6 - 1.5 * 0.2666667)  # the edge's lowest point: z = 0.6 - 1.5 m/s x 0.2667 s
 print(f"bed surface {surface:.4f} m (highest top {max(zi + ri for zi, ri in zip(z, r)):.4f} m): the edge {depth:.4f} m below it")
-for stated, half in ((sys.argv[2], 0.24), (sys.argv[3], 0.48)):
-    margin, said_depth = map(float, stated.split())
-    assert abs(margin - (half - 0.015)) < 1e-3, (stated, half)
-    assert abs(said_depth - depth) < 0.006, (stated, depth)  # two definitions of the surface: a few mm
+pattern = re.compile(r"(warning: )?.*wall knife's path comes ([-0-9.e]+) m from (?:the fine region's|its) face at y = ([-0-9.e]+) m, "
+                     r"([0-9.e]+) times the depth of its lowest point below the bed's surface \(([0-9.e]+) m;")
+for log, warned, face in ((sys.argv[2], True, None), (sys.argv[3], False, None), (sys.argv[4], True, 0.24)):
+    found = [m for m in map(pattern.match, open(log)) if m]
+    assert len(found) == 1, (log, found)
+    m = found[0]
+    margin, at, ratio, said = float(m[2]), float(m[3]), float(m[4]), float(m[5])
+    half = abs(at)
+    print(f"{log}: margin {margin} m at y = {at} m, {ratio} depths, depth {said} m")
+    assert (m[1] is not None) == warned, log
+    assert abs(margin - (half - 0.015)) < 1e-3, (log, margin)  # the knife is 0.03 m thick, centred on y = 0
+    assert face is None or at == face, (log, at)
+    assert abs(said - depth) < 0.006, (log, said, depth)  # two definitions of the surface: a few mm
+    assert abs(ratio - margin / said) < 5e-3 * ratio, (log, ratio)  # (each printed to 3 digits)
 PY
 echo "ok: the refilled pour holds more of the fine column's mass, the total stays, a bed of other pours is named, the fine box's margin and depth are the knife's and the bed's"

@@ -1,20 +1,19 @@
 // How far a multi-level bed's fine region reaches beyond the worn walls' paths, against the
 // depth they work at (fine_region_margin.h). The knife-bed's beds showed the need: with the fine
 // box 0.225 m beside the knife's faces, 0.8 times the 0.285 m its edge works at below the bed's
-// surface, the force over the first half of its travel read 9 % below the uniform fine beds' (twelve
-// beds each), 4 % at 1.2 times, 0.2 % above at 1.6 times; the wear and the other forces held
-// within their scatter (docs/coarse-graining.md). A user sees no such bias in a single run.
+// surface, the force over the first half of its travel read 9 % below the uniform fine beds'
+// (twelve beds each), 4 % at 1.2 times, 0.2 % above at 1.6 times; the wear and the other forces
+// held within their scatter (docs/coarse-graining.md). A user sees no such bias in a single run.
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/dem_run/fine_region_margin.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace abrade::coupling
 {
   std::optional<std::pair<dem::Vec3, dem::Vec3>> swept_box(const dem::Wall &wall, const std::vector<Phase> &phases,
-                                                           const int samples_per_phase)
+                                                           const double below, const int samples_per_phase)
   {
     using Kind = dem::WallMotion::Kind;
     if (wall.motion.kind != Kind::fixed && wall.motion.kind != Kind::prescribed)
@@ -23,8 +22,9 @@ namespace abrade::coupling
     dem::Vec3  lo = dem::Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     const auto extend = [&] {
       for (std::size_t v = 0; v < w.mesh.vertices.size(); ++v)
-        for (int d = 0; d < 3; ++d)
-          lo[d] = std::min(lo[d], w.current[3 * v + d]), hi[d] = std::max(hi[d], w.current[3 * v + d]);
+        if (w.current[3 * v + 2] < below)
+          for (int d = 0; d < 3; ++d)
+            lo[d] = std::min(lo[d], w.current[3 * v + d]), hi[d] = std::max(hi[d], w.current[3 * v + d]);
     };
     extend();
     for (const auto &[name, duration] : phases)
@@ -39,10 +39,12 @@ namespace abrade::coupling
 
   double bed_surface(const dem::Simulation &sim, const dem::FillRegion &fill)
   {
-    const double cell = 4 * sim.largest_radius();
-    const int    nx   = std::max(1, int(std::ceil((fill.box_max.x() - fill.box_min.x()) / cell)));
-    const int    ny   = std::max(1, int(std::ceil((fill.box_max.y() - fill.box_min.y()) / cell)));
     const double none = -std::numeric_limits<double>::max();
+    const double cell = 4 * sim.largest_radius(); // (collective: the same on every rank)
+    if (!(cell > 0))
+      return none;
+    const int nx = std::max(1, int(std::ceil((fill.box_max.x() - fill.box_min.x()) / cell)));
+    const int ny = std::max(1, int(std::ceil((fill.box_max.y() - fill.box_min.y()) / cell)));
     std::vector<double> top(std::size_t(nx) * ny, none);
     const auto &P = sim.particles();
     for (std::size_t i = 0; i < P.size(); ++i)
@@ -60,58 +62,94 @@ namespace abrade::coupling
     return *middle;
   }
 
-  std::vector<FineRegionMargin> fine_region_margins(const DemCase &c, const dem::Simulation &sim, const double surface)
+  namespace
   {
-    std::vector<FineRegionMargin> out;
-    const dem::Vec3 &g = c.settings.gravity;
-    if (c.finer_levels.empty() || !c.finer_levels.front().fill.centres_in || !(g.z() < 0) ||
-        std::hypot(g.x(), g.y()) > 1e-9 * -g.z())
-      return out;
-    const auto &[fine_lo, fine_hi] = *c.finer_levels.front().fill.centres_in;
-    const dem::Vec3 &fill_lo = c.fill.box_min, &fill_hi = c.fill.box_max;
-    for (std::size_t k = 0; k < c.walls.size() && k < sim.n_walls(); ++k)
-      {
-        if (c.walls[k].wear.empty())
-          continue;
-        const auto path = swept_box(sim.wall(k), c.phases);
-        if (!path || path->first.z() >= surface)
-          continue; // (not known, or above the bed)
-        FineRegionMargin nearest{c.walls[k].wall.name, 0, std::numeric_limits<double>::infinity(), surface - path->first.z()};
-        for (int d = 0; d < 2; ++d)
-          {
-            // a face on the fill box's has no bulk beyond it (the fine particles reach the wall)
-            const double tol = 1e-9 * (fill_hi[d] - fill_lo[d]);
-            if (fine_lo[d] > fill_lo[d] + tol && path->first[d] - fine_lo[d] < nearest.margin)
-              nearest.axis = d, nearest.margin = path->first[d] - fine_lo[d];
-            if (fine_hi[d] < fill_hi[d] - tol && fine_hi[d] - path->second[d] < nearest.margin)
-              nearest.axis = d, nearest.margin = fine_hi[d] - path->second[d];
-          }
-        if (std::isfinite(nearest.margin))
-          out.push_back(nearest);
-      }
-    return out;
-  }
+    /// A worn wall's nearest approach to a face of the fine region that the bulk lies beyond.
+    struct Margin
+    {
+      int    axis   = 0; ///< across which (0: x, 1: y)
+      double margin = std::numeric_limits<double>::infinity(); ///< [m] path to face (< 0: beyond it)
+      double face   = 0; ///< the face's coordinate [m]
+      double side   = 0; ///< -1: the lower face, +1: the upper
+    };
+
+    std::string number(double v, int digits = 3) { return io::format_number(v, digits); }
+
+    /// The warning for margin @p m of @p wall, @p depth below the surface.
+    std::string margin_warning(const std::string &wall, const Margin &m, double depth, const std::string &where,
+                               const dem::FillRegion &fill)
+    {
+      const std::string across = std::string(1, char('x' + m.axis));
+      const double      path   = m.face - m.side * m.margin; // the path's extreme towards that face
+      const double      wanted = path + m.side * fine_region_margin_in_depths * depth;
+      const double      fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
+      const bool        beyond_fill = m.side * (wanted - fill_face) >= 0;
+      return "Particles/Coarse graining/Fine region: wall " + wall + "'s path " +
+             (m.margin < 0 ? "reaches " + number(-m.margin) + " m beyond" : "comes " + number(m.margin) + " m from") +
+             " the fine region's face at " + across + " = " + number(m.face, 4) + " m, " + number(m.margin / depth) +
+             " times the depth of its lowest point below the bed's surface (" + number(depth) + " m; " + where + ")" +
+             (m.margin < 0 ? ": the wall meets the bulk's coarser particles" : "") +
+             ". With 0.8 times it the multi-level knife-bed's force over the first half of the travel read 9 % below "
+             "the uniform fine bed's, with 1.2 times 4 %, with 1.6 times 0.2 % above (docs/coarse-graining.md): " +
+             (beyond_fill ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 4) + " m"
+                          : "move the face to " + across + " = " + number(wanted, 4) + " m (" +
+                              number(fine_region_margin_in_depths, 2) + " times the depth beyond the path; 1.6 times where the "
+                              "force early in the stroke matters)");
+    }
+  } // namespace
 
   void check_fine_region_margins(const DemCase &c, const dem::Simulation &sim, io::Log &log)
   {
-    if (c.finer_levels.empty())
-      return;
+    const dem::Vec3 &g = c.settings.gravity;
+    if (c.finer_levels.empty() || !c.finer_levels.front().fill.centres_in || !(g.z() < 0) ||
+        std::hypot(g.x(), g.y()) > 1e-9 * -g.z())
+      return; // (the same on every rank)
     const double surface = bed_surface(sim, c.fill); // (collective)
-    for (const auto &m : fine_region_margins(c, sim, surface))
+    const auto &[fine_lo, fine_hi] = *c.finer_levels.front().fill.centres_in;
+    const dem::Vec3 &fill_lo = c.fill.box_min, &fill_hi = c.fill.box_max;
+    const auto       inside  = [&](int d, double v, double face) { return std::abs(v - face) > 1e-9 * (fill_hi[d] - fill_lo[d]); };
+    const std::string where  = "z = " + number(surface, 4) + " m, the median of the bed's columns' highest tops";
+    bool              any    = false;
+    for (std::size_t k = 0; k < c.walls.size() && k < sim.n_walls(); ++k)
       {
-        const std::string across = std::string(1, char('x' + m.axis));
-        const std::string what   = "wall " + m.wall + "'s path comes " + io::format_number(m.margin, 3) +
-                                 " m from the fine region's face across " + across + "; its lowest point is " +
-                                 io::format_number(m.depth, 3) + " m below the bed's surface (z = " +
-                                 io::format_number(surface, 4) + " m, its columns' median top): " + io::format_number(m.margin / m.depth, 3) + " times that depth";
-        if (m.margin >= fine_region_margin_in_depths * m.depth)
-          log.line("Fine region: " + what);
-        else
-          log.warning(
-            "Particles/Coarse graining/Fine region: " + what + ", under the " + io::format_number(fine_region_margin_in_depths) +
-            " times below which the multi-level knife-bed's force early in the travel read 4-9 % low " +
-            (m.margin < 0 ? "(and the wall meets the bulk's coarse particles) " : "") + "(docs/coarse-graining.md): widen the fine region across " +
-            across + " to at least " + io::format_number(fine_region_margin_in_depths * m.depth, 3) + " m beyond the path");
+        const std::string &name = c.walls[k].wall.name;
+        if (c.walls[k].wear.empty())
+          continue;
+        const auto path = swept_box(sim.wall(k), c.phases, surface);
+        if (!path)
+          {
+            log.line("Fine region: wall " + name + "'s path follows the loads (not prescribed): its margin is not checked");
+            continue;
+          }
+        if (!std::isfinite(path->first.z()))
+          continue; // (never in the bed)
+        any = true;
+        const double depth = surface - path->first.z();
+        Margin       nearest;
+        for (int d = 0; d < 2; ++d)
+          {
+            // a face on the fill box's has no bulk beyond it (the fine particles reach the wall)
+            if (inside(d, fine_lo[d], fill_lo[d]) && path->first[d] - fine_lo[d] < nearest.margin)
+              nearest = {d, path->first[d] - fine_lo[d], fine_lo[d], -1};
+            if (inside(d, fine_hi[d], fill_hi[d]) && fine_hi[d] - path->second[d] < nearest.margin)
+              nearest = {d, fine_hi[d] - path->second[d], fine_hi[d], +1};
+          }
+        if (std::isfinite(nearest.margin) && nearest.margin < fine_region_margin_warning * depth)
+          log.warning(margin_warning(name, nearest, depth, where, c.fill));
+        else if (std::isfinite(nearest.margin))
+          log.line("Fine region: wall " + name + "'s path comes " + number(nearest.margin) + " m from its face at " +
+                   std::string(1, char('x' + nearest.axis)) + " = " + number(nearest.face, 4) + " m, " +
+                   number(nearest.margin / depth) + " times the depth of its lowest point below the bed's surface (" +
+                   number(depth) + " m; " + where + ")");
+        if (inside(2, fine_lo.z(), fill_lo.z()) && path->first.z() < fine_lo.z())
+          log.warning("Particles/Coarse graining/Fine region: wall " + name + "'s path reaches " +
+                      number(fine_lo.z() - path->first.z()) + " m below the fine region's floor (z = " + number(fine_lo.z(), 4) +
+                      " m): the wall meets the bulk's coarser particles there; lower Fine region min's z");
       }
+    if (any && inside(2, fine_hi.z(), fill_hi.z()))
+      log.warning("Particles/Coarse graining/Fine region: its top (z = " + number(fine_hi.z(), 4) +
+                  " m) is below the fill box's (Particles/Generation/Region max, z = " + number(fill_hi.z(), 4) +
+                  " m): the coarser particles poured above it settle over the worn walls' paths; raise Fine region max's z "
+                  "to the fill box's top");
   }
 } // namespace abrade::coupling

@@ -92,6 +92,7 @@ namespace abrade::coupling::lifetime
       int              ranks_per_bed; ///< Lifetime/DEM/Ranks per bed (0: the ranks shared out among the beds)
       bool             announced = false;
       std::shared_ptr<dem::ThreadGovernor> governor; ///< the first cycle's, carried on
+      bool fine_region_checked = false; ///< a multi-level bed's margins, logged for the first bed made
       JobContext      &ctx;
 
       /// One bed's cycle: what the cycle's wear is added up from.
@@ -164,8 +165,11 @@ namespace abrade::coupling::lifetime
         quiet.set_echo(false);
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
         const std::string bed = "beds/bed-seed" + std::to_string(seed) + ".bed";
-        if (!prepare_bed(run, sim, cycle_ctx, bed)) // a bed made now: its margin once, with its warnings
-          check_fine_region_margins(run, sim, quiet);
+        if (!prepare_bed(run, sim, cycle_ctx, bed) && !fine_region_checked) // the first bed made: in the loop's log
+          {
+            check_fine_region_margins(run, sim, ctx.log); // (not a fault of a cycle: not among the DEM's warnings)
+            fine_region_checked = true;
+          }
         governor->carry_on(); // (after the settling's steps: the cycle's are measured afresh)
         sim.set_time(0);
         std::vector<dem::WallWearLaws> laws;
