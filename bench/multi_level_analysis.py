@@ -26,7 +26,9 @@ FRICTION = "Wall knife/Interaction/Friction"
 
 
 def t_quantile_975(df):
-    """Student's t 97.5 % quantile (Hill's expansion, within 1e-3 for df >= 1.5)."""
+    """Student's t 97.5 % quantile (Hill's expansion: against the exact quantile -2.5 % at df 1.5,
+    -0.75 % at 2, -0.12 % at 3, within 0.03 % from 4 on; an interval with Welch's df near 2 is
+    that much narrow)."""
     z = 1.959964
     g1 = (z ** 3 + z) / 4
     g2 = (5 * z ** 5 + 16 * z ** 3 + 3 * z) / 96

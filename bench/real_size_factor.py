@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """The knife-bed at the real pellet size against the coarse-grained sizes (docs/coarse-graining.md).
 
-    real_size_factor.py [--beds N] UNIFORM_STUDY_CSV REAL_SIZE_STUDY_CSV
+    real_size_factor.py [--beds N | --beds N1,N2] UNIFORM_STUDY_CSV REAL_SIZE_STUDY_CSV
 
 UNIFORM_STUDY_CSV: the size study's sweep (docs/coarse-graining/study.csv: Factor 4, 2.828, 2,
 1.333, uniform beds); REAL_SIZE_STUDY_CSV: a sweep of multi-level beds with the real pellets in
 the fine region (Fine region factor 1). Knife friction 0.4 from both; N beds each (3 unless
---beds says). Prints a markdown table of the real size's means, their 95 % t-intervals and
+--beds says; N1,N2: the uniform study's and the real size's, each at least 2). Prints a markdown table of the real size's means, their 95 % t-intervals and
 their ratios to the 27.5 mm beds' (Factor 4) with Fieller's 95 % interval for a ratio of two
 independent means (the W factor that takes a 27.5 mm run to the real size is the total wear's
 ratio), and the size-convergence fit w = w0 + a R^p through the uniform sizes and the real size's
@@ -33,6 +33,8 @@ REAL_RADIUS = 6.875  # mm: the real pellets (cases/knife_bed/real_pellets.prm); 
 def fieller(m1, s1, n1, m2, s2, n2):
     """95 % interval of m2 / m1 (independent means; Welch-Satterthwaite degrees of freedom at
     the ratio's estimate); None where m1 is not significantly away from zero (unbounded)."""
+    if m1 == 0:
+        return None
     v1, v2 = s1 * s1 / n1, s2 * s2 / n2
     r = m2 / m1
     var = v2 + r * r * v1
@@ -49,9 +51,12 @@ def fieller(m1, s1, n1, m2, s2, n2):
 
 def main():
     args = sys.argv[1:]
-    n = 3
+    n1 = n2 = 3
     if args[:1] == ["--beds"]:
-        n, args = int(args[1]), args[2:]
+        beds = [int(b) for b in args[1].split(",")]
+        n1, n2, args = beds[0], beds[-1], args[2:]
+        if min(n1, n2) < 2:
+            sys.exit("real_size_factor.py: at least 2 beds each (a standard deviation)")
     if len(args) != 2:
         sys.exit(__doc__)
     at_04 = lambda rows: [r for r in rows if abs(float(r.get(FRICTION, 0.4)) - 0.4) < 1e-9]
@@ -59,14 +64,14 @@ def main():
     real = at_04(list(csv.DictReader(open(args[1]))))[0]
     coarse = uniform[0]
     assert abs(float(coarse[FACTOR]) - 4) < 1e-9, "the uniform study has no 27.5 mm beds (Factor 4)"
-    print(f"Real size (6.875 mm, multi-level) against the 27.5 mm uniform beds, knife friction 0.4, {n} beds each\n")
+    print(f"Real size (6.875 mm, multi-level, {n2} beds) against the 27.5 mm uniform beds ({n1}), knife friction 0.4\n")
     print("| quantity | 27.5 mm | real size | its 95 % interval | real / 27.5 mm (Fieller, 95 %) |")
     print("|---|---|---|---|---|")
     for key, name in QUANTITIES:
         m1, s1 = float(coarse[key + "_mean"]), float(coarse[key + "_std"])
         m2, s2 = float(real[key + "_mean"]), float(real[key + "_std"])
-        h = t_quantile_975(n - 1) * s2 / math.sqrt(n)
-        ratio = fieller(m1, s1, n, m2, s2, n)
+        h = t_quantile_975(n2 - 1) * s2 / math.sqrt(n2)
+        ratio = fieller(m1, s1, n1, m2, s2, n2)
         span = f"{ratio[0]:.3f} ... {ratio[1]:.3f}" if ratio else "unbounded"
         print(f"| {name} | {m1:.4g} ± {s1:.2g} | {m2:.4g} ± {s2:.2g} | {m2 - h:.4g} ... {m2 + h:.4g} | "
               f"{m2 / m1:.3f} ({span}) |")

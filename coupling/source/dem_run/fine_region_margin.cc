@@ -20,11 +20,20 @@ namespace abrade::coupling
       return std::nullopt; // (a free body's or a mechanism's path follows from the loads)
     dem::Wall  w = wall; // moved through the cycle as the simulation moves it, step by step
     dem::Vec3  lo = dem::Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    // the part of the surface below the height: its vertices there and where its triangles'
+    // edges cross the height (a tilted face reaches farther at the height than at its vertices)
     const auto extend = [&] {
-      for (std::size_t v = 0; v < w.mesh.vertices.size(); ++v)
-        if (w.current[3 * v + 2] < below)
-          for (int d = 0; d < 3; ++d)
-            lo[d] = std::min(lo[d], w.current[3 * v + d]), hi[d] = std::max(hi[d], w.current[3 * v + d]);
+      const auto at  = [&](int v) { return dem::Vec3(w.current[3 * v], w.current[3 * v + 1], w.current[3 * v + 2]); };
+      const auto add = [&](const dem::Vec3 &p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); };
+      for (const auto &t : w.mesh.triangles)
+        for (int e = 0; e < 3; ++e)
+          {
+            const dem::Vec3 a = at(t[e]), b = at(t[(e + 1) % 3]);
+            if (a.z() < below)
+              add(a);
+            if ((a.z() < below) != (b.z() < below))
+              add(a + (b - a) * ((below - a.z()) / (b.z() - a.z())));
+          }
     };
     extend();
     for (const auto &[name, duration] : phases)
@@ -85,10 +94,12 @@ namespace abrade::coupling
       const double      fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
       const bool        beyond_fill = m.side * (wanted - fill_face) >= 0;
       return "Particles/Coarse graining/Fine region: wall " + wall + "'s path " +
-             (m.margin < 0 ? "reaches " + number(-m.margin) + " m beyond" : "comes " + number(m.margin) + " m from") +
-             " the fine region's face at " + across + " = " + number(m.face, 4) + " m, " + number(m.margin / depth) +
-             " times the depth of its lowest point below the bed's surface (" + number(depth) + " m; " + where + ")" +
-             (m.margin < 0 ? ": the wall meets the bulk's coarser particles" : "") +
+             (m.margin < 0 ? "reaches " + number(-m.margin) + " m beyond the fine region's face at " + across + " = " +
+                               number(m.face, 4) + " m (the wall meets coarser particles); its lowest point is " + number(depth) +
+                               " m below the bed's surface (" + where + ")"
+                           : "comes " + number(m.margin) + " m from the fine region's face at " + across + " = " + number(m.face, 4) +
+                               " m, " + number(m.margin / depth) + " times the depth of its lowest point below the bed's surface (" +
+                               number(depth) + " m; " + where + ")") +
              ". With 0.8 times it the multi-level knife-bed's force over the first half of the travel read 9 % below "
              "the uniform fine bed's, with 1.2 times 4 %, with 1.6 times 0.2 % above (docs/coarse-graining.md): " +
              (beyond_fill ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 4) + " m"
@@ -125,26 +136,39 @@ namespace abrade::coupling
           continue; // (never in the bed)
         any = true;
         const double depth = surface - path->first.z();
-        Margin       nearest;
+        // each side face with coarser particles beyond it (a face on the fill box's has none:
+        // the fine particles reach the container): a warning for each too near, else a line
+        // for the nearest
+        std::vector<Margin> faces;
         for (int d = 0; d < 2; ++d)
           {
-            // a face on the fill box's has no bulk beyond it (the fine particles reach the wall)
-            if (inside(d, fine_lo[d], fill_lo[d]) && path->first[d] - fine_lo[d] < nearest.margin)
-              nearest = {d, path->first[d] - fine_lo[d], fine_lo[d], -1};
-            if (inside(d, fine_hi[d], fill_hi[d]) && fine_hi[d] - path->second[d] < nearest.margin)
-              nearest = {d, fine_hi[d] - path->second[d], fine_hi[d], +1};
+            if (inside(d, fine_lo[d], fill_lo[d]))
+              faces.push_back({d, path->first[d] - fine_lo[d], fine_lo[d], -1});
+            if (inside(d, fine_hi[d], fill_hi[d]))
+              faces.push_back({d, fine_hi[d] - path->second[d], fine_hi[d], +1});
           }
-        if (std::isfinite(nearest.margin) && nearest.margin < fine_region_margin_warning * depth)
-          log.warning(margin_warning(name, nearest, depth, where, c.fill));
-        else if (std::isfinite(nearest.margin))
+        Margin nearest;
+        bool   warned = false;
+        for (const Margin &m : faces)
+          {
+            if (m.margin < fine_region_margin_warning * depth)
+              log.warning(margin_warning(name, m, depth, where, c.fill)), warned = true;
+            if (m.margin < nearest.margin)
+              nearest = m;
+          }
+        if (!warned && std::isfinite(nearest.margin))
           log.line("Fine region: wall " + name + "'s path comes " + number(nearest.margin) + " m from its face at " +
                    std::string(1, char('x' + nearest.axis)) + " = " + number(nearest.face, 4) + " m, " +
                    number(nearest.margin / depth) + " times the depth of its lowest point below the bed's surface (" +
                    number(depth) + " m; " + where + ")");
-        if (inside(2, fine_lo.z(), fill_lo.z()) && path->first.z() < fine_lo.z())
-          log.warning("Particles/Coarse graining/Fine region: wall " + name + "'s path reaches " +
-                      number(fine_lo.z() - path->first.z()) + " m below the fine region's floor (z = " + number(fine_lo.z(), 4) +
-                      " m): the wall meets the bulk's coarser particles there; lower Fine region min's z");
+        // the floor bounds the finest particles' centres: the next level's reach a diameter of
+        // theirs above it
+        const double next = c.finer_levels.size() > 1 ? c.finer_levels[1].fill.sizes.largest() : c.fill.sizes.largest();
+        if (inside(2, fine_lo.z(), fill_lo.z()) && path->first.z() < fine_lo.z() + 2 * next)
+          log.warning("Particles/Coarse graining/Fine region: wall " + name + "'s path reaches down to z = " +
+                      number(path->first.z(), 4) + " m, within a coarser particle's diameter (" + number(2 * next) +
+                      " m) of the fine region's floor (z = " + number(fine_lo.z(), 4) +
+                      " m): the wall meets coarser particles there; lower Fine region min's z");
       }
     if (any && inside(2, fine_hi.z(), fill_hi.z()))
       log.warning("Particles/Coarse graining/Fine region: its top (z = " + number(fine_hi.z(), 4) +

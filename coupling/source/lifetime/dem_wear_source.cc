@@ -92,7 +92,7 @@ namespace abrade::coupling::lifetime
       int              ranks_per_bed; ///< Lifetime/DEM/Ranks per bed (0: the ranks shared out among the beds)
       bool             announced = false;
       std::shared_ptr<dem::ThreadGovernor> governor; ///< the first cycle's, carried on
-      bool fine_region_checked = false; ///< a multi-level bed's margins, logged for the first bed made
+      bool fine_region_logged = false; ///< a multi-level bed's margins: logged for the first bed made here
       JobContext      &ctx;
 
       /// One bed's cycle: what the cycle's wear is added up from.
@@ -165,10 +165,16 @@ namespace abrade::coupling::lifetime
         quiet.set_echo(false);
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
         const std::string bed = "beds/bed-seed" + std::to_string(seed) + ".bed";
-        if (!prepare_bed(run, sim, cycle_ctx, bed) && !fine_region_checked) // the first bed made: in the loop's log
+        // a multi-level bed's fine box against the paths, for every bed made (collective over
+        // the bed's group, whose ranks all made it: a per-process choice of whether to check
+        // could split a later update's regrouped ranks), logged for the first in the loop's log
+        // (not a fault of a cycle: not among the DEM's warnings)
+        if (!prepare_bed(run, sim, cycle_ctx, bed))
           {
-            check_fine_region_margins(run, sim, ctx.log); // (not a fault of a cycle: not among the DEM's warnings)
-            fine_region_checked = true;
+            io::Log unlogged; // (neither the loop's log nor the cycle's warnings)
+            unlogged.set_echo(false);
+            check_fine_region_margins(run, sim, fine_region_logged ? unlogged : ctx.log);
+            fine_region_logged = true;
           }
         governor->carry_on(); // (after the settling's steps: the cycle's are measured afresh)
         sim.set_time(0);
