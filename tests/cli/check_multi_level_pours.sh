@@ -68,7 +68,7 @@ for xi, yi, zi, ri in zip(x, y, z, r):
 surface = sum(tops.values()) / len(tops)
 depth = surface - (0.6 - 1.5 * 0.2666667)  # the edge's lowest point: z = 0.6 - 1.5 m/s x 0.2667 s
 print(f"bed surface {surface:.4f} m (highest top {max(zi + ri for zi, ri in zip(z, r)):.4f} m): the edge {depth:.4f} m below it")
-pattern = re.compile(r"(warning: )?.*wall knife's path comes ([-0-9.e]+) m from (?:the fine region's|its) face at y = ([-0-9.e]+) m, "
+pattern = re.compile(r"(warning: )?.*wall knife's path comes ([-0-9.e]+) m from the fine region's face at y = ([-0-9.e]+) m, "
                      r"([0-9.e]+) times the depth of its lowest point below the bed's surface \(([0-9.e]+) m;")
 # each face too near warned (both of the narrow box), else a line for the nearest
 for log, warned, faces in ((sys.argv[2], True, {-0.24, 0.24}), (sys.argv[3], False, {-0.48, 0.48}), (sys.argv[4], True, {0.24})):

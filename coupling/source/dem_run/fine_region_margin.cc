@@ -84,6 +84,15 @@ namespace abrade::coupling
 
     std::string number(double v, int digits = 3) { return io::format_number(v, digits); }
 
+    /// "comes 0.225 m from the fine region's face at y = -0.24 m, 0.79 times the depth ..." (the
+    /// log's line and the warning's start alike).
+    std::string margin_text(const Margin &m, double depth, const std::string &where)
+    {
+      return "comes " + number(m.margin) + " m from the fine region's face at " + std::string(1, char('x' + m.axis)) + " = " +
+             number(m.face, 4) + " m, " + number(m.margin / depth) + " times the depth of its lowest point below the bed's surface (" +
+             number(depth) + " m; " + where + ")";
+    }
+
     /// The warning for margin @p m of @p wall, @p depth below the surface.
     std::string margin_warning(const std::string &wall, const Margin &m, double depth, const std::string &where,
                                const dem::FillRegion &fill)
@@ -97,9 +106,7 @@ namespace abrade::coupling
              (m.margin < 0 ? "reaches " + number(-m.margin) + " m beyond the fine region's face at " + across + " = " +
                                number(m.face, 4) + " m (the wall meets coarser particles); its lowest point is " + number(depth) +
                                " m below the bed's surface (" + where + ")"
-                           : "comes " + number(m.margin) + " m from the fine region's face at " + across + " = " + number(m.face, 4) +
-                               " m, " + number(m.margin / depth) + " times the depth of its lowest point below the bed's surface (" +
-                               number(depth) + " m; " + where + ")") +
+                           : margin_text(m, depth, where)) +
              ". With 0.8 times it the multi-level knife-bed's force over the first half of the travel read 9 % below "
              "the uniform fine bed's, with 1.2 times 4 %, with 1.6 times 0.2 % above (docs/coarse-graining.md): " +
              (beyond_fill ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 4) + " m"
@@ -118,7 +125,8 @@ namespace abrade::coupling
     const double surface = bed_surface(sim, c.fill); // (collective)
     const auto &[fine_lo, fine_hi] = *c.finer_levels.front().fill.centres_in;
     const dem::Vec3 &fill_lo = c.fill.box_min, &fill_hi = c.fill.box_max;
-    const auto       inside  = [&](int d, double v, double face) { return std::abs(v - face) > 1e-9 * (fill_hi[d] - fill_lo[d]); };
+    // coarser particles lie beyond a face of the fine box at v unless it is on the fill box's face
+    const auto       bulk_beyond = [&](int d, double v, double fill_face) { return std::abs(v - fill_face) > 1e-9 * (fill_hi[d] - fill_lo[d]); };
     const std::string where  = "z = " + number(surface, 4) + " m, the median of the bed's columns' highest tops";
     bool              any    = false;
     for (std::size_t k = 0; k < c.walls.size() && k < sim.n_walls(); ++k)
@@ -142,9 +150,9 @@ namespace abrade::coupling
         std::vector<Margin> faces;
         for (int d = 0; d < 2; ++d)
           {
-            if (inside(d, fine_lo[d], fill_lo[d]))
+            if (bulk_beyond(d, fine_lo[d], fill_lo[d]))
               faces.push_back({d, path->first[d] - fine_lo[d], fine_lo[d], -1});
-            if (inside(d, fine_hi[d], fill_hi[d]))
+            if (bulk_beyond(d, fine_hi[d], fill_hi[d]))
               faces.push_back({d, fine_hi[d] - path->second[d], fine_hi[d], +1});
           }
         Margin nearest;
@@ -157,20 +165,17 @@ namespace abrade::coupling
               nearest = m;
           }
         if (!warned && std::isfinite(nearest.margin))
-          log.line("Fine region: wall " + name + "'s path comes " + number(nearest.margin) + " m from its face at " +
-                   std::string(1, char('x' + nearest.axis)) + " = " + number(nearest.face, 4) + " m, " +
-                   number(nearest.margin / depth) + " times the depth of its lowest point below the bed's surface (" +
-                   number(depth) + " m; " + where + ")");
+          log.line("Fine region: wall " + name + "'s path " + margin_text(nearest, depth, where));
         // the floor bounds the finest particles' centres: the next level's reach a diameter of
         // theirs above it
         const double next = c.finer_levels.size() > 1 ? c.finer_levels[1].fill.sizes.largest() : c.fill.sizes.largest();
-        if (inside(2, fine_lo.z(), fill_lo.z()) && path->first.z() < fine_lo.z() + 2 * next)
+        if (bulk_beyond(2, fine_lo.z(), fill_lo.z()) && path->first.z() < fine_lo.z() + 2 * next)
           log.warning("Particles/Coarse graining/Fine region: wall " + name + "'s path reaches down to z = " +
                       number(path->first.z(), 4) + " m, within a coarser particle's diameter (" + number(2 * next) +
                       " m) of the fine region's floor (z = " + number(fine_lo.z(), 4) +
                       " m): the wall meets coarser particles there; lower Fine region min's z");
       }
-    if (any && inside(2, fine_hi.z(), fill_hi.z()))
+    if (any && bulk_beyond(2, fine_hi.z(), fill_hi.z()))
       log.warning("Particles/Coarse graining/Fine region: its top (z = " + number(fine_hi.z(), 4) +
                   " m) is below the fill box's (Particles/Generation/Region max, z = " + number(fill_hi.z(), 4) +
                   " m): the coarser particles poured above it settle over the worn walls' paths; raise Fine region max's z "
