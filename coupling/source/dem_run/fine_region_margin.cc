@@ -93,15 +93,18 @@ namespace abrade::coupling
              number(depth) + " m; " + where + ")";
     }
 
-    /// The warning for margin @p m of @p wall, @p depth below the surface.
+    /// The warning for margin @p m of @p wall, @p depth below the surface; @p room: what the
+    /// shells and a bulk particle need beyond the fine region's face on that side [m]: a face
+    /// moved to within it of the fill box's is refused (dem::split_into_levels), extended to
+    /// the fill box's face it is not.
     std::string margin_warning(const std::string &wall, const Margin &m, double depth, const std::string &where,
-                               const dem::FillRegion &fill)
+                               const dem::FillRegion &fill, double room)
     {
       const std::string across = std::string(1, char('x' + m.axis));
       const double      path   = m.face - m.side * m.margin; // the path's extreme towards that face
       const double      wanted = path + m.side * fine_region_margin_in_depths * depth;
       const double      fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
-      const bool        beyond_fill = m.side * (wanted - fill_face) >= 0;
+      const bool        beyond_fill = m.side * (wanted + m.side * room - fill_face) > 0;
       return "Particles/Coarse graining/Fine region: wall " + wall + "'s path " +
              (m.margin < 0 ? "reaches " + number(-m.margin) + " m beyond the fine region's face at " + across + " = " +
                                number(m.face, 4) + " m (the wall meets coarser particles); its lowest point is " + number(depth) +
@@ -109,7 +112,9 @@ namespace abrade::coupling
                            : margin_text(m, depth, where)) +
              ". With 0.8 times it the multi-level knife-bed's force over the first half of the travel read 9 % below "
              "the uniform fine bed's, with 1.2 times 4 %, with 1.6 times 0.2 % above (docs/coarse-graining.md): " +
-             (beyond_fill ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 4) + " m"
+             (beyond_fill ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 4) +
+                              " m (a face at " + number(wanted, 4) + " m would leave its shells and a bulk particle less than the " +
+                              number(room) + " m they need)"
                           : "move the face to " + across + " = " + number(wanted, 4) + " m (" +
                               number(fine_region_margin_in_depths, 2) + " times the depth beyond the path; 1.6 times where the "
                               "force early in the stroke matters)");
@@ -159,8 +164,12 @@ namespace abrade::coupling
         bool   warned = false;
         for (const Margin &m : faces)
           {
+            // the shells' thickness beyond this face (the outermost level's box against the
+            // finest's) and a bulk particle's diameter
+            const auto  &[outer_lo, outer_hi] = *c.finer_levels.back().fill.centres_in;
+            const double shells = m.side < 0 ? fine_lo[m.axis] - outer_lo[m.axis] : outer_hi[m.axis] - fine_hi[m.axis];
             if (m.margin < fine_region_margin_warning * depth)
-              log.warning(margin_warning(name, m, depth, where, c.fill)), warned = true;
+              log.warning(margin_warning(name, m, depth, where, c.fill, shells + 2 * c.fill.sizes.largest())), warned = true;
             if (m.margin < nearest.margin)
               nearest = m;
           }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <exception>
 #include <filesystem>
+#include <set>
 
 namespace abrade::coupling::lifetime
 {
@@ -93,6 +94,7 @@ namespace abrade::coupling::lifetime
       bool             announced = false;
       std::shared_ptr<dem::ThreadGovernor> governor; ///< the first cycle's, carried on
       bool fine_region_logged = false; ///< a multi-level bed's margins: logged for the first bed made here
+      std::set<std::string> bed_file_warnings; ///< a loaded bed's mismatch with the case, logged once each
       JobContext      &ctx;
 
       /// One bed's cycle: what the cycle's wear is added up from.
@@ -176,6 +178,19 @@ namespace abrade::coupling::lifetime
             check_fine_region_margins(run, sim, fine_region_logged ? unlogged : ctx.log);
             fine_region_logged = true;
           }
+        // a saved bed that another case made (its pours, its fine region: its warnings start
+        // with the file's name) is the run's set-up, not a fault of the cycle: the loop's log
+        // says it once, and it is not among the DEM's warnings
+        std::vector<std::string> bed_warnings = quiet.take_warnings(); // the bed's (generation, settling)
+        const std::string file = ctx.output.shared_file(bed); // (the name prepare_bed gives it)
+        const auto from_the_file = [&](const std::string &text) {
+          if (text.rfind(file + ": ", 0) != 0)
+            return false;
+          if (bed_file_warnings.insert(text).second)
+            ctx.log.warning(text);
+          return true;
+        };
+        bed_warnings.erase(std::remove_if(bed_warnings.begin(), bed_warnings.end(), from_the_file), bed_warnings.end());
         governor->carry_on(); // (after the settling's steps: the cycle's are measured afresh)
         sim.set_time(0);
         std::vector<dem::WallWearLaws> laws;
@@ -191,7 +206,7 @@ namespace abrade::coupling::lifetime
               w.payload = std::max(w.payload, sim.mass_above(*run.payload_height));
           }
         w.particle_radius = run.particle_radius_at_tools(sim); // (the filter follows it)
-        w.warnings        = quiet.take_warnings(); // the bed's (generation, settling)
+        w.warnings        = std::move(bed_warnings);
         for (const auto &text : sim.take_warnings()) // the cycle's
           w.warnings.push_back(text);
         w.volume.assign(surface.vertices.size(), 0.0);
