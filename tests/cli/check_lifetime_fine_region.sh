@@ -5,8 +5,9 @@
 # the box's two faces beside the knife, the first bed's), and none of it among the
 # DEM's cycle warnings (trajectory.csv's dem_warnings; before, each bed made added it there).
 # Then the same beds loaded by a case that pours its fine region twice: each saved bed named once
-# as made by another case (bed_preparation.cc's check_bed_pours), in the loop's log and not among
-# the cycle warnings either (before, each update's load added one there).
+# as made by another case (bed_preparation.cc's check_bed_pours), in the loop's log and
+# summary.json and not among the cycle warnings (before, each bed loaded added one there; the base
+# seeds' beds are loaded in the first update only, later updates make fresh beds).
 #   check_lifetime_fine_region.sh ABRADE CASE OUTDIR
 set -euo pipefail
 abrade=$1 case_file=$2 out=$3
@@ -28,10 +29,14 @@ PY
 run "$out" 1
 warned=$(grep -c "warning: Particles/Coarse graining/Fine region: wall knife's path comes 0.045 m" "$out/log.txt" || true)
 [[ $warned == 2 ]] || { echo "the margin warning $warned times in the lifetime's log (twice wanted: the first bed's two faces)"; exit 1; }
-# the face the margin wants (0.166 m out) leaves the shells and a bulk particle (0.142 m) no room
-# before the fill box's face at 0.24 m: the advice is to extend the fine region to it
+# the face the margin wants (0.149 m out) leaves the shells and a bulk particle (0.142 m) no room
+# before the fill box's face at 0.24 m: the advice is to extend the fine region to it; the box
+# reaches the fill box's faces in x and z already, so extended in y it would leave the bulk no
+# room: a warning says so
 extend=$(grep -c "extend the fine region to the fill box's face at y = [-]*0.24 m (a face at [-]*0.1[0-9]* m would leave its shells and a bulk particle less than the 0.142 m" "$out/log.txt" || true)
 [[ $extend == 2 ]] || { echo "the advice to extend the fine region to the fill box's faces $extend times (twice wanted)"; exit 1; }
+grep -q "^warning: Particles/Coarse graining/Fine region: extended to the fill box's faces as advised, the fine region and its shells would fill the fill box" "$out/log.txt" ||
+  { echo "no warning that the advised box leaves the bulk no room"; exit 1; }
 no_cycle_warnings "$out"
 
 mkdir -p "$out-loaded/beds" && cp "$out"/beds/bed-seed[12].bed "$out-loaded/beds/"
@@ -41,4 +46,10 @@ for seed in 1 2; do
   [[ $n == 1 ]] || { echo "bed-seed$seed.bed named $n times as poured by another case (once wanted)"; exit 1; }
 done
 no_cycle_warnings "$out-loaded"
+python3 - "$out-loaded/summary.json" <<'PY'
+import json, sys
+w = json.load(open(sys.argv[1]))["results"]["lifetime"]["warnings"]
+for seed in (1, 2):
+    assert sum(f"beds/bed-seed{seed}.bed: its" in t for t in w) == 1, (seed, w)
+PY
 echo "ok: the fine box's margin warned once, a loaded bed of another case named once; neither counted among the DEM's cycle warnings"

@@ -55,7 +55,7 @@ grep -q "finest particles (radius 0.01944 m) are not within 10 % of the" "$out/w
   --set "Particles/Coarse graining/Fine region min=-0.97, -0.48, 0.03" --set "Particles/Coarse graining/Fine region max=0.97, 0.24, 0.85" \
   --set "Particles/Settling/Bed file=$out/bed.bed"
 python3 - "$out/bed.bed" "$out/once/log.txt" "$out/wide/log.txt" "$out/upper/log.txt" <<'PY'
-import re, struct, sys
+import math, re, struct, sys
 b = open(sys.argv[1], "rb").read()
 n = struct.unpack_from("<Q", b, 8)[0]
 x, y, z = (struct.unpack_from(f"<{n}d", b, 24 + k * 8 * n) for k in range(3))
@@ -83,6 +83,10 @@ for log, warned, faces in ((sys.argv[2], True, {-0.24, 0.24}), (sys.argv[3], Fal
         assert at in faces, (log, at)
         assert abs(said - depth) < 0.006, (log, said, depth)  # two definitions of the surface: a few mm
         assert abs(ratio - margin / said) < 5e-3 * ratio, (log, ratio)  # (each printed to 3 digits)
+        if warned:  # the face moved to 1.2 depths beyond the knife's face (room for the shells to y = 0.97 m)
+            move = re.search(r"move the face to y = ([-0-9.e]+) m \(1\.2 times the depth beyond the path", m.string)
+            assert move, (log, m.string)
+            assert abs(float(move[1]) - math.copysign(0.015 + 1.2 * said, at)) < 1.5e-3, (log, move[1], said)
     assert not warned or {float(m[3]) for m in found} == faces, (log, found)
 PY
 echo "ok: the refilled pour holds more of the fine column's mass, the total stays, a bed of other pours is named, the fine box's margin and depth are the knife's and the bed's"

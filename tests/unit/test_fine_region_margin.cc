@@ -74,9 +74,10 @@ TEST(FineRegionMargin, APathAboveTheBedOrFollowingTheLoadsIsNotMeasured)
   EXPECT_FALSE(coupling::swept_box(w, {{"rest", 1.0}}, 0.5));
 }
 
-// A flat layer of spheres (radius 0.01 m, centres at z = 0.2 m) over a 1 m x 1 m fill box, with
-// one pellet standing 0.3 m higher on it: the surface is the layer's top, 0.21 m; the highest
-// top would say 0.51 m.
+// A flat layer of spheres (radius 0.01 m, centres at z = 0.2 m) over a 1 m x 1 m fill box, a fifth
+// of it 0.05 m lower (x < 0.2 m), with one pellet above it (its centre 0.3 m above the layer's):
+// the surface is the layer's top, 0.21 m; the highest top would say 0.51 m, the lowest 0.16 m,
+// the mean 0.2005 m.
 TEST(FineRegionMargin, TheBedsSurfaceIsTheMedianColumnTopNotTheHighestPellet)
 {
   dem::Simulation sim(dem::testing::quiet_settings(1e-5));
@@ -88,7 +89,7 @@ TEST(FineRegionMargin, TheBedsSurfaceIsTheMedianColumnTopNotTheHighestPellet)
   long         id = 0;
   for (int i = 0; i < 50; ++i)
     for (int j = 0; j < 50; ++j)
-      P.add(id++, (i + 0.5) * 2 * r, (j + 0.5) * 2 * r, 0.2, r, grain.density, m);
+      P.add(id++, (i + 0.5) * 2 * r, (j + 0.5) * 2 * r, i < 10 ? 0.15 : 0.2, r, grain.density, m);
   P.add(id++, 0.5, 0.5, 0.5, r, grain.density, m);
   sim.setup();
 

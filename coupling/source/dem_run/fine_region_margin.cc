@@ -8,6 +8,7 @@
 #include <abrade/coupling/dem_run/fine_region_margin.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace abrade::coupling
@@ -93,18 +94,36 @@ namespace abrade::coupling
              number(depth) + " m; " + where + ")";
     }
 
-    /// The warning for margin @p m of @p wall, @p depth below the surface; @p room: what the
-    /// shells and a bulk particle need beyond the fine region's face on that side [m]: a face
-    /// moved to within it of the fill box's is refused (dem::split_into_levels), extended to
-    /// the fill box's face it is not.
-    std::string margin_warning(const std::string &wall, const Margin &m, double depth, const std::string &where,
-                               const dem::FillRegion &fill, double room)
+    /// What a warning advises for a face too near: to move it to @p wanted, or (@p extend) to
+    /// extend the fine region to the fill box's face, where a face at the wanted place (as
+    /// printed) would leave its shells and a bulk particle less than the room they need beyond
+    /// it (dem::split_into_levels refuses that box).
+    struct Advice
     {
-      const std::string across = std::string(1, char('x' + m.axis));
-      const double      path   = m.face - m.side * m.margin; // the path's extreme towards that face
-      const double      wanted = path + m.side * fine_region_margin_in_depths * depth;
+      bool        extend = false;
+      std::string wanted; ///< the face's place, as printed [m]
+      double      room = 0;
+    };
+
+    /// The advice for margin @p m, @p depth below the surface; @p room: what the shells and a
+    /// bulk particle need beyond the fine region's face on that side [m].
+    Advice advice(const Margin &m, double depth, const dem::FillRegion &fill, double room)
+    {
+      const double path      = m.face - m.side * m.margin; // the path's extreme towards that face
+      const double fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
+      Advice       a;
+      a.wanted = number(path + m.side * fine_region_margin_in_depths * depth, 4);
+      a.room   = room;
+      a.extend = m.side * (std::stod(a.wanted) + m.side * room - fill_face) > 0; // (the place printed)
+      return a;
+    }
+
+    /// The warning for margin @p m of @p wall, @p depth below the surface, with advice @p a.
+    std::string margin_warning(const std::string &wall, const Margin &m, double depth, const std::string &where,
+                               const dem::FillRegion &fill, const Advice &a)
+    {
+      const std::string across    = std::string(1, char('x' + m.axis));
       const double      fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
-      const bool        beyond_fill = m.side * (wanted + m.side * room - fill_face) > 0;
       return "Particles/Coarse graining/Fine region: wall " + wall + "'s path " +
              (m.margin < 0 ? "reaches " + number(-m.margin) + " m beyond the fine region's face at " + across + " = " +
                                number(m.face, 4) + " m (the wall meets coarser particles); its lowest point is " + number(depth) +
@@ -112,12 +131,11 @@ namespace abrade::coupling
                            : margin_text(m, depth, where)) +
              ". With 0.8 times it the multi-level knife-bed's force over the first half of the travel read 9 % below "
              "the uniform fine bed's, with 1.2 times 4 %, with 1.6 times 0.2 % above (docs/coarse-graining.md): " +
-             (beyond_fill ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 4) +
-                              " m (a face at " + number(wanted, 4) + " m would leave its shells and a bulk particle less than the " +
-                              number(room) + " m they need)"
-                          : "move the face to " + across + " = " + number(wanted, 4) + " m (" +
-                              number(fine_region_margin_in_depths, 2) + " times the depth beyond the path; 1.6 times where the "
-                              "force early in the stroke matters)");
+             (a.extend ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 8) +
+                           " m (a face at " + a.wanted + " m would leave its shells and a bulk particle less than the " +
+                           number(a.room) + " m they need)"
+                       : "move the face to " + across + " = " + a.wanted + " m (" + number(fine_region_margin_in_depths, 2) +
+                           " times the depth beyond the path; 1.6 times where the force early in the stroke matters)");
     }
   } // namespace
 
@@ -134,6 +152,7 @@ namespace abrade::coupling
     const auto       bulk_beyond = [&](int d, double v, double fill_face) { return std::abs(v - fill_face) > 1e-9 * (fill_hi[d] - fill_lo[d]); };
     const std::string where  = "z = " + number(surface, 4) + " m, the median of the bed's columns' highest tops";
     bool              any    = false;
+    std::array<bool, 6> extended{}; // the faces (x-, x+, y-, y+, z-, z+) a warning advises to extend
     for (std::size_t k = 0; k < c.walls.size() && k < sim.n_walls(); ++k)
       {
         const std::string &name = c.walls[k].wall.name;
@@ -169,7 +188,11 @@ namespace abrade::coupling
             const auto  &[outer_lo, outer_hi] = *c.finer_levels.back().fill.centres_in;
             const double shells = m.side < 0 ? fine_lo[m.axis] - outer_lo[m.axis] : outer_hi[m.axis] - fine_hi[m.axis];
             if (m.margin < fine_region_margin_warning * depth)
-              log.warning(margin_warning(name, m, depth, where, c.fill, shells + 2 * c.fill.sizes.largest())), warned = true;
+              {
+                const Advice a = advice(m, depth, c.fill, shells + 2 * c.fill.sizes.largest());
+                log.warning(margin_warning(name, m, depth, where, c.fill, a)), warned = true;
+                extended[2 * m.axis + (m.side > 0)] = extended[2 * m.axis + (m.side > 0)] || a.extend;
+              }
             if (m.margin < nearest.margin)
               nearest = m;
           }
@@ -183,6 +206,20 @@ namespace abrade::coupling
                       number(path->first.z(), 4) + " m, within a coarser particle's diameter (" + number(2 * next) +
                       " m) of the fine region's floor (z = " + number(fine_lo.z(), 4) +
                       " m): the wall meets coarser particles there; lower Fine region min's z");
+      }
+    // every face the warnings would extend, and the others where the shells end now: a box
+    // whose shells then reach the fill box's every face leaves the bulk no room (refused)
+    if (std::find(extended.begin(), extended.end(), true) != extended.end())
+      {
+        const auto &[outer_lo, outer_hi] = *c.finer_levels.back().fill.centres_in;
+        bool        room                 = false;
+        for (int d = 0; d < 3; ++d)
+          room = room || (!extended[2 * d] && outer_lo[d] > fill_lo[d]) || (!extended[2 * d + 1] && outer_hi[d] < fill_hi[d]);
+        if (!room)
+          log.warning("Particles/Coarse graining/Fine region: extended to the fill box's faces as advised, the fine "
+                      "region and its shells would fill the fill box, leaving the bulk's particles no room (a case "
+                      "refused): fill the whole bed with the fine particles (no Fine region, Particles/Coarse graining/"
+                      "Factor the fine one) or widen the fill box (Particles/Generation/Region min and max)");
       }
     if (any && bulk_beyond(2, fine_hi.z(), fill_hi.z()))
       log.warning("Particles/Coarse graining/Fine region: its top (z = " + number(fine_hi.z(), 4) +

@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <exception>
 #include <filesystem>
-#include <set>
 
 namespace abrade::coupling::lifetime
 {
@@ -62,8 +61,12 @@ namespace abrade::coupling::lifetime
               for (std::size_t p = 0; p < c.phases.size(); ++p)
                 w.phase_volume[p] += beds[b].part_phase_volume[k * c.phases.size() + p] / (knives * seeds.size());
             w.particle_radius = beds[b].particle_radius;
+            // a saved bed that another case made (its pours, its fine region: check_bed_pours'
+            // warnings start with the file's name) is the run's set-up, not a fault of the cycle
+            // (every rank has every bed's warnings here: rank 0 logs those of the other groups' beds)
+            const std::string file = ctx.output.shared_file(bed_file(seeds[b])) + ": ";
             for (const auto &text : beds[b].warnings)
-              w.warnings.push_back("seed " + std::to_string(seeds[b]) + ": " + text);
+              (text.rfind(file, 0) == 0 ? w.notes : w.warnings).push_back("seed " + std::to_string(seeds[b]) + ": " + text);
             w.seed_volume.push_back(std::move(beds[b].volume));
           }
         w.tonnes_per_cycle = tonnes_per_cycle;
@@ -94,8 +97,10 @@ namespace abrade::coupling::lifetime
       bool             announced = false;
       std::shared_ptr<dem::ThreadGovernor> governor; ///< the first cycle's, carried on
       bool fine_region_logged = false; ///< a multi-level bed's margins: logged for the first bed made here
-      std::set<std::string> bed_file_warnings; ///< a loaded bed's mismatch with the case, logged once each
       JobContext      &ctx;
+
+      /// The bed of @p seed, in the run's shared directory.
+      static std::string bed_file(int seed) { return "beds/bed-seed" + std::to_string(seed) + ".bed"; }
 
       /// One bed's cycle: what the cycle's wear is added up from.
       struct BedWear
@@ -166,7 +171,7 @@ namespace abrade::coupling::lifetime
         io::Log    quiet; // the bed's lines stay out of the loop's log; its warnings do not
         quiet.set_echo(false);
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
-        const std::string bed = "beds/bed-seed" + std::to_string(seed) + ".bed";
+        const std::string bed = bed_file(seed);
         // a multi-level bed's fine box against the paths, for every bed made (collective over
         // the bed's group, whose ranks all made it: a per-process choice of whether to check
         // could split a later update's regrouped ranks), logged for the first in the loop's log
@@ -178,19 +183,6 @@ namespace abrade::coupling::lifetime
             check_fine_region_margins(run, sim, fine_region_logged ? unlogged : ctx.log);
             fine_region_logged = true;
           }
-        // a saved bed that another case made (its pours, its fine region: its warnings start
-        // with the file's name) is the run's set-up, not a fault of the cycle: the loop's log
-        // says it once, and it is not among the DEM's warnings
-        std::vector<std::string> bed_warnings = quiet.take_warnings(); // the bed's (generation, settling)
-        const std::string file = ctx.output.shared_file(bed); // (the name prepare_bed gives it)
-        const auto from_the_file = [&](const std::string &text) {
-          if (text.rfind(file + ": ", 0) != 0)
-            return false;
-          if (bed_file_warnings.insert(text).second)
-            ctx.log.warning(text);
-          return true;
-        };
-        bed_warnings.erase(std::remove_if(bed_warnings.begin(), bed_warnings.end(), from_the_file), bed_warnings.end());
         governor->carry_on(); // (after the settling's steps: the cycle's are measured afresh)
         sim.set_time(0);
         std::vector<dem::WallWearLaws> laws;
@@ -206,7 +198,7 @@ namespace abrade::coupling::lifetime
               w.payload = std::max(w.payload, sim.mass_above(*run.payload_height));
           }
         w.particle_radius = run.particle_radius_at_tools(sim); // (the filter follows it)
-        w.warnings        = std::move(bed_warnings);
+        w.warnings        = quiet.take_warnings(); // the bed's (generation, settling)
         for (const auto &text : sim.take_warnings()) // the cycle's
           w.warnings.push_back(text);
         w.volume.assign(surface.vertices.size(), 0.0);

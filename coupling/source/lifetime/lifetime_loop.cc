@@ -416,6 +416,12 @@ namespace abrade::coupling::lifetime
             ctx.log.warning(warnings.back());
           }
       }
+    for (const auto &w : wear.notes) // (the run's set-up: each text once, not counted)
+      if (notes_given.insert(w).second)
+        {
+          warnings.push_back("update " + std::to_string(update) + ", " + source->name() + ": " + w);
+          ctx.log.warning(warnings.back());
+        }
     resolve_smoothing(wear);
     return wear;
   }

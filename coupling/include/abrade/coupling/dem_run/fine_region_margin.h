@@ -21,9 +21,10 @@ namespace abrade::coupling
   /// bed to bed (the knife-bed's 0.345 m margin is 1.19-1.21 depths on the study's beds).
   inline constexpr double fine_region_margin_warning = 1.15;
 
-  /// The box a wall sweeps over the phases of a cycle: its vertices' extremes, sampled
-  /// @p samples_per_phase times a phase, of the vertices below the height @p below only (the
-  /// part of the path in the bed; lower corner +inf where none is), or none where the path is
+  /// The box a wall sweeps over the phases of a cycle: the extremes, sampled
+  /// @p samples_per_phase times a phase, of its part below the height @p below (its vertices
+  /// there and where its triangles' edges cross the height: the part of the path in the bed;
+  /// lower corner +inf where none is), or none where the path is
   /// not known beforehand (a rigid body's free motion, a wall a mechanism drives).
   std::optional<std::pair<dem::Vec3, dem::Vec3>> swept_box(const dem::Wall &wall, const std::vector<Phase> &phases,
                                                            double below = std::numeric_limits<double>::infinity(),

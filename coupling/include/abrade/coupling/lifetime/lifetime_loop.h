@@ -233,6 +233,7 @@ namespace abrade::coupling::lifetime
     long                         updates_off_volume = 0;
     long                         dem_warnings_now = 0, dem_warnings_total = 0; ///< this update's, this run's
     std::set<std::string>        warning_kinds; ///< the DEM warnings logged (each kind once)
+    std::set<std::string>        notes_given;   ///< the wear source's notes logged (CycleWear::notes: each text once)
 
     // the end of the run
     std::string end = "maximum updates reached";

@@ -32,6 +32,9 @@ namespace abrade::coupling::lifetime
     /// the source's warnings of the cycle (the DEM's overlaps, lost particles, time step, per
     /// seed; a replay beyond its stored run): the loop logs and counts them
     std::vector<std::string> warnings;
+    /// warnings about the run's set-up rather than a fault of the cycle (a saved bed that another
+    /// case made): the loop logs each text once and lists it in summary.json, not counting it
+    std::vector<std::string> notes;
   };
 
   /// The bed seed of base seed @p seed in @p update (1-based; 0: the pilot cycle that sizes the
