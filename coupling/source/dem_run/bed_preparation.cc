@@ -76,8 +76,9 @@ namespace abrade::coupling
     /// off the case's count (the refill changes it by 3 %; a fine box 0.06 m wider on each side of
     /// the knife-bed's 0.72 m adds 17 %; constant sizes only, where the levels' radii are apart):
     /// a bed made with another Fine region, whose box the run's checks (fine_region_margin.h)
-    /// would otherwise take for the bed's.
-    void check_bed_pours(const DemCase &c, const dem::Simulation &sim, const std::string &bed, JobContext &ctx)
+    /// would otherwise take for the bed's. What it finds goes to @p findings.
+    void check_bed_pours(const DemCase &c, const dem::Simulation &sim, const std::string &bed,
+                         std::vector<std::string> &findings)
     {
       if (c.finer_levels.empty())
         return;
@@ -90,7 +91,7 @@ namespace abrade::coupling
           for (double radius : sim.particles().radius) // (every rank holds the whole file until setup)
             count += radius <= r ? 1 : 0;
           if (expected > 0 && std::abs(double(count) / expected - 1) > 0.1)
-            ctx.log.warning(bed + ": its " + std::to_string(count) + " finest particles (radius " + io::format_number(finest.sizes.radius) +
+            findings.push_back(bed + ": its " + std::to_string(count) + " finest particles (radius " + io::format_number(finest.sizes.radius) +
                             " m) are not within 10 % of the " + io::format_number(expected, 10) +
                             " the case's fine region holds: it was made with another Particles/Coarse graining/Fine region "
                             "(delete the bed to pour it anew); the run's checks of the fine region take the case's box for the bed's");
@@ -101,7 +102,7 @@ namespace abrade::coupling
       const double n       = double(sim.particles().size()); // (every rank holds the whole file until setup)
       const bool   refills = c.fine_region_pours > 1, refilled = n != case_count;
       if (refills != refilled)
-        ctx.log.warning(bed + ": its " + io::format_number(n, 10) + " particles are " + (refilled ? "not " : "") +
+        findings.push_back(bed + ": its " + io::format_number(n, 10) + " particles are " + (refilled ? "not " : "") +
                         "the case's " + io::format_number(case_count, 10) + ": it was poured " +
                         (refilled ? "more than once" : "once") + ", and Particles/Coarse graining/Fine region pours is " +
                         std::to_string(c.fine_region_pours) + " (delete the bed to pour it anew)");
@@ -278,7 +279,8 @@ namespace abrade::coupling
     }
   } // namespace
 
-  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed)
+  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed,
+                   std::vector<std::string> *provenance)
   {
     if (dem::is_imported_bed(bed)) // another code's bed, as it is (read_dem_case checked it is there)
       {
@@ -336,7 +338,13 @@ namespace abrade::coupling
       io::ScopedTimer t(ctx.timers, "load bed");
       dem::load_bed(sim, bed);
       check_bed_sizes(c, sim, bed);
-      check_bed_pours(c, sim, bed, ctx);
+      std::vector<std::string> findings;
+      check_bed_pours(c, sim, bed, findings);
+      for (auto &text : findings)
+        if (provenance)
+          provenance->push_back(std::move(text));
+        else
+          ctx.log.warning(text);
       sim.setup();
     }
     if (!made)

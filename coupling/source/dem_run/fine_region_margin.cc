@@ -101,8 +101,9 @@ namespace abrade::coupling
     struct Advice
     {
       bool        extend = false;
-      std::string wanted; ///< the face's place, as printed [m]
-      double      room = 0;
+      std::string wanted;        ///< the face's place, as printed [m]
+      double      room      = 0; ///< what the shells and a bulk particle need beyond it [m]
+      double      fill_face = 0; ///< the fill box's face on that side [m]
     };
 
     /// The advice for margin @p m, @p depth below the surface; @p room: what the shells and a
@@ -110,20 +111,19 @@ namespace abrade::coupling
     Advice advice(const Margin &m, double depth, const dem::FillRegion &fill, double room)
     {
       const double path      = m.face - m.side * m.margin; // the path's extreme towards that face
-      const double fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
       Advice       a;
-      a.wanted = number(path + m.side * fine_region_margin_in_depths * depth, 4);
-      a.room   = room;
-      a.extend = m.side * (std::stod(a.wanted) + m.side * room - fill_face) > 0; // (the place printed)
+      a.wanted    = number(path + m.side * fine_region_margin_in_depths * depth, 4);
+      a.room      = room;
+      a.fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
+      a.extend    = m.side * (std::stod(a.wanted) + m.side * room - a.fill_face) > 0; // (the place printed)
       return a;
     }
 
     /// The warning for margin @p m of @p wall, @p depth below the surface, with advice @p a.
     std::string margin_warning(const std::string &wall, const Margin &m, double depth, const std::string &where,
-                               const dem::FillRegion &fill, const Advice &a)
+                               const Advice &a)
     {
-      const std::string across    = std::string(1, char('x' + m.axis));
-      const double      fill_face = m.side < 0 ? fill.box_min[m.axis] : fill.box_max[m.axis];
+      const std::string across = std::string(1, char('x' + m.axis));
       return "Particles/Coarse graining/Fine region: wall " + wall + "'s path " +
              (m.margin < 0 ? "reaches " + number(-m.margin) + " m beyond the fine region's face at " + across + " = " +
                                number(m.face, 4) + " m (the wall meets coarser particles); its lowest point is " + number(depth) +
@@ -131,7 +131,7 @@ namespace abrade::coupling
                            : margin_text(m, depth, where)) +
              ". With 0.8 times it the multi-level knife-bed's force over the first half of the travel read 9 % below "
              "the uniform fine bed's, with 1.2 times 4 %, with 1.6 times 0.2 % above (docs/coarse-graining.md): " +
-             (a.extend ? "extend the fine region to the fill box's face at " + across + " = " + number(fill_face, 8) +
+             (a.extend ? "extend the fine region to the fill box's face at " + across + " = " + number(a.fill_face, 8) +
                            " m (a face at " + a.wanted + " m would leave its shells and a bulk particle less than the " +
                            number(a.room) + " m they need)"
                        : "move the face to " + across + " = " + a.wanted + " m (" + number(fine_region_margin_in_depths, 2) +
@@ -146,7 +146,8 @@ namespace abrade::coupling
         std::hypot(g.x(), g.y()) > 1e-9 * -g.z())
       return; // (the same on every rank)
     const double surface = bed_surface(sim, c.fill); // (collective)
-    const auto &[fine_lo, fine_hi] = *c.finer_levels.front().fill.centres_in;
+    const auto &[fine_lo, fine_hi]   = *c.finer_levels.front().fill.centres_in;
+    const auto &[outer_lo, outer_hi] = *c.finer_levels.back().fill.centres_in; // (the outermost shell's)
     const dem::Vec3 &fill_lo = c.fill.box_min, &fill_hi = c.fill.box_max;
     // coarser particles lie beyond a face of the fine box at v unless it is on the fill box's face
     const auto       bulk_beyond = [&](int d, double v, double fill_face) { return std::abs(v - fill_face) > 1e-9 * (fill_hi[d] - fill_lo[d]); };
@@ -185,12 +186,11 @@ namespace abrade::coupling
           {
             // the shells' thickness beyond this face (the outermost level's box against the
             // finest's) and a bulk particle's diameter
-            const auto  &[outer_lo, outer_hi] = *c.finer_levels.back().fill.centres_in;
             const double shells = m.side < 0 ? fine_lo[m.axis] - outer_lo[m.axis] : outer_hi[m.axis] - fine_hi[m.axis];
             if (m.margin < fine_region_margin_warning * depth)
               {
                 const Advice a = advice(m, depth, c.fill, shells + 2 * c.fill.sizes.largest());
-                log.warning(margin_warning(name, m, depth, where, c.fill, a)), warned = true;
+                log.warning(margin_warning(name, m, depth, where, a)), warned = true;
                 extended[2 * m.axis + (m.side > 0)] = extended[2 * m.axis + (m.side > 0)] || a.extend;
               }
             if (m.margin < nearest.margin)
@@ -211,8 +211,7 @@ namespace abrade::coupling
     // whose shells then reach the fill box's every face leaves the bulk no room (refused)
     if (std::find(extended.begin(), extended.end(), true) != extended.end())
       {
-        const auto &[outer_lo, outer_hi] = *c.finer_levels.back().fill.centres_in;
-        bool        room                 = false;
+        bool room = false;
         for (int d = 0; d < 3; ++d)
           room = room || (!extended[2 * d] && outer_lo[d] > fill_lo[d]) || (!extended[2 * d + 1] && outer_hi[d] < fill_hi[d]);
         if (!room)

@@ -3,6 +3,7 @@
 #include <abrade/common/timer.h>
 #include <abrade/coupling/dem_run/bed_preparation.h>
 #include <abrade/coupling/dem_run/fine_region_margin.h>
+#include <abrade/coupling/dem_run/seed_bed_file.h>
 #include <abrade/coupling/parameters/part_parameters.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 #include <abrade/dem/coarse_graining.h>
@@ -61,12 +62,11 @@ namespace abrade::coupling::lifetime
               for (std::size_t p = 0; p < c.phases.size(); ++p)
                 w.phase_volume[p] += beds[b].part_phase_volume[k * c.phases.size() + p] / (knives * seeds.size());
             w.particle_radius = beds[b].particle_radius;
-            // a saved bed that another case made (its pours, its fine region: check_bed_pours'
-            // warnings start with the file's name) is the run's set-up, not a fault of the cycle
-            // (every rank has every bed's warnings here: rank 0 logs those of the other groups' beds)
-            const std::string file = ctx.output.shared_file(bed_file(seeds[b])) + ": ";
+            // (every rank has every bed's warnings and notes here: rank 0 logs the other groups')
             for (const auto &text : beds[b].warnings)
-              (text.rfind(file, 0) == 0 ? w.notes : w.warnings).push_back("seed " + std::to_string(seeds[b]) + ": " + text);
+              w.warnings.push_back("seed " + std::to_string(seeds[b]) + ": " + text);
+            for (const auto &text : beds[b].notes)
+              w.notes.push_back("seed " + std::to_string(seeds[b]) + ": " + text);
             w.seed_volume.push_back(std::move(beds[b].volume));
           }
         w.tonnes_per_cycle = tonnes_per_cycle;
@@ -99,9 +99,6 @@ namespace abrade::coupling::lifetime
       bool fine_region_logged = false; ///< a multi-level bed's margins: logged for the first bed made here
       JobContext      &ctx;
 
-      /// The bed of @p seed, in the run's shared directory.
-      static std::string bed_file(int seed) { return "beds/bed-seed" + std::to_string(seed) + ".bed"; }
-
       /// One bed's cycle: what the cycle's wear is added up from.
       struct BedWear
       {
@@ -110,7 +107,9 @@ namespace abrade::coupling::lifetime
         std::vector<double>      part_phase_volume;
         double                   payload         = 0; ///< [kg]
         double                   particle_radius = 0; ///< the largest [m]
-        std::vector<std::string> warnings;
+        std::vector<std::string> warnings; ///< the cycle's faults (its bed's making, its run)
+        /// a loaded bed that another setting made (prepare_bed's provenance): the run's set-up
+        std::vector<std::string> notes;
 
         /// As the group that ran bed @p b holds it, on every rank.
         void share(const dem::Ensemble &ensemble, std::size_t b)
@@ -124,13 +123,20 @@ namespace abrade::coupling::lifetime
           payload = numbers.back(), numbers.pop_back();
           part_phase_volume = std::move(numbers);
           ensemble.share(volume, b);
+          share_lines(ensemble, b, warnings);
+          share_lines(ensemble, b, notes);
+        }
+
+        /// @p lines as bed @p b's group holds them, on every rank.
+        static void share_lines(const dem::Ensemble &ensemble, std::size_t b, std::vector<std::string> &lines)
+        {
           std::string text;
-          for (const auto &line : warnings)
+          for (const auto &line : lines)
             text += line + '\x1e'; // (a record separator: a warning may hold a line break)
           ensemble.share(text, b);
-          warnings.clear();
+          lines.clear();
           for (std::size_t at = 0, end; (end = text.find('\x1e', at)) != std::string::npos; at = end + 1)
-            warnings.push_back(text.substr(at, end - at));
+            lines.push_back(text.substr(at, end - at));
         }
       };
 
@@ -171,12 +177,13 @@ namespace abrade::coupling::lifetime
         io::Log    quiet; // the bed's lines stay out of the loop's log; its warnings do not
         quiet.set_echo(false);
         JobContext cycle_ctx{ctx.parameters, ctx.output, ctx.results, ctx.timers, quiet, false};
-        const std::string bed = bed_file(seed);
+        const std::string bed = seed_bed_file(seed);
+        BedWear           w;
         // a multi-level bed's fine box against the paths, for every bed made (collective over
         // the bed's group, whose ranks all made it: a per-process choice of whether to check
         // could split a later update's regrouped ranks), logged for the first in the loop's log
         // (not a fault of a cycle: not among the DEM's warnings)
-        if (!prepare_bed(run, sim, cycle_ctx, bed))
+        if (!prepare_bed(run, sim, cycle_ctx, bed, &w.notes))
           {
             io::Log unlogged; // (neither the loop's log nor the cycle's warnings)
             unlogged.set_echo(false);
@@ -190,7 +197,6 @@ namespace abrade::coupling::lifetime
           laws.push_back(wc.wear);
         auto wear = std::make_shared<dem::WearRecorder>(sim, laws);
         sim.add_hook(wear);
-        BedWear w;
         for (const auto &[name, duration] : run.phases)
           {
             sim.run_phase(name, duration);

@@ -407,21 +407,16 @@ namespace abrade::coupling::lifetime
     // the DEM's warnings (Simulation/On error = continue): each kind logged once, all counted
     dem_warnings_now = source->name() == "DEM" ? long(wear.warnings.size()) : 0; // (a replay's are its own)
     dem_warnings_total += dem_warnings_now;
+    const auto warn = [&](const std::string &w) {
+      warnings.push_back("update " + std::to_string(update) + ", " + source->name() + ": " + w);
+      ctx.log.warning(warnings.back());
+    };
     for (const auto &w : wear.warnings)
-      {
-        const std::string kind = w.substr(0, w.find(" at step ")); // (the step and time vary)
-        if (warning_kinds.insert(kind).second)
-          {
-            warnings.push_back("update " + std::to_string(update) + ", " + source->name() + ": " + w);
-            ctx.log.warning(warnings.back());
-          }
-      }
+      if (warning_kinds.insert(w.substr(0, w.find(" at step "))).second) // (the step and time vary)
+        warn(w);
     for (const auto &w : wear.notes) // (the run's set-up: each text once, not counted)
       if (notes_given.insert(w).second)
-        {
-          warnings.push_back("update " + std::to_string(update) + ", " + source->name() + ": " + w);
-          ctx.log.warning(warnings.back());
-        }
+        warn(w);
     resolve_smoothing(wear);
     return wear;
   }

@@ -19,6 +19,7 @@
 #include <abrade/common/file_extension.h>
 #include <abrade/common/json.h>
 #include <abrade/common/output_directory.h>
+#include <abrade/coupling/dem_run/seed_bed_file.h>
 #include <abrade/coupling/studies/child_runs.h>
 #include <abrade/coupling/studies/concepts.h>
 #include <abrade/coupling/studies/paired_change.h>
@@ -205,7 +206,7 @@ namespace abrade::coupling
     {
       auto child = [&](std::size_t k, int seed) {
         std::vector<std::string> sets = o.sets;
-        for (std::string &set : study_cycle_sets(seed, root + "/beds/bed-seed" + std::to_string(seed) + ".bed"))
+        for (std::string &set : study_cycle_sets(seed, root + "/" + seed_bed_file(seed)))
           sets.push_back(std::move(set));
         const std::string dir = root + "/runs/" + labels[k] + "-seed" + std::to_string(seed);
         return ChildRun{dir, run_command(abrade, std::filesystem::absolute(o.files[k]).string(), dir, sets)};
@@ -232,8 +233,7 @@ namespace abrade::coupling
           const std::string dir = root + "/lifetime/" + labels[k];
           std::filesystem::create_directories(dir + "/beds");
           for (int s : o.seeds) // the same beds
-            std::filesystem::copy_file(root + "/beds/bed-seed" + std::to_string(s) + ".bed",
-                                       dir + "/beds/bed-seed" + std::to_string(s) + ".bed",
+            std::filesystem::copy_file(root + "/" + seed_bed_file(s), dir + "/" + seed_bed_file(s),
                                        std::filesystem::copy_options::overwrite_existing);
           const auto sets = lifetime_run_sets(o.sets, o.lifetime_updates, o.seeds);
           runs.push_back({dir, run_command(abrade, std::filesystem::absolute(o.files[k]).string(), dir, sets)});

@@ -26,6 +26,7 @@
 #include <abrade/common/external.h>
 #include <abrade/common/output_directory.h>
 #include <abrade/common/progress.h>
+#include <abrade/coupling/dem_run/seed_bed_file.h>
 #include <abrade/coupling/studies/child_runs.h>
 #include <abrade/coupling/studies/paired_change.h>
 #include <abrade/coupling/studies/study_lives.h>
@@ -382,14 +383,16 @@ namespace abrade::coupling
           }
       }
 
-      /// A particle parameter changes the bed: one bed per seed and particle values.
-      std::string bed_name(const std::vector<std::string> &c, int seed) const
+      /// A particle parameter changes the bed: one bed per seed and particle values, each
+      /// value's label after the seed's bed's name ("beds/bed-seed3-0.01.bed").
+      std::string bed_file(const std::vector<std::string> &c, int seed) const
       {
-        std::string k = "bed-seed" + std::to_string(seed);
+        std::string suffix;
         for (std::size_t i = 0; i < o.varies.size(); ++i)
           if (o.varies[i].key.rfind("Particles/", 0) == 0)
-            k += "-" + label(c[i]);
-        return k;
+            suffix += "-" + label(c[i]);
+        std::string file = seed_bed_file(seed);
+        return file.insert(file.size() - std::string(".bed").size(), suffix);
       }
 
       void plan_runs()
@@ -398,9 +401,8 @@ namespace abrade::coupling
         for (int seed : o.seeds)
           for (std::size_t k = 0; k < combos.size(); ++k)
             {
-              const std::string bed = bed_name(combos[k], seed);
-              Run r{k, root + "/runs/" + combination_name(combos[k]) + "-seed" + std::to_string(seed), root + "/beds/" + bed + ".bed",
-                    seed};
+              const std::string bed = bed_file(combos[k], seed);
+              Run r{k, root + "/runs/" + combination_name(combos[k]) + "-seed" + std::to_string(seed), root + "/" + bed, seed};
               (beds.insert(bed).second ? first : rest).push_back(r);
             }
       }

@@ -8,13 +8,20 @@
 #include <abrade/dem/simulation.h>
 
 #include <string>
+#include <vector>
 
 namespace abrade::coupling
 {
   /// Loads the settled bed from @p bed_file if it exists (relative: in the output directory),
   /// otherwise generates, settles and saves it there (empty: generate, save nothing); sets the
   /// simulation up. Returns true when the bed was loaded.
-  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed_file);
+  ///
+  /// A loaded bed that another setting made (other Fine region pours, another fine region: the
+  /// particles it holds against the case's) is used as it is; what tells so is logged as a
+  /// warning, or, where @p provenance is given, put there instead: the lifetime loop lists it as
+  /// its set-up, not among the faults of a cycle.
+  bool prepare_bed(const DemCase &c, dem::Simulation &sim, JobContext &ctx, std::string bed_file,
+                   std::vector<std::string> *provenance = nullptr);
 
   /// Logs what the reading of the case decided, its warnings and its coarse graining (which it
   /// records in summary.json).
