@@ -8,16 +8,21 @@
 # as made by another case (bed_preparation.cc's check_bed_pours), in the loop's log and
 # summary.json and not among the cycle warnings (before, each bed loaded added one there; the base
 # seeds' beds are loaded in the first update only, later updates make fresh beds).
+# Last, the first run replayed (Lifetime/Wear source = replay) by the same case: its own run again,
+# byte for byte (before, a multi-level run's stored wear, made by the finest particles, factor
+# 1.25, was refused as made by other particles than the case's Factor 2).
 #   check_lifetime_fine_region.sh ABRADE CASE OUTDIR
 set -euo pipefail
 abrade=$1 case_file=$2 out=$3
-rm -rf "$out" "$out-loaded"
-run() { # OUTDIR POURS
-  "$abrade" run "$case_file" --output "$1" --quiet --set "Particles/Generation/Radius=0.01375" \
+rm -rf "$out" "$out-loaded" "$out-replay"
+run() { # OUTDIR POURS [--set ...]
+  local dir=$1 pours=$2
+  shift 2
+  "$abrade" run "$case_file" --output "$dir" --quiet --set "Particles/Generation/Radius=0.01375" \
     --set "Particles/Generation/Count=4800" --set "Particles/Coarse graining/Factor=2" \
     --set "Particles/Coarse graining/Fine region min=-0.39, -0.06, 0.01" --set "Particles/Coarse graining/Fine region max=0.39, 0.06, 0.6" \
-    --set "Particles/Coarse graining/Fine region factor=1.25" --set "Particles/Coarse graining/Fine region pours=$2" \
-    --set "Lifetime/Maximum updates=1" --set "Lifetime/Seeds=1,2" --set "Simulation/Threads=1"
+    --set "Particles/Coarse graining/Fine region factor=1.25" --set "Particles/Coarse graining/Fine region pours=$pours" \
+    --set "Lifetime/Maximum updates=1" --set "Lifetime/Seeds=1,2" --set "Simulation/Threads=1" "$@"
 }
 no_cycle_warnings() {
   python3 - "$1/trajectory.csv" <<'PY'
@@ -52,4 +57,9 @@ w = json.load(open(sys.argv[1]))["results"]["lifetime"]["warnings"]
 for seed in (1, 2):
     assert sum(f"beds/bed-seed{seed}.bed: its" in t for t in w) == 1, (seed, w)
 PY
-echo "ok: the fine box's margin warned once, a loaded bed of another case named once; neither counted among the DEM's cycle warnings"
+
+run "$out-replay" 1 --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out"
+for f in trajectory.csv life_beds.csv; do
+  cmp -s "$out/$f" "$out-replay/$f" || { echo "the multi-level run replayed differs in $f"; exit 1; }
+done
+echo "ok: the fine box's margin warned once, a loaded bed of another case named once; neither counted among the DEM's cycle warnings; the run replayed is itself again"

@@ -136,10 +136,11 @@ namespace abrade::coupling::lifetime
                               "seed " + std::to_string(s.seeds[a]) +
                                 " is given twice: the same bed twice is no replicate (its interval would be zero)");
     const bool particles = source_choice->from_particles();
-    if (particles && s.smoothing > 0 && dem_case.coarse_graining != 1)
+    if (particles && s.smoothing > 0 && dem_case.factor_at_tools() != 1) // (a multi-level bed: its finest)
       {
         warnings.push_back("Lifetime/Smoothing radius is fixed (" + io::format_number(s.smoothing) + " m) while the "
-                           "particles are coarse-grained: 0 ties the wear filter to the simulated radius");
+                           "particles are coarse-grained (by " + io::format_number(dem_case.factor_at_tools(), 4) +
+                           " at the part): 0 ties the wear filter to the simulated radius");
         ctx.log.warning(warnings.back());
       }
     if (particles && s.tonnes_per_cycle == 0 && !dem_case.payload_height)

@@ -198,12 +198,14 @@ namespace abrade::coupling::lifetime
           }
         if (updates.empty() || updates.back().update < 1)
           throw InputError(dir, "no stored update (wear/update_00001.wear)");
-        // other particles wear the part otherwise: the stored wear is not this case's
+        // other particles wear the part otherwise: the stored wear is not this case's (the
+        // factor of the particles at the part: a multi-level bed's finest level's)
         if (std::abs(updates.front().coarse_graining_factor / coarse_graining_factor - 1) > 1e-9)
-          throw InputError(directory, "its wear was made with Particles/Coarse graining/Factor = " +
-                                        io::format_number(updates.front().coarse_graining_factor) + ", this case has " +
+          throw InputError(directory, "its wear was made by particles coarse-grained by " +
+                                        io::format_number(updates.front().coarse_graining_factor) + ", this case's at the part are by " +
                                         io::format_number(coarse_graining_factor) +
-                                        ": replay a run of the same case (only W and the Smoothing radius may differ)");
+                                        " (Particles/Coarse graining/Factor, or a fine region's Fine region factor): replay a "
+                                        "run of the same case (only W and the Smoothing radius may differ)");
         // the stored run's part must be this one: the first stored surface is its design (the
         // same extent within a tenth of the mesh size, the same volume within 0.1 %)
         const dealii::BoundingBox<3> a(design.vertices), b(updates.front().surface.vertices);

@@ -52,7 +52,7 @@ namespace abrade::coupling::lifetime
         std::unique_ptr<WearSource> source;
         try
           {
-            source = make_replayed_wear_source(run, s.design, s.mesh_size, s.dem_case.coarse_graining);
+            source = make_replayed_wear_source(run, s.design, s.mesh_size, s.dem_case.factor_at_tools());
           }
         catch (const InputError &e)
           {

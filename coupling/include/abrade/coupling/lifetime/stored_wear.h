@@ -40,7 +40,7 @@ namespace abrade::coupling::lifetime
     fem::SolidSurface        surface;          ///< the part's surface it fell on (vertices, triangles, ids)
     double                   wear_coefficient = 0;
     bool                     removes_volume   = true;
-    double                   coarse_graining_factor = 1; ///< of the case that made it
+    double                   coarse_graining_factor = 1; ///< of the particles at the part (DemCase::factor_at_tools)
     std::vector<std::string> phases;
   };
 
