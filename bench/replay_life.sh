@@ -1,12 +1,14 @@
 #!/bin/bash
 # The knife-bed's life at one pellet size without the geometry feedback, bed by bed
 # (docs/coarse-graining.md, "The real-size life by replay"): each bed's wear on the design (one
-# update of fixed cycles, Lifetime/Cycles per update, Maximum updates = 1: the DEM's only cycle)
-# is replayed to the end of life (Lifetime/Wear source = replay: the part wears on, its wear
-# carried onto the worn surface, no DEM). The life of the beds' mean rate is the harmonic mean of
-# the single-bed lives (at 27.5 mm 7.05 Mt against 7.07 Mt from a replay of the three beds
-# together); its 95 % interval is the t interval of the mean rate 1/life over the beds (the
-# beds' scatter only: fresh beds, not one bed reused at every update).
+# update of fixed cycles, Lifetime/Cycles per update, Maximum updates = 1: the DEM's only cycle,
+# one bed per run) is replayed to the end of life (Lifetime/Wear source = replay: the part wears
+# on, its wear carried onto the worn surface, no DEM), alone and with all the beds together (their
+# stored wear joined by bench/merge_stored_wear.py, byte for byte what one run of them all
+# stores). The life is the beds together's; its 95 % interval the jackknife's over the beds
+# (each left out once, t with beds - 1 degrees of freedom): the beds' scatter only. Not the
+# harmonic mean of the single-bed lives: the gauge reads the worst station, which differs from
+# bed to bed at the real size (the harmonic mean 0.90 of the life there, 1.00 at 27.5 mm).
 #
 #   bench/replay_life.sh [--real] [--beds DIR] [--seeds "1 2 3"] [--jobs N] [--smoothing R] [--replays-only]
 #                        [--output DIR]
@@ -20,8 +22,9 @@
 # --smoothing R: the replays' Lifetime/Smoothing radius [m] (default 0: the radius of the
 #   particles at the part, 6.875 mm with --real, 27.5 mm without); the stored wear is unfiltered.
 # --replays-only: the replays and the lives again from the one-update runs already in DIR
-#   (e.g. at another --smoothing; their output goes to DIR/replay-seedN, replaced).
-# A real-size bed's cycle takes about 33 minutes on one core; a 27.5 mm one seconds.
+#   (e.g. at another --smoothing; the replays go to DIR/replay-rR/, replaced).
+# A real-size bed's cycle took 65 minutes with three at once on two shared cores (about 33 on a
+# core of its own, inferred); a 27.5 mm one a minute. A replay takes seconds.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 abrade=${ABRADE:-$here/build/abrade}
@@ -56,51 +59,68 @@ one_update() {
   mkdir -p "$dir/beds"
   if [ -n "$beds" ]; then cp "$beds/bed-seed$s.bed" "$dir/beds/"; fi
   "$abrade" run "$case_file" "${sets[@]}" --set "Lifetime/Seeds=$s" --set "Lifetime/Cycles per update=200000" \
-    --set "Lifetime/Maximum updates=1" --output "$dir" > "$dir.log" 2>&1
+    --set "Lifetime/Maximum updates=1" --output "$dir" > "$dir.log" 2>&1 || { echo "bed seed $s failed: $dir.log" >&2; return 1; }
 }
 if [ $replays_only = 0 ]; then
-  running=0
+  pids=()
   for s in $seeds; do
-    one_update "$s" &
-    running=$((running + 1))
-    if [ $running -ge "$jobs" ]; then wait -n; running=$((running - 1)); fi
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do sleep 1; done
+    one_update "$s" & pids+=($!)
   done
-  wait
+  failed=0
+  for p in "${pids[@]}"; do wait "$p" || failed=1; done
+  [ $failed = 0 ] || exit 1
 fi
 
-# 2. each bed's wear replayed to the end of life
-for s in $seeds; do
-  rm -rf "$out/replay-seed$s"
-  "$abrade" run "$case_file" "${sets[@]}" --set "Lifetime/Seeds=$s" --set "Lifetime/Smoothing radius=$smoothing" \
-    --set "Lifetime/Wear source=replay" \
-    --set "Lifetime/Replay/Run=$out/bed-seed$s" --set "Lifetime/Maximum updates=80" --output "$out/replay-seed$s" \
-    > "$out/replay-seed$s.log" 2>&1
-done
+# 2. the replays: each bed alone, all of them together, and all but one (the jackknife)
+replays=$out/replay-r$smoothing
+rm -rf "$replays" && mkdir -p "$replays"
+replay() { # NAME STORED_RUN SEEDS
+  "$abrade" run "$case_file" "${sets[@]}" --set "Lifetime/Seeds=$3" --set "Lifetime/Smoothing radius=$smoothing" \
+    --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$2" --set "Lifetime/Maximum updates=80" \
+    --output "$replays/$1" > "$replays/$1.log" 2>&1 || { echo "replay $1 failed: $replays/$1.log" >&2; exit 1; }
+}
+joined() { # NAME SEEDS...: the stored wear of those beds together, replayed
+  local name=$1 files=()
+  shift
+  for s in "$@"; do files+=("$out/bed-seed$s/wear/update_00001.wear"); done
+  mkdir -p "$replays/$name-stored/wear"
+  python3 "$here/bench/merge_stored_wear.py" "$replays/$name-stored/wear/update_00001.wear" "${files[@]}"
+  replay "$name" "$replays/$name-stored" "$(echo "$@" | tr ' ' ,)"
+}
+for s in $seeds; do replay "seed$s" "$out/bed-seed$s" "$s"; done
+n_beds=$(echo $seeds | wc -w)
+if [ "$n_beds" -gt 1 ]; then
+  joined all $seeds
+  for s in $seeds; do joined "without$s" $(for t in $seeds; do [ "$t" = "$s" ] || echo "$t"; done); done
+fi
 
-# 3. the lives, the life of the mean rate and its interval
-python3 - "$out" $seeds <<'EOF'
+# 3. the lives: each bed's, the beds together's with the jackknife's interval
+python3 - "$replays" $seeds <<'EOF'
 import json, statistics, sys
 from math import sqrt
-out, seeds = sys.argv[1], sys.argv[2:]
+replays, seeds = sys.argv[1], sys.argv[2:]
 # two-sided 95 % t quantiles by degrees of freedom (1 ... 30; beyond, the normal's 1.96 is within 4 %)
 t95 = dict(enumerate([12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160,
                       2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056,
                       2.052, 2.048, 2.045, 2.042], start=1))
-lives = []
-print("| bed seed | life [Mt] | end of life |")
+def life(name):
+    j = json.load(open(f"{replays}/{name}/summary.json"))["results"]["lifetime"]
+    if j.get("predicted_tonnes_to_end_of_life") is None:
+        sys.exit(f"{replays}/{name}: no predicted life")
+    return j["predicted_tonnes_to_end_of_life"], j["end_of_life_method"]
+print("| beds | life [Mt] | end of life |")
 print("|---|---|---|")
 for s in seeds:
-    j = json.load(open(f"{out}/replay-seed{s}/summary.json"))["results"]["lifetime"]
-    life = j["predicted_tonnes_to_end_of_life"]
-    lives.append(life)
-    print(f"| {s} | {life / 1e6:.3f} | {j['end_of_life_method']} |")
-rates = [1 / l for l in lives]
-mean = statistics.mean(rates)
-life = 1 / mean
-line = f"life of the mean rate (harmonic mean of the lives): {life / 1e6:.3f} Mt"
-if len(rates) > 1:
-    half = t95.get(len(rates) - 1, 1.96) * statistics.stdev(rates) / sqrt(len(rates))
-    upper = f"{1 / (mean - half) / 1e6:.2f}" if mean > half else "unbounded"
-    line += f", 95 % interval {1 / (mean + half) / 1e6:.2f} ... {upper} Mt ({len(rates)} beds, the beds' scatter only)"
-print(line)
+    l, how = life(f"seed{s}")
+    print(f"| {s} | {l / 1e6:.3f} | {how} |")
+if len(seeds) > 1:
+    whole, how = life("all")
+    print(f"| {', '.join(seeds)} together | {whole / 1e6:.3f} | {how} |")
+    n = len(seeds)
+    left = [life(f"without{s}")[0] for s in seeds]
+    se = sqrt((n - 1) / n * sum((l - statistics.mean(left)) ** 2 for l in left))
+    half = t95.get(n - 1, 1.96) * se
+    print(f"life of the {n} beds together: {whole / 1e6:.3f} Mt, 95 % interval {(whole - half) / 1e6:.2f} ... "
+          f"{(whole + half) / 1e6:.2f} Mt (jackknife over the beds, {n - 1} degrees of freedom: the beds' scatter only)")
 EOF
