@@ -43,6 +43,7 @@ done
 out=${out:-$(mktemp -d /tmp/abrade-multi-level.XXXXXX)}
 mkdir -p "$out"
 case_file=$root/cases/knife_bed/coarse_graining.prm
+source "$root/bench/fine_region_sets.sh"
 echo "| part | runtime [s] |" > "$out/runtimes.md"
 echo "|---|---|" >> "$out/runtimes.md"
 uniform_csv=$root/docs/coarse-graining/study.csv
@@ -60,10 +61,8 @@ fi
 runs=()
 for f in ${factors//,/ }; do
   start=$(date +%s)
-  "$abrade" sweep "$case_file" --set "Particles/Coarse graining/Fine region min=-0.97, -$half, 0.03" \
-    --set "Particles/Coarse graining/Fine region max=0.97, $half, 0.85" --set "Particles/Coarse graining/Fine region factor=$f" \
-    --set "Particles/Coarse graining/Fine region step=$step" --set "Particles/Coarse graining/Fine region layer thickness=$layers" \
-    --set "Particles/Coarse graining/Fine region pours=$pours" --vary "Wall knife/Interaction/Friction=0.4" "${runs_per_bed[@]}" \
+  fine_region_sets "$f" "$half" "$step" "$layers" "$pours"
+  "$abrade" sweep "$case_file" "${fine_sets[@]}" --vary "Wall knife/Interaction/Friction=0.4" "${runs_per_bed[@]}" \
     --seeds "$seeds" --jobs 1 --output "$out/multi-level-f$f" --quiet
   echo "| multi-level, fine ratio $f | $(( $(date +%s) - start )) |" >> "$out/runtimes.md"
   runs+=("$f=$out/multi-level-f$f/study.csv")

@@ -4,8 +4,8 @@
 # update of fixed cycles, Lifetime/Cycles per update, Maximum updates = 1: the DEM's only cycle,
 # one bed per run) is replayed to the end of life (Lifetime/Wear source = replay: the part wears
 # on, its wear carried onto the worn surface, no DEM), alone and with all the beds together (their
-# stored wear joined by bench/merge_stored_wear.py, byte for byte what one run of them all
-# stores). The life is the beds together's; its 95 % interval the jackknife's over the beds
+# stored wear joined by the replay, Lifetime/Replay/Run = a, b, ...: byte for byte what one run
+# of them all stores). The life is the beds together's; its 95 % interval the jackknife's over the beds
 # (each left out once, t with beds - 1 degrees of freedom): the beds' scatter only. Not the
 # harmonic mean of the single-bed lives: the gauge reads the worst station, which differs from
 # bed to bed at the real size (the harmonic mean 0.90 of the life there, 1.00 at 27.5 mm).
@@ -45,10 +45,9 @@ while [ $# -gt 0 ]; do
 done
 sets=(--set "Simulation/Threads=1")
 if [ $real = 1 ]; then
-  sets+=(--set "Particles/Coarse graining/Fine region min=-0.97, -0.36, 0.03"
-         --set "Particles/Coarse graining/Fine region max=0.97, 0.36, 0.85" --set "Particles/Coarse graining/Fine region factor=1"
-         --set "Particles/Coarse graining/Fine region step=1.25" --set "Particles/Coarse graining/Fine region layer thickness=1"
-         --set "Particles/Coarse graining/Fine region pours=3" --set "Simulation/Skin=0.00275")
+  source "$here/bench/fine_region_sets.sh"
+  fine_region_sets 1 0.36 1.25 1 3 # (bench/multi_level.sh --factors 1's defaults)
+  sets+=("${fine_sets[@]}" --set "Simulation/Skin=0.00275")
 fi
 mkdir -p "$out"; out=$(cd "$out" && pwd)
 
@@ -80,13 +79,12 @@ replay() { # NAME STORED_RUN SEEDS
     --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$2" --set "Lifetime/Maximum updates=80" \
     --output "$replays/$1" > "$replays/$1.log" 2>&1 || { echo "replay $1 failed: $replays/$1.log" >&2; exit 1; }
 }
-joined() { # NAME SEEDS...: the stored wear of those beds together, replayed
-  local name=$1 files=()
+joined() { # NAME SEEDS...: the one-bed runs of those beds replayed together (Replay/Run = a, b, ...:
+           # their stored wear joined as one run of those beds stores it)
+  local name=$1 runs=""
   shift
-  for s in "$@"; do files+=("$out/bed-seed$s/wear/update_00001.wear"); done
-  mkdir -p "$replays/$name-stored/wear"
-  python3 "$here/bench/merge_stored_wear.py" "$replays/$name-stored/wear/update_00001.wear" "${files[@]}"
-  replay "$name" "$replays/$name-stored" "$(echo "$@" | tr ' ' ,)"
+  for s in "$@"; do runs+="${runs:+,}$out/bed-seed$s"; done
+  replay "$name" "$runs" "$(echo "$@" | tr ' ' ,)"
 }
 for s in $seeds; do replay "seed$s" "$out/bed-seed$s" "$s"; done
 n_beds=$(echo $seeds | wc -w)

@@ -10,12 +10,22 @@
 #    trajectory within 1e-9); every later update replays the stored update whose worn volume
 #    before it is the largest not above the replay's (checked from the two trajectories and
 #    the beds in life_beds.csv);
+#  - the DEM from update 2's tonnes on (Replay/DEM from) after the replay's first update at 15 mm
+#    is the DEM run at 15 mm again, byte for byte (trajectory and beds), where the replay alone
+#    differs from it;
 #  - with another W in the case (4e-14 against the stored 2e-14) its first update is the DEM
 #    run's at that W (the wear scaled by their ratio);
 #  - past the stored run's worn volume, and where a stored update's beds serve twice, a
 #    warning says so;
 #  - calibrate warns when the footprint is fitted on replays without a DEM candidate near it,
 #    and names a replay among the best and its neighbours that it could not leave out;
+#  - several runs joined (Replay/Run = a, b, c): one-update runs of one bed each, the stored
+#    run's three beds made apart, replayed together store the stored run's pilot and first
+#    update byte for byte (the DEM's own three-bed run: an independent path), and their first
+#    update is the stored run's trajectory row (also with the runs in another order than the
+#    seeds); runs of three updates, which part after the first, are joined to it (said), and
+#    the replay goes beyond them at their mean worn volume after it; a bed two joined runs share
+#    is refused;
 #  - a replay of a replay at its footprint is that replay again (carried volumes that round
 #    below zero were refused as corrupt before); a user's own files in the output's wear/ stay;
 #  - a missing directory, one without stored wear, another knife's (another height, another
@@ -31,8 +41,52 @@ source "$(dirname "$0")/small_case_runs.sh"
 replay() { local dir=$1; shift; run "$dir" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" "$@"; }
 run stored
 replay same
+for s in 1 2 3; do run "bed$s" --set "Lifetime/Seeds=$s" --set "Lifetime/Maximum updates=1"; done
+run joined --set "Lifetime/Maximum updates=1" --set "Lifetime/Wear source=replay" \
+  --set "Lifetime/Replay/Run=$out/bed1, $out/bed2,$out/bed3"
+for f in wear/update_00000.wear wear/update_00001.wear; do
+  cmp "$out/stored/$f" "$out/joined/$f" || { echo "one-bed runs joined: their $f is not the three-bed run's"; exit 1; }
+done
+cmp <(head -2 "$out/stored/trajectory.csv") "$out/joined/trajectory.csv" || { echo "one-bed runs joined: update 1 differs"; exit 1; }
+grep -q '"replayed_runs"' "$out/joined/summary.json" || { echo "summary.json does not list the joined runs"; exit 1; }
+# in another order than the seeds: the same run (its pilot found, the first update as long)
+run joined_213 --set "Lifetime/Maximum updates=1" --set "Lifetime/Wear source=replay" \
+  --set "Lifetime/Replay/Run=$out/bed2,$out/bed1,$out/bed3"
+# runs of several updates part after the first (each knife worn its own way): joined to there,
+# said, and the stored runs' worn volume after it is where the replay goes beyond them
+run other --set "Lifetime/Seeds=4"
+run joined_parted --set "Lifetime/Seeds=1,2,3,4" --set "Lifetime/Wear source=replay" \
+  --set "Lifetime/Replay/Run=$out/stored,$out/other"
+python3 - "$out" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+def rows(run):
+    return list(csv.DictReader(open(os.path.join(out, run, "trajectory.csv"))))
+a, b = rows("stored")[0], rows("joined_213")[0]
+for k in ("tonnes", "worn_volume"):
+    assert abs(float(a[k]) - float(b[k])) <= 1e-9 * abs(float(a[k])), ("beds in another order", k, a[k], b[k])
+w = json.load(open(os.path.join(out, "joined_parted", "summary.json")))["results"]["lifetime"]["warnings"]
+assert any("joined runs end at update 1" in x for x in w), w
+beyond = [x for x in w if "than the stored run" in x]
+first = rows("stored")[0], rows("other")[0]
+worn = sum(float(r["worn_volume"]) for r in first) / 2 * 1e6
+assert beyond and ("did (%.4g cm^3)" % worn) in beyond[0], (beyond, worn)
+print("replay: joined runs in another order the same first update; runs parted after update 1 joined to it, beyond at %.4g cm^3" % worn)
+PY
 run dem_r15 --set "Lifetime/Smoothing radius=0.015"
 replay replay_r15 --set "Lifetime/Smoothing radius=0.015"
+# the DEM from the tonnes of update 2 on (Replay/DEM from): the replay's first update at 15 mm is
+# the DEM run's there bit for bit, so from it the DEM's own cycles on the same beds are that run
+# again, byte for byte; a replay that kept replaying, or went over to the DEM an update late, is
+# the replay's trajectory from update 2 on and differs
+t1=$(python3 -c "import csv,sys; print(repr(float(list(csv.DictReader(open(sys.argv[1])))[0]['tonnes']) * (1 - 1e-9)))" \
+  "$out/dem_r15/trajectory.csv")
+replay dem_from_r15 --set "Lifetime/Smoothing radius=0.015" --set "Lifetime/Replay/DEM from=$t1"
+for f in trajectory.csv life_beds.csv; do
+  cmp "$out/dem_r15/$f" "$out/dem_from_r15/$f" || { echo "the DEM from update 2 after a replay is not the DEM run: $f"; exit 1; }
+done
+! cmp -s "$out/replay_r15/trajectory.csv" "$out/dem_from_r15/trajectory.csv" || { echo "the replay at 15 mm is the DEM run: the check cannot tell"; exit 1; }
+grep -q '"dem_from_tonnes"' "$out/dem_from_r15/summary.json" || { echo "summary.json does not say where the DEM took over"; exit 1; }
 run dem_w4 --set "Wall knife/Wear/Archard/Coefficient=4e-14"
 replay replay_w4 --set "Wall knife/Wear/Archard/Coefficient=4e-14"
 replay beyond --set "Lifetime/Maximum updates=5"
@@ -130,6 +184,7 @@ PY
 refused "no directory given" "Replay/Run" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run="
 refused "missing directory" "$out/none" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/none"
 mkdir -p "$out/empty"
+refused "a bed twice" "is in another of the runs too" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/bed1,$out/stored"
 refused "no stored wear" "holds no stored wear" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/empty"
 refused "another part" "another part" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Height=0.3"
 refused "another bevel" "another part" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/stored" --set "Part/Bevel height=0.08"

@@ -262,13 +262,17 @@ TEST(MovedEntries, TheKnifeJobIsReadAsThePartJob)
   EXPECT_TRUE(has_note(b, "--set 'Job=knife': Job = knife is read as Job = part"));
   const std::string printed = b.canonical_text();
   EXPECT_NE(printed.find("set Job   = part\n"), std::string::npos) << printed.substr(0, 80);
-  const auto earlier = abrade::coupling::earlier_printings(printed); // (layouts 3, 2, 1, 0)
-  ASSERT_EQ(earlier.size(), 4u);
+  const auto earlier = abrade::coupling::earlier_printings(printed); // (layouts 4, 3, 2, 1, 0)
+  ASSERT_EQ(earlier.size(), 5u);
   EXPECT_NE(earlier[0].find("set Job   = part\n"), std::string::npos);
   EXPECT_NE(earlier[1].find("set Job   = part\n"), std::string::npos);
-  EXPECT_NE(earlier[2].find("set Job   = knife\n"), std::string::npos);
+  EXPECT_NE(earlier[2].find("set Job   = part\n"), std::string::npos);
   EXPECT_NE(earlier[3].find("set Job   = knife\n"), std::string::npos);
-  EXPECT_EQ(earlier[0].find("Fine region pours"), std::string::npos); // (added in layout 4)
+  EXPECT_NE(earlier[4].find("set Job   = knife\n"), std::string::npos);
+  EXPECT_NE(printed.find("DEM from"), std::string::npos);
+  EXPECT_EQ(earlier[0].find("DEM from"), std::string::npos);          // (added in layout 5)
+  EXPECT_NE(earlier[0].find("Fine region pours"), std::string::npos);
+  EXPECT_EQ(earlier[1].find("Fine region pours"), std::string::npos); // (added in layout 4)
   // another job is read as it is, without a note
   abrade::coupling::ParameterFile c(knife_bed, {"Job=dem"});
   EXPECT_EQ(c.handler().get("Job"), "dem");

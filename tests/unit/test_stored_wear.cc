@@ -176,3 +176,94 @@ TEST(StoredWear, CarriedOntoAnotherSurfaceKeepsDensityAndVolume)
                 << " inside the faces); volume " << sum(carried) / sum(v) << " of the stored\n";
     }
 }
+
+// Runs of one bed each, joined (the replay of several runs, Lifetime/Replay/Run = a, b, c), are
+// what one run of their beds stores: the beds and their volumes in the runs' order, the phases'
+// volumes added bed by bed, each over the beds' number, as dem_wear_source.cc adds them (the
+// same bits; the sum of the three then divided by three differs in the last bits for these
+// numbers, and the check fails for it); a run of two beds (their mean stored) joined with one
+// gives the three beds' mean; a grab's tonnes (its payload, bed by bed) the beds' mean, and a
+// size distribution's largest particle the last bed's. Refused, naming the run: a bed two runs
+// share, another W, another surface, other tonnes per cycle where they are not a payload.
+TEST(StoredWear, RunsOfOneBedJoinedAreTheRunOfTheirBeds)
+{
+  const auto one_bed = [](int seed, double penetration, double travel) {
+    StoredWear s;
+    s.update                = 1;
+    s.bed_seeds             = {seed};
+    s.surface               = box(-0.05, 0.05, 2);
+    s.wear.tonnes_per_cycle = 0.7;
+    s.wear.particle_radius  = 0.0275;
+    s.wear.phase_volume     = {penetration, travel};
+    s.phases                = {"penetration", "travel"};
+    s.wear_coefficient      = 2e-14;
+    s.wear.seed_volume.push_back(volumes(s.surface, linear));
+    s.wear.seed_volume.back()[0] = penetration; // (tells the beds apart)
+    return s;
+  };
+  const std::vector<double> pen = {1e-10 / 3, 0.7e-10, M_PI * 1e-11}, trav = {0.1e-9, 0.2e-9, 0.3e-9};
+  std::vector<StoredWear>   runs;
+  for (int b = 0; b < 3; ++b)
+    runs.push_back(one_bed(b + 1, pen[b], trav[b]));
+  const StoredWear j = join_stored_wear(runs, {"a", "b", "c"});
+  EXPECT_EQ(j.bed_seeds, (std::vector<int>{1, 2, 3}));
+  ASSERT_EQ(j.wear.seed_volume.size(), 3u);
+  for (int b = 0; b < 3; ++b)
+    EXPECT_EQ(j.wear.seed_volume[b], runs[b].wear.seed_volume[0]);
+  // the DEM's sum over its beds (one knife): each bed's phase volume over (knives x beds)
+  std::vector<double> dem(2, 0.0);
+  for (int b = 0; b < 3; ++b)
+    dem[0] += pen[b] / (1 * 3), dem[1] += trav[b] / (1 * 3);
+  EXPECT_EQ(j.wear.phase_volume, dem);
+  EXPECT_NE((pen[0] + pen[1] + pen[2]) / 3, dem[0]) << "the numbers no longer tell the two sums apart";
+  EXPECT_EQ(j.wear.tonnes_per_cycle, 0.7);
+  EXPECT_EQ(j.surface.vertices, runs[0].surface.vertices);
+
+  // a run of two beds with one of one: the three beds' mean; a grab's payload, bed by bed; a
+  // size distribution's largest particle, the last bed's (as the DEM keeps it)
+  StoredWear two = join_stored_wear({runs[0], runs[1]}, {"a", "b"});
+  StoredWear third = runs[2];
+  two.wear.tonnes_per_cycle = 0.6, third.wear.tonnes_per_cycle = 0.9;
+  third.wear.particle_radius = 0.0271;
+  const StoredWear m = join_stored_wear({two, third}, {"ab", "c"}, true);
+  EXPECT_EQ(m.wear.particle_radius, 0.0271);
+  EXPECT_EQ(m.bed_seeds, (std::vector<int>{1, 2, 3}));
+  EXPECT_NEAR(m.wear.phase_volume[0], (pen[0] + pen[1] + pen[2]) / 3, 1e-15 * pen[1]);
+  EXPECT_NEAR(m.wear.phase_volume[1], (trav[0] + trav[1] + trav[2]) / 3, 1e-15 * trav[2]);
+  EXPECT_NEAR(m.wear.tonnes_per_cycle, (2 * 0.6 + 0.9) / 3, 1e-15);
+
+  // other tonnes per cycle where they are the case's, not a payload: refused
+  try
+    {
+      join_stored_wear({two, third}, {"ab", "run-c"});
+      ADD_FAILURE() << "other tonnes per cycle joined";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("run-c"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("Tonnes per cycle"), std::string::npos) << e.what();
+    }
+
+  const auto refused = [&](std::vector<StoredWear> parts, const std::string &words) {
+    try
+      {
+        join_stored_wear(parts, {"run-a", "run-b", "run-c"});
+        ADD_FAILURE() << "joined: " << words;
+      }
+    catch (const InputError &e)
+      {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("run-c"), std::string::npos) << what;
+        EXPECT_NE(what.find(words), std::string::npos) << what;
+      }
+  };
+  StoredWear again = runs[2];
+  again.bed_seeds  = {1};
+  refused({runs[0], runs[1], again}, "seed 1 is in another of the runs");
+  StoredWear other_w = runs[2];
+  other_w.wear_coefficient = 3e-14;
+  refused({runs[0], runs[1], other_w}, "wear law or W");
+  StoredWear other_part = runs[2];
+  other_part.surface    = box(-0.05, 0.051, 2);
+  refused({runs[0], runs[1], other_part}, "surface");
+}

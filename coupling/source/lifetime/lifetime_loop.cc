@@ -407,8 +407,16 @@ namespace abrade::coupling::lifetime
     // the DEM's warnings (Simulation/On error = continue): each kind logged once, all counted
     dem_warnings_now = source->name() == "DEM" ? long(wear.warnings.size()) : 0; // (a replay's are its own)
     dem_warnings_total += dem_warnings_now;
+    log_cycle_messages(wear, "update " + std::to_string(update));
+    resolve_smoothing(wear);
+    return wear;
+  }
+
+  // A cycle's warnings (each kind once) and notes (each text once) in the log and summary.json.
+  void LifetimeLoop::log_cycle_messages(const CycleWear &wear, const std::string &cycle)
+  {
     const auto warn = [&](const std::string &w) {
-      warnings.push_back("update " + std::to_string(update) + ", " + source->name() + ": " + w);
+      warnings.push_back(cycle + ", " + source->name() + ": " + w);
       ctx.log.warning(warnings.back());
     };
     for (const auto &w : wear.warnings)
@@ -417,8 +425,6 @@ namespace abrade::coupling::lifetime
     for (const auto &w : wear.notes) // (the run's set-up: each text once, not counted)
       if (notes_given.insert(w).second)
         warn(w);
-    resolve_smoothing(wear);
-    return wear;
   }
 
   // Before the first update: a pilot cycle on beds of its own (update 0's seeds) gives the rate
@@ -439,6 +445,8 @@ namespace abrade::coupling::lifetime
         source_choice->fail_on_rate(ctx.parameters, e.what());
       }
     store_wear(wear, beds);
+    // (logged, not counted in dem_warnings: those are the updates', trajectory.csv's rows)
+    log_cycle_messages(wear, "pilot cycle");
     resolve_smoothing(wear);
     previous_largest = depth_rates(part_model->surface(), wear, s.smoothing).largest;
     ctx.log.line("pilot cycle on " + std::to_string(beds.size()) + " bed(s) of its own: the first update is sized "

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 namespace abrade::coupling::lifetime
 {
@@ -33,6 +34,12 @@ namespace abrade::coupling::lifetime
     bool same_surface(const fem::SolidSurface &a, const fem::SolidSurface &b)
     {
       return a.vertices == b.vertices && a.triangles == b.triangles;
+    }
+
+    /// The same beds in any order (the runs of a joined replay in another order than Seeds).
+    bool same_beds(const std::vector<int> &a, const std::vector<int> &b)
+    {
+      return a.size() == b.size() && std::is_permutation(a.begin(), a.end(), b.begin());
     }
   } // namespace
 
@@ -168,36 +175,175 @@ namespace abrade::coupling::lifetime
     return carry_wear_volumes(from, {volume}, to).front();
   }
 
+  StoredWear join_stored_wear(const std::vector<StoredWear> &parts, const std::vector<std::string> &names,
+                              bool tonnes_from_payload)
+  {
+    if (parts.empty())
+      throw std::logic_error("join_stored_wear: no runs");
+    const StoredWear &first = parts.front();
+    StoredWear        joined = first;
+    joined.bed_seeds.clear(), joined.wear.seed_volume.clear();
+    std::size_t beds = 0;
+    for (const auto &p : parts)
+      beds += p.bed_seeds.size();
+    std::fill(joined.wear.phase_volume.begin(), joined.wear.phase_volume.end(), 0.0);
+    double tonnes = 0;
+    for (std::size_t r = 0; r < parts.size(); ++r)
+      {
+        const StoredWear &p = parts[r];
+        const char       *other = nullptr;
+        if (p.update != first.update)
+          other = "update";
+        else if (!same_surface(p.surface, first.surface) || p.surface.boundary_id != first.surface.boundary_id)
+          other = "surface (the part it fell on)";
+        else if (p.tonnes_start != first.tonnes_start)
+          other = "tonnes before it";
+        else if (p.wear_coefficient != first.wear_coefficient || p.removes_volume != first.removes_volume)
+          other = "wear law or W";
+        else if (p.phases != first.phases || p.wear.phase_volume.size() != first.wear.phase_volume.size())
+          other = "phases of the cycle";
+        else if (p.coarse_graining_factor != first.coarse_graining_factor)
+          other = "coarse-graining factor";
+        else if (!tonnes_from_payload && p.wear.tonnes_per_cycle != first.wear.tonnes_per_cycle)
+          other = "Lifetime/Tonnes per cycle";
+        if (other)
+          throw InputError(names.at(r), "its stored update " + std::to_string(p.update) + " differs in its " + other +
+                                          " from " + names.front() +
+                                          "'s: only the beds of runs of one case on one part are joined");
+        for (std::size_t b = 0; b < p.bed_seeds.size(); ++b)
+          {
+            if (std::find(joined.bed_seeds.begin(), joined.bed_seeds.end(), p.bed_seeds[b]) != joined.bed_seeds.end())
+              throw InputError(names.at(r), "its bed of seed " + std::to_string(p.bed_seeds[b]) +
+                                              " is in another of the runs too: one bed twice is not two beds");
+            joined.bed_seeds.push_back(p.bed_seeds[b]);
+            joined.wear.seed_volume.push_back(p.wear.seed_volume.at(b));
+          }
+        // (a run of k beds stores their mean: k of the joined run's terms; a run of one, its
+        // bed's term, added as the DEM adds its beds' terms)
+        const double k = double(p.bed_seeds.size());
+        for (std::size_t i = 0; i < joined.wear.phase_volume.size(); ++i)
+          joined.wear.phase_volume[i] += p.wear.phase_volume[i] * k / double(beds);
+        tonnes += p.wear.tonnes_per_cycle * k / double(beds);
+      }
+    if (tonnes_from_payload) // (a grab's tonnes are its payload, measured bed by bed)
+      joined.wear.tonnes_per_cycle = tonnes;
+    // (the largest particle of the last bed, as the DEM keeps it: a size distribution's
+    // largest differs from bed to bed)
+    joined.wear.particle_radius = parts.back().wear.particle_radius;
+    return joined;
+  }
+
   namespace
   {
+    /// A run's stored wear: its updates in order (its pilot first where it has one) and the
+    /// volume it had worn off at its end (its trajectory's last, else its last update's start).
+    struct StoredRun
+    {
+      std::string             directory;
+      std::vector<StoredWear> updates;
+      double                  worn_at_end = 0;
+    };
+
+    StoredRun read_stored_run(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      StoredRun         run{directory, {}, 0};
+      const std::string dir = directory + "/wear";
+      std::error_code   ec;
+      if (!fs::is_directory(directory, ec))
+        throw InputError(directory, "no such directory (Lifetime/Replay/Run is taken relative to the parameter file; give "
+                                    "an absolute path for a run elsewhere)");
+      if (!fs::is_directory(dir, ec))
+        throw InputError(directory, "holds no stored wear (wear/update_*.wear): not a lifetime run's "
+                                    "directory, or a run of an abrade before it kept its wear");
+      for (long u = 0;; ++u)
+        {
+          const std::string file = stored_wear_file(directory, u);
+          if (!fs::exists(file, ec))
+            {
+              if (u == 0)
+                continue; // (a run with fixed cycles has no pilot)
+              break;
+            }
+          run.updates.push_back(read_stored_wear(file));
+        }
+      if (run.updates.empty() || run.updates.back().update < 1)
+        throw InputError(dir, "no stored update (wear/update_00001.wear)");
+      run.worn_at_end = fem::enclosed_volume(run.updates.front().surface) - fem::enclosed_volume(run.updates.back().surface);
+      try
+        {
+          const io::CsvTable t = io::read_csv(directory + "/trajectory.csv");
+          if (!t.rows.empty())
+            run.worn_at_end = std::max(run.worn_at_end, std::stod(t.rows.back().at(std::size_t(t.column("worn_volume")))));
+        }
+      catch (const std::exception &)
+        {} // (a run killed before its first update: its stored pilot and first update only)
+      return run;
+    }
+
+    /// Several runs' stored wear joined update by update (join_stored_wear) while their parts
+    /// have the same surface; pilots only where every run has one. The joined run's end: the
+    /// runs' mean worn volume after its last update (each run's at the start of its next, else
+    /// at its end). @p stopped: where the join ended before a run did, and why (else empty).
+    StoredRun join_stored_runs(const std::vector<StoredRun> &runs, bool tonnes_from_payload, std::string &stopped)
+    {
+      if (runs.size() == 1)
+        return runs.front();
+      StoredRun                joined;
+      std::vector<std::string> names;
+      for (const auto &r : runs)
+        names.push_back(r.directory), joined.directory += (joined.directory.empty() ? "" : ", ") + r.directory;
+      const auto has_pilot = [](const StoredRun &r) { return r.updates.front().update == 0; };
+      long       u         = std::all_of(runs.begin(), runs.end(), has_pilot) ? 0 : 1;
+      for (;; ++u)
+        {
+          std::vector<StoredWear> parts;
+          for (const auto &r : runs)
+            for (const auto &s : r.updates)
+              if (s.update == u)
+                parts.push_back(s);
+          if (parts.size() < runs.size()) // (a run ended)
+            {
+              if (!parts.empty())
+                stopped = "the joined runs end at update " + std::to_string(u - 1) + ", where the first of them ends";
+              break;
+            }
+          const bool parted = std::any_of(parts.begin(), parts.end(), [&](const StoredWear &s) {
+            return !same_surface(s.surface, parts.front().surface);
+          });
+          if (parted && u > 1)
+            {
+              stopped = "the joined runs end at update " + std::to_string(u - 1) +
+                        ": after it each run's part had worn its own way (their later updates are not joined)";
+              break;
+            }
+          joined.updates.push_back(join_stored_wear(parts, names, tonnes_from_payload)); // (refuses other parts on the design)
+        }
+      const long last = joined.updates.back().update;
+      for (const auto &r : runs)
+        {
+          double worn = r.worn_at_end;
+          for (const auto &s : r.updates)
+            if (s.update == last + 1)
+              worn = fem::enclosed_volume(r.updates.front().surface) - fem::enclosed_volume(s.surface);
+          joined.worn_at_end += worn / double(runs.size());
+        }
+      return joined;
+    }
+
     class ReplayedWearSource : public WearSource
     {
     public:
-      ReplayedWearSource(const std::string &directory, const fem::SolidSurface &design, double tolerance,
-                         double coarse_graining_factor)
+      ReplayedWearSource(const std::vector<std::string> &directories, const fem::SolidSurface &design, double tolerance,
+                         double coarse_graining_factor, bool tonnes_from_payload)
       {
-        namespace fs = std::filesystem;
-        const std::string dir = directory + "/wear";
-        std::error_code   ec;
-        if (!fs::is_directory(directory, ec))
-          throw InputError(directory, "no such directory (Lifetime/Replay/Run is taken relative to the parameter file; give "
-                                      "an absolute path for a run elsewhere)");
-        if (!fs::is_directory(dir, ec))
-          throw InputError(directory, "holds no stored wear (wear/update_*.wear): not a lifetime run's "
-                                      "directory, or a run of an abrade before it kept its wear");
-        for (long u = 0;; ++u)
-          {
-            const std::string file = stored_wear_file(directory, u);
-            if (!fs::exists(file, ec))
-              {
-                if (u == 0)
-                  continue; // (a run with fixed cycles has no pilot)
-                break;
-              }
-            updates.push_back(read_stored_wear(file));
-          }
-        if (updates.empty() || updates.back().update < 1)
-          throw InputError(dir, "no stored update (wear/update_00001.wear)");
+        std::vector<StoredRun> runs;
+        for (const auto &d : directories)
+          runs.push_back(read_stored_run(d));
+        StoredRun stored = join_stored_runs(runs, tonnes_from_payload, join_stopped);
+        updates          = std::move(stored.updates);
+        source_directory = stored.directory;
+        const std::string &directory = source_directory;
         // other particles wear the part otherwise: the stored wear is not this case's (the
         // factor of the particles at the part: a multi-level bed's finest level's)
         if (std::abs(updates.front().coarse_graining_factor / coarse_graining_factor - 1) > 1e-9)
@@ -220,22 +366,12 @@ namespace abrade::coupling::lifetime
                                         io::format_number(v_stored * 1e6, 6) + " cm^3 and extent against this run's " +
                                         io::format_number(v_design * 1e6, 6) + " cm^3): replay a run of the same case "
                                         "(only W and the Smoothing radius may differ)");
-        source_directory = directory;
         // (the worn volumes against each run's own design: this one's now, the stored one's then)
         design_volume = v_design;
         for (const auto &u : updates)
           worn_before.push_back(v_stored - fem::enclosed_volume(u.surface));
         uses.assign(updates.size(), 0);
-        // the stored run's end: its trajectory's last worn volume (else its last update's start)
-        worn_at_end = worn_before.back();
-        try
-          {
-            const io::CsvTable t = io::read_csv(directory + "/trajectory.csv");
-            if (!t.rows.empty())
-              worn_at_end = std::max(worn_at_end, std::stod(t.rows.back().at(std::size_t(t.column("worn_volume")))));
-          }
-        catch (const std::exception &)
-          {} // (a run killed before its first update: its stored pilot and first update only)
+        worn_at_end = stored.worn_at_end;
       }
 
       CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) override
@@ -245,7 +381,7 @@ namespace abrade::coupling::lifetime
         std::vector<std::string> said; // (this cycle's warnings)
         const StoredWear        *use = nullptr;
         for (const auto &u : updates)
-          if (u.bed_seeds == bed_seeds && same_surface(u.surface, surface))
+          if (same_beds(u.bed_seeds, bed_seeds) && same_surface(u.surface, surface))
             use = &u;
         // else the stored update that began with the most volume worn off, but not more than
         // this part has lost: the nearest state (the worn volume does not depend on the
@@ -264,7 +400,7 @@ namespace abrade::coupling::lifetime
                                     " cm^3): its last update's wear, on its last surface, is used from here on");
           }
         const bool pilot = std::any_of(updates.begin(), updates.end(), [&](const StoredWear &u) {
-          return u.update == 0 && u.bed_seeds == bed_seeds;
+          return u.update == 0 && same_beds(u.bed_seeds, bed_seeds);
         });
         if (!pilot && ++uses[use - updates.data()] == 2 && use->update >= 1)
           said.push_back("stored update " + std::to_string(use->update) + "'s beds are used by more than one "
@@ -273,6 +409,8 @@ namespace abrade::coupling::lifetime
         w.bed_seeds = use->bed_seeds;
         w.seed_volume = carry_wear_volumes(use->surface, use->wear.seed_volume, surface);
         w.warnings    = std::move(said);
+        if (!join_stopped.empty()) // (said once, in the first cycle's notes)
+          w.notes.push_back(std::exchange(join_stopped, std::string()));
         return w;
       }
 
@@ -289,13 +427,15 @@ namespace abrade::coupling::lifetime
       double                   worn_at_end = 0;   ///< the stored run's worn volume at its end
       std::vector<int>         uses;              ///< per stored update: how often replayed
       bool                     said_beyond = false;
+      std::string              join_stopped; ///< where the joined runs end before one of them did (said once)
     };
   } // namespace
 
-  std::unique_ptr<WearSource> make_replayed_wear_source(const std::string &run_directory,
+  std::unique_ptr<WearSource> make_replayed_wear_source(const std::vector<std::string> &run_directories,
                                                         const fem::SolidSurface &design, double tolerance,
-                                                        double coarse_graining_factor)
+                                                        double coarse_graining_factor, bool tonnes_from_payload)
   {
-    return std::make_unique<ReplayedWearSource>(run_directory, design, tolerance, coarse_graining_factor);
+    return std::make_unique<ReplayedWearSource>(run_directories, design, tolerance, coarse_graining_factor,
+                                                tonnes_from_payload);
   }
 } // namespace abrade::coupling::lifetime

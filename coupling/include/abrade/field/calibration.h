@@ -63,7 +63,7 @@ namespace abrade::field
     double                           replicate_relative_sd = 0; ///< the beds' relative spread of the worn volume
     double                           smoothing_radius = 0;      ///< [m] the run's wear footprint (0: unknown)
     double                           particle_radius = 0;       ///< [m] its largest particle (0: unknown)
-    double                           coarse_graining_factor = 0; ///< its Particles/Coarse graining/Factor (0: unknown)
+    double                           coarse_graining_factor = 0; ///< of its particles at the part (summary.json: a multi-level bed's finest; 0: unknown)
     std::string                      wear_field;                ///< the run's Output/Wear field (empty: unknown)
     bool                             replay = false; ///< a replay of another run's stored wear (Lifetime/Wear source = replay)
     std::vector<double>              tonnes;                   ///< per output

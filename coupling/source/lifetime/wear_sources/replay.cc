@@ -1,18 +1,48 @@
 // Lifetime/Wear source = replay: the unfiltered wear another lifetime run of the case stored
 // (its wear/ directory), carried onto this run's surface and scaled to this case's W
 // (stored_wear.h; wear_source.h): the same life at another footprint, or W, without a DEM run.
+// With Replay/DEM from, the DEM's own cycles from those tonnes on: the part as the replay wore
+// it, then the wear with the geometry's feedback (the replay leaves it out).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
 #include <abrade/coupling/lifetime/stored_wear.h>
 #include <abrade/coupling/lifetime/wear_calibration.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
 #include <filesystem>
 
 namespace abrade::coupling::lifetime
 {
   namespace
   {
+    /// The stored wear for the cycles before @p from tonnes, the DEM's from there on.
+    class ReplayThenDem : public WearSource
+    {
+    public:
+      ReplayThenDem(std::unique_ptr<WearSource> replay, std::unique_ptr<WearSource> dem, double from)
+        : replay(std::move(replay)), dem(std::move(dem)), from(from)
+      {}
+
+      CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) override
+      {
+        dem_now = tonnes >= from;
+        return (dem_now ? dem : replay)->cycle(surface, tonnes, bed_seeds);
+      }
+      std::vector<std::string> phases() const override { return replay->phases(); }
+      double                   wear_coefficient() const override { return dem->wear_coefficient(); }
+      bool                     removes_volume() const override { return replay->removes_volume(); }
+      /// (the last cycle's: the loop counts the DEM's warnings, not a replay's)
+      std::string name() const override { return (dem_now ? dem : replay)->name(); }
+
+    private:
+      std::unique_ptr<WearSource> replay, dem;
+      double                      from;
+      bool                        dem_now = false;
+    };
+
     class ReplaySource : public WearSourceChoice
     {
     public:
@@ -29,30 +59,54 @@ namespace abrade::coupling::lifetime
       void declare_parameters(dealii::ParameterHandler &prm) const override
       {
         prm.declare_entry("Run", "", dealii::Patterns::Anything(),
-                          "[directory] Wear source = replay: the output directory of the lifetime run whose "
+                          "[directory, ...] Wear source = replay: the output directory of the lifetime run whose "
                           "stored wear (wear/update_*.wear) is replayed (relative to this file; give an absolute path on the command line). Its beds are "
                           "the replay's; beyond the tonnes it reached its last update's wear is used (warned). "
+                          "Several directories (comma-separated; a directory whose name holds a comma cannot be "
+                          "one of them): runs of this case on the same part, their beds "
+                          "joined update by update as one run of all of them stores them, as long as their parts "
+                          "are the same (e.g. one-update runs of one bed each, Lifetime/Cycles per update and "
+                          "Maximum updates = 1, made apart; a grab's tonnes per cycle the beds' mean payload). "
                           "The wear is scaled by this case's W over the stored run's.");
+        prm.declare_entry("DEM from", "0", dealii::Patterns::Double(0),
+                          "[t] Wear source = replay: every cycle from this many tonnes handled on is the DEM's "
+                          "(this case's beds, settled in the run as Wear source = dem settles them, on the part as "
+                          "the replay wore it; under mpirun on all ranks, Lifetime/DEM/Ranks per bed's default), "
+                          "the cycles before it the stored wear's: the geometry's feedback from a worn state on, "
+                          "at the cost of the DEM's cycles from there only (docs/field.md). 0: the stored wear "
+                          "throughout. Range: [0, inf).");
       }
 
       void parse_parameters(ParameterFile &file) override
       {
-        const std::string given = file.handler().get("Run");
-        if (given.empty())
+        runs.clear();
+        for (const auto &given : dealii::Utilities::split_string_list(file.handler().get("Run")))
+          if (!given.empty())
+            {
+              runs.push_back(file.path_beside(given));
+              if (std::count(runs.begin(), runs.end(), runs.back()) > 1)
+                file.fail(path(), "Run", runs.back() + " is given twice: one run's beds twice are not more beds");
+            }
+        if (runs.empty())
           file.fail(path(), "Run", "Wear source = replay needs the directory of a lifetime run");
-        run = file.path_beside(given);
+        run.clear();
+        for (const auto &r : runs)
+          run += (run.empty() ? "" : ", ") + r;
+        dem_from = file.handler().get_double("DEM from");
       }
 
       std::unique_ptr<WearSource> make(const WearSourceSetUp &s) const override
       {
         std::error_code ec;
-        if (std::filesystem::equivalent(run, s.ctx.output.root(), ec))
-          s.ctx.parameters.fail(path(), "Run", run + " is this run's own output directory: its stored "
-                                "wear would be overwritten by the replay's; give the replay another --output");
+        for (const auto &r : runs)
+          if (std::filesystem::equivalent(r, s.ctx.output.root(), ec))
+            s.ctx.parameters.fail(path(), "Run", r + " is this run's own output directory: its stored "
+                                  "wear would be overwritten by the replay's; give the replay another --output");
         std::unique_ptr<WearSource> source;
         try
           {
-            source = make_replayed_wear_source(run, s.design, s.mesh_size, s.dem_case.factor_at_tools());
+            source = make_replayed_wear_source(runs, s.design, s.mesh_size, s.dem_case.factor_at_tools(),
+                                               s.tonnes_per_cycle == 0);
           }
         catch (const InputError &e)
           {
@@ -67,15 +121,38 @@ namespace abrade::coupling::lifetime
             scaled = ", scaled by this case's W over the stored run's, " + io::format_number(w_case, 4) + " / " +
                      io::format_number(w_stored, 4);
           }
-        s.ctx.log.line("wear replayed from " + run + " (its stored wear, no DEM" + scaled + ")");
-        return source;
+        if (!(dem_from > 0))
+          {
+            s.ctx.log.line("wear replayed from " + run + " (its stored wear, no DEM" + scaled + ")");
+            return source;
+          }
+        auto dem = make_dem_wear_source(s.dem_case, s.seeds, s.tonnes_per_cycle, 0, s.ctx);
+        if (dem->phases() != source->phases())
+          s.ctx.parameters.fail(path(), "DEM from", "the stored run's cycle has other phases than this case's: "
+                                "the DEM cannot go on from its wear");
+        s.ctx.log.line("wear replayed from " + run + " (its stored wear" + scaled + ") until " +
+                       io::format_number(dem_from, 6) + " t, the DEM's cycles from there on (Replay/DEM from)");
+        return std::make_unique<ReplayThenDem>(std::move(source), std::move(dem), dem_from);
       }
-      std::string description() const override { return "the stored wear of " + run; }
+      std::string description() const override
+      {
+        return "the stored wear of " + run + (dem_from > 0 ? ", the DEM from " + io::format_number(dem_from, 6) + " t" : "");
+      }
       // (its stored wear, carried onto this run's surfaces: stored_wear.h)
-      void add_results(io::Json &r) const override { r["replayed_run"] = run; }
+      void add_results(io::Json &r) const override
+      {
+        r["replayed_run"] = run;
+        if (dem_from > 0)
+          r["dem_from_tonnes"] = dem_from;
+        if (runs.size() > 1)
+          for (const auto &each : runs)
+            r["replayed_runs"].push_back(each);
+      }
 
     private:
-      std::string run; ///< Replay/Run, resolved
+      std::vector<std::string> runs; ///< Replay/Run, resolved
+      std::string              run;  ///< the same, comma-separated (messages, summary.json)
+      double                   dem_from = 0; ///< Replay/DEM from [t] (0: never)
     };
   } // namespace
 

@@ -98,6 +98,7 @@ namespace abrade::coupling::lifetime
     void      take_calibration();
     void      store_wear(const CycleWear &wear, std::vector<int> &beds);
     CycleWear run_cycles();
+    void      log_cycle_messages(const CycleWear &wear, const std::string &cycle);
     Rates     filter(const CycleWear &wear);
     long      choose_cycles(const Rates &rates) const;
     Step      move_part(const Rates &rates, long cycles);

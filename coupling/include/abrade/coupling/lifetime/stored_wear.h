@@ -65,8 +65,26 @@ namespace abrade::coupling::lifetime
                                                       const std::vector<std::vector<double>> &volumes,
                                                       const fem::SolidSurface &to);
 
-  /// Lifetime/Wear source = replay: the wear stored by the run in @p run_directory. A cycle asked
-  /// on beds @p bed_seeds on @p surface takes the stored update (or pilot) of these beds on this
+  /// The same update of several runs of one case on one surface, one or more beds each (e.g.
+  /// one-update runs of fixed cycles, a bed per run, made at different times or on different
+  /// machines), as one run of all their beds stores it: the beds and their volumes in the
+  /// runs' order, the phases' volumes the beds' mean (added bed by bed, each over the beds'
+  /// number, as the DEM wear source adds them: one-bed runs of a part with one knife joined are
+  /// the bits of one run of their beds; a grab's two knives are averaged first, so its joined
+  /// phases differ from the DEM's at round-off), the largest particle the last bed's (as the
+  /// DEM keeps it). With @p tonnes_from_payload (a grab: Lifetime/Tonnes per cycle 0) the
+  /// tonnes per cycle are the beds' mean; otherwise they must be the same. InputError naming the
+  /// run (@p names, in the order of @p parts) whose update, surface, W, law, phases,
+  /// coarse-graining factor, tonnes before it or tonnes per cycle is not the first's, or whose
+  /// bed another run has too (one bed twice is not two).
+  StoredWear join_stored_wear(const std::vector<StoredWear> &parts, const std::vector<std::string> &names,
+                              bool tonnes_from_payload = false);
+
+  /// Lifetime/Wear source = replay: the wear stored by the runs in @p run_directories (one run,
+  /// or several joined update by update with join_stored_wear as long as their parts have the
+  /// same surface: after the first update each run's part has worn its own way, and the joined
+  /// run ends there, said once in the first cycle's CycleWear::notes). A cycle asked
+  /// on beds @p bed_seeds on @p surface takes the stored update (or pilot) of these beds (in any order) on this
   /// very surface (the same run again), else the stored update that began with the most volume
   /// worn off but not more than @p surface has lost (the enclosed volume below the first stored
   /// surface's), its volumes carried onto @p surface (carry_wear_volume), its beds in
@@ -76,7 +94,7 @@ namespace abrade::coupling::lifetime
   /// run's (the same extent within a tenth of @p tolerance, the same volume within 0.1 %), and
   /// @p coarse_graining_factor the stored run's, else InputError; InputError also when the
   /// directory holds no stored wear (a run of an abrade before it kept its wear).
-  std::unique_ptr<WearSource> make_replayed_wear_source(const std::string &run_directory,
+  std::unique_ptr<WearSource> make_replayed_wear_source(const std::vector<std::string> &run_directories,
                                                         const fem::SolidSurface &design, double tolerance,
-                                                        double coarse_graining_factor);
+                                                        double coarse_graining_factor, bool tonnes_from_payload);
 } // namespace abrade::coupling::lifetime

@@ -35,7 +35,7 @@ namespace abrade::coupling::lifetime
     double      dof             = 0;    ///< of that standard error
     double      smoothing_radius = 0;   ///< [m] the footprint W holds for; 0: not recorded
     double      particle_radius  = 0;   ///< [m] the largest particle W was fitted with; 0: not recorded
-    double      coarse_graining_factor = 0; ///< Particles/Coarse graining/Factor of the fit; 0: not recorded
+    double      coarse_graining_factor = 0; ///< of the fit's particles at the part (DemCase::factor_at_tools); 0: not recorded
     /// the footprint was fitted with W (calibration.json `footprint`, identifiable): W and
     /// smoothing_radius are the fit's, and relative_sd holds the footprint's share too
     bool        footprint = false;

@@ -15,7 +15,7 @@ namespace abrade::coupling::renames
   /// subsections of Lifetime, the mounting entries named for any part and the velocity table the
   /// motions' own that follow it (a fixed wall has none); 4, a multi-level bed's Fine region
   /// pours. Today's is the last.
-  inline constexpr int current_layout = 4;
+  inline constexpr int current_layout = 5;
 
   /// An entry that moved: key @p old_key of a subsection named @p in (every top-level
   /// subsection whose name begins so, where @p in ends in a blank: "Wall ") is now @p key of
@@ -77,6 +77,8 @@ namespace abrade::coupling::renames
     const char *path, *key, *value;
     int         layout;
   };
-  // a multi-level bed poured again, refilled by what its fine region lacked
-  inline constexpr AddedEntry added_entries[] = {{"Particles/Coarse graining", "Fine region pours", "3", 4}};
+  // a multi-level bed poured again, refilled by what its fine region lacked (4); the DEM after a
+  // replay's worn state (5)
+  inline constexpr AddedEntry added_entries[] = {{"Particles/Coarse graining", "Fine region pours", "3", 4},
+                                                 {"Lifetime/Replay", "DEM from", "0", 5}};
 } // namespace abrade::coupling::renames
