@@ -12,6 +12,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <set>
 #include <filesystem>
 
 namespace abrade::coupling::lifetime
@@ -28,8 +29,21 @@ namespace abrade::coupling::lifetime
 
       CycleWear cycle(const fem::SolidSurface &surface, double tonnes, const std::vector<int> &bed_seeds) override
       {
-        dem_now = tonnes >= from;
-        return (dem_now ? dem : replay)->cycle(surface, tonnes, bed_seeds);
+        dem_now     = tonnes >= from;
+        CycleWear w = (dem_now ? dem : replay)->cycle(surface, tonnes, bed_seeds);
+        if (!dem_now)
+          replayed.insert(w.bed_seeds.begin(), w.bed_seeds.end());
+        else // (a stored run of the same seeds has had the DEM's beds of a later update in it)
+          {
+            std::string twice;
+            for (int seed : bed_seeds)
+              if (replayed.count(seed))
+                twice += (twice.empty() ? "" : ", ") + std::to_string(seed);
+            if (!twice.empty()) // (a note: the set-up's, not a fault of the DEM's cycle)
+              w.notes.push_back("the beds of seeds " + twice + " were replayed before (a stored update's): the "
+                                "life's interval counts them twice (too narrow)");
+          }
+        return w;
       }
       std::vector<std::string> phases() const override { return replay->phases(); }
       double                   wear_coefficient() const override { return dem->wear_coefficient(); }
@@ -41,6 +55,7 @@ namespace abrade::coupling::lifetime
       std::unique_ptr<WearSource> replay, dem;
       double                      from;
       bool                        dem_now = false;
+      std::set<int>               replayed; ///< the beds of the replayed cycles
     };
 
     class ReplaySource : public WearSourceChoice
@@ -71,7 +86,8 @@ namespace abrade::coupling::lifetime
         prm.declare_entry("DEM from", "0", dealii::Patterns::Double(0),
                           "[t] Wear source = replay: every cycle from this many tonnes handled on is the DEM's "
                           "(this case's beds, settled in the run as Wear source = dem settles them, on the part as "
-                          "the replay wore it; under mpirun on all ranks, Lifetime/DEM/Ranks per bed's default), "
+                          "the replay wore it; under mpirun the ranks shared out among the beds, as Lifetime/DEM/"
+                          "Ranks per bed = 0 does), "
                           "the cycles before it the stored wear's: the geometry's feedback from a worn state on, "
                           "at the cost of the DEM's cycles from there only (docs/field.md). 0: the stored wear "
                           "throughout. Range: [0, inf).");
