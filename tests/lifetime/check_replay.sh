@@ -26,7 +26,8 @@
 #    update is the stored run's trajectory row (also with the runs in another order than the
 #    seeds); runs of three updates, which part after the first, are joined to it (said), and
 #    the replay goes beyond them at their mean worn volume after it; a bed two joined runs share
-#    is refused;
+#    is refused; a stored run of fixed cycles (no pilot) replayed is said to serve twice from the
+#    replay's second update on, not its first (the pilot is not an update);
 #  - a replay of a replay at its footprint is that replay again (carried volumes that round
 #    below zero were refused as corrupt before); a user's own files in the output's wear/ stay;
 #  - a missing directory, one without stored wear, another knife's (another height, another
@@ -50,6 +51,15 @@ for f in wear/update_00000.wear wear/update_00001.wear; do
 done
 cmp <(head -2 "$out/stored/trajectory.csv") "$out/joined/trajectory.csv" || { echo "one-bed runs joined: update 1 differs"; exit 1; }
 grep -q '"replayed_runs"' "$out/joined/summary.json" || { echo "summary.json does not list the joined runs"; exit 1; }
+# a stored run of fixed cycles has no pilot: its first update serves the replay's pilot and first
+# update, and is said to be used twice only when a second update takes it again
+run fixed --set "Lifetime/Cycles per update=100000" --set "Lifetime/Maximum updates=1"
+run fixed_replayed --set "Lifetime/Maximum updates=2" --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/fixed"
+python3 - "$out/fixed_replayed/summary.json" <<'PY'
+import json, sys
+w = [x for x in json.load(open(sys.argv[1]))["results"]["lifetime"]["warnings"] if "more than one update" in x]
+assert len(w) == 1 and w[0].startswith("update 2,"), w
+PY
 # in another order than the seeds: the same run (its pilot found, the first update as long)
 run joined_213 --set "Lifetime/Maximum updates=1" --set "Lifetime/Wear source=replay" \
   --set "Lifetime/Replay/Run=$out/bed2,$out/bed1,$out/bed3"

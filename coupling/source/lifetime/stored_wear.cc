@@ -335,8 +335,10 @@ namespace abrade::coupling::lifetime
     {
     public:
       ReplayedWearSource(const std::vector<std::string> &directories, const fem::SolidSurface &design, double tolerance,
-                         double coarse_graining_factor, bool tonnes_from_payload)
+                         double coarse_graining_factor, bool tonnes_from_payload, const std::vector<int> &seeds)
       {
+        for (int seed : seeds)
+          pilot_beds.push_back(bed_seed(seed, 0));
         std::vector<StoredRun> runs;
         for (const auto &d : directories)
           runs.push_back(read_stored_run(d));
@@ -399,9 +401,12 @@ namespace abrade::coupling::lifetime
                                     source_directory + " did (" + io::format_number(worn_at_end * 1e6, 4) +
                                     " cm^3): its last update's wear, on its last surface, is used from here on");
           }
-        const bool pilot = std::any_of(updates.begin(), updates.end(), [&](const StoredWear &u) {
-          return u.update == 0 && same_beds(u.bed_seeds, bed_seeds);
-        });
+        // (the pilot cycle only sizes the first update: not a use; a stored run of fixed cycles
+        // has none, and its first update serves this run's pilot too)
+        const bool pilot = same_beds(bed_seeds, pilot_beds) ||
+                           std::any_of(updates.begin(), updates.end(), [&](const StoredWear &u) {
+                             return u.update == 0 && same_beds(u.bed_seeds, bed_seeds);
+                           });
         if (!pilot && ++uses[use - updates.data()] == 2 && use->update >= 1)
           said.push_back("stored update " + std::to_string(use->update) + "'s beds are used by more than one "
                                   "update: the life's interval counts them as fresh beds each time (too narrow)");
@@ -428,14 +433,16 @@ namespace abrade::coupling::lifetime
       std::vector<int>         uses;              ///< per stored update: how often replayed
       bool                     said_beyond = false;
       std::string              join_stopped; ///< where the joined runs end before one of them did (said once)
+      std::vector<int>         pilot_beds;   ///< the beds of this run's pilot cycle
     };
   } // namespace
 
   std::unique_ptr<WearSource> make_replayed_wear_source(const std::vector<std::string> &run_directories,
                                                         const fem::SolidSurface &design, double tolerance,
-                                                        double coarse_graining_factor, bool tonnes_from_payload)
+                                                        double coarse_graining_factor, bool tonnes_from_payload,
+                                                        const std::vector<int> &seeds)
   {
     return std::make_unique<ReplayedWearSource>(run_directories, design, tolerance, coarse_graining_factor,
-                                                tonnes_from_payload);
+                                                tonnes_from_payload, seeds);
   }
 } // namespace abrade::coupling::lifetime

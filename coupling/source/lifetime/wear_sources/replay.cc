@@ -122,7 +122,7 @@ namespace abrade::coupling::lifetime
         try
           {
             source = make_replayed_wear_source(runs, s.design, s.mesh_size, s.dem_case.factor_at_tools(),
-                                               s.tonnes_per_cycle == 0);
+                                               s.tonnes_per_cycle == 0, s.seeds);
           }
         catch (const InputError &e)
           {

@@ -80,21 +80,23 @@ namespace abrade::coupling::lifetime
   StoredWear join_stored_wear(const std::vector<StoredWear> &parts, const std::vector<std::string> &names,
                               bool tonnes_from_payload = false);
 
-  /// Lifetime/Wear source = replay: the wear stored by the runs in @p run_directories (one run,
-  /// or several joined update by update with join_stored_wear as long as their parts have the
-  /// same surface: after the first update each run's part has worn its own way, and the joined
-  /// run ends there, said once in the first cycle's CycleWear::notes). A cycle asked
-  /// on beds @p bed_seeds on @p surface takes the stored update (or pilot) of these beds (in any order) on this
-  /// very surface (the same run again), else the stored update that began with the most volume
-  /// worn off but not more than @p surface has lost (the enclosed volume below the first stored
-  /// surface's), its volumes carried onto @p surface (carry_wear_volume), its beds in
-  /// CycleWear::bed_seeds. Said once each in CycleWear::warnings: a part that has lost more
-  /// than the stored run did by its end (its last update's wear is used), a stored update
-  /// serving a second update. @p design: this run's unworn surface, which must be the stored
-  /// run's (the same extent within a tenth of @p tolerance, the same volume within 0.1 %), and
-  /// @p coarse_graining_factor the stored run's, else InputError; InputError also when the
-  /// directory holds no stored wear (a run of an abrade before it kept its wear).
+  /// Lifetime/Wear source = replay: the wear stored by the runs in @p run_directories (one run, or
+  /// several joined update by update with join_stored_wear as long as their parts have the same
+  /// surface: after the first update each run's part has worn its own way, and the joined run ends
+  /// there, said once in the first cycle's CycleWear::notes). A cycle asked on beds @p bed_seeds on
+  /// @p surface takes the stored update (or pilot) of these beds (in any order) on this very
+  /// surface (the same run again), else the stored update that began with the most volume worn off
+  /// but not more than @p surface has lost (the enclosed volume below the first stored surface's),
+  /// its volumes carried onto @p surface (carry_wear_volume), its beds in CycleWear::bed_seeds.
+  /// Said once each in CycleWear::warnings: a part that has lost more than the stored run did by
+  /// its end (its last update's wear is used), a stored update serving a second update (the pilot
+  /// cycle, on @p seeds' pilot beds, is not an update). @p design: this run's unworn surface, which
+  /// must be the stored run's (the same extent within a tenth of @p tolerance, the same volume
+  /// within 0.1 %), and @p coarse_graining_factor the stored run's, else InputError; InputError
+  /// also when the directory holds no stored wear (a run of an abrade before it kept its wear).
+  /// @p tonnes_from_payload: the tonnes per cycle are a grab's payload (join_stored_wear).
   std::unique_ptr<WearSource> make_replayed_wear_source(const std::vector<std::string> &run_directories,
                                                         const fem::SolidSurface &design, double tolerance,
-                                                        double coarse_graining_factor, bool tonnes_from_payload);
+                                                        double coarse_graining_factor, bool tonnes_from_payload,
+                                                        const std::vector<int> &seeds);
 } // namespace abrade::coupling::lifetime
