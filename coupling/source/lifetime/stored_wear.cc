@@ -401,12 +401,11 @@ namespace abrade::coupling::lifetime
                                     source_directory + " did (" + io::format_number(worn_at_end * 1e6, 4) +
                                     " cm^3): its last update's wear, on its last surface, is used from here on");
           }
-        // (the pilot cycle only sizes the first update: not a use; a stored run of fixed cycles
-        // has none, and its first update serves this run's pilot too)
-        const bool pilot = same_beds(bed_seeds, pilot_beds) ||
-                           std::any_of(updates.begin(), updates.end(), [&](const StoredWear &u) {
-                             return u.update == 0 && same_beds(u.bed_seeds, bed_seeds);
-                           });
+        // (the pilot cycle, on this run's pilot beds, only sizes the first update: not a use; a
+        // stored run of fixed cycles has none, and its first update serves this run's pilot too.
+        // Not told by a stored pilot's beds: a replay's stored pilot holds the beds it borrowed,
+        // the seeds' own, which a replay of it asks for in its first update)
+        const bool pilot = same_beds(bed_seeds, pilot_beds);
         if (!pilot && ++uses[use - updates.data()] == 2 && use->update >= 1)
           said.push_back("stored update " + std::to_string(use->update) + "'s beds are used by more than one "
                                   "update: the life's interval counts them as fresh beds each time (too narrow)");
