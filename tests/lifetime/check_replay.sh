@@ -27,7 +27,8 @@
 #    seeds); runs of three updates, which part after the first, are joined to it (said), and
 #    the replay goes beyond them at their mean worn volume after it; a bed two joined runs share
 #    is refused; a stored run of fixed cycles (no pilot) replayed is said to serve twice from the
-#    replay's second update on, not its first (the pilot is not an update);
+#    replay's second update on, not its first (the pilot is not an update), and a replay of that
+#    replay in smaller steps, whose first two updates take its stored update 1, is said so;
 #  - a replay of a replay at its footprint is that replay again (carried volumes that round
 #    below zero were refused as corrupt before); a user's own files in the output's wear/ stay;
 #  - a missing directory, one without stored wear, another knife's (another height, another
@@ -59,6 +60,16 @@ python3 - "$out/fixed_replayed/summary.json" <<'PY'
 import json, sys
 w = [x for x in json.load(open(sys.argv[1]))["results"]["lifetime"]["warnings"] if "more than one update" in x]
 assert len(w) == 1 and w[0].startswith("update 2,"), w
+PY
+# a replay of that replay (whose stored pilot holds the beds it borrowed, the seeds' own) in
+# smaller steps takes its stored update 1 in its updates 1 and 2: said (its first update, on the
+# seeds' own beds, is a use, not a pilot)
+run fixed_replayed_again --set "Lifetime/Maximum updates=2" --set "Lifetime/Depth increment fraction=0.02" \
+  --set "Lifetime/Wear source=replay" --set "Lifetime/Replay/Run=$out/fixed_replayed"
+python3 - "$out/fixed_replayed_again/summary.json" <<'PY'
+import json, sys
+w = [x for x in json.load(open(sys.argv[1]))["results"]["lifetime"]["warnings"] if "more than one update" in x]
+assert len(w) == 1 and w[0].startswith("update 2,") and "stored update 1's" in w[0], w
 PY
 # in another order than the seeds: the same run (its pilot found, the first update as long)
 run joined_213 --set "Lifetime/Maximum updates=1" --set "Lifetime/Wear source=replay" \
