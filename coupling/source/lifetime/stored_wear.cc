@@ -2,6 +2,7 @@
 #include <abrade/common/csv_reader.h>
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/list_items.h>
 #include <abrade/coupling/lifetime/state_file.h>
 #include <abrade/coupling/lifetime/stored_wear.h>
 #include <abrade/fem/surface_filter.h>
@@ -292,7 +293,8 @@ namespace abrade::coupling::lifetime
       StoredRun                joined;
       std::vector<std::string> names;
       for (const auto &r : runs)
-        names.push_back(r.directory), joined.directory += (joined.directory.empty() ? "" : ", ") + r.directory;
+        names.push_back(r.directory);
+      joined.directory = io::list_text(names);
       const auto has_pilot = [](const StoredRun &r) { return r.updates.front().update == 0; };
       long       u         = std::all_of(runs.begin(), runs.end(), has_pilot) ? 0 : 1;
       for (;; ++u)

@@ -5,15 +5,14 @@
 // it, then the wear with the geometry's feedback (the replay leaves it out).
 #include <abrade/common/error.h>
 #include <abrade/common/format_number.h>
+#include <abrade/common/list_items.h>
 #include <abrade/coupling/lifetime/stored_wear.h>
 #include <abrade/coupling/lifetime/wear_calibration.h>
 #include <abrade/coupling/lifetime/wear_source.h>
 
-#include <deal.II/base/utilities.h>
-
 #include <algorithm>
-#include <set>
 #include <filesystem>
+#include <set>
 
 namespace abrade::coupling::lifetime
 {
@@ -35,13 +34,13 @@ namespace abrade::coupling::lifetime
           replayed.insert(w.bed_seeds.begin(), w.bed_seeds.end());
         else // (a stored run of the same seeds has had the DEM's beds of a later update in it)
           {
-            std::string twice;
+            std::vector<std::string> twice;
             for (int seed : bed_seeds)
               if (replayed.count(seed))
-                twice += (twice.empty() ? "" : ", ") + std::to_string(seed);
+                twice.push_back(std::to_string(seed));
             if (!twice.empty()) // (a note: the set-up's, not a fault of the DEM's cycle)
-              w.notes.push_back("the beds of seeds " + twice + " were replayed before (a stored update's): the "
-                                "life's interval counts them twice (too narrow)");
+              w.notes.push_back("the beds of seeds " + io::list_text(twice) + " were replayed before (a stored "
+                                "update's): the life's interval counts them twice (too narrow)");
           }
         return w;
       }
@@ -96,18 +95,14 @@ namespace abrade::coupling::lifetime
       void parse_parameters(ParameterFile &file) override
       {
         runs.clear();
-        for (const auto &given : dealii::Utilities::split_string_list(file.handler().get("Run")))
-          if (!given.empty())
-            {
-              runs.push_back(file.path_beside(given));
-              if (std::count(runs.begin(), runs.end(), runs.back()) > 1)
-                file.fail(path(), "Run", runs.back() + " is given twice: one run's beds twice are not more beds");
-            }
+        for (const auto &given : io::list_items(file.handler().get("Run"), ','))
+          {
+            runs.push_back(file.path_beside(given));
+            if (std::count(runs.begin(), runs.end(), runs.back()) > 1)
+              file.fail(path(), "Run", runs.back() + " is given twice: one run's beds twice are not more beds");
+          }
         if (runs.empty())
           file.fail(path(), "Run", "Wear source = replay needs the directory of a lifetime run");
-        run.clear();
-        for (const auto &r : runs)
-          run += (run.empty() ? "" : ", ") + r;
         dem_from = file.handler().get_double("DEM from");
       }
 
@@ -139,25 +134,25 @@ namespace abrade::coupling::lifetime
           }
         if (!(dem_from > 0))
           {
-            s.ctx.log.line("wear replayed from " + run + " (its stored wear, no DEM" + scaled + ")");
+            s.ctx.log.line("wear replayed from " + io::list_text(runs) + " (its stored wear, no DEM" + scaled + ")");
             return source;
           }
         auto dem = make_dem_wear_source(s.dem_case, s.seeds, s.tonnes_per_cycle, 0, s.ctx);
         if (dem->phases() != source->phases())
           s.ctx.parameters.fail(path(), "DEM from", "the stored run's cycle has other phases than this case's: "
                                 "the DEM cannot go on from its wear");
-        s.ctx.log.line("wear replayed from " + run + " (its stored wear" + scaled + ") until " +
+        s.ctx.log.line("wear replayed from " + io::list_text(runs) + " (its stored wear" + scaled + ") until " +
                        io::format_number(dem_from, 6) + " t, the DEM's cycles from there on (Replay/DEM from)");
         return std::make_unique<ReplayThenDem>(std::move(source), std::move(dem), dem_from);
       }
       std::string description() const override
       {
-        return "the stored wear of " + run + (dem_from > 0 ? ", the DEM from " + io::format_number(dem_from, 6) + " t" : "");
+        return "the stored wear of " + io::list_text(runs) + (dem_from > 0 ? ", the DEM from " + io::format_number(dem_from, 6) + " t" : "");
       }
       // (its stored wear, carried onto this run's surfaces: stored_wear.h)
       void add_results(io::Json &r) const override
       {
-        r["replayed_run"] = run;
+        r["replayed_run"] = io::list_text(runs);
         if (dem_from > 0)
           r["dem_from_tonnes"] = dem_from;
         if (runs.size() > 1)
@@ -167,7 +162,6 @@ namespace abrade::coupling::lifetime
 
     private:
       std::vector<std::string> runs; ///< Replay/Run, resolved
-      std::string              run;  ///< the same, comma-separated (messages, summary.json)
       double                   dem_from = 0; ///< Replay/DEM from [t] (0: never)
     };
   } // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // The items of a list written in a parameter ('opening, closing', 'right, left'): split at a
-// separator, each trimmed, empty ones left out.
+// separator, each trimmed, empty ones left out; and such a list written again.
 #include <abrade/common/file_extension.h>
 
 #include <algorithm>
@@ -20,5 +20,14 @@ namespace abrade::io
         start = end + 1;
       }
     return out;
+  }
+
+  /// @p items written as a list, @p separator between them ("a, b, c").
+  inline std::string list_text(const std::vector<std::string> &items, const std::string &separator = ", ")
+  {
+    std::string text;
+    for (const auto &item : items)
+      text += (text.empty() ? "" : separator) + item;
+    return text;
   }
 } // namespace abrade::io
